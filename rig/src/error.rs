@@ -1,0 +1,61 @@
+//! Errors of the plant: bad parameters, bad schedules, and a run that went wrong.
+
+/// Everything the plant can refuse or report.
+#[derive(Debug, thiserror::Error)]
+pub enum RigError {
+    /// A parameter value outside its physical range.
+    #[error("parameter `{name}` = {value}: {allowed}")]
+    InvalidParameter {
+        /// Parameter name as `testrig params` lists it.
+        name: String,
+        /// The value given.
+        value: String,
+        /// What is allowed.
+        allowed: String,
+    },
+    /// A parameter name that does not exist.
+    #[error("unknown parameter `{name}` (`testrig params` lists them all)")]
+    UnknownParameter {
+        /// The name given.
+        name: String,
+    },
+    /// A preset name that does not exist.
+    #[error("unknown preset `{name}` (known: {known})")]
+    UnknownPreset {
+        /// The name given.
+        name: String,
+        /// The presets there are.
+        known: String,
+    },
+    /// A set-point schedule that cannot be run.
+    #[error("schedule: {0}")]
+    Schedule(String),
+    /// A run option (output rate, durations) out of range.
+    #[error("run option `{name}` = {value}: {allowed}")]
+    InvalidOption {
+        /// Option name.
+        name: &'static str,
+        /// The value given.
+        value: String,
+        /// What is allowed.
+        allowed: &'static str,
+    },
+    /// The state left physical bounds or stopped being finite.
+    #[error("simulation blew up at t = {t_s:.6} s: {reason}; state X (rad) and V (rad/s) relative to the set rotation: {state:?}")]
+    BlowUp {
+        /// Simulated time of detection (s).
+        t_s: f64,
+        /// What was seen.
+        reason: String,
+        /// The relative state [X1..X5, V1..V5] when it was seen.
+        state: Vec<f64>,
+    },
+    /// Contact switches without end inside one step (a Zeno sequence).
+    #[error("contact chatter at t = {t_s:.9} s: more than {limit} switches within one step")]
+    Chatter {
+        /// Simulated time (s).
+        t_s: f64,
+        /// The switch limit per step.
+        limit: usize,
+    },
+}

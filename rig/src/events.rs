@@ -1,0 +1,284 @@
+//! Switching functions: linear functions of the augmented state whose sign change ends
+//! a linear segment, and the location of their first crossing.
+
+use nalgebra::DMatrix;
+
+use crate::layout::{REV, UNIT, V0, VF, X0, Z};
+use crate::mode::{MeshMode, Mode, MotorMode};
+use crate::model::ModelConstants;
+use crate::options::ContactLaw;
+
+/// What a crossing means.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum EventKind {
+    /// Apart → drive-flank contact (an impact).
+    TouchDrive,
+    /// Apart → back-flank contact (an impact).
+    TouchBack,
+    /// Drive-flank overlap ends: teeth apart.
+    LeaveDrive,
+    /// Back-flank overlap ends.
+    LeaveBack,
+    /// No-pull law: drive-flank torque reaches zero while the teeth still overlap.
+    DriveUnloads,
+    /// No-pull law: clipped drive-flank torque becomes positive again.
+    DriveReloads,
+    /// No-pull law: back-flank torque reaches zero.
+    BackUnloads,
+    /// No-pull law: clipped back-flank torque becomes positive again.
+    BackReloads,
+    /// The driving gear turns past the end of the current pair zone.
+    ZoneEnd,
+    /// The driving gear turns back past the start of the current pair zone.
+    ZoneStart,
+    /// Controller output reaches +limit.
+    LimitHigh,
+    /// Controller output reaches −limit.
+    LimitLow,
+    /// Controller output comes back inside the limits.
+    LimitRelease,
+    /// The driving gear turns past the next tooth boundary.
+    ToothPass,
+    /// The driving gear turns past the next whole revolution.
+    Revolution,
+}
+
+/// A sparse linear form over the augmented state.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct SparseRow {
+    /// (index, coefficient) pairs.
+    pub terms: Vec<(usize, f64)>,
+}
+
+impl SparseRow {
+    fn new(terms: &[(usize, f64)]) -> Self {
+        Self {
+            terms: terms.iter().copied().filter(|&(_, c)| c != 0.0).collect(),
+        }
+    }
+
+    /// Value of the form at `u`.
+    pub fn dot(&self, u: &[f64]) -> f64 {
+        self.terms.iter().map(|&(i, c)| c * u[i]).sum()
+    }
+
+    /// The form c·A, i.e. the time derivative of c·u along u' = A u.
+    fn times(&self, a: &DMatrix<f64>) -> Self {
+        let terms: Vec<(usize, f64)> = (0..a.ncols())
+            .map(|col| (col, self.terms.iter().map(|&(i, c)| c * a[(i, col)]).sum()))
+            .collect();
+        Self::new(&terms)
+    }
+
+    fn negated(&self) -> Self {
+        Self {
+            terms: self.terms.iter().map(|&(i, c)| (i, -c)).collect(),
+        }
+    }
+}
+
+/// One switching function g(u, τ) = value·u + sign·(φ(τ) − target) for angle events.
+///
+/// The segment ends when g crosses from ≤ 0 to > 0.
+#[derive(Clone, Debug, PartialEq)]
+pub struct EventFn {
+    /// What the crossing means.
+    pub kind: EventKind,
+    /// g's linear form over u.
+    pub value: SparseRow,
+    /// dg/dt's linear form over u (c·A).
+    pub slope: SparseRow,
+    /// For angle events: +1 when g grows with the driving gear's angle θ2 = φ + X2, −1 when it falls.
+    pub angle_sign: f64,
+}
+
+/// The switching functions active in `mode`.
+pub fn mode_events(mc: &ModelConstants, law: ContactLaw, flags: EventFlags, mode: Mode, a: &DMatrix<f64>, rotation_rad_s: f64) -> Vec<EventFn> {
+    let (k, c) = mc.mesh_spring(mode.pairs);
+    let b0 = mc.half_backlash_rad;
+    let bc = b0 * mc.backlash_variation;
+    let (x2, x3, v2, v3) = (X0 + 1, X0 + 2, V0 + 1, V0 + 2);
+    let gap_drive = [(x2, 1.0), (x3, -1.0), (UNIT, -b0), (REV, bc)];
+    let gap_back = [(x2, -1.0), (x3, 1.0), (UNIT, -b0), (REV, bc)];
+    // Pushing torque K δ + C δ' of each flank; δ' includes Ḃ = B₀C1·Ω sin φ.
+    let b_rate = -c * bc * rotation_rad_s;
+    let force_drive = [(x2, k), (x3, -k), (UNIT, -k * b0), (REV, k * bc), (v3, -c), (v2, c), (REV + 1, b_rate)];
+    let force_back = [(x2, -k), (x3, k), (UNIT, -k * b0), (REV, k * bc), (v3, c), (v2, -c), (REV + 1, b_rate)];
+    let limit = mc.torque_limit_nm;
+    let (kp, ki) = (mc.kp_nms_per_rad, mc.ki_nm_per_rad);
+    let over_high = [(VF, -kp), (Z, ki), (UNIT, -limit)];
+    let under_low = [(VF, kp), (Z, -ki), (UNIT, -limit)];
+
+    let mut list: Vec<(EventKind, SparseRow, f64)> = Vec::new();
+    let mut push = |kind, terms: &[(usize, f64)]| list.push((kind, SparseRow::new(terms), 0.0));
+    let no_pull = law == ContactLaw::NoPull;
+    match mode.mesh {
+        MeshMode::Apart => {
+            push(EventKind::TouchDrive, &gap_drive);
+            push(EventKind::TouchBack, &gap_back);
+        }
+        MeshMode::Drive | MeshMode::DriveClipped => {
+            push(EventKind::LeaveDrive, &SparseRow::new(&gap_drive).negated().terms);
+            if mode.mesh == MeshMode::DriveClipped {
+                push(EventKind::DriveReloads, &force_drive);
+            } else if no_pull {
+                push(EventKind::DriveUnloads, &SparseRow::new(&force_drive).negated().terms);
+            }
+        }
+        MeshMode::Back | MeshMode::BackClipped => {
+            push(EventKind::LeaveBack, &SparseRow::new(&gap_back).negated().terms);
+            if mode.mesh == MeshMode::BackClipped {
+                push(EventKind::BackReloads, &force_back);
+            } else if no_pull {
+                push(EventKind::BackUnloads, &SparseRow::new(&force_back).negated().terms);
+            }
+        }
+    }
+    match mode.motor {
+        MotorMode::Linear => {
+            push(EventKind::LimitHigh, &over_high);
+            push(EventKind::LimitLow, &under_low);
+        }
+        MotorMode::LimitHigh => push(EventKind::LimitRelease, &SparseRow::new(&over_high).negated().terms),
+        MotorMode::LimitLow => push(EventKind::LimitRelease, &SparseRow::new(&under_low).negated().terms),
+    }
+    let angle = [(x2, 1.0)];
+    let engaged = matches!(mode.mesh, MeshMode::Drive | MeshMode::Back);
+    if flags.alternating_pairs && engaged {
+        list.push((EventKind::ZoneEnd, SparseRow::new(&angle), 1.0));
+        list.push((EventKind::ZoneStart, SparseRow::new(&angle).negated(), -1.0));
+    }
+    if flags.tooth_shifting {
+        list.push((EventKind::ToothPass, SparseRow::new(&angle), 1.0));
+    }
+    list.push((EventKind::Revolution, SparseRow::new(&angle), 1.0));
+    list.into_iter()
+        .map(|(kind, value, angle_sign)| EventFn {
+            kind,
+            slope: value.times(a),
+            value,
+            angle_sign,
+        })
+        .collect()
+}
+
+/// Which optional switching functions exist in this plant.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct EventFlags {
+    /// Pair-zone boundaries (contact ratio > 1).
+    pub alternating_pairs: bool,
+    /// Tooth-pass instants (numerical tooth shifting).
+    pub tooth_shifting: bool,
+}
+
+/// Evaluates a polynomial Σ c_k s^k and its derivative at `s` (Horner).
+pub fn poly_eval(coeffs: &[f64], s: f64) -> (f64, f64) {
+    let mut value = 0.0;
+    let mut slope = 0.0;
+    for &c in coeffs.iter().rev() {
+        slope = slope * s + value;
+        value = value * s + c;
+    }
+    (value, slope)
+}
+
+/// Subintervals of [0, 1] scanned for the first crossing: a step spans at most ρh ≤ 0.5 rad
+/// of the fastest motion, so each quarter holds at most one extremum.
+const SCAN: usize = 4;
+
+/// First s in (0, 1] where the polynomial crosses from ≤ 0 to > 0, taking p(0) as ≤ 0.
+///
+/// Scans [0, 1] in 4 parts; in each, a sign change or an interior maximum above zero
+/// (found where p' changes sign) brackets the crossing, which is then refined to full
+/// precision. Returns the right end of the final bracket, where p > 0.
+pub fn first_crossing(coeffs: &[f64]) -> Option<f64> {
+    let (_, mut slope_a) = poly_eval(coeffs, 0.0);
+    let mut s_a = 0.0;
+    for j in 1..=SCAN {
+        let s_b = j as f64 / SCAN as f64;
+        let (value_b, slope_b) = poly_eval(coeffs, s_b);
+        if value_b > 0.0 {
+            return Some(refine(coeffs, s_a, s_b));
+        }
+        if slope_a > 0.0 && slope_b < 0.0 {
+            let s_max = slope_root(coeffs, s_a, s_b);
+            if poly_eval(coeffs, s_max).0 > 0.0 {
+                return Some(refine(coeffs, s_a, s_max));
+            }
+        }
+        s_a = s_b;
+        slope_a = slope_b;
+    }
+    None
+}
+
+/// Bisection for p' = 0 in [a, b] with p'(a) > 0 > p'(b).
+fn slope_root(coeffs: &[f64], mut a: f64, mut b: f64) -> f64 {
+    for _ in 0..60 {
+        let mid = 0.5 * (a + b);
+        if mid <= a || mid >= b {
+            break;
+        }
+        if poly_eval(coeffs, mid).1 > 0.0 {
+            a = mid;
+        } else {
+            b = mid;
+        }
+    }
+    0.5 * (a + b)
+}
+
+/// Narrows [a, b] with p(a) ≤ 0 < p(b) to adjacent floats (Newton steps kept inside the bracket).
+fn refine(coeffs: &[f64], mut a: f64, mut b: f64) -> f64 {
+    let mut s = 0.5 * (a + b);
+    for _ in 0..100 {
+        let (value, slope) = poly_eval(coeffs, s);
+        if value > 0.0 {
+            b = s;
+        } else {
+            a = s;
+        }
+        let newton = if slope != 0.0 { s - value / slope } else { f64::NAN };
+        let next = if newton > a && newton < b { newton } else { 0.5 * (a + b) };
+        if next <= a || next >= b || b - a <= f64::EPSILON * b {
+            break;
+        }
+        s = next;
+    }
+    b
+}
+
+/// Whether a cubic through (0, g0, d0) and (1, g1, d1) (values and slopes in s) may exceed 0 in (0, 1).
+///
+/// Used before any expensive search: true on a sign change or when the Hermite cubic's
+/// interior maximum lies within a safety margin of zero.
+pub fn may_cross(g0: f64, d0: f64, g1: f64, d1: f64) -> bool {
+    if g1 > 0.0 {
+        return true;
+    }
+    if !(d0 > 0.0 && d1 < 0.0) {
+        return false;
+    }
+    // Hermite cubic p(s) = g0 + d0 s + c2 s² + c3 s³.
+    let c2 = 3.0 * (g1 - g0) - 2.0 * d0 - d1;
+    let c3 = 2.0 * (g0 - g1) + d0 + d1;
+    let peak = hermite_max(g0, d0, c2, c3);
+    let margin = 0.25 * (g0.abs() + g1.abs() + d0.abs() + d1.abs());
+    peak > -margin
+}
+
+/// Largest value on (0, 1) of g0 + d0 s + c2 s² + c3 s³ given d0 > 0 > p'(1): at the root
+/// of p'(s) = d0 + 2 c2 s + 3 c3 s² where p' turns from positive to negative.
+fn hermite_max(g0: f64, d0: f64, c2: f64, c3: f64) -> f64 {
+    let coeffs = [g0, d0, c2, c3];
+    let s = if c3.abs() < 1e-12 * (c2.abs() + d0.abs()) {
+        -d0 / (2.0 * c2)
+    } else {
+        let disc = (c2 * c2 - 3.0 * c3 * d0).max(0.0).sqrt();
+        // The root where p'' < 0: s = (−c2 − √disc) / (3 c3), written to avoid cancellation.
+        let q = -(c2 + c2.signum() * disc);
+        let roots = [q / (3.0 * c3), d0 / q];
+        roots.into_iter().find(|r| (0.0..=1.0).contains(r) && 2.0 * c2 + 6.0 * c3 * r <= 0.0).unwrap_or(0.5)
+    };
+    poly_eval(&coeffs, s.clamp(0.0, 1.0)).0
+}

@@ -1,0 +1,37 @@
+//! The physical plant of testrig: F. Basmaji's 1983 geared rig (five inertias on a line,
+//! a 1:1 spur pair with backlash, speed-controlled DC motor, eddy-current brake), advanced
+//! exactly between contact switches. See `ARCHITECTURE.md` at the project root.
+
+pub mod energy;
+pub mod error;
+pub mod events;
+pub mod geometry;
+pub mod layout;
+pub mod modal;
+pub mod mode;
+pub mod model;
+pub mod options;
+pub mod param_table;
+pub mod params;
+pub mod plant;
+pub mod presets;
+pub mod propagator;
+pub mod records;
+pub mod regime;
+pub mod schedule;
+pub mod signals;
+pub mod system_cache;
+
+pub use error::RigError;
+pub use geometry::GearGeometry;
+pub use modal::{Chain, NaturalMode, RigChains};
+pub use mode::{MeshMode, Mode, MotorMode, PairZone};
+pub use options::{ContactLaw, MeshPairs};
+pub use param_table::{PARAM_SPECS, ParamSpec, param_spec, set_param};
+pub use params::RigParams;
+pub use plant::{Plant, PlantConfig};
+pub use presets::{PRESET_NAMES, preset};
+pub use records::{Flank, Impact, RevolutionSample};
+pub use regime::{Regime, RegimeCriteria, classify};
+pub use schedule::{Schedule, SetPoints, Track};
+pub use signals::{COLUMN_NAMES, INTERMEDIATE_SHAFT, Sample, SignalBlock};

@@ -1,0 +1,219 @@
+//! The equations of motion (thesis eqs. 5.1–5.6 with drive, brake and forcing) as the
+//! matrix of a linear system, one per [`Mode`].
+
+use nalgebra::DMatrix;
+
+use crate::geometry::GearGeometry;
+use crate::layout::{LOAD, Layout, N_MECH, REV, UNIT, V0, VF, X0, Z};
+use crate::mode::{Engagement, Mode, MotorMode, PairZone};
+use crate::params::RigParams;
+
+/// The plant's constants in the form the equations use (SI units).
+#[derive(Clone, Debug, PartialEq)]
+pub struct ModelConstants {
+    /// Inertias M1..M5 (kg m²).
+    pub inertia_kgm2: [f64; 5],
+    /// Shaft stiffnesses K12, K34, K45 (N m/rad).
+    pub shaft_stiffness_nm_per_rad: [f64; 3],
+    /// Shaft damping C12, C34, C45 (N m s/rad).
+    pub shaft_damping_nms_per_rad: [f64; 3],
+    /// Mesh stiffness of one pair (N m/rad).
+    pub mesh_stiffness_nm_per_rad: f64,
+    /// Mesh damping of one pair (N m s/rad).
+    pub mesh_damping_nms_per_rad: f64,
+    /// Two-pair stiffness and damping over one pair's.
+    pub double_pair_ratio: f64,
+    /// Free play B₀ each side of centre (rad).
+    pub half_backlash_rad: f64,
+    /// Backlash variation C1 (dimensionless).
+    pub backlash_variation: f64,
+    /// Once-per-rev gear error C2 (N m).
+    pub gear_error_1_nm: f64,
+    /// Twice-per-rev gear error C3 (N m).
+    pub gear_error_2_nm: f64,
+    /// Speed-loop proportional gain Kp (N m s/rad).
+    pub kp_nms_per_rad: f64,
+    /// Speed-loop integral gain Ki (N m/rad).
+    pub ki_nm_per_rad: f64,
+    /// Speed feedback filter corner (rad/s).
+    pub filter_rad_s: f64,
+    /// Motor torque limit (N m).
+    pub torque_limit_nm: f64,
+    /// Brake torque slope with speed (N m s/rad).
+    pub brake_slope_nms_per_rad: f64,
+}
+
+/// Spring and damper pairs of the shafts: (body i, body j) for K12, K34, K45.
+const SHAFTS: [(usize, usize); 3] = [(0, 1), (2, 3), (3, 4)];
+
+impl ModelConstants {
+    /// Collects the constants of `params`.
+    pub fn of(params: &RigParams) -> Self {
+        let (kp, ki) = params.speed_loop_gains();
+        Self {
+            inertia_kgm2: params.inertias_kgm2(),
+            shaft_stiffness_nm_per_rad: [
+                params.k12_input_shaft_nm_per_rad,
+                params.k34_intermediate_shaft_nm_per_rad,
+                params.k45_final_shaft_nm_per_rad,
+            ],
+            shaft_damping_nms_per_rad: [
+                params.c12_input_shaft_nms_per_rad,
+                params.c34_intermediate_shaft_nms_per_rad,
+                params.c45_final_shaft_nms_per_rad,
+            ],
+            mesh_stiffness_nm_per_rad: params.k23_mesh_nm_per_rad,
+            mesh_damping_nms_per_rad: params.c23_mesh_nms_per_rad,
+            double_pair_ratio: params.double_pair_stiffness_ratio,
+            half_backlash_rad: GearGeometry::of(params).half_backlash_rad,
+            backlash_variation: params.backlash_variation_c1,
+            gear_error_1_nm: params.gear_error_c2_nm,
+            gear_error_2_nm: params.gear_error_c3_nm,
+            kp_nms_per_rad: kp,
+            ki_nm_per_rad: ki,
+            filter_rad_s: 2.0 * std::f64::consts::PI * params.speed_feedback_filter_hz,
+            torque_limit_nm: params.motor_torque_limit_nm,
+            brake_slope_nms_per_rad: params.brake_speed_slope_nms_per_rad,
+        }
+    }
+
+    /// Mesh stiffness (N m/rad) and damping (N m s/rad) with `pairs` in contact.
+    pub fn mesh_spring(&self, pairs: PairZone) -> (f64, f64) {
+        let ratio = match pairs {
+            PairZone::One => 1.0,
+            PairZone::Two => self.double_pair_ratio,
+        };
+        (ratio * self.mesh_stiffness_nm_per_rad, ratio * self.mesh_damping_nms_per_rad)
+    }
+
+    /// Elastic torques of the three shafts K(Xi − Xj) (N m), positive when transmitting drive torque.
+    pub fn shaft_torques_nm(&self, x: &[f64]) -> [f64; 3] {
+        let mut torque = [0.0; 3];
+        for (t, (&(i, j), &k)) in torque.iter_mut().zip(SHAFTS.iter().zip(&self.shaft_stiffness_nm_per_rad)) {
+            *t = k * (x[X0 + i] - x[X0 + j]);
+        }
+        torque
+    }
+
+    /// Output of the PI speed controller before the limit (N m).
+    pub fn controller_torque_nm(&self, x: &[f64]) -> f64 {
+        -self.kp_nms_per_rad * x[VF] + self.ki_nm_per_rad * x[Z]
+    }
+}
+
+/// Angular frequencies that enter the matrix (rad/s).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Frequencies {
+    /// Set speed Ω (rad/s): the gear errors and backlash variation turn at Ω and 2Ω.
+    pub rotation_rad_s: f64,
+    /// Oscillating load frequency (rad/s).
+    pub oscillating_load_rad_s: f64,
+}
+
+/// Builds A of u' = A u for the augmented state `u` (see [`crate::layout`]) in `mode`.
+pub fn system_matrix(mc: &ModelConstants, layout: &Layout, mode: Mode, freq: Frequencies) -> DMatrix<f64> {
+    let mut a = DMatrix::zeros(layout.len, layout.len);
+    for i in 0..5 {
+        a[(X0 + i, V0 + i)] = 1.0;
+    }
+    for ((&(i, j), &k), &c) in SHAFTS.iter().zip(&mc.shaft_stiffness_nm_per_rad).zip(&mc.shaft_damping_nms_per_rad) {
+        add_spring(&mut a, &mc.inertia_kgm2, (i, j), k, c);
+    }
+    add_mesh(&mut a, mc, mode, freq.rotation_rad_s);
+    add_gear_errors(&mut a, mc, layout);
+    add_brake(&mut a, mc, layout);
+    add_motor(&mut a, mc, mode.motor);
+    add_rotation(&mut a, REV, freq.rotation_rad_s);
+    if let Some(rev2) = layout.rev2 {
+        add_rotation(&mut a, rev2, 2.0 * freq.rotation_rad_s);
+    }
+    if let Some(osc) = layout.osc {
+        add_rotation(&mut a, osc, freq.oscillating_load_rad_s);
+    }
+    a
+}
+
+/// A spring k and damper c between bodies i and j.
+fn add_spring(a: &mut DMatrix<f64>, inertia: &[f64; 5], (i, j): (usize, usize), k: f64, c: f64) {
+    for (body, sign) in [(i, 1.0), (j, -1.0)] {
+        let row = V0 + body;
+        let scale = sign / inertia[body];
+        a[(row, X0 + i)] -= k * scale;
+        a[(row, X0 + j)] += k * scale;
+        a[(row, V0 + i)] -= c * scale;
+        a[(row, V0 + j)] += c * scale;
+    }
+}
+
+/// Mesh torque F_XT on M3 (and −F_XT on M2), thesis eq. (5.6) with B(t) = B₀(1 − C1 cos φ):
+/// spring and damper act on the tooth overlap δ (drive flank δ = −d − B, back flank
+/// δ = d − B, d = X3 − X2): drive F_XT = K δ + C δ', back F_XT = −(K δ + C δ').
+///
+/// With B constant this is (5.6) exactly (δ' = ∓ḋ). With the backlash variation the
+/// thesis's damper acts on ḋ alone, which makes the pair transmit C·Ḃ with its spring
+/// unloaded and chatter at the boundary; here it acts on the overlap rate ḋ ± Ḃ.
+fn add_mesh(a: &mut DMatrix<f64>, mc: &ModelConstants, mode: Mode, rotation_rad_s: f64) {
+    let flank = match mode.mesh.engagement() {
+        Engagement::Free => return,
+        Engagement::Drive => 1.0,
+        Engagement::Back => -1.0,
+    };
+    let (k, c) = mc.mesh_spring(mode.pairs);
+    add_spring(a, &mc.inertia_kgm2, (2, 1), k, c);
+    let b0 = mc.half_backlash_rad;
+    let bc = b0 * mc.backlash_variation;
+    // F_XT = −K d − C ḋ (the spring above) − flank·K·B₀ + flank·K·B₀C1 cos φ − flank·C·B₀C1·Ω sin φ.
+    for (body, sign) in [(2, 1.0), (1, -1.0)] {
+        let scale = flank * sign / mc.inertia_kgm2[body];
+        a[(V0 + body, UNIT)] -= k * b0 * scale;
+        a[(V0 + body, REV)] += k * bc * scale;
+        a[(V0 + body, REV + 1)] -= c * bc * rotation_rad_s * scale;
+    }
+}
+
+/// Gear error torques F2 = F3 = −C2 cos φ − C3 cos 2φ on M2 and M3.
+fn add_gear_errors(a: &mut DMatrix<f64>, mc: &ModelConstants, layout: &Layout) {
+    for body in [1, 2] {
+        let row = V0 + body;
+        a[(row, REV)] -= mc.gear_error_1_nm / mc.inertia_kgm2[body];
+        if let Some(rev2) = layout.rev2 {
+            a[(row, rev2)] -= mc.gear_error_2_nm / mc.inertia_kgm2[body];
+        }
+    }
+}
+
+/// Brake torque on M5: load T_L + slope·V5 + oscillating part A sin ψ, all resisting.
+fn add_brake(a: &mut DMatrix<f64>, mc: &ModelConstants, layout: &Layout) {
+    let row = V0 + 4;
+    let j5 = mc.inertia_kgm2[4];
+    a[(row, LOAD)] -= 1.0 / j5;
+    a[(row, V0 + 4)] -= mc.brake_slope_nms_per_rad / j5;
+    if let Some(osc) = layout.osc {
+        a[(row, osc + 1)] -= 1.0 / j5;
+    }
+}
+
+/// Motor torque on M1 from the PI speed loop on the filtered speed, or the limit.
+fn add_motor(a: &mut DMatrix<f64>, mc: &ModelConstants, motor: MotorMode) {
+    let j1 = mc.inertia_kgm2[0];
+    a[(VF, V0)] = mc.filter_rad_s;
+    a[(VF, VF)] = -mc.filter_rad_s;
+    match motor {
+        MotorMode::Linear => {
+            a[(V0, VF)] -= mc.kp_nms_per_rad / j1;
+            a[(V0, Z)] += mc.ki_nm_per_rad / j1;
+            a[(Z, VF)] = -1.0;
+        }
+        MotorMode::LimitHigh => a[(V0, UNIT)] += mc.torque_limit_nm / j1,
+        MotorMode::LimitLow => a[(V0, UNIT)] -= mc.torque_limit_nm / j1,
+    }
+}
+
+/// A harmonic pair (cos, sin) at `index` turning at `w` rad/s.
+fn add_rotation(a: &mut DMatrix<f64>, index: usize, w: f64) {
+    a[(index, index + 1)] = -w;
+    a[(index + 1, index)] = w;
+}
+
+/// Number of rows of A that the fast stepper propagates with the full matrix.
+pub const PROPAGATED_ROWS: usize = N_MECH;

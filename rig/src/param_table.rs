@@ -1,0 +1,157 @@
+//! Named access to every parameter: list, read and override by name.
+
+use crate::error::RigError;
+use crate::options::{ContactLaw, MeshPairs};
+use crate::params::RigParams;
+
+/// One parameter as the command line and scenarios see it.
+pub struct ParamSpec {
+    /// Name used by `--set NAME=VALUE` and in scenarios.
+    pub name: &'static str,
+    /// Unit of the value ("1" for dimensionless, "-" for a choice or switch).
+    pub unit: &'static str,
+    /// What it means and where the preset value comes from.
+    pub meaning: &'static str,
+    get: fn(&RigParams) -> String,
+    set: fn(&mut RigParams, &str) -> Result<(), String>,
+}
+
+impl ParamSpec {
+    /// The parameter's current value in `params`, as text.
+    pub fn value(&self, params: &RigParams) -> String {
+        (self.get)(params)
+    }
+}
+
+/// A value type that can be read from and written to text.
+trait ParamText: Sized {
+    fn parse_text(text: &str) -> Result<Self, String>;
+    fn show(&self) -> String;
+}
+
+impl ParamText for f64 {
+    fn parse_text(text: &str) -> Result<Self, String> {
+        let value: f64 = text.trim().parse().map_err(|_| format!("`{text}` is not a number"))?;
+        if value.is_finite() {
+            Ok(value)
+        } else {
+            Err(format!("`{text}` is not a finite number"))
+        }
+    }
+    fn show(&self) -> String {
+        format!("{self}")
+    }
+}
+
+impl ParamText for u32 {
+    fn parse_text(text: &str) -> Result<Self, String> {
+        text.trim().parse().map_err(|_| format!("`{text}` is not a whole number"))
+    }
+    fn show(&self) -> String {
+        format!("{self}")
+    }
+}
+
+impl ParamText for bool {
+    fn parse_text(text: &str) -> Result<Self, String> {
+        match text.trim() {
+            "true" | "on" | "1" => Ok(true),
+            "false" | "off" | "0" => Ok(false),
+            _ => Err(format!("`{text}` is not true/false")),
+        }
+    }
+    fn show(&self) -> String {
+        format!("{self}")
+    }
+}
+
+impl ParamText for ContactLaw {
+    fn parse_text(text: &str) -> Result<Self, String> {
+        Self::parse(text.trim()).ok_or_else(|| format!("`{text}` is not one of {}", Self::NAMES))
+    }
+    fn show(&self) -> String {
+        self.name().to_string()
+    }
+}
+
+impl ParamText for MeshPairs {
+    fn parse_text(text: &str) -> Result<Self, String> {
+        Self::parse(text.trim()).ok_or_else(|| format!("`{text}` is not one of {}", Self::NAMES))
+    }
+    fn show(&self) -> String {
+        self.name().to_string()
+    }
+}
+
+macro_rules! param_specs {
+    ($( $field:ident, $unit:literal, $meaning:literal; )*) => {
+        /// Every parameter of [`RigParams`], in declaration order.
+        pub static PARAM_SPECS: &[ParamSpec] = &[
+            $( ParamSpec {
+                name: stringify!($field),
+                unit: $unit,
+                meaning: $meaning,
+                get: |p| ParamText::show(&p.$field),
+                set: |p, text| {
+                    p.$field = ParamText::parse_text(text)?;
+                    Ok(())
+                },
+            }, )*
+        ];
+    };
+}
+
+param_specs! {
+    j1_motor_kgm2, "kg m^2", "M1 DC motor rotor inertia (thesis App. B: 0.0163)";
+    j2_input_flywheel_kgm2, "kg m^2", "M2 fixed flywheel + driving gear (App. B: 0.355)";
+    j3_driven_gear_kgm2, "kg m^2", "M3 driven gear alone (App. B: 0.00865)";
+    j4_output_flywheel_kgm2, "kg m^2", "M4 movable output flywheel (App. B: 0.45)";
+    j5_brake_kgm2, "kg m^2", "M5 eddy-current brake rotor (App. B: 0.015)";
+    k12_input_shaft_nm_per_rad, "N m/rad", "K12 input shaft, dia 20 x 250 mm (App. C: 5196.2)";
+    k23_mesh_nm_per_rad, "N m/rad", "K23 one tooth pair in contact (App. C: 1.3e6)";
+    k34_intermediate_shaft_nm_per_rad, "N m/rad", "K34 intermediate shaft, dia 20 x 500 mm, strain gauges (App. C: 2598.1)";
+    k45_final_shaft_nm_per_rad, "N m/rad", "K45 final shaft, dia 20 x 300 mm (App. C: 4330.2)";
+    c12_input_shaft_nms_per_rad, "N m s/rad", "C12 input shaft damping (thesis FCN1-3: 9.03376 x M1 = 0.1473)";
+    c23_mesh_nms_per_rad, "N m s/rad", "C23 mesh contact damping, one pair (FCN1-3: 382.726 x M2 = 135.8)";
+    c34_intermediate_shaft_nms_per_rad, "N m s/rad", "C34 intermediate shaft damping (FCN1-3: 0.0946)";
+    c45_final_shaft_nms_per_rad, "N m s/rad", "C45 final shaft damping (FCN1-3: 0.1589)";
+    teeth, "1", "teeth on each gear of the 1:1 pair (thesis: 30)";
+    module_m, "m", "gear module (thesis: 5 mm, PCD 150 mm)";
+    pressure_angle_deg, "deg", "standard pressure angle (thesis: 20)";
+    addendum_coefficient, "1", "addendum / module (standard full depth: 1.0; thesis silent)";
+    centre_distance_shift_m, "m", "centre distance increase setting the backlash 2B1 = 2 dC tan(alpha) (experiments: 1.0 mm)";
+    contact_law, "-", "mesh contact law: thesis (eq. 5.6, damper may pull) or no-pull (torque clipped at 0)";
+    tooth_shifting, "-", "numerical tooth shifting at every tooth pass (thesis 5.4.5)";
+    backlash_variation_c1, "1", "C1 in B(1 - C1 cos Omega t) (thesis 6.5.1: 0.38)";
+    gear_error_c2_nm, "N m", "C2 once-per-rev gear error torque on M2 and M3 (thesis: not given)";
+    gear_error_c3_nm, "N m", "C3 twice-per-rev gear error torque on M2 and M3 (thesis: not given)";
+    mesh_pairs, "-", "tooth pairs sharing the load: single (thesis) or alternating (contact ratio from geometry)";
+    double_pair_stiffness_ratio, "1", "mesh stiffness and damping with two pairs / one pair (two pairs in parallel: 2)";
+    speed_loop_hz, "Hz", "closed speed-loop natural frequency on the whole rig inertia (thesis silent: 0.5)";
+    speed_loop_damping_ratio, "1", "closed speed-loop damping ratio (thesis silent: 0.7)";
+    speed_feedback_filter_hz, "Hz", "low-pass on the controller's speed feedback (thesis silent: 2)";
+    motor_torque_limit_nm, "N m", "drive torque limit: 2 hp at 2000 rev/min = 7.12";
+    brake_speed_slope_nms_per_rad, "N m s/rad", "brake torque slope with speed (thesis: constant torque, 0)";
+}
+
+/// Looks a parameter up by name.
+pub fn param_spec(name: &str) -> Result<&'static ParamSpec, RigError> {
+    PARAM_SPECS
+        .iter()
+        .find(|spec| spec.name == name)
+        .ok_or_else(|| RigError::UnknownParameter { name: name.to_string() })
+}
+
+/// Sets one parameter by name from its text form, then validates the whole set.
+pub fn set_param(params: &mut RigParams, name: &str, text: &str) -> Result<(), RigError> {
+    let spec = param_spec(name)?;
+    let mut changed = params.clone();
+    (spec.set)(&mut changed, text).map_err(|allowed| RigError::InvalidParameter {
+        name: name.to_string(),
+        value: text.to_string(),
+        allowed,
+    })?;
+    changed.validate()?;
+    *params = changed;
+    Ok(())
+}

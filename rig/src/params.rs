@@ -1,0 +1,162 @@
+//! The rig's parameter set: every number of the plant, in SI units, with where it comes from.
+
+use serde::{Deserialize, Serialize};
+
+use crate::error::RigError;
+use crate::options::{ContactLaw, MeshPairs};
+
+/// Every parameter of the plant (SI units; names carry the unit).
+///
+/// The preset `basmaji-1983` holds the thesis's own numbers (rig-spec §1–2); see
+/// [`crate::presets`]. Fields are public so that code can build a rig directly; the
+/// command line and scenarios change them by name through [`crate::param_table`].
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RigParams {
+    /// M1: DC motor rotor inertia (kg m²).
+    pub j1_motor_kgm2: f64,
+    /// M2: input flywheel plus driving gear inertia (kg m²).
+    pub j2_input_flywheel_kgm2: f64,
+    /// M3: driven gear inertia (kg m²).
+    pub j3_driven_gear_kgm2: f64,
+    /// M4: output (movable) flywheel inertia (kg m²).
+    pub j4_output_flywheel_kgm2: f64,
+    /// M5: eddy-current brake rotor inertia (kg m²).
+    pub j5_brake_kgm2: f64,
+    /// K12: input shaft torsional stiffness, motor to input flywheel (N m/rad).
+    pub k12_input_shaft_nm_per_rad: f64,
+    /// K23: mesh stiffness of one tooth pair in contact (N m/rad, about the gear axis).
+    pub k23_mesh_nm_per_rad: f64,
+    /// K34: intermediate shaft stiffness, driven gear to output flywheel (N m/rad).
+    pub k34_intermediate_shaft_nm_per_rad: f64,
+    /// K45: final shaft stiffness, output flywheel to brake (N m/rad).
+    pub k45_final_shaft_nm_per_rad: f64,
+    /// C12: input shaft viscous damping (N m s/rad).
+    pub c12_input_shaft_nms_per_rad: f64,
+    /// C23: mesh contact damping of one tooth pair (N m s/rad).
+    pub c23_mesh_nms_per_rad: f64,
+    /// C34: intermediate shaft viscous damping (N m s/rad).
+    pub c34_intermediate_shaft_nms_per_rad: f64,
+    /// C45: final shaft viscous damping (N m s/rad).
+    pub c45_final_shaft_nms_per_rad: f64,
+    /// Number of teeth on each gear of the 1:1 pair.
+    pub teeth: u32,
+    /// Gear module (m).
+    pub module_m: f64,
+    /// Standard pressure angle (degrees).
+    pub pressure_angle_deg: f64,
+    /// Addendum as a multiple of the module (1.0 for standard full-depth teeth).
+    pub addendum_coefficient: f64,
+    /// Increase of the centre distance over standard, which sets the backlash (m).
+    pub centre_distance_shift_m: f64,
+    /// Contact law of the mesh.
+    pub contact_law: ContactLaw,
+    /// Numerical tooth shifting at every tooth pass (thesis §5.4.5).
+    pub tooth_shifting: bool,
+    /// C1: relative backlash variation once per revolution, B(1 − C1 cos Ωt) (dimensionless).
+    pub backlash_variation_c1: f64,
+    /// C2: once-per-revolution gear error torque amplitude on M2 and M3 (N m).
+    pub gear_error_c2_nm: f64,
+    /// C3: twice-per-revolution gear error torque amplitude on M2 and M3 (N m).
+    pub gear_error_c3_nm: f64,
+    /// How many tooth pairs share the load: one always, or alternating one/two by the contact ratio.
+    pub mesh_pairs: MeshPairs,
+    /// Mesh stiffness and damping with two pairs in contact, as a multiple of one pair's.
+    pub double_pair_stiffness_ratio: f64,
+    /// Natural frequency of the closed speed loop on the whole rig's inertia (Hz).
+    pub speed_loop_hz: f64,
+    /// Damping ratio of the closed speed loop (dimensionless).
+    pub speed_loop_damping_ratio: f64,
+    /// Corner of the first-order low-pass on the controller's speed feedback (Hz).
+    pub speed_feedback_filter_hz: f64,
+    /// Motor torque limit of the drive, either sense (N m).
+    pub motor_torque_limit_nm: f64,
+    /// Slope of the brake torque with speed about the set point (N m s/rad); 0 is the thesis's constant torque.
+    pub brake_speed_slope_nms_per_rad: f64,
+}
+
+impl RigParams {
+    /// The five inertias M1..M5 (kg m²).
+    pub fn inertias_kgm2(&self) -> [f64; 5] {
+        [
+            self.j1_motor_kgm2,
+            self.j2_input_flywheel_kgm2,
+            self.j3_driven_gear_kgm2,
+            self.j4_output_flywheel_kgm2,
+            self.j5_brake_kgm2,
+        ]
+    }
+
+    /// Total inertia of the rig (kg m²).
+    pub fn total_inertia_kgm2(&self) -> f64 {
+        self.inertias_kgm2().iter().sum()
+    }
+
+    /// Speed-loop gains (Kp in N m s/rad, Ki in N m/rad) placing the closed loop on the
+    /// whole rig's inertia J at ω_n = 2π·`speed_loop_hz` with damping `speed_loop_damping_ratio`:
+    /// Ki = J ω_n², Kp = 2 ζ ω_n J.
+    pub fn speed_loop_gains(&self) -> (f64, f64) {
+        let j = self.total_inertia_kgm2();
+        let wn = 2.0 * std::f64::consts::PI * self.speed_loop_hz;
+        (2.0 * self.speed_loop_damping_ratio * wn * j, j * wn * wn)
+    }
+
+    /// Checks every value against its physical range; the error names the parameter.
+    pub fn validate(&self) -> Result<(), RigError> {
+        let positive = [
+            ("j1_motor_kgm2", self.j1_motor_kgm2),
+            ("j2_input_flywheel_kgm2", self.j2_input_flywheel_kgm2),
+            ("j3_driven_gear_kgm2", self.j3_driven_gear_kgm2),
+            ("j4_output_flywheel_kgm2", self.j4_output_flywheel_kgm2),
+            ("j5_brake_kgm2", self.j5_brake_kgm2),
+            ("k12_input_shaft_nm_per_rad", self.k12_input_shaft_nm_per_rad),
+            ("k23_mesh_nm_per_rad", self.k23_mesh_nm_per_rad),
+            ("k34_intermediate_shaft_nm_per_rad", self.k34_intermediate_shaft_nm_per_rad),
+            ("k45_final_shaft_nm_per_rad", self.k45_final_shaft_nm_per_rad),
+            ("module_m", self.module_m),
+            ("double_pair_stiffness_ratio", self.double_pair_stiffness_ratio),
+            ("speed_loop_hz", self.speed_loop_hz),
+            ("speed_loop_damping_ratio", self.speed_loop_damping_ratio),
+            ("speed_feedback_filter_hz", self.speed_feedback_filter_hz),
+            ("motor_torque_limit_nm", self.motor_torque_limit_nm),
+        ];
+        for (name, value) in positive {
+            require(name, value, value > 0.0, "must be a finite number > 0")?;
+        }
+        let any_finite = [
+            ("c12_input_shaft_nms_per_rad", self.c12_input_shaft_nms_per_rad),
+            ("c23_mesh_nms_per_rad", self.c23_mesh_nms_per_rad),
+            ("c34_intermediate_shaft_nms_per_rad", self.c34_intermediate_shaft_nms_per_rad),
+            ("c45_final_shaft_nms_per_rad", self.c45_final_shaft_nms_per_rad),
+            ("gear_error_c2_nm", self.gear_error_c2_nm),
+            ("gear_error_c3_nm", self.gear_error_c3_nm),
+            ("brake_speed_slope_nms_per_rad", self.brake_speed_slope_nms_per_rad),
+        ];
+        for (name, value) in any_finite {
+            require(name, value, true, "must be a finite number")?;
+        }
+        let teeth = f64::from(self.teeth);
+        require("teeth", teeth, self.teeth >= 5, "must be a whole number ≥ 5")?;
+        let alpha = self.pressure_angle_deg;
+        require("pressure_angle_deg", alpha, alpha > 0.0 && alpha < 45.0, "must lie in (0, 45) degrees")?;
+        let ha = self.addendum_coefficient;
+        require("addendum_coefficient", ha, ha > 0.0 && ha <= 1.5, "must lie in (0, 1.5]")?;
+        let shift = self.centre_distance_shift_m;
+        require("centre_distance_shift_m", shift, shift >= 0.0 && shift < self.module_m, "must lie in [0, module_m)")?;
+        let c1 = self.backlash_variation_c1;
+        require("backlash_variation_c1", c1, (0.0..1.0).contains(&c1), "must lie in [0, 1)")?;
+        Ok(())
+    }
+}
+
+fn require(name: &str, value: f64, ok: bool, allowed: &str) -> Result<(), RigError> {
+    if value.is_finite() && ok {
+        Ok(())
+    } else {
+        Err(RigError::InvalidParameter {
+            name: name.to_string(),
+            value: value.to_string(),
+            allowed: allowed.to_string(),
+        })
+    }
+}

@@ -1,0 +1,66 @@
+//! Named parameter sets.
+
+use crate::error::RigError;
+use crate::options::{ContactLaw, MeshPairs};
+use crate::params::RigParams;
+
+/// Names of every preset, in the order `testrig params` lists them.
+pub const PRESET_NAMES: &[&str] = &["basmaji-1983"];
+
+/// 2 hp (W).
+const TWO_HP_W: f64 = 2.0 * 745.699_872;
+/// Top of the rig's speed range (rev/min), taken as the motor's base speed.
+const BASE_SPEED_RPM: f64 = 2000.0;
+
+/// Looks a preset up by name.
+pub fn preset(name: &str) -> Result<RigParams, RigError> {
+    match name {
+        "basmaji-1983" => Ok(basmaji_1983()),
+        _ => Err(RigError::UnknownPreset {
+            name: name.to_string(),
+            known: PRESET_NAMES.join(", "),
+        }),
+    }
+}
+
+/// The thesis's own numbers (rig-spec §1–2; Basmaji 1983, App. B, App. C, §5.4.3, §6.5.1).
+///
+/// Choices where the thesis is silent: addendum 1.0 m (standard teeth); C2 = C3 = 0 (not
+/// given); the speed loop (0.5 Hz, ζ 0.7, 2 Hz feedback filter) is slow enough that the
+/// motor acts as the thesis's constant torque F1 at the rig's natural frequencies while
+/// still holding the mean speed; the torque limit is 2 hp at 2000 rev/min; the brake torque
+/// does not depend on speed, as the thesis's F1.
+pub fn basmaji_1983() -> RigParams {
+    RigParams {
+        j1_motor_kgm2: 0.0163,
+        j2_input_flywheel_kgm2: 0.355,
+        j3_driven_gear_kgm2: 0.00865,
+        j4_output_flywheel_kgm2: 0.45,
+        j5_brake_kgm2: 0.015,
+        k12_input_shaft_nm_per_rad: 5196.2,
+        k23_mesh_nm_per_rad: 1.3e6,
+        k34_intermediate_shaft_nm_per_rad: 2598.1,
+        k45_final_shaft_nm_per_rad: 4330.2,
+        c12_input_shaft_nms_per_rad: 0.1473,
+        c23_mesh_nms_per_rad: 135.8,
+        c34_intermediate_shaft_nms_per_rad: 0.0946,
+        c45_final_shaft_nms_per_rad: 0.1589,
+        teeth: 30,
+        module_m: 5.0e-3,
+        pressure_angle_deg: 20.0,
+        addendum_coefficient: 1.0,
+        centre_distance_shift_m: 1.0e-3,
+        contact_law: ContactLaw::Thesis,
+        tooth_shifting: true,
+        backlash_variation_c1: 0.38,
+        gear_error_c2_nm: 0.0,
+        gear_error_c3_nm: 0.0,
+        mesh_pairs: MeshPairs::Single,
+        double_pair_stiffness_ratio: 2.0,
+        speed_loop_hz: 0.5,
+        speed_loop_damping_ratio: 0.7,
+        speed_feedback_filter_hz: 2.0,
+        motor_torque_limit_nm: TWO_HP_W / (BASE_SPEED_RPM * std::f64::consts::PI / 30.0),
+        brake_speed_slope_nms_per_rad: 0.0,
+    }
+}

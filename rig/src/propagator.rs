@@ -1,0 +1,132 @@
+//! Exact propagation of one linear mode: the step matrix e^{A h} for whole steps, and
+//! the Taylor expansion of e^{A τ} for any τ within a step (event location, restarts).
+
+use nalgebra::DMatrix;
+
+use crate::events::EventFn;
+use crate::layout::{Layout, N_MECH};
+use crate::mode::Mode;
+
+/// Highest Taylor order kept; with ρ·h ≤ 0.5 the remainder of order 16 is below 1e-17.
+pub const TAYLOR_ORDER: usize = 16;
+
+/// Largest ρ·h (spectral radius of A times the internal step) the Taylor expansion is used at.
+pub const MAX_RHO_H: f64 = 0.5;
+
+/// Taylor vectors v_k = (A δ)^k u₀ / k!, so that u(s δ) = Σ_k v_k s^k for s ∈ [0, 1].
+pub type TaylorVectors = [[f64; Layout::MAX_LEN]; TAYLOR_ORDER + 1];
+
+/// Everything needed to advance the plant while it stays in one [`Mode`].
+pub struct ModeSystem {
+    /// The mode this system belongs to.
+    pub mode: Mode,
+    /// Switching functions active in this mode.
+    pub events: Vec<EventFn>,
+    /// Columns of the mechanical rows of e^{A h}, one per augmented state.
+    step_columns: Vec<[f64; N_MECH]>,
+    /// Non-zero entries of A by row: `row_starts[r]..row_starts[r + 1]` index `entries`.
+    row_starts: Vec<usize>,
+    /// (column, value) of each non-zero entry, row after row.
+    entries: Vec<(usize, f64)>,
+    /// Spectral radius of A (rad/s).
+    spectral_radius: f64,
+    len: usize,
+}
+
+impl ModeSystem {
+    /// Builds the system for `mode` with matrix `a`, internal step `step_s` and switching functions `events`.
+    pub fn new(mode: Mode, a: &DMatrix<f64>, step_s: f64, events: Vec<EventFn>) -> Self {
+        let step = (a * step_s).exp();
+        let len = a.nrows();
+        let step_columns = (0..len)
+            .map(|col| std::array::from_fn(|row| step[(row, col)]))
+            .collect();
+        let mut row_starts = vec![0];
+        let mut entries = Vec::new();
+        for row in 0..len {
+            entries.extend((0..len).filter(|&col| a[(row, col)] != 0.0).map(|col| (col, a[(row, col)])));
+            row_starts.push(entries.len());
+        }
+        Self {
+            mode,
+            events,
+            step_columns,
+            row_starts,
+            entries,
+            spectral_radius: spectral_radius(a),
+            len,
+        }
+    }
+
+    /// Mechanical part of u(t + h) = e^{A h} u(t): the fast path for a whole step.
+    #[inline]
+    pub fn step_mechanical(&self, u: &[f64]) -> [f64; N_MECH] {
+        let mut out = [0.0; N_MECH];
+        for (column, &weight) in self.step_columns.iter().zip(u) {
+            for (o, c) in out.iter_mut().zip(column) {
+                *o += c * weight;
+            }
+        }
+        out
+    }
+
+    /// A·u for the augmented state (the time derivative u').
+    pub fn derivative(&self, u: &[f64], out: &mut [f64]) {
+        self.scaled_derivative(u, 1.0, out);
+    }
+
+    /// scale·A·u.
+    fn scaled_derivative(&self, u: &[f64], scale: f64, out: &mut [f64]) {
+        for (row, o) in out[..self.len].iter_mut().enumerate() {
+            let entries = &self.entries[self.row_starts[row]..self.row_starts[row + 1]];
+            *o = scale * entries.iter().map(|&(col, value)| value * u[col]).sum::<f64>();
+        }
+    }
+
+    /// Taylor order whose remainder (ρδ)^(K+1)/(K+1)! is below 1e-18 for a step of `delta_s`.
+    pub fn taylor_order(&self, delta_s: f64) -> usize {
+        let x = self.spectral_radius * delta_s;
+        let mut term = x;
+        (1..TAYLOR_ORDER)
+            .find(|&k| {
+                term *= x / (k + 1) as f64;
+                term < 1e-18
+            })
+            .map_or(TAYLOR_ORDER, |k| k + 1)
+            .max(4)
+    }
+
+    /// Fills `vectors` with v_k = (A δ)^k u₀ / k! for k = 0..=order and returns the order.
+    pub fn taylor(&self, u0: &[f64], delta_s: f64, vectors: &mut TaylorVectors) -> usize {
+        let order = self.taylor_order(delta_s);
+        vectors[0][..self.len].copy_from_slice(&u0[..self.len]);
+        for k in 1..=order {
+            let (done, rest) = vectors.split_at_mut(k);
+            self.scaled_derivative(&done[k - 1], delta_s / k as f64, &mut rest[0]);
+        }
+        for v in &mut vectors[order + 1..] {
+            v[..self.len].fill(0.0);
+        }
+        order
+    }
+
+    /// u(s δ) = Σ_k v_k s^k from Taylor vectors of the given order (Horner in s).
+    pub fn taylor_state(&self, vectors: &TaylorVectors, order: usize, s: f64, out: &mut [f64]) {
+        out[..self.len].copy_from_slice(&vectors[order][..self.len]);
+        for v in vectors[..order].iter().rev() {
+            for (o, &vk) in out[..self.len].iter_mut().zip(&v[..self.len]) {
+                *o = *o * s + vk;
+            }
+        }
+    }
+
+    /// Length of the augmented state.
+    pub fn state_len(&self) -> usize {
+        self.len
+    }
+}
+
+/// Spectral radius of `a` (rad/s): the fastest rate the Taylor expansion must resolve.
+pub fn spectral_radius(a: &DMatrix<f64>) -> f64 {
+    a.complex_eigenvalues().iter().map(|l| l.norm()).fold(0.0, f64::max)
+}

@@ -1,0 +1,83 @@
+//! Regime classification from once-per-revolution samples: period-k or aperiodic.
+
+use serde::Serialize;
+
+use crate::records::RevolutionSample;
+
+/// The motion's repetition.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub enum Regime {
+    /// Repeats every k revolutions (k ≥ 1).
+    Periodic(usize),
+    /// Does not repeat within the longest period looked for.
+    Aperiodic,
+}
+
+impl Regime {
+    /// `period-k` or `aperiodic`.
+    pub fn label(self) -> String {
+        match self {
+            Self::Periodic(k) => format!("period-{k}"),
+            Self::Aperiodic => "aperiodic".to_string(),
+        }
+    }
+}
+
+/// How the once-per-revolution samples are compared.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RegimeCriteria {
+    /// Longest period looked for (revolutions).
+    pub max_period: usize,
+    /// Samples n and n − k agree when every state differs by less than this fraction of
+    /// that state's spread over the window.
+    pub relative_tolerance: f64,
+    /// Each state's spread is at least this (rad or rad/s), so a still rig is period-1.
+    pub spread_floor: f64,
+}
+
+impl Default for RegimeCriteria {
+    fn default() -> Self {
+        Self {
+            max_period: 12,
+            relative_tolerance: 0.02,
+            spread_floor: 1e-9,
+        }
+    }
+}
+
+/// Classifies samples taken once per revolution: the smallest k for which every sample
+/// matches the one k revolutions before it. Needs at least 2k + 1 samples for period k.
+pub fn classify(samples: &[RevolutionSample], criteria: &RegimeCriteria) -> Regime {
+    let spread = spread_of(samples, criteria.spread_floor);
+    (1..=criteria.max_period)
+        .take_while(|&k| samples.len() > 2 * k)
+        .find(|&k| repeats_every(samples, k, &spread, criteria.relative_tolerance))
+        .map_or(Regime::Aperiodic, Regime::Periodic)
+}
+
+fn spread_of(samples: &[RevolutionSample], floor: f64) -> [f64; 10] {
+    std::array::from_fn(|i| {
+        let values = samples.iter().map(|s| s.state[i]);
+        let high = values.clone().fold(f64::NEG_INFINITY, f64::max);
+        let low = values.fold(f64::INFINITY, f64::min);
+        (high - low).max(floor)
+    })
+}
+
+fn repeats_every(samples: &[RevolutionSample], k: usize, spread: &[f64; 10], tolerance: f64) -> bool {
+    samples.windows(k + 1).all(|w| {
+        let (a, b) = (&w[0].state, &w[k].state);
+        (0..10).all(|i| (a[i] - b[i]).abs() <= tolerance * spread[i])
+    })
+}
+
+/// Counts of impacts per tooth of the driving gear.
+pub fn impacts_per_tooth(teeth: u32, tooth_of_each_impact: impl Iterator<Item = u32>) -> Vec<u64> {
+    let mut counts = vec![0; teeth as usize];
+    for tooth in tooth_of_each_impact {
+        if let Some(c) = counts.get_mut(tooth as usize) {
+            *c += 1;
+        }
+    }
+    counts
+}

@@ -1,0 +1,141 @@
+//! The true signals the instruments measure, a block of samples at the output rate.
+
+/// Columns of true signals, one entry per output sample (struct of arrays).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct SignalBlock {
+    /// Simulated time (s), t = n / output rate.
+    pub time_s: Vec<f64>,
+    /// Absolute angles of M1..M5 (rad), mean rotation included.
+    pub angle_rad: [Vec<f64>; 5],
+    /// Absolute speeds of M1..M5 (rad/s).
+    pub speed_rad_s: [Vec<f64>; 5],
+    /// Elastic torques of the input, intermediate and final shafts, K·(θi − θj) (N m).
+    pub shaft_torque_nm: [Vec<f64>; 3],
+    /// Mesh torque on the driven gear F_XT (N m), positive driving it forward.
+    pub mesh_torque_nm: Vec<f64>,
+    /// Motor torque on M1 (N m).
+    pub motor_torque_nm: Vec<f64>,
+    /// Contact: +1 drive flank, −1 back flank, 0 no mesh torque.
+    pub contact: Vec<i8>,
+    /// Tooth of the driving gear in mesh, 0..teeth.
+    pub tooth: Vec<u32>,
+}
+
+/// The output shaft (intermediate, strain-gauged) in [`SignalBlock::shaft_torque_nm`].
+pub const INTERMEDIATE_SHAFT: usize = 1;
+
+/// Names with units of the columns, in the order [`SignalBlock::row`] gives them.
+pub const COLUMN_NAMES: [&str; 19] = [
+    "time_s",
+    "angle1_rad",
+    "angle2_rad",
+    "angle3_rad",
+    "angle4_rad",
+    "angle5_rad",
+    "speed1_rad_s",
+    "speed2_rad_s",
+    "speed3_rad_s",
+    "speed4_rad_s",
+    "speed5_rad_s",
+    "torque_input_shaft_nm",
+    "torque_intermediate_shaft_nm",
+    "torque_final_shaft_nm",
+    "mesh_torque_nm",
+    "motor_torque_nm",
+    "contact",
+    "tooth",
+    "sample",
+];
+
+impl SignalBlock {
+    /// Number of samples held.
+    pub fn len(&self) -> usize {
+        self.time_s.len()
+    }
+
+    /// Whether no sample is held.
+    pub fn is_empty(&self) -> bool {
+        self.time_s.is_empty()
+    }
+
+    /// Empties every column, keeping the allocations.
+    pub fn clear(&mut self) {
+        self.time_s.clear();
+        self.columns_mut().for_each(Vec::clear);
+        self.mesh_torque_nm.clear();
+        self.motor_torque_nm.clear();
+        self.contact.clear();
+        self.tooth.clear();
+    }
+
+    fn columns_mut(&mut self) -> impl Iterator<Item = &mut Vec<f64>> {
+        self.angle_rad.iter_mut().chain(self.speed_rad_s.iter_mut()).chain(self.shaft_torque_nm.iter_mut())
+    }
+
+    /// Sample `i` as numbers in the order of [`COLUMN_NAMES`] (the last, `sample`, is left to the writer).
+    pub fn row(&self, i: usize) -> [f64; 18] {
+        let mut row = [0.0; 18];
+        row[0] = self.time_s[i];
+        for k in 0..5 {
+            row[1 + k] = self.angle_rad[k][i];
+            row[6 + k] = self.speed_rad_s[k][i];
+        }
+        for k in 0..3 {
+            row[11 + k] = self.shaft_torque_nm[k][i];
+        }
+        row[14] = self.mesh_torque_nm[i];
+        row[15] = self.motor_torque_nm[i];
+        row[16] = f64::from(self.contact[i]);
+        row[17] = f64::from(self.tooth[i]);
+        row
+    }
+}
+
+/// One output sample, before it joins a block.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sample {
+    /// Simulated time (s).
+    pub time_s: f64,
+    /// Absolute angles (rad).
+    pub angle_rad: [f64; 5],
+    /// Absolute speeds (rad/s).
+    pub speed_rad_s: [f64; 5],
+    /// Shaft torques (N m).
+    pub shaft_torque_nm: [f64; 3],
+    /// Mesh torque F_XT (N m).
+    pub mesh_torque_nm: f64,
+    /// Motor torque (N m).
+    pub motor_torque_nm: f64,
+    /// Contact code.
+    pub contact: i8,
+    /// Tooth in mesh.
+    pub tooth: u32,
+}
+
+impl SignalBlock {
+    /// Makes room for `additional` more samples in every column.
+    pub fn reserve(&mut self, additional: usize) {
+        self.time_s.reserve(additional);
+        self.columns_mut().for_each(|c| c.reserve(additional));
+        self.mesh_torque_nm.reserve(additional);
+        self.motor_torque_nm.reserve(additional);
+        self.contact.reserve(additional);
+        self.tooth.reserve(additional);
+    }
+
+    /// Appends one sample.
+    pub fn push(&mut self, s: &Sample) {
+        self.time_s.push(s.time_s);
+        for k in 0..5 {
+            self.angle_rad[k].push(s.angle_rad[k]);
+            self.speed_rad_s[k].push(s.speed_rad_s[k]);
+        }
+        for k in 0..3 {
+            self.shaft_torque_nm[k].push(s.shaft_torque_nm[k]);
+        }
+        self.mesh_torque_nm.push(s.mesh_torque_nm);
+        self.motor_torque_nm.push(s.motor_torque_nm);
+        self.contact.push(s.contact);
+        self.tooth.push(s.tooth);
+    }
+}

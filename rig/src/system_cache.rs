@@ -1,0 +1,95 @@
+//! The linear systems of the modes visited so far, built on first use and dropped when
+//! the forcing frequencies change.
+
+use crate::events::{EventFlags, mode_events};
+use crate::layout::{Layout, REV};
+use crate::mode::{MeshMode, Mode, MotorMode, PairZone};
+use crate::model::{Frequencies, ModelConstants, system_matrix};
+use crate::options::ContactLaw;
+use crate::propagator::{MAX_RHO_H, ModeSystem, spectral_radius};
+use crate::schedule::Schedule;
+
+/// Lazily built [`ModeSystem`]s for the current forcing frequencies.
+pub struct SystemCache {
+    mc: ModelConstants,
+    layout: Layout,
+    law: ContactLaw,
+    flags: EventFlags,
+    step_s: f64,
+    frequencies: Frequencies,
+    systems: Vec<Option<ModeSystem>>,
+    rotations: Vec<(usize, f64, f64)>,
+}
+
+impl SystemCache {
+    /// An empty cache for internal step `step_s` (s).
+    pub fn new(mc: ModelConstants, layout: Layout, law: ContactLaw, flags: EventFlags, step_s: f64) -> Self {
+        Self {
+            mc,
+            layout,
+            law,
+            flags,
+            step_s,
+            frequencies: Frequencies {
+                rotation_rad_s: 0.0,
+                oscillating_load_rad_s: 0.0,
+            },
+            systems: (0..Mode::COUNT).map(|_| None).collect(),
+            rotations: Vec::new(),
+        }
+    }
+
+    /// Internal steps per output step so that ρ·h ≤ [`MAX_RHO_H`] in the stiffest mode at
+    /// the schedule's highest speed and oscillating-load frequency.
+    pub fn substeps_for(mc: &ModelConstants, layout: &Layout, schedule: &Schedule, output_step_s: f64) -> u64 {
+        let frequencies = Frequencies {
+            rotation_rad_s: schedule.speed_rpm.range().1 * std::f64::consts::PI / 30.0,
+            oscillating_load_rad_s: 2.0 * std::f64::consts::PI * schedule.oscillating_load_hz.range().1,
+        };
+        let stiffest = Mode {
+            mesh: MeshMode::Drive,
+            pairs: if mc.double_pair_ratio > 1.0 { PairZone::Two } else { PairZone::One },
+            motor: MotorMode::Linear,
+        };
+        let rho = spectral_radius(&system_matrix(mc, layout, stiffest, frequencies));
+        ((rho * output_step_s / MAX_RHO_H).ceil() as u64).max(1)
+    }
+
+    /// Switches to new forcing frequencies, dropping every system built for the old ones.
+    pub fn set_frequencies(&mut self, frequencies: Frequencies) {
+        self.frequencies = frequencies;
+        self.systems.iter_mut().for_each(|s| *s = None);
+        let h = self.step_s;
+        let mut rotations = vec![(REV, frequencies.rotation_rad_s)];
+        if let Some(rev2) = self.layout.rev2 {
+            rotations.push((rev2, 2.0 * frequencies.rotation_rad_s));
+        }
+        if let Some(osc) = self.layout.osc {
+            rotations.push((osc, frequencies.oscillating_load_rad_s));
+        }
+        self.rotations = rotations.into_iter().map(|(i, w)| (i, (w * h).cos(), (w * h).sin())).collect();
+    }
+
+    /// Builds the system of `mode` if it is not built yet.
+    pub fn ensure(&mut self, mode: Mode) {
+        let slot = &mut self.systems[mode.index()];
+        if slot.is_none() {
+            let a = system_matrix(&self.mc, &self.layout, mode, self.frequencies);
+            let events = mode_events(&self.mc, self.law, self.flags, mode, &a, self.frequencies.rotation_rad_s);
+            *slot = Some(ModeSystem::new(mode, &a, self.step_s, events));
+        }
+    }
+
+    /// The system of `mode`; [`SystemCache::ensure`] must have been called for it.
+    pub fn built(&self, mode: Mode) -> &ModeSystem {
+        match &self.systems[mode.index()] {
+            Some(system) => system,
+            None => unreachable!("SystemCache::built called before ensure"),
+        }
+    }
+
+    /// Per-step rotations (index of the cos state, cos ωh, sin ωh) of the harmonic pairs.
+    pub fn rotations(&self) -> &[(usize, f64, f64)] {
+        &self.rotations
+    }
+}
