@@ -63,7 +63,8 @@ pub struct RigParams {
     pub mesh_pairs: MeshPairs,
     /// Mesh stiffness and damping with two pairs in contact, as a multiple of one pair's.
     pub double_pair_stiffness_ratio: f64,
-    /// Natural frequency of the closed speed loop on the whole rig's inertia (Hz).
+    /// Natural frequency of the closed speed loop on the whole rig's inertia (Hz); 0 turns
+    /// the loop off (motor torque zero, for free-vibration studies).
     pub speed_loop_hz: f64,
     /// Damping ratio of the closed speed loop (dimensionless).
     pub speed_loop_damping_ratio: f64,
@@ -115,7 +116,6 @@ impl RigParams {
             ("k45_final_shaft_nm_per_rad", self.k45_final_shaft_nm_per_rad),
             ("module_m", self.module_m),
             ("double_pair_stiffness_ratio", self.double_pair_stiffness_ratio),
-            ("speed_loop_hz", self.speed_loop_hz),
             ("speed_loop_damping_ratio", self.speed_loop_damping_ratio),
             ("speed_feedback_filter_hz", self.speed_feedback_filter_hz),
             ("motor_torque_limit_nm", self.motor_torque_limit_nm),
@@ -143,6 +143,8 @@ impl RigParams {
         require("addendum_coefficient", ha, ha > 0.0 && ha <= 1.5, "must lie in (0, 1.5]")?;
         let shift = self.centre_distance_shift_m;
         require("centre_distance_shift_m", shift, shift >= 0.0 && shift < self.module_m, "must lie in [0, module_m)")?;
+        let loop_hz = self.speed_loop_hz;
+        require("speed_loop_hz", loop_hz, loop_hz >= 0.0, "must be a finite number ≥ 0 (0 switches the speed loop off)")?;
         let c1 = self.backlash_variation_c1;
         require("backlash_variation_c1", c1, (0.0..1.0).contains(&c1), "must lie in [0, 1)")?;
         Ok(())

@@ -91,7 +91,8 @@ pub struct Plant {
 
 impl Plant {
     /// A plant at the steady state of the schedule's first set points (shafts twisted by
-    /// the load, teeth on the loaded flank), at t = 0 with the driving gear at angle 0.
+    /// the load, teeth on the loaded flank, or centred in the free play at zero load), at
+    /// t = 0 with the driving gear at angle 0.
     pub fn new(params: RigParams, schedule: Schedule, config: PlantConfig) -> Result<Self, RigError> {
         params.validate()?;
         schedule.validate()?;
@@ -156,11 +157,16 @@ impl Plant {
         let [k12, k34, k45] = self.mc.shaft_stiffness_nm_per_rad;
         let b = self.mc.half_backlash_rad * (1.0 - self.mc.backlash_variation);
         let k23 = self.mc.mesh_stiffness_nm_per_rad;
-        let d = if load < 0.0 { b - load / k23 } else { -b - load / k23 };
+        // Loaded: on the loaded flank; unloaded: centred in the free play.
+        let d = match load.partial_cmp(&0.0) {
+            Some(std::cmp::Ordering::Greater) => -b - load / k23,
+            Some(std::cmp::Ordering::Less) => b - load / k23,
+            _ => 0.0,
+        };
         let x = [load / k12, 0.0, d, d - load / k34, d - load / k34 - load / k45];
         self.u = [0.0; Layout::MAX_LEN];
         self.u[X0..X0 + 5].copy_from_slice(&x);
-        self.u[Z] = load / self.mc.ki_nm_per_rad;
+        self.u[Z] = if self.mc.ki_nm_per_rad > 0.0 { load / self.mc.ki_nm_per_rad } else { 0.0 };
         self.u[UNIT] = 1.0;
         self.u[LOAD] = load;
         let mesh = match load.partial_cmp(&0.0) {
