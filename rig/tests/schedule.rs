@@ -1,0 +1,82 @@
+//! Set points that change during a run: the speed loop follows steps and ramps, the brake
+//! follows load steps, and the motor torque respects its limit.
+
+mod support;
+
+use rig::{Schedule, Track};
+
+fn mean_speed_rpm(block: &rig::SignalBlock, from: usize, to: usize) -> f64 {
+    support::mean(&block.speed_rad_s[0][from..to]) * 30.0 / std::f64::consts::PI
+}
+
+#[test]
+fn the_speed_loop_follows_a_speed_step() {
+    let schedule = Schedule {
+        speed_rpm: Track::hold(600.0).step_to(1.0, 700.0),
+        ..Schedule::constant(600.0, 2.712)
+    };
+    let mut plant = support::plant(support::thesis(), schedule, 5_120.0);
+    let block = support::record(&mut plant, 12.0);
+    let rate = 5_120;
+    assert!((mean_speed_rpm(&block, 0, rate) - 600.0).abs() < 0.5);
+    // A 0.5 Hz loop with ζ 0.7 has settled 10 s later.
+    assert!((mean_speed_rpm(&block, 10 * rate, 12 * rate) - 700.0).abs() < 0.5, "{}", mean_speed_rpm(&block, 10 * rate, 12 * rate));
+    // The set points and the absolute angle stay continuous through the step.
+    let jump = (1..block.len()).map(|i| block.angle_rad[0][i] - block.angle_rad[0][i - 1]).fold(0.0, f64::max);
+    assert!(jump < 700.0 / 60.0 * std::f64::consts::TAU / 5_120.0 * 1.5, "{jump}");
+}
+
+#[test]
+fn the_speed_loop_tracks_a_ramp() {
+    let schedule = Schedule {
+        speed_rpm: Track::hold(400.0).ramp_to(1.0, 11.0, 700.0),
+        ..Schedule::constant(400.0, 2.712)
+    };
+    let mut plant = support::plant(support::thesis(), schedule, 5_120.0);
+    let block = support::record(&mut plant, 11.0);
+    eprintln!("peak motor {}", block.motor_torque_nm.iter().copied().fold(0.0, f64::max));
+    for k in 0..11 { eprintln!("t={k} speed {} set", mean_speed_rpm(&block, k * 5120, (k + 1) * 5120)); }
+    let rate = 5_120;
+    // PI on speed follows a ramp with no steady error once its transient has died: at
+    // t = 9..10 s the mean speed is the mean set point, 670 rev/min. The ramp needs
+    // J·α + load = 0.845 × 3.14 + 2.712 = 5.4 N m, within the drive's 7.12 N m.
+    let got = mean_speed_rpm(&block, 9 * rate, 10 * rate);
+    assert!((got - 670.0).abs() < 1.0, "{got}");
+    // The staircase ends on the ramp's last value.
+    assert!((plant.set_points().speed_rpm - 700.0).abs() < 0.2, "{}", plant.set_points().speed_rpm);
+}
+
+#[test]
+fn a_load_step_reaches_the_output_shaft_and_the_motor() {
+    let schedule = Schedule {
+        load_nm: Track::hold(1.356).step_to(0.5, 4.068),
+        ..Schedule::constant(300.0, 1.356)
+    };
+    let mut p = support::thesis();
+    p.backlash_variation_c1 = 0.0;
+    p.tooth_shifting = false;
+    let mut plant = support::plant(p, schedule, 5_120.0);
+    let block = support::record(&mut plant, 10.0);
+    let rate = 5_120;
+    let before = support::mean(&block.shaft_torque_nm[1][..rate / 2]);
+    let after = support::mean(&block.shaft_torque_nm[1][8 * rate..]);
+    let motor = support::mean(&block.motor_torque_nm[8 * rate..]);
+    assert!((before - 1.356).abs() < 1e-6, "{before}");
+    assert!((after - 4.068).abs() < 0.01, "{after}");
+    assert!((motor - 4.068).abs() < 0.01, "{motor}");
+}
+
+#[test]
+fn the_motor_torque_stays_within_its_limit() {
+    let p = support::thesis();
+    let limit = p.motor_torque_limit_nm;
+    let schedule = Schedule {
+        speed_rpm: Track::hold(300.0).step_to(0.2, 1500.0),
+        ..Schedule::constant(300.0, 2.712)
+    };
+    let mut plant = support::plant(p, schedule, 5_120.0);
+    let block = support::record(&mut plant, 3.0);
+    let peak = block.motor_torque_nm.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    assert!((peak - limit).abs() < 1e-12, "a 1200 rev/min step saturates the drive: peak {peak} vs {limit}");
+    assert!(block.motor_torque_nm.iter().all(|t| t.abs() <= limit + 1e-12));
+}
