@@ -1,1 +1,18 @@
-fn main() {}
+//! `testrig`: the virtual test rig's command line.
+
+mod cli;
+mod commands;
+mod rig_setup;
+
+use clap::Parser;
+
+fn main() -> std::process::ExitCode {
+    let cli = cli::Cli::parse();
+    match commands::run(cli.command) {
+        Ok(()) => std::process::ExitCode::SUCCESS,
+        Err(error) => {
+            eprintln!("testrig: {error:#}");
+            std::process::ExitCode::FAILURE
+        }
+    }
+}

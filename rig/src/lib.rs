@@ -20,6 +20,7 @@ pub mod records;
 pub mod regime;
 pub mod schedule;
 pub mod signals;
+pub mod steady;
 pub mod system_cache;
 
 pub use error::RigError;
@@ -35,3 +36,4 @@ pub use records::{Flank, Impact, RevolutionSample};
 pub use regime::{Regime, RegimeCriteria, classify};
 pub use schedule::{Schedule, SetPoints, Track};
 pub use signals::{COLUMN_NAMES, INTERMEDIATE_SHAFT, Sample, SignalBlock};
+pub use steady::{SteadySummary, run_steady};

@@ -25,7 +25,7 @@ pub struct SignalBlock {
 pub const INTERMEDIATE_SHAFT: usize = 1;
 
 /// Names with units of the columns, in the order [`SignalBlock::row`] gives them.
-pub const COLUMN_NAMES: [&str; 19] = [
+pub const COLUMN_NAMES: [&str; 18] = [
     "time_s",
     "angle1_rad",
     "angle2_rad",
@@ -44,7 +44,6 @@ pub const COLUMN_NAMES: [&str; 19] = [
     "motor_torque_nm",
     "contact",
     "tooth",
-    "sample",
 ];
 
 impl SignalBlock {
@@ -72,7 +71,7 @@ impl SignalBlock {
         self.angle_rad.iter_mut().chain(self.speed_rad_s.iter_mut()).chain(self.shaft_torque_nm.iter_mut())
     }
 
-    /// Sample `i` as numbers in the order of [`COLUMN_NAMES`] (the last, `sample`, is left to the writer).
+    /// Sample `i` as numbers in the order of [`COLUMN_NAMES`].
     pub fn row(&self, i: usize) -> [f64; 18] {
         let mut row = [0.0; 18];
         row[0] = self.time_s[i];

@@ -1,0 +1,87 @@
+//! Command-line arguments.
+
+use std::path::PathBuf;
+
+use clap::{Args, Parser, Subcommand};
+
+/// A virtual test rig: F. Basmaji's 1983 geared rig with backlash.
+#[derive(Debug, Parser)]
+#[command(name = "testrig", version, about)]
+pub struct Cli {
+    /// What to do.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// The commands.
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Natural frequencies (Hz) and mode shapes of the rig (thesis App. C).
+    Modes(ModesArgs),
+    /// Run the plant alone, unpaced, at a set speed and load.
+    Simulate(SimulateArgs),
+    /// Every parameter with its value, unit and meaning.
+    Params(ParamsArgs),
+}
+
+/// Choice of parameter set.
+#[derive(Debug, Args)]
+pub struct RigArgs {
+    /// Named parameter set.
+    #[arg(long, default_value = "basmaji-1983")]
+    pub preset: String,
+    /// Override one parameter (repeatable), e.g. --set teeth=31.
+    #[arg(long = "set", value_name = "NAME=VALUE")]
+    pub overrides: Vec<String>,
+}
+
+/// `testrig modes`.
+#[derive(Debug, Args)]
+pub struct ModesArgs {
+    /// Parameters.
+    #[command(flatten)]
+    pub rig: RigArgs,
+    /// Print one JSON object instead of tables.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// `testrig simulate`.
+#[derive(Debug, Args)]
+pub struct SimulateArgs {
+    /// Motor speed set point (rev/min).
+    #[arg(long, allow_negative_numbers = true)]
+    pub rpm: f64,
+    /// Brake load (N m); negative drives the rig from the brake side.
+    #[arg(long, allow_negative_numbers = true)]
+    pub load: f64,
+    /// Parameters.
+    #[command(flatten)]
+    pub rig: RigArgs,
+    /// Measuring window after settling (s).
+    #[arg(long, default_value_t = 10.0)]
+    pub duration: f64,
+    /// Simulated time before measuring, for transients to die (s).
+    #[arg(long, default_value_t = 30.0)]
+    pub settle: f64,
+    /// Output rate of the true signals (Hz).
+    #[arg(long, default_value_t = 51_200.0)]
+    pub rate: f64,
+    /// Write signals.csv, impacts.csv and summary.json of the measuring window here.
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// Print one JSON object instead of a text summary.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// `testrig params`.
+#[derive(Debug, Args)]
+pub struct ParamsArgs {
+    /// Parameters.
+    #[command(flatten)]
+    pub rig: RigArgs,
+    /// Print JSON instead of a table.
+    #[arg(long)]
+    pub json: bool,
+}

@@ -1,0 +1,41 @@
+//! `testrig modes`: natural frequencies and mode shapes.
+
+use rig::{Chain, RigChains};
+use serde_json::json;
+
+use crate::cli::ModesArgs;
+use crate::rig_setup::params_from;
+
+pub fn run(args: &ModesArgs) -> anyhow::Result<()> {
+    let params = params_from(&args.rig)?;
+    let chains = RigChains::of(&params);
+    let named = [
+        ("whole_rig", "whole rig, gear pair rigid (thesis App. C)", &chains.whole_rig),
+        ("locked_mesh", "five inertias, teeth locked on the mesh spring K23", &chains.locked_mesh),
+        ("motor_side", "motor side alone (teeth apart)", &chains.motor_side),
+        ("brake_side", "brake side alone (teeth apart)", &chains.brake_side),
+    ];
+    if args.json {
+        let mut object = serde_json::Map::new();
+        for (key, _, chain) in named {
+            object.insert(format!("{key}_hz"), json!(frequencies(chain)));
+            object.insert(format!("{key}_shapes"), json!(chain.modes().iter().map(|m| &m.shape).collect::<Vec<_>>()));
+        }
+        println!("{}", serde_json::Value::Object(object));
+        return Ok(());
+    }
+    for (_, title, chain) in named {
+        println!("{title}");
+        println!("  {:>10}  {}", "f (Hz)", chain.bodies.join(" | "));
+        for mode in chain.modes() {
+            let shape: Vec<String> = mode.shape.iter().map(|v| format!("{v:+.4}")).collect();
+            println!("  {:>10.3}  {}", mode.frequency_hz, shape.join(" "));
+        }
+        println!();
+    }
+    Ok(())
+}
+
+fn frequencies(chain: &Chain) -> Vec<f64> {
+    chain.modes().iter().map(|m| m.frequency_hz).collect()
+}

@@ -1,0 +1,136 @@
+//! `testrig simulate`: the plant alone, unpaced, at a set speed and load.
+
+use std::fs::File;
+use std::io::BufWriter;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use anyhow::{Context, bail};
+use rig::{COLUMN_NAMES, Impact, Plant, PlantConfig, RegimeCriteria, Schedule, SignalBlock, SteadySummary, run_steady};
+use serde::Serialize;
+
+use crate::cli::SimulateArgs;
+use crate::rig_setup::params_from;
+
+/// The JSON summary of one run.
+#[derive(Serialize)]
+struct Report<'a> {
+    preset: &'a str,
+    rpm: f64,
+    load_nm: f64,
+    settle_s: f64,
+    simulated_s: f64,
+    wall_s: f64,
+    realtime_factor: f64,
+    #[serde(flatten)]
+    summary: SteadySummary,
+}
+
+pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
+    check_durations(args)?;
+    let params = params_from(&args.rig)?;
+    let config = PlantConfig {
+        output_rate_hz: args.rate,
+        ..PlantConfig::default()
+    };
+    let mut plant = Plant::new(params, Schedule::constant(args.rpm, args.load), config).context("--rpm/--load/--rate")?;
+    let mut writer = match &args.out {
+        Some(dir) => Some(SignalWriter::create(dir)?),
+        None => None,
+    };
+    let started = Instant::now();
+    let summary = run_steady(&mut plant, args.settle, args.duration, &RegimeCriteria::default(), |block| -> anyhow::Result<()> {
+        match writer.as_mut() {
+            Some(w) => w.write(block),
+            None => Ok(()),
+        }
+    })?;
+    let wall_s = started.elapsed().as_secs_f64();
+    let simulated_s = args.settle + summary.measured_s;
+    let report = Report {
+        preset: &args.rig.preset,
+        rpm: args.rpm,
+        load_nm: args.load,
+        settle_s: args.settle,
+        simulated_s,
+        wall_s,
+        realtime_factor: simulated_s / wall_s.max(1e-9),
+        summary,
+    };
+    if let (Some(dir), Some(w)) = (&args.out, writer) {
+        w.finish()?;
+        write_impacts(&dir.join("impacts.csv"), plant.impacts())?;
+        let path = dir.join("summary.json");
+        std::fs::write(&path, serde_json::to_string_pretty(&report)?).with_context(|| format!("writing {}", path.display()))?;
+    }
+    if args.json {
+        println!("{}", serde_json::to_string(&report)?);
+    } else {
+        print_text(&report);
+    }
+    Ok(())
+}
+
+fn check_durations(args: &SimulateArgs) -> anyhow::Result<()> {
+    for (name, value) in [("--duration", args.duration), ("--settle", args.settle)] {
+        if !(value.is_finite() && value >= 0.0) {
+            bail!("{name} {value}: must be a finite time ≥ 0 s");
+        }
+    }
+    if args.duration <= 0.0 {
+        bail!("--duration {}: must be > 0 s", args.duration);
+    }
+    Ok(())
+}
+
+fn print_text(r: &Report) {
+    let s = &r.summary;
+    println!("{} at {} rev/min, {} N m: {:.1} s simulated in {:.3} s ({:.0}x real time)", r.preset, r.rpm, r.load_nm, r.simulated_s, r.wall_s, r.realtime_factor);
+    println!("measured {:.1} s after {:.1} s settling, {} revolutions", s.measured_s, r.settle_s, s.revolutions);
+    println!("regime           {}", s.regime);
+    println!("impacts          {} ({:.3} per revolution)", s.impacts, s.impacts_per_rev);
+    println!("teeth separate   {} ({:.1} % of the time apart)", s.separates, 100.0 * s.apart_fraction);
+    println!("output shaft     mean {:.4} N m, rms {:.4} N m, ac rms {:.4} N m", s.torque_mean_nm, s.torque_rms_nm, s.torque_ac_rms_nm);
+}
+
+/// Streams the true signals to `signals.csv`, under a temporary name until finished.
+struct SignalWriter {
+    csv: csv::Writer<BufWriter<File>>,
+    partial: PathBuf,
+    path: PathBuf,
+}
+
+impl SignalWriter {
+    fn create(dir: &Path) -> anyhow::Result<Self> {
+        std::fs::create_dir_all(dir).with_context(|| format!("--out {}: cannot create the folder", dir.display()))?;
+        let path = dir.join("signals.csv");
+        let partial = dir.join("signals.csv.partial");
+        let file = File::create(&partial).with_context(|| format!("--out {}: cannot write {}", dir.display(), partial.display()))?;
+        let mut csv = csv::Writer::from_writer(BufWriter::new(file));
+        csv.write_record(COLUMN_NAMES)?;
+        Ok(Self { csv, partial, path })
+    }
+
+    fn write(&mut self, block: &SignalBlock) -> anyhow::Result<()> {
+        for i in 0..block.len() {
+            self.csv.serialize(block.row(i)).context("writing signals.csv")?;
+        }
+        Ok(())
+    }
+
+    fn finish(mut self) -> anyhow::Result<()> {
+        self.csv.flush().context("writing signals.csv")?;
+        std::fs::rename(&self.partial, &self.path).context("closing signals.csv")?;
+        Ok(())
+    }
+}
+
+fn write_impacts(path: &Path, impacts: &[Impact]) -> anyhow::Result<()> {
+    let mut csv = csv::Writer::from_path(path).with_context(|| format!("writing {}", path.display()))?;
+    csv.write_record(["time_s", "flank", "tooth", "closing_speed_rad_s"])?;
+    for i in impacts {
+        csv.serialize(i)?;
+    }
+    csv.flush()?;
+    Ok(())
+}
