@@ -12,7 +12,8 @@ pub fn params_from(args: &RigArgs) -> anyhow::Result<RigParams> {
         let Some((name, value)) = item.split_once('=') else {
             bail!("--set {item}: expected NAME=VALUE (`testrig params` lists the names)");
         };
-        rig::set_param(&mut params, name.trim(), value.trim()).with_context(|| format!("--set {item}"))?;
+        rig::set_param(&mut params, name.trim(), value.trim())
+            .with_context(|| format!("--set {item}"))?;
     }
     Ok(params)
 }

@@ -3,16 +3,28 @@
 use std::process::{Command, Output};
 
 fn testrig(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_testrig")).args(args).output().expect("the binary runs")
+    Command::new(env!("CARGO_BIN_EXE_testrig"))
+        .args(args)
+        .output()
+        .expect("the binary runs")
 }
 
 fn json(output: &Output) -> serde_json::Value {
-    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
     serde_json::from_slice(&output.stdout).expect("one JSON object")
 }
 
 fn numbers(value: &serde_json::Value) -> Vec<f64> {
-    value.as_array().expect("an array").iter().map(|v| v.as_f64().expect("a number")).collect()
+    value
+        .as_array()
+        .expect("an array")
+        .iter()
+        .map(|v| v.as_f64().expect("a number"))
+        .collect()
 }
 
 #[test]
@@ -24,26 +36,69 @@ fn modes_reproduce_appendix_c() {
     }
     assert!((numbers(&out["motor_side_hz"])[0] - 91.90).abs() < 0.01);
     let brake = numbers(&out["brake_side_hz"]);
-    assert!((brake[0] - 86.28).abs() < 0.05 && (brake[1] - 88.7).abs() < 0.05, "{brake:?}");
+    assert!(
+        (brake[0] - 86.28).abs() < 0.05 && (brake[1] - 88.7).abs() < 0.05,
+        "{brake:?}"
+    );
     assert_eq!(numbers(&out["locked_mesh_hz"]).len(), 4);
 }
 
 #[test]
 fn simulate_reports_the_summary_keys() {
-    let out = json(&testrig(&["simulate", "--rpm", "600", "--load", "2.712", "--settle", "2", "--duration", "1", "--json"]));
-    for key in ["simulated_s", "wall_s", "impacts", "regime", "separates", "torque_mean_nm", "torque_rms_nm"] {
+    let out = json(&testrig(&[
+        "simulate",
+        "--rpm",
+        "600",
+        "--load",
+        "2.712",
+        "--settle",
+        "2",
+        "--duration",
+        "1",
+        "--json",
+    ]));
+    for key in [
+        "simulated_s",
+        "wall_s",
+        "impacts",
+        "regime",
+        "separates",
+        "torque_mean_nm",
+        "torque_rms_nm",
+    ] {
         assert!(out.get(key).is_some(), "missing {key}");
     }
     assert_eq!(out["simulated_s"].as_f64(), Some(3.0));
     assert!((out["torque_mean_nm"].as_f64().expect("number") - 2.712).abs() < 0.05);
-    assert!(out["regime"].as_str().expect("text").starts_with("period-") || out["regime"] == "aperiodic");
+    assert!(
+        out["regime"].as_str().expect("text").starts_with("period-")
+            || out["regime"] == "aperiodic"
+    );
 }
 
 #[test]
 fn simulate_writes_signals_impacts_and_summary() {
     let dir = std::env::temp_dir().join(format!("testrig-cli-{}", std::process::id()));
-    let out = testrig(&["simulate", "--rpm", "1300", "--load", "2.712", "--settle", "0.5", "--duration", "0.2", "--rate", "10240", "--out", dir.to_str().expect("utf-8")]);
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let out = testrig(&[
+        "simulate",
+        "--rpm",
+        "1300",
+        "--load",
+        "2.712",
+        "--settle",
+        "0.5",
+        "--duration",
+        "0.2",
+        "--rate",
+        "10240",
+        "--out",
+        dir.to_str().expect("utf-8"),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let signals = std::fs::read_to_string(dir.join("signals.csv")).expect("signals.csv");
     let mut lines = signals.lines();
     let header = lines.next().expect("header");
@@ -56,7 +111,12 @@ fn simulate_writes_signals_impacts_and_summary() {
 
 #[test]
 fn overrides_reach_the_model() {
-    let out = json(&testrig(&["modes", "--json", "--set", "k12_input_shaft_nm_per_rad=20784.8"]));
+    let out = json(&testrig(&[
+        "modes",
+        "--json",
+        "--set",
+        "k12_input_shaft_nm_per_rad=20784.8",
+    ]));
     // Four times the stiffness doubles the motor-side frequency.
     assert!((numbers(&out["motor_side_hz"])[0] - 2.0 * 91.90).abs() < 0.02);
 }
@@ -68,7 +128,18 @@ fn bad_input_names_the_field_and_fails_cleanly() {
         (&["modes", "--set", "teeth=abc"], "teeth"),
         (&["modes", "--set", "flywheel=2"], "flywheel"),
         (&["simulate", "--rpm", "-5", "--load", "0"], "speed"),
-        (&["simulate", "--rpm", "600", "--load", "0", "--duration", "NaN"], "--duration"),
+        (
+            &[
+                "simulate",
+                "--rpm",
+                "600",
+                "--load",
+                "0",
+                "--duration",
+                "NaN",
+            ],
+            "--duration",
+        ),
     ];
     for (args, word) in cases {
         let out = testrig(args);
@@ -84,5 +155,8 @@ fn params_lists_every_parameter() {
     let out = json(&testrig(&["params", "--json"]));
     let list = out["parameters"].as_array().expect("array");
     assert_eq!(list.len(), rig::PARAM_SPECS.len());
-    assert!(list.iter().all(|p| p["unit"].is_string() && p["meaning"].is_string()));
+    assert!(
+        list.iter()
+            .all(|p| p["unit"].is_string() && p["meaning"].is_string())
+    );
 }

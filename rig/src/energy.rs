@@ -5,7 +5,12 @@ use crate::params::RigParams;
 
 /// Kinetic energy ½ Σ J ω² (J) of absolute speeds `speed_rad_s`.
 pub fn kinetic_energy_j(params: &RigParams, speed_rad_s: &[f64; 5]) -> f64 {
-    params.inertias_kgm2().iter().zip(speed_rad_s).map(|(j, w)| 0.5 * j * w * w).sum()
+    params
+        .inertias_kgm2()
+        .iter()
+        .zip(speed_rad_s)
+        .map(|(j, w)| 0.5 * j * w * w)
+        .sum()
 }
 
 /// Strain energy ½ K Δθ² (J) of the three shafts at angles `angle_rad`.
@@ -15,7 +20,10 @@ pub fn shaft_energy_j(params: &RigParams, angle_rad: &[f64; 5]) -> f64 {
         (params.k34_intermediate_shaft_nm_per_rad, 2, 3),
         (params.k45_final_shaft_nm_per_rad, 3, 4),
     ];
-    springs.iter().map(|&(k, i, j)| 0.5 * k * (angle_rad[i] - angle_rad[j]).powi(2)).sum()
+    springs
+        .iter()
+        .map(|&(k, i, j)| 0.5 * k * (angle_rad[i] - angle_rad[j]).powi(2))
+        .sum()
 }
 
 /// Strain energy ½ K (|d| − B)² (J) of one tooth pair at relative rotation `d_rad` with

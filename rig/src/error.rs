@@ -41,7 +41,9 @@ pub enum RigError {
         allowed: &'static str,
     },
     /// The state left physical bounds or stopped being finite.
-    #[error("simulation blew up at t = {t_s:.6} s: {reason}; state X (rad) and V (rad/s) relative to the set rotation: {state:?}")]
+    #[error(
+        "simulation blew up at t = {t_s:.6} s: {reason}; state X (rad) and V (rad/s) relative to the set rotation: {state:?}"
+    )]
     BlowUp {
         /// Simulated time of detection (s).
         t_s: f64,

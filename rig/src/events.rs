@@ -43,23 +43,35 @@ pub enum EventKind {
     Revolution,
 }
 
+/// Terms a form evaluates unrolled; most switching functions have at most this many.
+const SMALL_TERMS: usize = 4;
+
 /// A sparse linear form over the augmented state.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct SparseRow {
     /// (index, coefficient) pairs.
     pub terms: Vec<(usize, f64)>,
+    /// The same terms padded with zeros, when there are at most four (evaluated unrolled).
+    small: Option<[(usize, f64); SMALL_TERMS]>,
 }
 
 impl SparseRow {
     fn new(terms: &[(usize, f64)]) -> Self {
-        Self {
-            terms: terms.iter().copied().filter(|&(_, c)| c != 0.0).collect(),
-        }
+        let terms: Vec<(usize, f64)> = terms.iter().copied().filter(|&(_, c)| c != 0.0).collect();
+        let small = (terms.len() <= SMALL_TERMS)
+            .then(|| std::array::from_fn(|k| terms.get(k).copied().unwrap_or((0, 0.0))));
+        Self { terms, small }
     }
 
     /// Value of the form at `u`.
+    #[inline(always)]
     pub fn dot(&self, u: &[f64]) -> f64 {
-        self.terms.iter().map(|&(i, c)| c * u[i]).sum()
+        match &self.small {
+            Some(t) => {
+                t[0].1 * u[t[0].0] + t[1].1 * u[t[1].0] + t[2].1 * u[t[2].0] + t[3].1 * u[t[3].0]
+            }
+            None => self.terms.iter().map(|&(i, c)| c * u[i]).sum(),
+        }
     }
 
     /// The form c·A, i.e. the time derivative of c·u along u' = A u.
@@ -71,9 +83,8 @@ impl SparseRow {
     }
 
     fn negated(&self) -> Self {
-        Self {
-            terms: self.terms.iter().map(|&(i, c)| (i, -c)).collect(),
-        }
+        let terms: Vec<(usize, f64)> = self.terms.iter().map(|&(i, c)| (i, -c)).collect();
+        Self::new(&terms)
     }
 }
 
@@ -93,7 +104,14 @@ pub struct EventFn {
 }
 
 /// The switching functions active in `mode`.
-pub fn mode_events(mc: &ModelConstants, law: ContactLaw, flags: EventFlags, mode: Mode, a: &DMatrix<f64>, rotation_rad_s: f64) -> Vec<EventFn> {
+pub fn mode_events(
+    mc: &ModelConstants,
+    law: ContactLaw,
+    flags: EventFlags,
+    mode: Mode,
+    a: &DMatrix<f64>,
+    rotation_rad_s: f64,
+) -> Vec<EventFn> {
     let (k, c) = mc.mesh_spring(mode.pairs);
     let b0 = mc.half_backlash_rad;
     let bc = b0 * mc.backlash_variation;
@@ -102,8 +120,24 @@ pub fn mode_events(mc: &ModelConstants, law: ContactLaw, flags: EventFlags, mode
     let gap_back = [(x2, -1.0), (x3, 1.0), (UNIT, -b0), (REV, bc)];
     // Pushing torque K δ + C δ' of each flank; δ' includes Ḃ = B₀C1·Ω sin φ.
     let b_rate = -c * bc * rotation_rad_s;
-    let force_drive = [(x2, k), (x3, -k), (UNIT, -k * b0), (REV, k * bc), (v3, -c), (v2, c), (REV + 1, b_rate)];
-    let force_back = [(x2, -k), (x3, k), (UNIT, -k * b0), (REV, k * bc), (v3, c), (v2, -c), (REV + 1, b_rate)];
+    let force_drive = [
+        (x2, k),
+        (x3, -k),
+        (UNIT, -k * b0),
+        (REV, k * bc),
+        (v3, -c),
+        (v2, c),
+        (REV + 1, b_rate),
+    ];
+    let force_back = [
+        (x2, -k),
+        (x3, k),
+        (UNIT, -k * b0),
+        (REV, k * bc),
+        (v3, c),
+        (v2, -c),
+        (REV + 1, b_rate),
+    ];
     let limit = mc.torque_limit_nm;
     let (kp, ki) = (mc.kp_nms_per_rad, mc.ki_nm_per_rad);
     let over_high = [(VF, -kp), (Z, ki), (UNIT, -limit)];
@@ -118,19 +152,31 @@ pub fn mode_events(mc: &ModelConstants, law: ContactLaw, flags: EventFlags, mode
             push(EventKind::TouchBack, &gap_back);
         }
         MeshMode::Drive | MeshMode::DriveClipped => {
-            push(EventKind::LeaveDrive, &SparseRow::new(&gap_drive).negated().terms);
+            push(
+                EventKind::LeaveDrive,
+                &SparseRow::new(&gap_drive).negated().terms,
+            );
             if mode.mesh == MeshMode::DriveClipped {
                 push(EventKind::DriveReloads, &force_drive);
             } else if no_pull {
-                push(EventKind::DriveUnloads, &SparseRow::new(&force_drive).negated().terms);
+                push(
+                    EventKind::DriveUnloads,
+                    &SparseRow::new(&force_drive).negated().terms,
+                );
             }
         }
         MeshMode::Back | MeshMode::BackClipped => {
-            push(EventKind::LeaveBack, &SparseRow::new(&gap_back).negated().terms);
+            push(
+                EventKind::LeaveBack,
+                &SparseRow::new(&gap_back).negated().terms,
+            );
             if mode.mesh == MeshMode::BackClipped {
                 push(EventKind::BackReloads, &force_back);
             } else if no_pull {
-                push(EventKind::BackUnloads, &SparseRow::new(&force_back).negated().terms);
+                push(
+                    EventKind::BackUnloads,
+                    &SparseRow::new(&force_back).negated().terms,
+                );
             }
         }
     }
@@ -139,8 +185,14 @@ pub fn mode_events(mc: &ModelConstants, law: ContactLaw, flags: EventFlags, mode
             push(EventKind::LimitHigh, &over_high);
             push(EventKind::LimitLow, &under_low);
         }
-        MotorMode::LimitHigh => push(EventKind::LimitRelease, &SparseRow::new(&over_high).negated().terms),
-        MotorMode::LimitLow => push(EventKind::LimitRelease, &SparseRow::new(&under_low).negated().terms),
+        MotorMode::LimitHigh => push(
+            EventKind::LimitRelease,
+            &SparseRow::new(&over_high).negated().terms,
+        ),
+        MotorMode::LimitLow => push(
+            EventKind::LimitRelease,
+            &SparseRow::new(&under_low).negated().terms,
+        ),
     }
     let angle = [(x2, 1.0)];
     let engaged = matches!(mode.mesh, MeshMode::Drive | MeshMode::Back);
@@ -238,8 +290,16 @@ fn refine(coeffs: &[f64], mut a: f64, mut b: f64) -> f64 {
         } else {
             a = s;
         }
-        let newton = if slope != 0.0 { s - value / slope } else { f64::NAN };
-        let next = if newton > a && newton < b { newton } else { 0.5 * (a + b) };
+        let newton = if slope != 0.0 {
+            s - value / slope
+        } else {
+            f64::NAN
+        };
+        let next = if newton > a && newton < b {
+            newton
+        } else {
+            0.5 * (a + b)
+        };
         if next <= a || next >= b || b - a <= f64::EPSILON * b {
             break;
         }
@@ -278,7 +338,10 @@ fn hermite_max(g0: f64, d0: f64, c2: f64, c3: f64) -> f64 {
         // The root where p'' < 0: s = (−c2 − √disc) / (3 c3), written to avoid cancellation.
         let q = -(c2 + c2.signum() * disc);
         let roots = [q / (3.0 * c3), d0 / q];
-        roots.into_iter().find(|r| (0.0..=1.0).contains(r) && 2.0 * c2 + 6.0 * c3 * r <= 0.0).unwrap_or(0.5)
+        roots
+            .into_iter()
+            .find(|r| (0.0..=1.0).contains(r) && 2.0 * c2 + 6.0 * c3 * r <= 0.0)
+            .unwrap_or(0.5)
     };
     poly_eval(&coeffs, s.clamp(0.0, 1.0)).0
 }

@@ -37,12 +37,15 @@ impl Chain {
             k[(i + 1, i)] -= spring;
         }
         let inv_sqrt = DVector::from_iterator(n, self.inertia_kgm2.iter().map(|j| 1.0 / j.sqrt()));
-        let scaled: DMatrix<f64> = DMatrix::from_fn(n, n, |r, c| inv_sqrt[r] * k[(r, c)] * inv_sqrt[c]);
+        let scaled: DMatrix<f64> =
+            DMatrix::from_fn(n, n, |r, c| inv_sqrt[r] * k[(r, c)] * inv_sqrt[c]);
         let eigen = SymmetricEigen::new(scaled);
         let mut modes: Vec<NaturalMode> = (0..n)
             .map(|m| {
                 let omega_sq = eigen.eigenvalues[m].max(0.0);
-                let raw: Vec<f64> = (0..n).map(|r| eigen.eigenvectors[(r, m)] * inv_sqrt[r]).collect();
+                let raw: Vec<f64> = (0..n)
+                    .map(|r| eigen.eigenvectors[(r, m)] * inv_sqrt[r])
+                    .collect();
                 NaturalMode {
                     frequency_hz: omega_sq.sqrt() / (2.0 * std::f64::consts::PI),
                     shape: normalised(&raw),
@@ -56,7 +59,10 @@ impl Chain {
 }
 
 fn normalised(shape: &[f64]) -> Vec<f64> {
-    let peak = shape.iter().copied().fold(0.0_f64, |m, v| if v.abs() > m.abs() { v } else { m });
+    let peak = shape
+        .iter()
+        .copied()
+        .fold(0.0_f64, |m, v| if v.abs() > m.abs() { v } else { m });
     shape.iter().map(|v| v / peak).collect()
 }
 
@@ -85,12 +91,23 @@ impl RigChains {
         );
         Self {
             whole_rig: Chain {
-                bodies: vec!["motor", "input flywheel + gears", "output flywheel", "brake"],
+                bodies: vec![
+                    "motor",
+                    "input flywheel + gears",
+                    "output flywheel",
+                    "brake",
+                ],
                 inertia_kgm2: vec![j1, j2, j4, j5],
                 stiffness_nm_per_rad: vec![k12, k34, k45],
             },
             locked_mesh: Chain {
-                bodies: vec!["motor", "input flywheel + driving gear", "driven gear", "output flywheel", "brake"],
+                bodies: vec![
+                    "motor",
+                    "input flywheel + driving gear",
+                    "driven gear",
+                    "output flywheel",
+                    "brake",
+                ],
                 inertia_kgm2: vec![j1, j2, j3, j4, j5],
                 stiffness_nm_per_rad: vec![k12, k23, k34, k45],
             },

@@ -83,13 +83,19 @@ impl ModelConstants {
             PairZone::One => 1.0,
             PairZone::Two => self.double_pair_ratio,
         };
-        (ratio * self.mesh_stiffness_nm_per_rad, ratio * self.mesh_damping_nms_per_rad)
+        (
+            ratio * self.mesh_stiffness_nm_per_rad,
+            ratio * self.mesh_damping_nms_per_rad,
+        )
     }
 
     /// Elastic torques of the three shafts K(Xi − Xj) (N m), positive when transmitting drive torque.
     pub fn shaft_torques_nm(&self, x: &[f64]) -> [f64; 3] {
         let mut torque = [0.0; 3];
-        for (t, (&(i, j), &k)) in torque.iter_mut().zip(SHAFTS.iter().zip(&self.shaft_stiffness_nm_per_rad)) {
+        for (t, (&(i, j), &k)) in torque
+            .iter_mut()
+            .zip(SHAFTS.iter().zip(&self.shaft_stiffness_nm_per_rad))
+        {
             *t = k * (x[X0 + i] - x[X0 + j]);
         }
         torque
@@ -111,12 +117,21 @@ pub struct Frequencies {
 }
 
 /// Builds A of u' = A u for the augmented state `u` (see [`crate::layout`]) in `mode`.
-pub fn system_matrix(mc: &ModelConstants, layout: &Layout, mode: Mode, freq: Frequencies) -> DMatrix<f64> {
+pub fn system_matrix(
+    mc: &ModelConstants,
+    layout: &Layout,
+    mode: Mode,
+    freq: Frequencies,
+) -> DMatrix<f64> {
     let mut a = DMatrix::zeros(layout.len, layout.len);
     for i in 0..5 {
         a[(X0 + i, V0 + i)] = 1.0;
     }
-    for ((&(i, j), &k), &c) in SHAFTS.iter().zip(&mc.shaft_stiffness_nm_per_rad).zip(&mc.shaft_damping_nms_per_rad) {
+    for ((&(i, j), &k), &c) in SHAFTS
+        .iter()
+        .zip(&mc.shaft_stiffness_nm_per_rad)
+        .zip(&mc.shaft_damping_nms_per_rad)
+    {
         add_spring(&mut a, &mc.inertia_kgm2, (i, j), k, c);
     }
     add_mesh(&mut a, mc, mode, freq.rotation_rad_s);

@@ -31,7 +31,10 @@ trait ParamText: Sized {
 
 impl ParamText for f64 {
     fn parse_text(text: &str) -> Result<Self, String> {
-        let value: f64 = text.trim().parse().map_err(|_| format!("`{text}` is not a number"))?;
+        let value: f64 = text
+            .trim()
+            .parse()
+            .map_err(|_| format!("`{text}` is not a number"))?;
         if value.is_finite() {
             Ok(value)
         } else {
@@ -45,7 +48,9 @@ impl ParamText for f64 {
 
 impl ParamText for u32 {
     fn parse_text(text: &str) -> Result<Self, String> {
-        text.trim().parse().map_err(|_| format!("`{text}` is not a whole number"))
+        text.trim()
+            .parse()
+            .map_err(|_| format!("`{text}` is not a whole number"))
     }
     fn show(&self) -> String {
         format!("{self}")
@@ -139,7 +144,9 @@ pub fn param_spec(name: &str) -> Result<&'static ParamSpec, RigError> {
     PARAM_SPECS
         .iter()
         .find(|spec| spec.name == name)
-        .ok_or_else(|| RigError::UnknownParameter { name: name.to_string() })
+        .ok_or_else(|| RigError::UnknownParameter {
+            name: name.to_string(),
+        })
 }
 
 /// Sets one parameter by name from its text form, then validates the whole set.

@@ -110,12 +110,24 @@ impl RigParams {
             ("j3_driven_gear_kgm2", self.j3_driven_gear_kgm2),
             ("j4_output_flywheel_kgm2", self.j4_output_flywheel_kgm2),
             ("j5_brake_kgm2", self.j5_brake_kgm2),
-            ("k12_input_shaft_nm_per_rad", self.k12_input_shaft_nm_per_rad),
+            (
+                "k12_input_shaft_nm_per_rad",
+                self.k12_input_shaft_nm_per_rad,
+            ),
             ("k23_mesh_nm_per_rad", self.k23_mesh_nm_per_rad),
-            ("k34_intermediate_shaft_nm_per_rad", self.k34_intermediate_shaft_nm_per_rad),
-            ("k45_final_shaft_nm_per_rad", self.k45_final_shaft_nm_per_rad),
+            (
+                "k34_intermediate_shaft_nm_per_rad",
+                self.k34_intermediate_shaft_nm_per_rad,
+            ),
+            (
+                "k45_final_shaft_nm_per_rad",
+                self.k45_final_shaft_nm_per_rad,
+            ),
             ("module_m", self.module_m),
-            ("double_pair_stiffness_ratio", self.double_pair_stiffness_ratio),
+            (
+                "double_pair_stiffness_ratio",
+                self.double_pair_stiffness_ratio,
+            ),
             ("speed_loop_damping_ratio", self.speed_loop_damping_ratio),
             ("speed_feedback_filter_hz", self.speed_feedback_filter_hz),
             ("motor_torque_limit_nm", self.motor_torque_limit_nm),
@@ -124,29 +136,71 @@ impl RigParams {
             require(name, value, value > 0.0, "must be a finite number > 0")?;
         }
         let any_finite = [
-            ("c12_input_shaft_nms_per_rad", self.c12_input_shaft_nms_per_rad),
+            (
+                "c12_input_shaft_nms_per_rad",
+                self.c12_input_shaft_nms_per_rad,
+            ),
             ("c23_mesh_nms_per_rad", self.c23_mesh_nms_per_rad),
-            ("c34_intermediate_shaft_nms_per_rad", self.c34_intermediate_shaft_nms_per_rad),
-            ("c45_final_shaft_nms_per_rad", self.c45_final_shaft_nms_per_rad),
+            (
+                "c34_intermediate_shaft_nms_per_rad",
+                self.c34_intermediate_shaft_nms_per_rad,
+            ),
+            (
+                "c45_final_shaft_nms_per_rad",
+                self.c45_final_shaft_nms_per_rad,
+            ),
             ("gear_error_c2_nm", self.gear_error_c2_nm),
             ("gear_error_c3_nm", self.gear_error_c3_nm),
-            ("brake_speed_slope_nms_per_rad", self.brake_speed_slope_nms_per_rad),
+            (
+                "brake_speed_slope_nms_per_rad",
+                self.brake_speed_slope_nms_per_rad,
+            ),
         ];
         for (name, value) in any_finite {
             require(name, value, true, "must be a finite number")?;
         }
         let teeth = f64::from(self.teeth);
-        require("teeth", teeth, self.teeth >= 5, "must be a whole number ≥ 5")?;
+        require(
+            "teeth",
+            teeth,
+            self.teeth >= 5,
+            "must be a whole number ≥ 5",
+        )?;
         let alpha = self.pressure_angle_deg;
-        require("pressure_angle_deg", alpha, alpha > 0.0 && alpha < 45.0, "must lie in (0, 45) degrees")?;
+        require(
+            "pressure_angle_deg",
+            alpha,
+            alpha > 0.0 && alpha < 45.0,
+            "must lie in (0, 45) degrees",
+        )?;
         let ha = self.addendum_coefficient;
-        require("addendum_coefficient", ha, ha > 0.0 && ha <= 1.5, "must lie in (0, 1.5]")?;
+        require(
+            "addendum_coefficient",
+            ha,
+            ha > 0.0 && ha <= 1.5,
+            "must lie in (0, 1.5]",
+        )?;
         let shift = self.centre_distance_shift_m;
-        require("centre_distance_shift_m", shift, shift >= 0.0 && shift < self.module_m, "must lie in [0, module_m)")?;
+        require(
+            "centre_distance_shift_m",
+            shift,
+            shift >= 0.0 && shift < self.module_m,
+            "must lie in [0, module_m)",
+        )?;
         let loop_hz = self.speed_loop_hz;
-        require("speed_loop_hz", loop_hz, loop_hz >= 0.0, "must be a finite number ≥ 0 (0 switches the speed loop off)")?;
+        require(
+            "speed_loop_hz",
+            loop_hz,
+            loop_hz >= 0.0,
+            "must be a finite number ≥ 0 (0 switches the speed loop off)",
+        )?;
         let c1 = self.backlash_variation_c1;
-        require("backlash_variation_c1", c1, (0.0..1.0).contains(&c1), "must lie in [0, 1)")?;
+        require(
+            "backlash_variation_c1",
+            c1,
+            (0.0..1.0).contains(&c1),
+            "must lie in [0, 1)",
+        )?;
         Ok(())
     }
 }

@@ -17,7 +17,7 @@ use crate::mode::{MeshMode, Mode, MotorMode, PairZone};
 use crate::model::{Frequencies, ModelConstants};
 use crate::options::{ContactLaw, MeshPairs};
 use crate::params::RigParams;
-use crate::propagator::{ModeSystem, TAYLOR_ORDER, TaylorVectors};
+use crate::propagator::{EventRows, ModeSystem, TAYLOR_ORDER, TaylorVectors};
 use crate::records::{Flank, Impact, RevolutionSample};
 use crate::schedule::{Schedule, SetPoints};
 use crate::signals::{Sample, SignalBlock};
@@ -84,6 +84,8 @@ pub struct Plant {
     next_tooth_rad: f64,
     next_rev_rad: f64,
     taylor: Box<TaylorVectors>,
+    /// Switching-function rows at the current state, when known from the last fast step.
+    edge: Option<EventRows>,
     impacts: Vec<Impact>,
     revolutions: Vec<RevolutionSample>,
     switch_count: u64,
@@ -93,14 +95,22 @@ impl Plant {
     /// A plant at the steady state of the schedule's first set points (shafts twisted by
     /// the load, teeth on the loaded flank, or centred in the free play at zero load), at
     /// t = 0 with the driving gear at angle 0.
-    pub fn new(params: RigParams, schedule: Schedule, config: PlantConfig) -> Result<Self, RigError> {
+    pub fn new(
+        params: RigParams,
+        schedule: Schedule,
+        config: PlantConfig,
+    ) -> Result<Self, RigError> {
         params.validate()?;
         schedule.validate()?;
         check_config(&config)?;
         let mc = ModelConstants::of(&params);
         let geometry = GearGeometry::of(&params);
-        let layout = Layout::new(params.gear_error_c3_nm != 0.0, schedule.has_oscillating_load());
-        let alternating = params.mesh_pairs == MeshPairs::Alternating && geometry.double_pair_fraction() > 0.0;
+        let layout = Layout::new(
+            params.gear_error_c3_nm != 0.0,
+            schedule.has_oscillating_load(),
+        );
+        let alternating =
+            params.mesh_pairs == MeshPairs::Alternating && geometry.double_pair_fraction() > 0.0;
         let flags = EventFlags {
             alternating_pairs: alternating && geometry.double_pair_fraction() < 1.0,
             tooth_shifting: params.tooth_shifting,
@@ -142,6 +152,7 @@ impl Plant {
             next_tooth_rad: 0.0,
             next_rev_rad: 0.0,
             taylor: Box::new([[0.0; Layout::MAX_LEN]; TAYLOR_ORDER + 1]),
+            edge: None,
             impacts: Vec::new(),
             revolutions: Vec::new(),
             switch_count: 0,
@@ -163,10 +174,20 @@ impl Plant {
             Some(std::cmp::Ordering::Less) => b - load / k23,
             _ => 0.0,
         };
-        let x = [load / k12, 0.0, d, d - load / k34, d - load / k34 - load / k45];
+        let x = [
+            load / k12,
+            0.0,
+            d,
+            d - load / k34,
+            d - load / k34 - load / k45,
+        ];
         self.u = [0.0; Layout::MAX_LEN];
         self.u[X0..X0 + 5].copy_from_slice(&x);
-        self.u[Z] = if self.mc.ki_nm_per_rad > 0.0 { load / self.mc.ki_nm_per_rad } else { 0.0 };
+        self.u[Z] = if self.mc.ki_nm_per_rad > 0.0 {
+            load / self.mc.ki_nm_per_rad
+        } else {
+            0.0
+        };
         self.u[UNIT] = 1.0;
         self.u[LOAD] = load;
         let mesh = match load.partial_cmp(&0.0) {
@@ -181,7 +202,11 @@ impl Plant {
         } else {
             MotorMode::Linear
         };
-        self.mode = Mode { mesh, pairs: PairZone::One, motor };
+        self.mode = Mode {
+            mesh,
+            pairs: PairZone::One,
+            motor,
+        };
         self.reset_angle_targets();
     }
 
@@ -189,6 +214,7 @@ impl Plant {
     /// and studies that start from a chosen condition).
     pub fn set_relative_state(&mut self, state: [f64; N_MECH], mesh: MeshMode) {
         self.u[..N_MECH].copy_from_slice(&state);
+        self.edge = None;
         self.mode.mesh = mesh;
         self.reset_angle_targets();
     }
@@ -237,22 +263,57 @@ impl Plant {
         let mut next = self.u;
         next[..N_MECH].copy_from_slice(&system.step_mechanical(&self.u));
         self.rotate_harmonics(&mut next);
-        if self.may_switch(system, &self.u, &next, 0.0, self.step_s) {
-            SLOW.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        let start = self.edge.unwrap_or_else(|| system.event_rows(&self.u));
+        let end = system.event_rows(&next);
+        if self.may_switch(system, &start, &end) {
+            self.edge = None;
             self.advance_exactly()?;
         } else {
             self.u = next;
+            self.edge = Some(end);
         }
         self.step_index += 1;
         Ok(())
     }
 
-    /// Whether any switching function may cross within the step from `u0` to `u1` (length `delta_s`).
-    fn may_switch(&self, system: &ModeSystem, u0: &[f64], u1: &[f64], tau_s: f64, delta_s: f64) -> bool {
-        system.events.iter().any(|event| self.event_may_cross(event, u0, u1, tau_s, delta_s))
+    /// Whether any switching function may cross within a whole step, from its rows at
+    /// the step's start and end.
+    fn may_switch(&self, system: &ModeSystem, start: &EventRows, end: &EventRows) -> bool {
+        let n = system.events.len();
+        let h = self.step_s;
+        let phase = self.phase_rad(0.0);
+        let omega = self.segment.set.speed_rad_s();
+        system.events.iter().enumerate().any(|(k, event)| {
+            let (offset, rate) = if event.angle_sign == 0.0 {
+                (0.0, 0.0)
+            } else {
+                let sign = event.angle_sign;
+                (sign * (phase - self.angle_target(event.kind)), sign * omega)
+            };
+            let g1 = end[k] + offset + rate * h;
+            if g1 > 0.0 {
+                return true;
+            }
+            let d1 = (end[n + k] + rate) * h;
+            if d1 >= 0.0 {
+                // Rising at the end and ≤ 0 at both ends: no interior maximum (a cubic
+                // with a maximum inside the step falls at its end).
+                return false;
+            }
+            let g0 = start[k] + offset;
+            let d0 = (start[n + k] + rate) * h;
+            may_cross(g0.min(0.0), d0, g1, d1)
+        })
     }
 
-    fn event_may_cross(&self, event: &EventFn, u0: &[f64], u1: &[f64], tau_s: f64, delta_s: f64) -> bool {
+    fn event_may_cross(
+        &self,
+        event: &EventFn,
+        u0: &[f64],
+        u1: &[f64],
+        tau_s: f64,
+        delta_s: f64,
+    ) -> bool {
         let (offset, rate) = self.angle_terms(event.kind, event.angle_sign, tau_s);
         let g1 = event.value.dot(u1) + offset + rate * delta_s;
         if g1 > 0.0 {
@@ -266,15 +327,25 @@ impl Plant {
 
     /// Offset and rate of an angle event's φ term at `tau_s` into the step: sign·(φ − target), sign·Ω.
     fn angle_terms(&self, kind: EventKind, sign: f64, tau_s: f64) -> (f64, f64) {
-        let target = match kind {
+        if sign == 0.0 {
+            return (0.0, 0.0);
+        }
+        let phase = self.phase_rad(tau_s);
+        (
+            sign * (phase - self.angle_target(kind)),
+            sign * self.segment.set.speed_rad_s(),
+        )
+    }
+
+    /// The driving-gear angle an angle event waits for (rad).
+    fn angle_target(&self, kind: EventKind) -> f64 {
+        match kind {
             EventKind::ToothPass => self.next_tooth_rad,
             EventKind::Revolution => self.next_rev_rad,
             EventKind::ZoneEnd => self.zone_bounds().1,
             EventKind::ZoneStart => self.zone_bounds().0,
-            _ => return (0.0, 0.0),
-        };
-        let phase = self.phase_rad(tau_s);
-        (sign * (phase - target), sign * self.segment.set.speed_rad_s())
+            _ => 0.0,
+        }
     }
 
     /// Redoes the current step on the Taylor expansion, switching at every crossing.
@@ -298,7 +369,6 @@ impl Plant {
                     self.u = at;
                     tau += s * delta;
                     self.switch_count += 1;
-                    if std::env::var_os("RIG_TRACE").is_some() { eprintln!("t={:.9} s={s:.3e} {kind:?} mode={:?}", self.time_at(tau), self.mode); }
                     self.handle(kind, tau);
                 }
             }
@@ -311,7 +381,14 @@ impl Plant {
 
     /// The earliest crossing (fraction s of the remaining `delta_s`, kind) of any switching
     /// function, given the Taylor vectors from the state now and the state `end` at `delta_s`.
-    fn first_event(&self, system: &ModeSystem, end: &[f64], order: usize, tau_s: f64, delta_s: f64) -> Option<(f64, EventKind)> {
+    fn first_event(
+        &self,
+        system: &ModeSystem,
+        end: &[f64],
+        order: usize,
+        tau_s: f64,
+        delta_s: f64,
+    ) -> Option<(f64, EventKind)> {
         let mut best: Option<(f64, EventKind)> = None;
         let mut buffer = [0.0; TAYLOR_ORDER + 1];
         let coeffs = &mut buffer[..=order];
@@ -410,7 +487,11 @@ impl Plant {
         self.u[X0 + 1] -= sign * half;
         let (_, closing) = self.gap(flank, tau_s);
         let force = closing * self.mc.mesh_spring(self.mode.pairs).1;
-        let mesh = match (flank, closing > 0.0, self.law == ContactLaw::NoPull && force <= 0.0) {
+        let mesh = match (
+            flank,
+            closing > 0.0,
+            self.law == ContactLaw::NoPull && force <= 0.0,
+        ) {
             (_, false, _) => MeshMode::Apart,
             (Flank::Drive, true, false) => MeshMode::Drive,
             (Flank::Drive, true, true) => MeshMode::DriveClipped,
@@ -464,7 +545,11 @@ impl Plant {
     }
 
     fn apply_zone(&mut self) {
-        self.mode.pairs = if self.zone_index.rem_euclid(2) == 0 { PairZone::Two } else { PairZone::One };
+        self.mode.pairs = if self.zone_index.rem_euclid(2) == 0 {
+            PairZone::Two
+        } else {
+            PairZone::One
+        };
     }
 
     /// Starts a new stretch of constant set points at the current step.
@@ -485,10 +570,12 @@ impl Plant {
         }
         self.u[VF] -= delta_speed;
         self.u[LOAD] = set.load_nm;
-        let frequencies_changed = delta_speed != 0.0 || set.oscillating_load_hz != old.set.oscillating_load_hz;
+        let frequencies_changed =
+            delta_speed != 0.0 || set.oscillating_load_hz != old.set.oscillating_load_hz;
         self.segment = Segment {
             start_step: self.step_index,
-            end_step: end.map(|e| ((e / self.step_s - 1e-6).ceil() as u64).max(self.step_index + 1)),
+            end_step: end
+                .map(|e| ((e / self.step_s - 1e-6).ceil() as u64).max(self.step_index + 1)),
             phase_rad: self.phase_rad(0.0),
             osc_phase_rad: self.osc_phase_rad(0.0),
             set,
@@ -504,6 +591,7 @@ impl Plant {
 
     /// Sets the harmonic states from the exact phases at `tau_s` into the step.
     fn resync_harmonics(&mut self, tau_s: f64) {
+        self.edge = None;
         let phase = self.phase_rad(tau_s);
         self.u[REV] = phase.cos();
         self.u[REV + 1] = phase.sin();
@@ -591,24 +679,31 @@ impl Plant {
     }
 
     fn check_bounds(&self) -> Result<(), RigError> {
-        let u = &self.u[..N_MECH];
-        let reason = if u.iter().any(|v| !v.is_finite()) {
-            Some("the state is no longer finite".to_string())
-        } else if let Some(i) = (0..4).find(|&i| (u[X0 + i] - u[X0 + i + 1]).abs() > TWIST_LIMIT_RAD) {
-            Some(format!("twist between M{} and M{} exceeds {TWIST_LIMIT_RAD} rad", i + 1, i + 2))
-        } else if let Some(i) = (0..5).find(|&i| u[V0 + i].abs() > SPEED_LIMIT_RAD_S) {
-            Some(format!("speed of M{} departs from the set speed by more than {SPEED_LIMIT_RAD_S} rad/s", i + 1))
-        } else {
-            None
-        };
-        match reason {
-            None => Ok(()),
-            Some(reason) => Err(RigError::BlowUp {
-                t_s: self.time_at(0.0),
-                reason,
-                state: u[..10].to_vec(),
-            }),
+        let u = &self.u;
+        let mut twist = 0.0_f64;
+        for i in 0..4 {
+            twist = twist.max((u[X0 + i] - u[X0 + i + 1]).abs());
         }
+        let mut speed = 0.0_f64;
+        for i in 0..5 {
+            speed = speed.max(u[V0 + i].abs());
+        }
+        let finite = u[..N_MECH].iter().sum::<f64>().is_finite();
+        if finite && twist <= TWIST_LIMIT_RAD && speed <= SPEED_LIMIT_RAD_S {
+            return Ok(());
+        }
+        let reason = if !finite {
+            "the state is no longer finite".to_string()
+        } else if twist > TWIST_LIMIT_RAD {
+            format!("a shaft or the mesh is twisted by more than {TWIST_LIMIT_RAD} rad")
+        } else {
+            format!("a speed departs from the set speed by more than {SPEED_LIMIT_RAD_S} rad/s")
+        };
+        Err(RigError::BlowUp {
+            t_s: self.time_at(0.0),
+            reason,
+            state: u[..10].to_vec(),
+        })
     }
 
     /// Simulated time (s).
@@ -683,7 +778,10 @@ impl Plant {
 }
 
 fn check_config(config: &PlantConfig) -> Result<(), RigError> {
-    if !(config.output_rate_hz.is_finite() && config.output_rate_hz >= 100.0 && config.output_rate_hz <= 10.0e6) {
+    if !(config.output_rate_hz.is_finite()
+        && config.output_rate_hz >= 100.0
+        && config.output_rate_hz <= 10.0e6)
+    {
         return Err(RigError::InvalidOption {
             name: "output_rate_hz",
             value: config.output_rate_hz.to_string(),
@@ -699,4 +797,3 @@ fn check_config(config: &PlantConfig) -> Result<(), RigError> {
     }
     Ok(())
 }
-pub static SLOW: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);

@@ -4,7 +4,7 @@
 use nalgebra::DMatrix;
 
 use crate::events::EventFn;
-use crate::layout::{Layout, N_MECH};
+use crate::layout::{Layout, N_MECH, V0, X0};
 use crate::mode::Mode;
 
 /// Highest Taylor order kept; with ρ·h ≤ 0.5 the remainder of order 16 is below 1e-17.
@@ -12,6 +12,12 @@ pub const TAYLOR_ORDER: usize = 16;
 
 /// Largest ρ·h (spectral radius of A times the internal step) the Taylor expansion is used at.
 pub const MAX_RHO_H: f64 = 0.5;
+
+/// Most switching functions one mode has.
+pub const MAX_EVENTS: usize = 8;
+
+/// Values (rows 0..n) and slopes (rows n..2n) of a mode's n switching functions at one state.
+pub type EventRows = [f64; 2 * MAX_EVENTS];
 
 /// Taylor vectors v_k = (A δ)^k u₀ / k!, so that u(s δ) = Σ_k v_k s^k for s ∈ [0, 1].
 pub type TaylorVectors = [[f64; Layout::MAX_LEN]; TAYLOR_ORDER + 1];
@@ -22,8 +28,8 @@ pub struct ModeSystem {
     pub mode: Mode,
     /// Switching functions active in this mode.
     pub events: Vec<EventFn>,
-    /// Columns of the mechanical rows of e^{A h}, one per augmented state.
-    step_columns: Vec<[f64; N_MECH]>,
+    /// Columns of the mechanical rows of e^{A h}, one per augmented state (zero beyond `len`).
+    step_columns: [[f64; N_MECH]; Layout::MAX_LEN],
     /// Non-zero entries of A by row: `row_starts[r]..row_starts[r + 1]` index `entries`.
     row_starts: Vec<usize>,
     /// (column, value) of each non-zero entry, row after row.
@@ -38,15 +44,23 @@ impl ModeSystem {
     pub fn new(mode: Mode, a: &DMatrix<f64>, step_s: f64, events: Vec<EventFn>) -> Self {
         let step = (a * step_s).exp();
         let len = a.nrows();
-        let step_columns = (0..len)
-            .map(|col| std::array::from_fn(|row| step[(row, col)]))
-            .collect();
+        let step_columns = std::array::from_fn(|col| {
+            std::array::from_fn(|row| if col < len { step[(row, col)] } else { 0.0 })
+        });
         let mut row_starts = vec![0];
         let mut entries = Vec::new();
         for row in 0..len {
-            entries.extend((0..len).filter(|&col| a[(row, col)] != 0.0).map(|col| (col, a[(row, col)])));
+            entries.extend(
+                (0..len)
+                    .filter(|&col| a[(row, col)] != 0.0)
+                    .map(|col| (col, a[(row, col)])),
+            );
             row_starts.push(entries.len());
         }
+        assert!(
+            events.len() <= MAX_EVENTS,
+            "a mode has at most {MAX_EVENTS} switching functions"
+        );
         Self {
             mode,
             events,
@@ -60,14 +74,32 @@ impl ModeSystem {
 
     /// Mechanical part of u(t + h) = e^{A h} u(t): the fast path for a whole step.
     #[inline]
-    pub fn step_mechanical(&self, u: &[f64]) -> [f64; N_MECH] {
+    pub fn step_mechanical(&self, u: &[f64; Layout::MAX_LEN]) -> [f64; N_MECH] {
         let mut out = [0.0; N_MECH];
-        for (column, &weight) in self.step_columns.iter().zip(u) {
-            for (o, c) in out.iter_mut().zip(column) {
-                *o += c * weight;
+        for (column, &weight) in self.step_columns[..self.len].iter().zip(&u[..self.len]) {
+            for i in 0..N_MECH {
+                out[i] += column[i] * weight;
             }
         }
         out
+    }
+
+    /// Values and slopes of every switching function at `u` (angle terms not included).
+    #[inline]
+    pub fn event_rows(&self, u: &[f64; Layout::MAX_LEN]) -> EventRows {
+        let mut rows = [0.0; 2 * MAX_EVENTS];
+        let n = self.events.len();
+        for (k, event) in self.events.iter().enumerate() {
+            if event.angle_sign == 0.0 {
+                rows[k] = event.value.dot(u);
+                rows[n + k] = event.slope.dot(u);
+            } else {
+                // Angle events are ±X2 with slope ±V2.
+                rows[k] = event.angle_sign * u[X0 + 1];
+                rows[n + k] = event.angle_sign * u[V0 + 1];
+            }
+        }
+        rows
     }
 
     /// A·u for the augmented state (the time derivative u').
@@ -79,7 +111,11 @@ impl ModeSystem {
     fn scaled_derivative(&self, u: &[f64], scale: f64, out: &mut [f64]) {
         for (row, o) in out[..self.len].iter_mut().enumerate() {
             let entries = &self.entries[self.row_starts[row]..self.row_starts[row + 1]];
-            *o = scale * entries.iter().map(|&(col, value)| value * u[col]).sum::<f64>();
+            *o = scale
+                * entries
+                    .iter()
+                    .map(|&(col, value)| value * u[col])
+                    .sum::<f64>();
         }
     }
 
@@ -128,5 +164,8 @@ impl ModeSystem {
 
 /// Spectral radius of `a` (rad/s): the fastest rate the Taylor expansion must resolve.
 pub fn spectral_radius(a: &DMatrix<f64>) -> f64 {
-    a.complex_eigenvalues().iter().map(|l| l.norm()).fold(0.0, f64::max)
+    a.complex_eigenvalues()
+        .iter()
+        .map(|l| l.norm())
+        .fold(0.0, f64::max)
 }

@@ -64,7 +64,12 @@ fn spread_of(samples: &[RevolutionSample], floor: f64) -> [f64; 10] {
     })
 }
 
-fn repeats_every(samples: &[RevolutionSample], k: usize, spread: &[f64; 10], tolerance: f64) -> bool {
+fn repeats_every(
+    samples: &[RevolutionSample],
+    k: usize,
+    spread: &[f64; 10],
+    tolerance: f64,
+) -> bool {
     samples.windows(k + 1).all(|w| {
         let (a, b) = (&w[0].state, &w[k].state);
         (0..10).all(|i| (a[i] - b[i]).abs() <= tolerance * spread[i])

@@ -13,7 +13,9 @@ pub struct Track {
 impl Track {
     /// A value held for ever.
     pub fn hold(value: f64) -> Self {
-        Self { knots: vec![(0.0, value)] }
+        Self {
+            knots: vec![(0.0, value)],
+        }
     }
 
     /// Knots (time in s, value), times non-decreasing; the error names `what`.
@@ -23,11 +25,20 @@ impl Track {
         }
         for (index, pair) in knots.windows(2).enumerate() {
             if pair[1].0 < pair[0].0 {
-                return Err(RigError::Schedule(format!("{what}: knot {} at t = {} s comes before the one before it", index + 1, pair[1].0)));
+                return Err(RigError::Schedule(format!(
+                    "{what}: knot {} at t = {} s comes before the one before it",
+                    index + 1,
+                    pair[1].0
+                )));
             }
         }
-        if let Some(&(t, v)) = knots.iter().find(|(t, v)| !t.is_finite() || !v.is_finite() || *t < 0.0) {
-            return Err(RigError::Schedule(format!("{what}: knot ({t}, {v}) must have a finite time ≥ 0 and a finite value")));
+        if let Some(&(t, v)) = knots
+            .iter()
+            .find(|(t, v)| !t.is_finite() || !v.is_finite() || *t < 0.0)
+        {
+            return Err(RigError::Schedule(format!(
+                "{what}: knot ({t}, {v}) must have a finite time ≥ 0 and a finite value"
+            )));
         }
         Ok(Self { knots })
     }
@@ -51,7 +62,10 @@ impl Track {
     /// The set value at `t_s` (after a step at exactly `t_s`, the new value).
     pub fn value_at(&self, t_s: f64) -> f64 {
         let after = self.knots.partition_point(|&(t, _)| t <= t_s);
-        match (after.checked_sub(1).map(|i| self.knots[i]), self.knots.get(after)) {
+        match (
+            after.checked_sub(1).map(|i| self.knots[i]),
+            self.knots.get(after),
+        ) {
             (None, Some(&(_, v))) => v,
             (Some((_, v)), None) => v,
             (Some((t0, v0)), Some(&(t1, v1))) => v0 + (v1 - v0) * (t_s - t0) / (t1 - t0),
@@ -62,7 +76,10 @@ impl Track {
     /// Whether the value changes continuously just after `t_s` (a ramp is under way).
     pub fn ramping_at(&self, t_s: f64) -> bool {
         let after = self.knots.partition_point(|&(t, _)| t <= t_s);
-        match (after.checked_sub(1).map(|i| self.knots[i]), self.knots.get(after)) {
+        match (
+            after.checked_sub(1).map(|i| self.knots[i]),
+            self.knots.get(after),
+        ) {
             (Some((_, v0)), Some(&(_, v1))) => v0 != v1,
             _ => false,
         }
@@ -76,7 +93,10 @@ impl Track {
     /// Smallest and largest value the track takes.
     pub fn range(&self) -> (f64, f64) {
         let values = self.knots.iter().map(|&(_, v)| v);
-        (values.clone().fold(f64::INFINITY, f64::min), values.fold(f64::NEG_INFINITY, f64::max))
+        (
+            values.clone().fold(f64::INFINITY, f64::min),
+            values.fold(f64::NEG_INFINITY, f64::max),
+        )
     }
 }
 
@@ -111,10 +131,14 @@ impl Schedule {
     pub fn validate(&self) -> Result<(), RigError> {
         let (low, high) = self.speed_rpm.range();
         if low < 0.0 || high > MAX_SPEED_RPM {
-            return Err(RigError::Schedule(format!("speed set point must lie in [0, {MAX_SPEED_RPM}] rev/min, got {low}..{high}")));
+            return Err(RigError::Schedule(format!(
+                "speed set point must lie in [0, {MAX_SPEED_RPM}] rev/min, got {low}..{high}"
+            )));
         }
         if self.oscillating_load_nm.range().0 < 0.0 || self.oscillating_load_hz.range().0 < 0.0 {
-            return Err(RigError::Schedule("oscillating load amplitude and frequency must be ≥ 0".into()));
+            return Err(RigError::Schedule(
+                "oscillating load amplitude and frequency must be ≥ 0".into(),
+            ));
         }
         Ok(())
     }
@@ -125,7 +149,12 @@ impl Schedule {
     }
 
     fn tracks(&self) -> [&Track; 4] {
-        [&self.speed_rpm, &self.load_nm, &self.oscillating_load_nm, &self.oscillating_load_hz]
+        [
+            &self.speed_rpm,
+            &self.load_nm,
+            &self.oscillating_load_nm,
+            &self.oscillating_load_hz,
+        ]
     }
 
     /// Whether any set point ramps just after `t_s`.
@@ -135,13 +164,20 @@ impl Schedule {
 
     /// The first knot of any track strictly after `t_s`.
     pub fn next_knot_after(&self, t_s: f64) -> Option<f64> {
-        self.tracks().iter().filter_map(|track| track.next_knot_after(t_s)).reduce(f64::min)
+        self.tracks()
+            .iter()
+            .filter_map(|track| track.next_knot_after(t_s))
+            .reduce(f64::min)
     }
 
     /// The set points held over [t_s, t_s + span_s]: at the middle of the span while a
     /// ramp runs (a staircase centred on the ramp), else the value at `t_s`.
     pub fn held_over(&self, t_s: f64, span_s: f64) -> SetPoints {
-        let at = if self.ramping_at(t_s) { t_s + 0.5 * span_s } else { t_s };
+        let at = if self.ramping_at(t_s) {
+            t_s + 0.5 * span_s
+        } else {
+            t_s
+        };
         SetPoints {
             speed_rpm: self.speed_rpm.value_at(at),
             load_nm: self.load_nm.value_at(at),

@@ -68,7 +68,10 @@ impl SignalBlock {
     }
 
     fn columns_mut(&mut self) -> impl Iterator<Item = &mut Vec<f64>> {
-        self.angle_rad.iter_mut().chain(self.speed_rad_s.iter_mut()).chain(self.shaft_torque_nm.iter_mut())
+        self.angle_rad
+            .iter_mut()
+            .chain(self.speed_rad_s.iter_mut())
+            .chain(self.shaft_torque_nm.iter_mut())
     }
 
     /// Sample `i` as numbers in the order of [`COLUMN_NAMES`].

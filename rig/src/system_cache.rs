@@ -23,7 +23,13 @@ pub struct SystemCache {
 
 impl SystemCache {
     /// An empty cache for internal step `step_s` (s).
-    pub fn new(mc: ModelConstants, layout: Layout, law: ContactLaw, flags: EventFlags, step_s: f64) -> Self {
+    pub fn new(
+        mc: ModelConstants,
+        layout: Layout,
+        law: ContactLaw,
+        flags: EventFlags,
+        step_s: f64,
+    ) -> Self {
         Self {
             mc,
             layout,
@@ -41,14 +47,25 @@ impl SystemCache {
 
     /// Internal steps per output step so that ρ·h ≤ [`MAX_RHO_H`] in the stiffest mode at
     /// the schedule's highest speed and oscillating-load frequency.
-    pub fn substeps_for(mc: &ModelConstants, layout: &Layout, schedule: &Schedule, output_step_s: f64) -> u64 {
+    pub fn substeps_for(
+        mc: &ModelConstants,
+        layout: &Layout,
+        schedule: &Schedule,
+        output_step_s: f64,
+    ) -> u64 {
         let frequencies = Frequencies {
             rotation_rad_s: schedule.speed_rpm.range().1 * std::f64::consts::PI / 30.0,
-            oscillating_load_rad_s: 2.0 * std::f64::consts::PI * schedule.oscillating_load_hz.range().1,
+            oscillating_load_rad_s: 2.0
+                * std::f64::consts::PI
+                * schedule.oscillating_load_hz.range().1,
         };
         let stiffest = Mode {
             mesh: MeshMode::Drive,
-            pairs: if mc.double_pair_ratio > 1.0 { PairZone::Two } else { PairZone::One },
+            pairs: if mc.double_pair_ratio > 1.0 {
+                PairZone::Two
+            } else {
+                PairZone::One
+            },
             motor: MotorMode::Linear,
         };
         let rho = spectral_radius(&system_matrix(mc, layout, stiffest, frequencies));
@@ -67,7 +84,10 @@ impl SystemCache {
         if let Some(osc) = self.layout.osc {
             rotations.push((osc, frequencies.oscillating_load_rad_s));
         }
-        self.rotations = rotations.into_iter().map(|(i, w)| (i, (w * h).cos(), (w * h).sin())).collect();
+        self.rotations = rotations
+            .into_iter()
+            .map(|(i, w)| (i, (w * h).cos(), (w * h).sin()))
+            .collect();
     }
 
     /// Builds the system of `mode` if it is not built yet.
@@ -75,7 +95,14 @@ impl SystemCache {
         let slot = &mut self.systems[mode.index()];
         if slot.is_none() {
             let a = system_matrix(&self.mc, &self.layout, mode, self.frequencies);
-            let events = mode_events(&self.mc, self.law, self.flags, mode, &a, self.frequencies.rotation_rad_s);
+            let events = mode_events(
+                &self.mc,
+                self.law,
+                self.flags,
+                mode,
+                &a,
+                self.frequencies.rotation_rad_s,
+            );
             *slot = Some(ModeSystem::new(mode, &a, self.step_s, events));
         }
     }

@@ -28,7 +28,9 @@ fn relative_energy(p: &RigParams, omega: f64, x: &[f64; 12]) -> (f64, f64) {
     let momentum_rel = j.iter().zip(&v).map(|(j, v)| j * v).sum::<f64>();
     let mean = momentum_rel / p.total_inertia_kgm2();
     let relative: [f64; 5] = std::array::from_fn(|k| v[k] - mean);
-    let energy = kinetic_energy_j(p, &relative) + shaft_energy_j(p, &angle) + mesh_energy_j(p, angle[2] - angle[1]);
+    let energy = kinetic_energy_j(p, &relative)
+        + shaft_energy_j(p, &angle)
+        + mesh_energy_j(p, angle[2] - angle[1]);
     (energy, momentum_rel + p.total_inertia_kgm2() * omega)
 }
 
@@ -52,10 +54,20 @@ fn energy_is_conserved_through_impacts_without_damping_or_forcing() {
         worst_energy = worst_energy.max((e - e0).abs() / e0);
         worst_momentum = worst_momentum.max((m - m0).abs() / m0);
     }
-    assert!(plant.impacts().len() > 100, "only {} impacts", plant.impacts().len());
+    assert!(
+        plant.impacts().len() > 100,
+        "only {} impacts",
+        plant.impacts().len()
+    );
     eprintln!("MEASURED energy drift {worst_energy:e} momentum {worst_momentum:e}");
-    assert!(worst_energy < 1e-9, "vibration energy drifts by {worst_energy:e} of {e0} J");
-    assert!(worst_momentum < 1e-12, "momentum drifts by {worst_momentum:e}");
+    assert!(
+        worst_energy < 1e-9,
+        "vibration energy drifts by {worst_energy:e} of {e0} J"
+    );
+    assert!(
+        worst_momentum < 1e-12,
+        "momentum drifts by {worst_momentum:e}"
+    );
 }
 
 /// Work in minus dissipation and stored energy over `block` (trapezoid rule), and the
@@ -113,10 +125,18 @@ fn work_balances_energy_and_dissipation_with_elastic_impacts() {
     let (rpm, load) = (1300.0, 2.712);
     let mut plant = support::plant(p.clone(), Schedule::constant(rpm, load), 409_600.0);
     let block = support::record(&mut plant, 1.0);
-    assert!(plant.impacts().len() > 20, "only {} impacts", plant.impacts().len());
+    assert!(
+        plant.impacts().len() > 20,
+        "only {} impacts",
+        plant.impacts().len()
+    );
     let (residual, scale) = balance(&p, &block, rpm, load);
     eprintln!("MEASURED balance {:e}", residual / scale);
-    assert!((residual / scale).abs() < 1e-6, "energy balance off by {:e} of {scale} J", residual / scale);
+    assert!(
+        (residual / scale).abs() < 1e-6,
+        "energy balance off by {:e} of {scale} J",
+        residual / scale
+    );
 }
 
 #[test]
@@ -125,9 +145,16 @@ fn work_balances_energy_and_dissipation_with_mesh_damping() {
     let (rpm, load) = (1300.0, 2.712);
     let mut plant = support::plant(p.clone(), Schedule::constant(rpm, load), 2_048_000.0);
     let block = support::record(&mut plant, 0.5);
-    assert!(plant.impacts().len() > 10, "only {} impacts", plant.impacts().len());
+    assert!(
+        plant.impacts().len() > 10,
+        "only {} impacts",
+        plant.impacts().len()
+    );
     let (residual, scale) = balance(&p, &block, rpm, load);
     eprintln!("MEASURED balance {:e}", residual / scale);
-    assert!((residual / scale).abs() < 1e-6, "energy balance off by {:e} of {scale} J", residual / scale);
+    assert!(
+        (residual / scale).abs() < 1e-6,
+        "energy balance off by {:e} of {scale} J",
+        residual / scale
+    );
 }
-

@@ -14,10 +14,25 @@ type C = Complex<f64>;
 fn analytic(p: &RigParams, w: f64, amplitude: f64) -> (Vec<C>, C, C) {
     let j = p.inertias_kgm2();
     let springs = [
-        (0, 1, p.k12_input_shaft_nm_per_rad, p.c12_input_shaft_nms_per_rad),
+        (
+            0,
+            1,
+            p.k12_input_shaft_nm_per_rad,
+            p.c12_input_shaft_nms_per_rad,
+        ),
         (1, 2, p.k23_mesh_nm_per_rad, p.c23_mesh_nms_per_rad),
-        (2, 3, p.k34_intermediate_shaft_nm_per_rad, p.c34_intermediate_shaft_nms_per_rad),
-        (3, 4, p.k45_final_shaft_nm_per_rad, p.c45_final_shaft_nms_per_rad),
+        (
+            2,
+            3,
+            p.k34_intermediate_shaft_nm_per_rad,
+            p.c34_intermediate_shaft_nms_per_rad,
+        ),
+        (
+            3,
+            4,
+            p.k45_final_shaft_nm_per_rad,
+            p.c45_final_shaft_nms_per_rad,
+        ),
     ];
     let iw = C::new(0.0, w);
     let mut z = DMatrix::<C>::zeros(5, 5);
@@ -63,7 +78,11 @@ fn check(freq_hz: f64) {
     }
     start[10] = vf.re;
     start[11] = z.re;
-    let mesh = if start[2] < start[1] { MeshMode::Drive } else { MeshMode::Back };
+    let mesh = if start[2] < start[1] {
+        MeshMode::Drive
+    } else {
+        MeshMode::Back
+    };
     plant.set_relative_state(start, mesh);
     let scale = x.iter().map(|v| v.norm()).fold(0.0, f64::max);
     let mut worst = 0.0_f64;
@@ -76,9 +95,19 @@ fn check(freq_hz: f64) {
         }
         plant.skip(1).expect("run completes");
     }
-    eprintln!("MEASURED {freq_hz} Hz: worst {worst:e}, amplitude {scale:e} rad, switches {}", plant.switch_count());
-    assert!(plant.switch_count() > 100, "the mesh must switch flanks: {}", plant.switch_count());
-    assert!(worst < 1e-6, "{freq_hz} Hz: response departs from the analytic one by {worst:e} of its amplitude");
+    eprintln!(
+        "MEASURED {freq_hz} Hz: worst {worst:e}, amplitude {scale:e} rad, switches {}",
+        plant.switch_count()
+    );
+    assert!(
+        plant.switch_count() > 100,
+        "the mesh must switch flanks: {}",
+        plant.switch_count()
+    );
+    assert!(
+        worst < 1e-6,
+        "{freq_hz} Hz: response departs from the analytic one by {worst:e} of its amplitude"
+    );
 }
 
 #[test]

@@ -35,7 +35,10 @@ fn locked_mesh_adds_the_mesh_mode() {
     let f = freqs(&chains.locked_mesh);
     // Two inertias on the mesh spring: f = √(K23 (1/J2 + 1/J3)) / 2π, nearly.
     let p = support::thesis();
-    let mesh = (p.k23_mesh_nm_per_rad * (1.0 / p.j2_input_flywheel_kgm2 + 1.0 / p.j3_driven_gear_kgm2)).sqrt() / (2.0 * std::f64::consts::PI);
+    let mesh = (p.k23_mesh_nm_per_rad
+        * (1.0 / p.j2_input_flywheel_kgm2 + 1.0 / p.j3_driven_gear_kgm2))
+        .sqrt()
+        / (2.0 * std::f64::consts::PI);
     assert_eq!(f.len(), 4);
     assert!((f[3] - mesh).abs() / mesh < 0.01, "{} vs {mesh}", f[3]);
     // With the driven gear added to the gear pair the fundamental drops below App. C's 17.84 Hz.
@@ -53,7 +56,9 @@ fn mode_shapes_are_normalised_and_orthogonal_in_mass() {
     }
     for a in 0..modes.len() {
         for b in a + 1..modes.len() {
-            let dot: f64 = (0..5).map(|i| chain.inertia_kgm2[i] * modes[a].shape[i] * modes[b].shape[i]).sum();
+            let dot: f64 = (0..5)
+                .map(|i| chain.inertia_kgm2[i] * modes[a].shape[i] * modes[b].shape[i])
+                .sum();
             assert!(dot.abs() < 1e-9, "modes {a} and {b}: {dot}");
         }
     }

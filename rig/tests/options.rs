@@ -44,13 +44,25 @@ fn tooth_shifting_kicks_the_shafts_at_tooth_pass_frequency() {
     let (re, im) = support::phasor(t, torque, 1.5 * tooth_hz);
     let between = re.hypot(im);
     assert!(std_dev(torque) > 1e-4, "no effect: {}", std_dev(torque));
-    assert!(at_tooth > 10.0 * between, "tooth-pass line {at_tooth:e} vs {between:e} beside it");
+    assert!(
+        at_tooth > 10.0 * between,
+        "tooth-pass line {at_tooth:e} vs {between:e} beside it"
+    );
     // Handing the overlap back removes the mesh's elastic deflection: with the load still
     // carried, the gears sit closer to the flank on average than the static T/K23.
     let p = quiet();
     let b = GearGeometry::of(&p).half_backlash_rad;
-    let mean_overlap = support::mean(&block.angle_rad[1][start..].iter().zip(&block.angle_rad[2][start..]).map(|(a2, a3)| -(a3 - a2) - b).collect::<Vec<_>>());
-    assert!(mean_overlap < LOAD / p.k23_mesh_nm_per_rad, "{mean_overlap:e}");
+    let mean_overlap = support::mean(
+        &block.angle_rad[1][start..]
+            .iter()
+            .zip(&block.angle_rad[2][start..])
+            .map(|(a2, a3)| -(a3 - a2) - b)
+            .collect::<Vec<_>>(),
+    );
+    assert!(
+        mean_overlap < LOAD / p.k23_mesh_nm_per_rad,
+        "{mean_overlap:e}"
+    );
 }
 
 #[test]
@@ -59,7 +71,11 @@ fn two_pairs_halve_the_mesh_deflection_for_the_contact_ratio_fraction() {
     p.mesh_pairs = MeshPairs::Alternating;
     let geometry = GearGeometry::of(&p);
     let fraction = geometry.double_pair_fraction();
-    assert!((geometry.contact_ratio - 1.4602).abs() < 1e-3, "{}", geometry.contact_ratio);
+    assert!(
+        (geometry.contact_ratio - 1.4602).abs() < 1e-3,
+        "{}",
+        geometry.contact_ratio
+    );
     let mut plant = support::plant(p.clone(), Schedule::constant(RPM, LOAD), 51_200.0);
     let block = support::record(&mut plant, 2.0);
     let b = geometry.half_backlash_rad;
@@ -68,18 +84,31 @@ fn two_pairs_halve_the_mesh_deflection_for_the_contact_ratio_fraction() {
         let theta2 = block.angle_rad[1][i];
         let overlap = -(block.angle_rad[2][i] - theta2) - b;
         let within = theta2.rem_euclid(geometry.tooth_pitch_rad) / geometry.tooth_pitch_rad;
-        if within < fraction { double.push(overlap) } else { single.push(overlap) }
+        if within < fraction {
+            double.push(overlap)
+        } else {
+            single.push(overlap)
+        }
     }
     let share = double.len() as f64 / (single.len() + double.len()) as f64;
-    assert!((share - fraction).abs() < 0.01, "double-pair share {share} vs ε − 1 = {fraction}");
+    assert!(
+        (share - fraction).abs() < 0.01,
+        "double-pair share {share} vs ε − 1 = {fraction}"
+    );
     let median = |v: &mut Vec<f64>| {
         v.sort_by(f64::total_cmp);
         v[v.len() / 2]
     };
     let (one, two) = (median(&mut single), median(&mut double));
     let k = p.k23_mesh_nm_per_rad;
-    assert!((one - LOAD / k).abs() < 0.05 * LOAD / k, "single-pair overlap {one:e}");
-    assert!((two - LOAD / (2.0 * k)).abs() < 0.05 * LOAD / k, "double-pair overlap {two:e}");
+    assert!(
+        (one - LOAD / k).abs() < 0.05 * LOAD / k,
+        "single-pair overlap {one:e}"
+    );
+    assert!(
+        (two - LOAD / (2.0 * k)).abs() < 0.05 * LOAD / k,
+        "double-pair overlap {two:e}"
+    );
     // The stiffness changes excite the shafts at the tooth-pass frequency.
     assert!(std_dev(&block.shaft_torque_nm[1][block.len() / 2..]) > 1e-5);
 }
@@ -90,13 +119,22 @@ fn backlash_variation_moves_the_loaded_gears_once_per_revolution() {
     p.backlash_variation_c1 = 0.38;
     let mut plant = support::plant(p.clone(), Schedule::constant(RPM, LOAD), 51_200.0);
     let block = support::record(&mut plant, 3.0);
-    assert!(plant.impacts().is_empty(), "the load keeps the teeth together at 200 rev/min");
+    assert!(
+        plant.impacts().is_empty(),
+        "the load keeps the teeth together at 200 rev/min"
+    );
     // Eight whole revolutions (0.6 s to 3 s) for the projection.
     let start = block.len() / 5;
-    let d: Vec<f64> = (start..block.len()).map(|i| block.angle_rad[2][i] - block.angle_rad[1][i]).collect();
+    let d: Vec<f64> = (start..block.len())
+        .map(|i| block.angle_rad[2][i] - block.angle_rad[1][i])
+        .collect();
     let (re, im) = support::phasor(&block.time_s[start..], &d, RPM / 60.0);
     let expected = GearGeometry::of(&p).half_backlash_rad * 0.38;
-    assert!((re.hypot(im) - expected).abs() < 0.02 * expected, "{} vs {expected}", re.hypot(im));
+    assert!(
+        (re.hypot(im) - expected).abs() < 0.02 * expected,
+        "{} vs {expected}",
+        re.hypot(im)
+    );
 }
 
 #[test]
@@ -119,6 +157,9 @@ fn the_no_pull_law_never_pulls_and_the_thesis_law_does() {
     let (thesis_pulling, thesis_impacts) = run(ContactLaw::Thesis);
     let (no_pull_pulling, no_pull_impacts) = run(ContactLaw::NoPull);
     assert!(thesis_impacts > 10 && no_pull_impacts > 10);
-    assert!(thesis_pulling > 10, "the thesis law's damper pulls: {thesis_pulling} samples");
+    assert!(
+        thesis_pulling > 10,
+        "the thesis law's damper pulls: {thesis_pulling} samples"
+    );
     assert_eq!(no_pull_pulling, 0);
 }

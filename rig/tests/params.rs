@@ -31,25 +31,44 @@ fn overrides_change_the_named_field_only() {
 fn bad_values_are_refused_with_the_name() {
     let mut p = support::thesis();
     let before = p.clone();
-    for (name, value) in [("j1_motor_kgm2", "-1"), ("k12_input_shaft_nm_per_rad", "NaN"), ("teeth", "2.5"), ("contact_law", "sticky"), ("backlash_variation_c1", "1.5")] {
+    for (name, value) in [
+        ("j1_motor_kgm2", "-1"),
+        ("k12_input_shaft_nm_per_rad", "NaN"),
+        ("teeth", "2.5"),
+        ("contact_law", "sticky"),
+        ("backlash_variation_c1", "1.5"),
+    ] {
         let err = set_param(&mut p, name, value).expect_err(name);
         assert!(err.to_string().contains(name), "{err}");
         assert_eq!(p, before, "a refused value must leave the set unchanged");
     }
-    assert!(matches!(param_spec("j9"), Err(RigError::UnknownParameter { .. })));
-    assert!(matches!(preset("basmaji-1984"), Err(RigError::UnknownPreset { .. })));
+    assert!(matches!(
+        param_spec("j9"),
+        Err(RigError::UnknownParameter { .. })
+    ));
+    assert!(matches!(
+        preset("basmaji-1984"),
+        Err(RigError::UnknownPreset { .. })
+    ));
 }
 
 #[test]
 fn bad_schedules_and_options_are_refused() {
     let p = support::thesis();
-    let negative = Plant::new(p.clone(), Schedule::constant(-10.0, 0.0), PlantConfig::default());
+    let negative = Plant::new(
+        p.clone(),
+        Schedule::constant(-10.0, 0.0),
+        PlantConfig::default(),
+    );
     assert!(matches!(negative, Err(RigError::Schedule(_))));
     let slow = PlantConfig {
         output_rate_hz: 1.0,
         ..PlantConfig::default()
     };
-    assert!(matches!(Plant::new(p, Schedule::constant(600.0, 0.0), slow), Err(RigError::InvalidOption { .. })));
+    assert!(matches!(
+        Plant::new(p, Schedule::constant(600.0, 0.0), slow),
+        Err(RigError::InvalidOption { .. })
+    ));
 }
 
 #[test]
@@ -65,7 +84,9 @@ fn a_blow_up_is_reported_with_time_and_state() {
     let mut state = plant.relative_state();
     state[5 + 3] = 0.01;
     plant.set_relative_state(state, rig::MeshMode::Drive);
-    let err = plant.skip(5_120 * 120).expect_err("the motion must grow without bound");
+    let err = plant
+        .skip(5_120 * 120)
+        .expect_err("the motion must grow without bound");
     match err {
         RigError::BlowUp { t_s, state, .. } => {
             assert!(t_s > 0.0 && t_s < 120.0);

@@ -18,10 +18,23 @@ fn compare(params: rig::RigParams, rpm: f64, load_nm: f64, window_s: f64) -> usi
         .map(|i| (i.time_s, if i.flank == Flank::Drive { 1 } else { -1 }))
         .filter(|(t, _)| *t > 0.0 && *t < window_s - 1e-5)
         .collect();
-    let theirs: Vec<(f64, i8)> = reference.impacts.iter().copied().filter(|(t, _)| *t > 0.0 && *t < window_s - 1e-5).collect();
-    if std::env::var_os("SHOW").is_some() { for k in 0..ours.len().max(theirs.len()).min(12) { eprintln!("{:?} {:?}", ours.get(k), theirs.get(k)); } }
+    let theirs: Vec<(f64, i8)> = reference
+        .impacts
+        .iter()
+        .copied()
+        .filter(|(t, _)| *t > 0.0 && *t < window_s - 1e-5)
+        .collect();
+    if std::env::var_os("SHOW").is_some() {
+        for k in 0..ours.len().max(theirs.len()).min(12) {
+            eprintln!("{:?} {:?}", ours.get(k), theirs.get(k));
+        }
+    }
     assert!(!ours.is_empty(), "the case must have impacts");
-    assert_eq!(ours.len(), theirs.len(), "impact counts differ: {ours:?} vs {theirs:?}");
+    assert_eq!(
+        ours.len(),
+        theirs.len(),
+        "impact counts differ: {ours:?} vs {theirs:?}"
+    );
     let worst = ours
         .iter()
         .zip(&theirs)

@@ -18,19 +18,35 @@ fn samples(states: impl Iterator<Item = f64>) -> Vec<RevolutionSample> {
 #[test]
 fn classifies_synthetic_sequences() {
     let criteria = RegimeCriteria::default();
-    assert_eq!(classify(&samples((0..20).map(|_| 1.0)), &criteria), Regime::Periodic(1));
-    assert_eq!(classify(&samples((0..20).map(|n| (n % 2) as f64)), &criteria), Regime::Periodic(2));
-    assert_eq!(classify(&samples((0..40).map(|n| (n % 3) as f64)), &criteria), Regime::Periodic(3));
+    assert_eq!(
+        classify(&samples((0..20).map(|_| 1.0)), &criteria),
+        Regime::Periodic(1)
+    );
+    assert_eq!(
+        classify(&samples((0..20).map(|n| (n % 2) as f64)), &criteria),
+        Regime::Periodic(2)
+    );
+    assert_eq!(
+        classify(&samples((0..40).map(|n| (n % 3) as f64)), &criteria),
+        Regime::Periodic(3)
+    );
     // An irrational rotation never repeats.
     let quasi = (0..60).map(|n| (n as f64 * std::f64::consts::SQRT_2 * 3.0).sin());
     assert_eq!(classify(&samples(quasi), &criteria), Regime::Aperiodic);
     // Too few samples to confirm period 2.
-    assert_eq!(classify(&samples((0..4).map(|n| (n % 2) as f64)), &criteria), Regime::Aperiodic);
+    assert_eq!(
+        classify(&samples((0..4).map(|n| (n % 2) as f64)), &criteria),
+        Regime::Aperiodic
+    );
 }
 
 #[test]
 fn revolution_samples_are_one_turn_of_the_driving_gear_apart() {
-    let mut plant = support::plant(support::thesis(), Schedule::constant(600.0, 2.712), 51_200.0);
+    let mut plant = support::plant(
+        support::thesis(),
+        Schedule::constant(600.0, 2.712),
+        51_200.0,
+    );
     support::record(&mut plant, 2.0);
     let revs = plant.revolutions();
     assert_eq!(revs.len(), 19, "600 rev/min for 2 s from angle 0");
@@ -43,7 +59,11 @@ fn revolution_samples_are_one_turn_of_the_driving_gear_apart() {
 
 #[test]
 fn the_thesis_rig_shows_the_half_order_at_1300_rpm() {
-    let mut plant = support::plant(support::thesis(), Schedule::constant(1300.0, 2.712), 51_200.0);
+    let mut plant = support::plant(
+        support::thesis(),
+        Schedule::constant(1300.0, 2.712),
+        51_200.0,
+    );
     plant.skip(20 * 51_200).expect("run completes");
     let settled = plant.drain_revolutions();
     assert!(settled.len() > 400);
@@ -54,7 +74,11 @@ fn the_thesis_rig_shows_the_half_order_at_1300_rpm() {
 
 #[test]
 fn the_thesis_rig_is_period_one_at_600_rpm() {
-    let mut plant = support::plant(support::thesis(), Schedule::constant(600.0, 2.712), 51_200.0);
+    let mut plant = support::plant(
+        support::thesis(),
+        Schedule::constant(600.0, 2.712),
+        51_200.0,
+    );
     plant.skip(20 * 51_200).expect("run completes");
     plant.drain_revolutions();
     support::record(&mut plant, 5.0);

@@ -20,10 +20,19 @@ fn the_speed_loop_follows_a_speed_step() {
     let rate = 5_120;
     assert!((mean_speed_rpm(&block, 0, rate) - 600.0).abs() < 0.5);
     // A 0.5 Hz loop with ζ 0.7 has settled 10 s later.
-    assert!((mean_speed_rpm(&block, 10 * rate, 12 * rate) - 700.0).abs() < 0.5, "{}", mean_speed_rpm(&block, 10 * rate, 12 * rate));
+    assert!(
+        (mean_speed_rpm(&block, 10 * rate, 12 * rate) - 700.0).abs() < 0.5,
+        "{}",
+        mean_speed_rpm(&block, 10 * rate, 12 * rate)
+    );
     // The set points and the absolute angle stay continuous through the step.
-    let jump = (1..block.len()).map(|i| block.angle_rad[0][i] - block.angle_rad[0][i - 1]).fold(0.0, f64::max);
-    assert!(jump < 700.0 / 60.0 * std::f64::consts::TAU / 5_120.0 * 1.5, "{jump}");
+    let jump = (1..block.len())
+        .map(|i| block.angle_rad[0][i] - block.angle_rad[0][i - 1])
+        .fold(0.0, f64::max);
+    assert!(
+        jump < 700.0 / 60.0 * std::f64::consts::TAU / 5_120.0 * 1.5,
+        "{jump}"
+    );
 }
 
 #[test]
@@ -43,7 +52,11 @@ fn the_speed_loop_tracks_a_ramp() {
     let got = mean_speed_rpm(&block, 9 * rate, 10 * rate);
     assert!((got - (655.0 + tau * 30.0)).abs() < 0.2, "{got}");
     // The staircase ends on the ramp's last value.
-    assert!((plant.set_points().speed_rpm - 700.0).abs() < 0.2, "{}", plant.set_points().speed_rpm);
+    assert!(
+        (plant.set_points().speed_rpm - 700.0).abs() < 0.2,
+        "{}",
+        plant.set_points().speed_rpm
+    );
 }
 
 #[test]
@@ -76,7 +89,19 @@ fn the_motor_torque_stays_within_its_limit() {
     };
     let mut plant = support::plant(p, schedule, 5_120.0);
     let block = support::record(&mut plant, 3.0);
-    let peak = block.motor_torque_nm.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-    assert!((peak - limit).abs() < 1e-12, "a 1200 rev/min step saturates the drive: peak {peak} vs {limit}");
-    assert!(block.motor_torque_nm.iter().all(|t| t.abs() <= limit + 1e-12));
+    let peak = block
+        .motor_torque_nm
+        .iter()
+        .copied()
+        .fold(f64::NEG_INFINITY, f64::max);
+    assert!(
+        (peak - limit).abs() < 1e-12,
+        "a 1200 rev/min step saturates the drive: peak {peak} vs {limit}"
+    );
+    assert!(
+        block
+            .motor_torque_nm
+            .iter()
+            .all(|t| t.abs() <= limit + 1e-12)
+    );
 }

@@ -24,11 +24,18 @@ fn reversing_the_load_mirrors_the_motion() {
         ahead.skip(1).expect("run completes");
         behind.skip(1).expect("run completes");
     }
-    assert!(ahead.impacts().len() > 20, "only {} impacts", ahead.impacts().len());
+    assert!(
+        ahead.impacts().len() > 20,
+        "only {} impacts",
+        ahead.impacts().len()
+    );
     assert_eq!(ahead.impacts().len(), behind.impacts().len());
     for (a, b) in ahead.impacts().iter().zip(behind.impacts()) {
         assert!((a.time_s - b.time_s).abs() < 1e-12);
         assert_ne!(a.flank, b.flank);
     }
-    assert!(worst < 1e-9 * scale, "mirror broken by {worst:e} (scale {scale:e})");
+    assert!(
+        worst < 1e-9 * scale,
+        "mirror broken by {worst:e} (scale {scale:e})"
+    );
 }

@@ -10,16 +10,35 @@ pub fn run(args: &ModesArgs) -> anyhow::Result<()> {
     let params = params_from(&args.rig)?;
     let chains = RigChains::of(&params);
     let named = [
-        ("whole_rig", "whole rig, gear pair rigid (thesis App. C)", &chains.whole_rig),
-        ("locked_mesh", "five inertias, teeth locked on the mesh spring K23", &chains.locked_mesh),
-        ("motor_side", "motor side alone (teeth apart)", &chains.motor_side),
-        ("brake_side", "brake side alone (teeth apart)", &chains.brake_side),
+        (
+            "whole_rig",
+            "whole rig, gear pair rigid (thesis App. C)",
+            &chains.whole_rig,
+        ),
+        (
+            "locked_mesh",
+            "five inertias, teeth locked on the mesh spring K23",
+            &chains.locked_mesh,
+        ),
+        (
+            "motor_side",
+            "motor side alone (teeth apart)",
+            &chains.motor_side,
+        ),
+        (
+            "brake_side",
+            "brake side alone (teeth apart)",
+            &chains.brake_side,
+        ),
     ];
     if args.json {
         let mut object = serde_json::Map::new();
         for (key, _, chain) in named {
             object.insert(format!("{key}_hz"), json!(frequencies(chain)));
-            object.insert(format!("{key}_shapes"), json!(chain.modes().iter().map(|m| &m.shape).collect::<Vec<_>>()));
+            object.insert(
+                format!("{key}_shapes"),
+                json!(chain.modes().iter().map(|m| &m.shape).collect::<Vec<_>>()),
+            );
         }
         println!("{}", serde_json::Value::Object(object));
         return Ok(());

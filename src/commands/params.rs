@@ -11,26 +11,68 @@ pub fn run(args: &ParamsArgs) -> anyhow::Result<()> {
     let geometry = GearGeometry::of(&params);
     let (kp, ki) = params.speed_loop_gains();
     let derived = [
-        ("pitch_radius_m", geometry.pitch_radius_m, "m", "r = m z / 2"),
-        ("circular_backlash_m", geometry.circular_backlash_m, "m", "total backlash at the pitch circle 2B1 = 2 dC tan(alpha)"),
-        ("half_backlash_rad", geometry.half_backlash_rad, "rad", "free play B each side of centre, B1 / r"),
-        ("contact_ratio", geometry.contact_ratio, "1", "transverse contact ratio at the operating centre distance"),
-        ("speed_loop_kp_nms_per_rad", kp, "N m s/rad", "speed loop proportional gain 2 zeta w_n J"),
-        ("speed_loop_ki_nm_per_rad", ki, "N m/rad", "speed loop integral gain J w_n^2"),
+        (
+            "pitch_radius_m",
+            geometry.pitch_radius_m,
+            "m",
+            "r = m z / 2",
+        ),
+        (
+            "circular_backlash_m",
+            geometry.circular_backlash_m,
+            "m",
+            "total backlash at the pitch circle 2B1 = 2 dC tan(alpha)",
+        ),
+        (
+            "half_backlash_rad",
+            geometry.half_backlash_rad,
+            "rad",
+            "free play B each side of centre, B1 / r",
+        ),
+        (
+            "contact_ratio",
+            geometry.contact_ratio,
+            "1",
+            "transverse contact ratio at the operating centre distance",
+        ),
+        (
+            "speed_loop_kp_nms_per_rad",
+            kp,
+            "N m s/rad",
+            "speed loop proportional gain 2 zeta w_n J",
+        ),
+        (
+            "speed_loop_ki_nm_per_rad",
+            ki,
+            "N m/rad",
+            "speed loop integral gain J w_n^2",
+        ),
     ];
     if args.json {
         let list: Vec<_> = PARAM_SPECS
             .iter()
             .map(|s| json!({"name": s.name, "value": s.value(&params), "unit": s.unit, "meaning": s.meaning}))
             .collect();
-        let derived: Vec<_> = derived.iter().map(|(n, v, u, m)| json!({"name": n, "value": v, "unit": u, "meaning": m})).collect();
-        println!("{}", json!({"preset": args.rig.preset, "parameters": list, "derived": derived}));
+        let derived: Vec<_> = derived
+            .iter()
+            .map(|(n, v, u, m)| json!({"name": n, "value": v, "unit": u, "meaning": m}))
+            .collect();
+        println!(
+            "{}",
+            json!({"preset": args.rig.preset, "parameters": list, "derived": derived})
+        );
         return Ok(());
     }
     println!("preset {}", args.rig.preset);
     println!("{:<36} {:>14} {:<10} meaning", "name", "value", "unit");
     for spec in PARAM_SPECS {
-        println!("{:<36} {:>14} {:<10} {}", spec.name, spec.value(&params), spec.unit, spec.meaning);
+        println!(
+            "{:<36} {:>14} {:<10} {}",
+            spec.name,
+            spec.value(&params),
+            spec.unit,
+            spec.meaning
+        );
     }
     println!("\nderived");
     for (name, value, unit, meaning) in derived {

@@ -6,7 +6,10 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use anyhow::{Context, bail};
-use rig::{COLUMN_NAMES, Impact, Plant, PlantConfig, RegimeCriteria, Schedule, SignalBlock, SteadySummary, run_steady};
+use rig::{
+    COLUMN_NAMES, Impact, Plant, PlantConfig, RegimeCriteria, Schedule, SignalBlock, SteadySummary,
+    run_steady,
+};
 use serde::Serialize;
 
 use crate::cli::SimulateArgs;
@@ -33,18 +36,25 @@ pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
         output_rate_hz: args.rate,
         ..PlantConfig::default()
     };
-    let mut plant = Plant::new(params, Schedule::constant(args.rpm, args.load), config).context("--rpm/--load/--rate")?;
+    let mut plant = Plant::new(params, Schedule::constant(args.rpm, args.load), config)
+        .context("--rpm/--load/--rate")?;
     let mut writer = match &args.out {
         Some(dir) => Some(SignalWriter::create(dir)?),
         None => None,
     };
     let started = Instant::now();
-    let summary = run_steady(&mut plant, args.settle, args.duration, &RegimeCriteria::default(), |block| -> anyhow::Result<()> {
-        match writer.as_mut() {
-            Some(w) => w.write(block),
-            None => Ok(()),
-        }
-    })?;
+    let summary = run_steady(
+        &mut plant,
+        args.settle,
+        args.duration,
+        &RegimeCriteria::default(),
+        |block| -> anyhow::Result<()> {
+            match writer.as_mut() {
+                Some(w) => w.write(block),
+                None => Ok(()),
+            }
+        },
+    )?;
     let wall_s = started.elapsed().as_secs_f64();
     let simulated_s = args.settle + summary.measured_s;
     let report = Report {
@@ -61,7 +71,8 @@ pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
         w.finish()?;
         write_impacts(&dir.join("impacts.csv"), plant.impacts())?;
         let path = dir.join("summary.json");
-        std::fs::write(&path, serde_json::to_string_pretty(&report)?).with_context(|| format!("writing {}", path.display()))?;
+        std::fs::write(&path, serde_json::to_string_pretty(&report)?)
+            .with_context(|| format!("writing {}", path.display()))?;
     }
     if args.json {
         println!("{}", serde_json::to_string(&report)?);
@@ -85,12 +96,28 @@ fn check_durations(args: &SimulateArgs) -> anyhow::Result<()> {
 
 fn print_text(r: &Report) {
     let s = &r.summary;
-    println!("{} at {} rev/min, {} N m: {:.1} s simulated in {:.3} s ({:.0}x real time)", r.preset, r.rpm, r.load_nm, r.simulated_s, r.wall_s, r.realtime_factor);
-    println!("measured {:.1} s after {:.1} s settling, {} revolutions", s.measured_s, r.settle_s, s.revolutions);
+    println!(
+        "{} at {} rev/min, {} N m: {:.1} s simulated in {:.3} s ({:.0}x real time)",
+        r.preset, r.rpm, r.load_nm, r.simulated_s, r.wall_s, r.realtime_factor
+    );
+    println!(
+        "measured {:.1} s after {:.1} s settling, {} revolutions",
+        s.measured_s, r.settle_s, s.revolutions
+    );
     println!("regime           {}", s.regime);
-    println!("impacts          {} ({:.3} per revolution)", s.impacts, s.impacts_per_rev);
-    println!("teeth separate   {} ({:.1} % of the time apart)", s.separates, 100.0 * s.apart_fraction);
-    println!("output shaft     mean {:.4} N m, rms {:.4} N m, ac rms {:.4} N m", s.torque_mean_nm, s.torque_rms_nm, s.torque_ac_rms_nm);
+    println!(
+        "impacts          {} ({:.3} per revolution)",
+        s.impacts, s.impacts_per_rev
+    );
+    println!(
+        "teeth separate   {} ({:.1} % of the time apart)",
+        s.separates,
+        100.0 * s.apart_fraction
+    );
+    println!(
+        "output shaft     mean {:.4} N m, rms {:.4} N m, ac rms {:.4} N m",
+        s.torque_mean_nm, s.torque_rms_nm, s.torque_ac_rms_nm
+    );
 }
 
 /// Streams the true signals to `signals.csv`, under a temporary name until finished.
@@ -102,10 +129,17 @@ struct SignalWriter {
 
 impl SignalWriter {
     fn create(dir: &Path) -> anyhow::Result<Self> {
-        std::fs::create_dir_all(dir).with_context(|| format!("--out {}: cannot create the folder", dir.display()))?;
+        std::fs::create_dir_all(dir)
+            .with_context(|| format!("--out {}: cannot create the folder", dir.display()))?;
         let path = dir.join("signals.csv");
         let partial = dir.join("signals.csv.partial");
-        let file = File::create(&partial).with_context(|| format!("--out {}: cannot write {}", dir.display(), partial.display()))?;
+        let file = File::create(&partial).with_context(|| {
+            format!(
+                "--out {}: cannot write {}",
+                dir.display(),
+                partial.display()
+            )
+        })?;
         let mut csv = csv::Writer::from_writer(BufWriter::new(file));
         csv.write_record(COLUMN_NAMES)?;
         Ok(Self { csv, partial, path })
@@ -113,7 +147,9 @@ impl SignalWriter {
 
     fn write(&mut self, block: &SignalBlock) -> anyhow::Result<()> {
         for i in 0..block.len() {
-            self.csv.serialize(block.row(i)).context("writing signals.csv")?;
+            self.csv
+                .serialize(block.row(i))
+                .context("writing signals.csv")?;
         }
         Ok(())
     }
@@ -126,7 +162,8 @@ impl SignalWriter {
 }
 
 fn write_impacts(path: &Path, impacts: &[Impact]) -> anyhow::Result<()> {
-    let mut csv = csv::Writer::from_path(path).with_context(|| format!("writing {}", path.display()))?;
+    let mut csv =
+        csv::Writer::from_path(path).with_context(|| format!("writing {}", path.display()))?;
     csv.write_record(["time_s", "flank", "tooth", "closing_speed_rad_s"])?;
     for i in impacts {
         csv.serialize(i)?;

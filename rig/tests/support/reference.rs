@@ -89,14 +89,24 @@ impl Reference {
     fn rhs(&self, t: f64, y: &[f64; 12]) -> [f64; 12] {
         let p = &self.p;
         let phase = self.omega * t;
-        let gear_error = -p.gear_error_c2_nm * phase.cos() - p.gear_error_c3_nm * (2.0 * phase).cos();
+        let gear_error =
+            -p.gear_error_c2_nm * phase.cos() - p.gear_error_c3_nm * (2.0 * phase).cos();
         let motor = self.kp * (self.omega - y[10]) + self.ki * y[11];
-        let t12 = p.k12_input_shaft_nm_per_rad * (y[0] - y[1]) + p.c12_input_shaft_nms_per_rad * (y[5] - y[6]);
-        let t34 = p.k34_intermediate_shaft_nm_per_rad * (y[2] - y[3]) + p.c34_intermediate_shaft_nms_per_rad * (y[7] - y[8]);
-        let t45 = p.k45_final_shaft_nm_per_rad * (y[3] - y[4]) + p.c45_final_shaft_nms_per_rad * (y[8] - y[9]);
+        let t12 = p.k12_input_shaft_nm_per_rad * (y[0] - y[1])
+            + p.c12_input_shaft_nms_per_rad * (y[5] - y[6]);
+        let t34 = p.k34_intermediate_shaft_nm_per_rad * (y[2] - y[3])
+            + p.c34_intermediate_shaft_nms_per_rad * (y[7] - y[8]);
+        let t45 = p.k45_final_shaft_nm_per_rad * (y[3] - y[4])
+            + p.c45_final_shaft_nms_per_rad * (y[8] - y[9]);
         let mesh = self.mesh_torque(t, y);
         let brake = self.load + p.brake_speed_slope_nms_per_rad * (y[9] - self.omega);
-        let torque = [motor - t12, t12 - mesh + gear_error, mesh - t34 + gear_error, t34 - t45, t45 - brake];
+        let torque = [
+            motor - t12,
+            t12 - mesh + gear_error,
+            mesh - t34 + gear_error,
+            t34 - t45,
+            t45 - brake,
+        ];
         let j = p.inertias_kgm2();
         let mut dy = [0.0; 12];
         for i in 0..5 {
@@ -109,7 +119,9 @@ impl Reference {
     }
 
     fn rk4(&self, t: f64, y: &[f64; 12], h: f64) -> [f64; 12] {
-        let add = |a: &[f64; 12], b: &[f64; 12], s: f64| -> [f64; 12] { std::array::from_fn(|i| a[i] + s * b[i]) };
+        let add = |a: &[f64; 12], b: &[f64; 12], s: f64| -> [f64; 12] {
+            std::array::from_fn(|i| a[i] + s * b[i])
+        };
         let k1 = self.rhs(t, y);
         let k2 = self.rhs(t + h / 2.0, &add(y, &k1, h / 2.0));
         let k3 = self.rhs(t + h / 2.0, &add(y, &k2, h / 2.0));
@@ -127,7 +139,8 @@ impl Reference {
             for (k, flank) in [(0, 1i8), (1, -1)] {
                 let (b, a) = (before[k].0, after[k].0);
                 if !self.touching[k] && a >= 0.0 {
-                    self.impacts.push((self.t + h_s * (-b).max(0.0) / (a - b), flank));
+                    self.impacts
+                        .push((self.t + h_s * (-b).max(0.0) / (a - b), flank));
                 }
                 self.touching[k] = a >= 0.0;
             }
