@@ -33,7 +33,7 @@ pub use params::RigParams;
 pub use plant::{Plant, PlantConfig};
 pub use presets::{PRESET_NAMES, preset};
 pub use records::{Flank, Impact, RevolutionSample};
-pub use regime::{Regime, RegimeCriteria, classify};
+pub use regime::{Regime, RegimeCriteria, classify, classify_scaled};
 pub use schedule::{Schedule, SetPoints, Track};
 pub use signals::{COLUMN_NAMES, INTERMEDIATE_SHAFT, Sample, SignalBlock};
 pub use steady::{SteadySummary, run_steady};

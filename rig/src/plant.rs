@@ -255,7 +255,7 @@ impl Plant {
     fn advance_step(&mut self) -> Result<(), RigError> {
         if Some(self.step_index) == self.segment.end_step {
             self.begin_segment();
-        } else if self.step_index % RESYNC_STEPS == 0 {
+        } else if self.step_index.is_multiple_of(RESYNC_STEPS) {
             self.resync_harmonics(0.0);
         }
         self.cache.ensure(self.mode);

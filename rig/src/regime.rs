@@ -47,8 +47,24 @@ impl Default for RegimeCriteria {
 
 /// Classifies samples taken once per revolution: the smallest k for which every sample
 /// matches the one k revolutions before it. Needs at least 2k + 1 samples for period k.
+/// Each state is compared on the scale of its own spread over the samples.
 pub fn classify(samples: &[RevolutionSample], criteria: &RegimeCriteria) -> Regime {
-    let spread = spread_of(samples, criteria.spread_floor);
+    classify_scaled(
+        samples,
+        &spread_of(samples, criteria.spread_floor),
+        criteria,
+    )
+}
+
+/// As [`classify`], comparing state i on `scale[i]` (rad or rad/s; infinity leaves it out),
+/// e.g. the RMS of its vibration over the window: a decaying transient smaller than
+/// `relative_tolerance` of the vibration then no longer hides a periodic motion.
+pub fn classify_scaled(
+    samples: &[RevolutionSample],
+    scale: &[f64; 10],
+    criteria: &RegimeCriteria,
+) -> Regime {
+    let spread: [f64; 10] = std::array::from_fn(|i| scale[i].max(criteria.spread_floor));
     (1..=criteria.max_period)
         .take_while(|&k| samples.len() > 2 * k)
         .find(|&k| repeats_every(samples, k, &spread, criteria.relative_tolerance))

@@ -4,7 +4,7 @@ use serde::Serialize;
 
 use crate::error::RigError;
 use crate::plant::Plant;
-use crate::regime::{RegimeCriteria, classify, impacts_per_tooth};
+use crate::regime::{RegimeCriteria, classify_scaled, impacts_per_tooth};
 use crate::signals::{INTERMEDIATE_SHAFT, SignalBlock};
 
 /// Samples advanced per call while measuring.
@@ -54,6 +54,7 @@ pub fn run_steady<E: From<RigError>>(
     let total = (measure_s * rate).round() as usize;
     let mut block = SignalBlock::default();
     let (mut sum, mut sum_sq, mut apart, mut done) = (0.0, 0.0, 0_usize, 0_usize);
+    let mut speed_moments = [(0.0, 0.0); 5];
     while done < total {
         let n = BLOCK.min(total - done);
         block.clear();
@@ -63,6 +64,13 @@ pub fn run_steady<E: From<RigError>>(
             sum_sq += torque * torque;
         }
         apart += block.contact.iter().filter(|&&c| c == 0).count();
+        for (moments, speeds) in speed_moments.iter_mut().zip(&block.speed_rad_s) {
+            for &w in speeds {
+                let v = w - plant.set_points().speed_rad_s();
+                moments.0 += v;
+                moments.1 += v * v;
+            }
+        }
         sink(&block)?;
         done += n;
     }
@@ -76,12 +84,30 @@ pub fn run_steady<E: From<RigError>>(
         impacts: impacts.len(),
         impacts_per_rev: impacts.len() as f64 / revolutions.len().max(1) as f64,
         impacts_per_tooth: impacts_per_tooth(teeth, impacts.iter().map(|i| i.tooth)),
-        regime: classify(revolutions, criteria).label(),
+        regime: classify_scaled(
+            revolutions,
+            &vibration_scale(&speed_moments, count),
+            criteria,
+        )
+        .label(),
         separates: apart > 0 || !impacts.is_empty(),
         apart_fraction: apart as f64 / count,
         torque_mean_nm: mean,
         torque_rms_nm: (sum_sq / count).sqrt(),
         torque_ac_rms_nm: (sum_sq / count - mean * mean).max(0.0).sqrt(),
         revolutions: revolutions.len(),
+    })
+}
+
+/// Scale of each Poincaré state for the regime: angles left out (infinity), speeds on the
+/// RMS of their vibration about the mean over the window (rad/s).
+fn vibration_scale(speed_moments: &[(f64, f64); 5], count: f64) -> [f64; 10] {
+    std::array::from_fn(|i| match i.checked_sub(5) {
+        None => f64::INFINITY,
+        Some(k) => {
+            let (sum, sum_sq) = speed_moments[k];
+            let mean = sum / count;
+            (sum_sq / count - mean * mean).max(0.0).sqrt()
+        }
     })
 }

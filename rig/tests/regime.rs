@@ -57,31 +57,22 @@ fn revolution_samples_are_one_turn_of_the_driving_gear_apart() {
     }
 }
 
+fn steady_regime(rpm: f64) -> String {
+    let mut plant = support::plant(support::thesis(), Schedule::constant(rpm, 2.712), 51_200.0);
+    let summary = rig::run_steady(&mut plant, 20.0, 5.0, &RegimeCriteria::default(), |_| {
+        Ok::<(), rig::RigError>(())
+    })
+    .expect("runs");
+    assert!(summary.revolutions >= 50);
+    summary.regime
+}
+
 #[test]
 fn the_thesis_rig_shows_the_half_order_at_1300_rpm() {
-    let mut plant = support::plant(
-        support::thesis(),
-        Schedule::constant(1300.0, 2.712),
-        51_200.0,
-    );
-    plant.skip(20 * 51_200).expect("run completes");
-    let settled = plant.drain_revolutions();
-    assert!(settled.len() > 400);
-    support::record(&mut plant, 5.0);
-    let regime = classify(plant.revolutions(), &RegimeCriteria::default());
-    assert_eq!(regime, Regime::Periodic(2));
+    assert_eq!(steady_regime(1300.0), "period-2");
 }
 
 #[test]
 fn the_thesis_rig_is_period_one_at_600_rpm() {
-    let mut plant = support::plant(
-        support::thesis(),
-        Schedule::constant(600.0, 2.712),
-        51_200.0,
-    );
-    plant.skip(20 * 51_200).expect("run completes");
-    plant.drain_revolutions();
-    support::record(&mut plant, 5.0);
-    let regime = classify(plant.revolutions(), &RegimeCriteria::default());
-    assert_eq!(regime, Regime::Periodic(1));
+    assert_eq!(steady_regime(600.0), "period-1");
 }
