@@ -17,7 +17,9 @@ use crate::mode::{MeshMode, Mode, MotorMode, PairZone};
 use crate::model::{Frequencies, ModelConstants};
 use crate::options::{ContactLaw, MeshPairs};
 use crate::params::RigParams;
-use crate::propagator::{EventRows, ModeSystem, TAYLOR_ORDER, TaylorVectors};
+use crate::propagator::{
+    FUSED_ROWS, FusedRows, MAX_ROW_EVENTS, ModeSystem, TAYLOR_ORDER, TaylorVectors,
+};
 use crate::records::{Flank, Impact, RevolutionSample};
 use crate::schedule::{Schedule, SetPoints};
 use crate::signals::{Sample, SignalBlock};
@@ -84,8 +86,8 @@ pub struct Plant {
     next_tooth_rad: f64,
     next_rev_rad: f64,
     taylor: Box<TaylorVectors>,
-    /// Switching-function rows at the current state, when known from the last fast step.
-    edge: Option<EventRows>,
+    /// Row events' values and slopes at the current state, when known from the last fast step.
+    edge: Option<[f64; 2 * MAX_ROW_EVENTS]>,
     impacts: Vec<Impact>,
     revolutions: Vec<RevolutionSample>,
     switch_count: u64,
@@ -260,49 +262,68 @@ impl Plant {
         }
         self.cache.ensure(self.mode);
         let system = self.cache.built(self.mode);
-        let mut next = self.u;
-        next[..N_MECH].copy_from_slice(&system.step_mechanical(&self.u));
-        self.rotate_harmonics(&mut next);
-        let start = self.edge.unwrap_or_else(|| system.event_rows(&self.u));
-        let end = system.event_rows(&next);
-        if self.may_switch(system, &start, &end) {
+        let fused = system.step(&self.u);
+        let start = self
+            .edge
+            .unwrap_or_else(|| system.row_event_values(&self.u));
+        if self.may_switch(system, &start, &fused) {
             self.edge = None;
             self.advance_exactly()?;
         } else {
-            self.u = next;
-            self.edge = Some(end);
+            self.u[..N_MECH].copy_from_slice(&fused[..N_MECH]);
+            let rotations = self.cache.rotations();
+            rotate(&mut self.u, rotations);
+            let mut edge = [0.0; 2 * MAX_ROW_EVENTS];
+            edge.copy_from_slice(&fused[N_MECH..FUSED_ROWS]);
+            self.edge = Some(edge);
         }
         self.step_index += 1;
         Ok(())
     }
 
-    /// Whether any switching function may cross within a whole step, from its rows at
-    /// the step's start and end.
-    fn may_switch(&self, system: &ModeSystem, start: &EventRows, end: &EventRows) -> bool {
-        let n = system.events.len();
+    /// Whether any switching function may cross within a whole step, from the row events'
+    /// values and slopes at the step's start (`start`) and end (`end`, from the fused step),
+    /// and the driving gear's angle at both ends.
+    fn may_switch(
+        &self,
+        system: &ModeSystem,
+        start: &[f64; 2 * MAX_ROW_EVENTS],
+        end: &FusedRows,
+    ) -> bool {
         let h = self.step_s;
-        let phase = self.phase_rad(0.0);
-        let omega = self.segment.set.speed_rad_s();
-        system.events.iter().enumerate().any(|(k, event)| {
-            let (offset, rate) = if event.angle_sign == 0.0 {
-                (0.0, 0.0)
-            } else {
-                let sign = event.angle_sign;
-                (sign * (phase - self.angle_target(event.kind)), sign * omega)
-            };
-            let g1 = end[k] + offset + rate * h;
+        let n = system.row_events.len();
+        for j in 0..n {
+            let g1 = end[N_MECH + j];
             if g1 > 0.0 {
                 return true;
             }
-            let d1 = (end[n + k] + rate) * h;
-            if d1 >= 0.0 {
-                // Rising at the end and ≤ 0 at both ends: no interior maximum (a cubic
-                // with a maximum inside the step falls at its end).
-                return false;
+            let d1 = end[N_MECH + n + j] * h;
+            // ≤ 0 at both ends and rising at the end: no interior maximum.
+            if d1 < 0.0 && may_cross(start[j].min(0.0), start[n + j] * h, g1, d1) {
+                return true;
             }
-            let g0 = start[k] + offset;
-            let d0 = (start[n + k] + rate) * h;
-            may_cross(g0.min(0.0), d0, g1, d1)
+        }
+        let omega = self.segment.set.speed_rad_s();
+        let phase = self.phase_rad(0.0);
+        let theta0 = phase + self.u[X0 + 1];
+        let theta1 = phase + omega * h + end[X0 + 1];
+        let (rate0, rate1) = (omega + self.u[V0 + 1], omega + end[V0 + 1]);
+        system.angle_events.iter().any(|&k| {
+            let event = &system.events[k];
+            let sign = event.angle_sign;
+            let target = self.angle_target(event.kind);
+            let g1 = sign * (theta1 - target);
+            if g1 > 0.0 {
+                return true;
+            }
+            let d1 = sign * rate1 * h;
+            d1 < 0.0
+                && may_cross(
+                    (sign * (theta0 - target)).min(0.0),
+                    sign * rate0 * h,
+                    g1,
+                    d1,
+                )
         })
     }
 
@@ -607,14 +628,6 @@ impl Plant {
         }
     }
 
-    fn rotate_harmonics(&self, u: &mut [f64; Layout::MAX_LEN]) {
-        for &(index, cos, sin) in self.cache.rotations() {
-            let (c, s) = (u[index], u[index + 1]);
-            u[index] = c * cos - s * sin;
-            u[index + 1] = s * cos + c * sin;
-        }
-    }
-
     /// Time of the current step's start plus `tau_s` (s).
     fn time_at(&self, tau_s: f64) -> f64 {
         self.step_index as f64 * self.step_s + tau_s
@@ -796,4 +809,13 @@ fn check_config(config: &PlantConfig) -> Result<(), RigError> {
         });
     }
     Ok(())
+}
+
+/// Turns each harmonic pair of `u` by one step: (index of the cos state, cos ωh, sin ωh).
+fn rotate(u: &mut [f64; Layout::MAX_LEN], rotations: &[(usize, f64, f64)]) {
+    for &(index, cos, sin) in rotations {
+        let (c, s) = (u[index], u[index + 1]);
+        u[index] = c * cos - s * sin;
+        u[index + 1] = s * cos + c * sin;
+    }
 }

@@ -4,7 +4,7 @@
 use nalgebra::DMatrix;
 
 use crate::events::EventFn;
-use crate::layout::{Layout, N_MECH, V0, X0};
+use crate::layout::{Layout, N_MECH, V0, VF};
 use crate::mode::Mode;
 
 /// Highest Taylor order kept; with ρ·h ≤ 0.5 the remainder of order 16 is below 1e-17.
@@ -16,8 +16,15 @@ pub const MAX_RHO_H: f64 = 0.5;
 /// Most switching functions one mode has.
 pub const MAX_EVENTS: usize = 8;
 
-/// Values (rows 0..n) and slopes (rows n..2n) of a mode's n switching functions at one state.
-pub type EventRows = [f64; 2 * MAX_EVENTS];
+/// Most switching functions of one mode that are not angle events (mesh and motor).
+pub const MAX_ROW_EVENTS: usize = 4;
+
+/// Rows of the fused step: the 12 mechanical states, then the values and slopes of the
+/// mode's row events, all at the end of the step.
+pub const FUSED_ROWS: usize = N_MECH + 2 * MAX_ROW_EVENTS;
+
+/// Result of one fused step.
+pub type FusedRows = [f64; FUSED_ROWS];
 
 /// Taylor vectors v_k = (A δ)^k u₀ / k!, so that u(s δ) = Σ_k v_k s^k for s ∈ [0, 1].
 pub type TaylorVectors = [[f64; Layout::MAX_LEN]; TAYLOR_ORDER + 1];
@@ -28,8 +35,13 @@ pub struct ModeSystem {
     pub mode: Mode,
     /// Switching functions active in this mode.
     pub events: Vec<EventFn>,
-    /// Columns of the mechanical rows of e^{A h}, one per augmented state (zero beyond `len`).
-    step_columns: [[f64; N_MECH]; Layout::MAX_LEN],
+    /// Columns of the fused step matrix: the mechanical rows of e^{A h}, then each row
+    /// event's value and slope forms times e^{A h}; one per augmented state (zero beyond `len`).
+    step_columns: [[f64; FUSED_ROWS]; Layout::MAX_LEN],
+    /// Indices in `events` of the events whose rows the fused step computes.
+    pub row_events: Vec<usize>,
+    /// Indices in `events` of the angle events (checked from θ2 directly).
+    pub angle_events: Vec<usize>,
     /// Non-zero entries of A by row: `row_starts[r]..row_starts[r + 1]` index `entries`.
     row_starts: Vec<usize>,
     /// (column, value) of each non-zero entry, row after row.
@@ -42,10 +54,33 @@ pub struct ModeSystem {
 impl ModeSystem {
     /// Builds the system for `mode` with matrix `a`, internal step `step_s` and switching functions `events`.
     pub fn new(mode: Mode, a: &DMatrix<f64>, step_s: f64, events: Vec<EventFn>) -> Self {
-        let step = (a * step_s).exp();
         let len = a.nrows();
+        let rho = spectral_radius(a);
+        let step = balanced_exp(a, step_s, rho);
+        let (angle_events, row_events): (Vec<usize>, Vec<usize>) =
+            (0..events.len()).partition(|&k| events[k].angle_sign != 0.0);
+        assert!(
+            row_events.len() <= MAX_ROW_EVENTS,
+            "a mode has at most {MAX_ROW_EVENTS} mesh and motor switching functions"
+        );
+        let n = row_events.len();
+        let fused_entry = |row: usize, col: usize| -> f64 {
+            let form = match row.checked_sub(N_MECH) {
+                None => return step[(row, col)],
+                Some(r) if r < n => &events[row_events[r]].value,
+                Some(r) if r < 2 * n => &events[row_events[r - n]].slope,
+                Some(_) => return 0.0,
+            };
+            form.terms.iter().map(|&(i, c)| c * step[(i, col)]).sum()
+        };
         let step_columns = std::array::from_fn(|col| {
-            std::array::from_fn(|row| if col < len { step[(row, col)] } else { 0.0 })
+            std::array::from_fn(|row| {
+                if col < len {
+                    fused_entry(row, col)
+                } else {
+                    0.0
+                }
+            })
         });
         let mut row_starts = vec![0];
         let mut entries = Vec::new();
@@ -65,39 +100,35 @@ impl ModeSystem {
             mode,
             events,
             step_columns,
+            row_events,
+            angle_events,
             row_starts,
             entries,
-            spectral_radius: spectral_radius(a),
+            spectral_radius: rho,
             len,
         }
     }
 
-    /// Mechanical part of u(t + h) = e^{A h} u(t): the fast path for a whole step.
+    /// The fast path for a whole step: the mechanical part of u(t + h) = e^{A h} u(t)
+    /// (rows 0..12) and the row events' values and slopes there (rows 12..).
     #[inline]
-    pub fn step_mechanical(&self, u: &[f64; Layout::MAX_LEN]) -> [f64; N_MECH] {
-        let mut out = [0.0; N_MECH];
+    pub fn step(&self, u: &[f64; Layout::MAX_LEN]) -> FusedRows {
+        let mut out = [0.0; FUSED_ROWS];
         for (column, &weight) in self.step_columns[..self.len].iter().zip(&u[..self.len]) {
-            for i in 0..N_MECH {
-                out[i] += column[i] * weight;
+            for i in 0..FUSED_ROWS {
+                out[i] = column[i].mul_add(weight, out[i]);
             }
         }
         out
     }
 
-    /// Values and slopes of every switching function at `u` (angle terms not included).
-    #[inline]
-    pub fn event_rows(&self, u: &[f64; Layout::MAX_LEN]) -> EventRows {
-        let mut rows = [0.0; 2 * MAX_EVENTS];
-        let n = self.events.len();
-        for (k, event) in self.events.iter().enumerate() {
-            if event.angle_sign == 0.0 {
-                rows[k] = event.value.dot(u);
-                rows[n + k] = event.slope.dot(u);
-            } else {
-                // Angle events are ±X2 with slope ±V2.
-                rows[k] = event.angle_sign * u[X0 + 1];
-                rows[n + k] = event.angle_sign * u[V0 + 1];
-            }
+    /// Values (0..n) and slopes (n..2n) of the row events at `u`.
+    pub fn row_event_values(&self, u: &[f64; Layout::MAX_LEN]) -> [f64; 2 * MAX_ROW_EVENTS] {
+        let mut rows = [0.0; 2 * MAX_ROW_EVENTS];
+        let n = self.row_events.len();
+        for (j, &k) in self.row_events.iter().enumerate() {
+            rows[j] = self.events[k].value.dot(u);
+            rows[n + j] = self.events[k].slope.dot(u);
         }
         rows
     }
@@ -160,6 +191,24 @@ impl ModeSystem {
     pub fn state_len(&self) -> usize {
         self.len
     }
+}
+
+/// e^{A h} computed on the balanced matrix D⁻¹AD, D = diag(1 for angles and forcing,
+/// ρ for speeds), whose entries are all of order ρ: the Padé exponential is then accurate
+/// to rounding in every entry, not only relative to the largest (K/J·h ≈ 3000 for the mesh).
+fn balanced_exp(a: &DMatrix<f64>, step_s: f64, rho: f64) -> DMatrix<f64> {
+    let len = a.nrows();
+    let speed_scale = rho.max(1.0);
+    let scale = |i: usize| {
+        if (V0..V0 + 5).contains(&i) || i == VF {
+            speed_scale
+        } else {
+            1.0
+        }
+    };
+    let balanced = DMatrix::from_fn(len, len, |r, c| a[(r, c)] * scale(c) / scale(r) * step_s);
+    let exp = balanced.exp();
+    DMatrix::from_fn(len, len, |r, c| exp[(r, c)] * scale(r) / scale(c))
 }
 
 /// Spectral radius of `a` (rad/s): the fastest rate the Taylor expansion must resolve.
