@@ -51,6 +51,9 @@ pub const SWITCH_LIMIT: usize = 64;
 const TWIST_LIMIT_RAD: f64 = 1.0;
 const SPEED_LIMIT_RAD_S: f64 = 1.0e4;
 
+/// Samples gathered on the stack before they are appended to a block column by column.
+const CHUNK: usize = 64;
+
 /// Internal steps between exact re-syncs of the harmonic states from the phase.
 const RESYNC_STEPS: u64 = 4096;
 
@@ -230,14 +233,35 @@ impl Plant {
     }
 
     /// Advances `samples` output samples, appending each (the state at t = n / rate, then one step) to `out`.
+    /// On an error the block keeps every sample taken before it.
     pub fn run(&mut self, samples: usize, out: &mut SignalBlock) -> Result<(), RigError> {
-        out.reserve(samples);
-        for _ in 0..samples {
-            self.check_bounds()?;
-            out.push(&self.sample());
-            for _ in 0..self.substeps {
-                self.advance_step()?;
+        let mut chunk = [self.sample(); CHUNK];
+        let mut done = 0;
+        while done < samples {
+            let n = CHUNK.min(samples - done);
+            let mut taken = 0;
+            let mut result = Ok(());
+            while taken < n {
+                result = self.take_sample(&mut chunk[taken]);
+                if result.is_err() {
+                    break;
+                }
+                taken += 1;
             }
+            out.extend_from_samples(&chunk[..taken]);
+            result?;
+            done += n;
+        }
+        Ok(())
+    }
+
+    /// Stores the sample now in `slot`, then advances one output period.
+    #[inline]
+    fn take_sample(&mut self, slot: &mut Sample) -> Result<(), RigError> {
+        self.check_bounds()?;
+        *slot = self.sample();
+        for _ in 0..self.substeps {
+            self.advance_step()?;
         }
         Ok(())
     }

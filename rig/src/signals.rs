@@ -125,6 +125,24 @@ impl SignalBlock {
         self.tooth.reserve(additional);
     }
 
+    /// Appends `samples`, column by column.
+    pub fn extend_from_samples(&mut self, samples: &[Sample]) {
+        self.time_s.extend(samples.iter().map(|s| s.time_s));
+        for k in 0..5 {
+            self.angle_rad[k].extend(samples.iter().map(|s| s.angle_rad[k]));
+            self.speed_rad_s[k].extend(samples.iter().map(|s| s.speed_rad_s[k]));
+        }
+        for k in 0..3 {
+            self.shaft_torque_nm[k].extend(samples.iter().map(|s| s.shaft_torque_nm[k]));
+        }
+        self.mesh_torque_nm
+            .extend(samples.iter().map(|s| s.mesh_torque_nm));
+        self.motor_torque_nm
+            .extend(samples.iter().map(|s| s.motor_torque_nm));
+        self.contact.extend(samples.iter().map(|s| s.contact));
+        self.tooth.extend(samples.iter().map(|s| s.tooth));
+    }
+
     /// Appends one sample.
     pub fn push(&mut self, s: &Sample) {
         self.time_s.push(s.time_s);
