@@ -113,24 +113,12 @@ impl ModeSystem {
     /// (rows 0..12) and the row events' values and slopes there (rows 12..).
     #[inline]
     pub fn step(&self, u: &[f64; Layout::MAX_LEN]) -> FusedRows {
-        // All MAX_LEN columns (those past `len` are zero): a fixed shape the compiler
-        // unrolls. Four partial sums over column groups keep the chains of dependent
-        // multiply-adds short: one step waits on the previous, so latency, not
-        // throughput, sets the pace.
-        const GROUPS: usize = 4;
-        const PER_GROUP: usize = Layout::MAX_LEN / GROUPS;
-        let mut partial = [[0.0; FUSED_ROWS]; GROUPS];
-        for (g, sums) in partial.iter_mut().enumerate() {
-            for j in g * PER_GROUP..(g + 1) * PER_GROUP {
-                let (column, weight) = (&self.step_columns[j], u[j]);
-                for i in 0..FUSED_ROWS {
-                    sums[i] = column[i].mul_add(weight, sums[i]);
-                }
-            }
-        }
+        // All MAX_LEN columns (those past `len` are zero): a fixed shape the compiler unrolls.
         let mut out = [0.0; FUSED_ROWS];
-        for i in 0..FUSED_ROWS {
-            out[i] = (partial[0][i] + partial[1][i]) + (partial[2][i] + partial[3][i]);
+        for (column, &weight) in self.step_columns.iter().zip(u) {
+            for (o, &c) in out.iter_mut().zip(column) {
+                *o = c.mul_add(weight, *o);
+            }
         }
         out
     }
