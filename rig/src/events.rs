@@ -152,32 +152,34 @@ pub fn mode_events(
             push(EventKind::TouchBack, &gap_back);
         }
         MeshMode::Drive | MeshMode::DriveClipped => {
-            push(
+            let kinds = [
                 EventKind::LeaveDrive,
-                &SparseRow::new(&gap_drive).negated().terms,
+                EventKind::DriveReloads,
+                EventKind::DriveUnloads,
+            ];
+            flank_events(
+                &mut push,
+                kinds,
+                mode.mesh == MeshMode::DriveClipped,
+                no_pull,
+                &gap_drive,
+                &force_drive,
             );
-            if mode.mesh == MeshMode::DriveClipped {
-                push(EventKind::DriveReloads, &force_drive);
-            } else if no_pull {
-                push(
-                    EventKind::DriveUnloads,
-                    &SparseRow::new(&force_drive).negated().terms,
-                );
-            }
         }
         MeshMode::Back | MeshMode::BackClipped => {
-            push(
+            let kinds = [
                 EventKind::LeaveBack,
-                &SparseRow::new(&gap_back).negated().terms,
+                EventKind::BackReloads,
+                EventKind::BackUnloads,
+            ];
+            flank_events(
+                &mut push,
+                kinds,
+                mode.mesh == MeshMode::BackClipped,
+                no_pull,
+                &gap_back,
+                &force_back,
             );
-            if mode.mesh == MeshMode::BackClipped {
-                push(EventKind::BackReloads, &force_back);
-            } else if no_pull {
-                push(
-                    EventKind::BackUnloads,
-                    &SparseRow::new(&force_back).negated().terms,
-                );
-            }
         }
     }
     match mode.motor {
@@ -212,6 +214,25 @@ pub fn mode_events(
             angle_sign,
         })
         .collect()
+}
+
+/// The switching functions while one flank overlaps: the overlap ending (`kinds[0]`), and
+/// with the no-pull law the clipped torque coming back (`kinds[1]`) or the torque
+/// reaching zero (`kinds[2]`).
+fn flank_events(
+    push: &mut impl FnMut(EventKind, &[(usize, f64)]),
+    kinds: [EventKind; 3],
+    clipped: bool,
+    no_pull: bool,
+    gap: &[(usize, f64)],
+    force: &[(usize, f64)],
+) {
+    push(kinds[0], &SparseRow::new(gap).negated().terms);
+    if clipped {
+        push(kinds[1], force);
+    } else if no_pull {
+        push(kinds[2], &SparseRow::new(force).negated().terms);
+    }
 }
 
 /// Which optional switching functions exist in this plant.

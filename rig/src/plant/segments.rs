@@ -1,0 +1,93 @@
+//! Set-point segments: starting one, the phase of the set rotation, and the harmonic states.
+
+use crate::layout::{LOAD, Layout, REV, V0, VF, X0};
+use crate::model::Frequencies;
+
+use super::state::{Plant, Segment};
+
+impl Plant {
+    /// Starts a new stretch of constant set points at the current step.
+    pub(super) fn begin_segment(&mut self) {
+        let t = self.time_at(0.0);
+        let next_knot = self.schedule.next_knot_after(t);
+        let ramping = self.schedule.ramping_at(t);
+        let end = match (ramping, next_knot) {
+            (true, Some(knot)) => Some(knot.min(t + self.setpoint_update_s)),
+            (true, None) => Some(t + self.setpoint_update_s),
+            (false, knot) => knot,
+        };
+        let set = self.schedule.held_over(t, end.map_or(0.0, |e| e - t));
+        let old = self.segment;
+        let delta_speed = set.speed_rad_s() - old.set.speed_rad_s();
+        for v in &mut self.u[V0..V0 + 5] {
+            *v -= delta_speed;
+        }
+        self.u[VF] -= delta_speed;
+        self.u[LOAD] = set.load_nm;
+        let frequencies_changed =
+            delta_speed != 0.0 || set.oscillating_load_hz != old.set.oscillating_load_hz;
+        self.segment = Segment {
+            start_step: self.step_index,
+            end_step: end
+                .map(|e| ((e / self.step_s - 1e-6).ceil() as u64).max(self.step_index + 1)),
+            phase_rad: self.phase_rad(0.0),
+            osc_phase_rad: self.osc_phase_rad(0.0),
+            set,
+        };
+        if frequencies_changed || self.step_index == 0 {
+            self.cache.set_frequencies(Frequencies {
+                rotation_rad_s: set.speed_rad_s(),
+                oscillating_load_rad_s: set.oscillating_load_rad_s(),
+            });
+        }
+        self.resync_harmonics(0.0);
+    }
+
+    /// Sets the harmonic states from the exact phases at `tau_s` into the step.
+    pub(super) fn resync_harmonics(&mut self, tau_s: f64) {
+        self.edge = None;
+        let phase = self.phase_rad(tau_s);
+        self.u[REV] = phase.cos();
+        self.u[REV + 1] = phase.sin();
+        if let Some(rev2) = self.layout.rev2 {
+            self.u[rev2] = (2.0 * phase).cos();
+            self.u[rev2 + 1] = (2.0 * phase).sin();
+        }
+        if let Some(osc) = self.layout.osc {
+            let psi = self.osc_phase_rad(tau_s);
+            let amplitude = self.segment.set.oscillating_load_nm;
+            self.u[osc] = amplitude * psi.cos();
+            self.u[osc + 1] = amplitude * psi.sin();
+        }
+    }
+
+    /// Time of the current step's start plus `tau_s` (s).
+    pub(super) fn time_at(&self, tau_s: f64) -> f64 {
+        self.step_index as f64 * self.step_s + tau_s
+    }
+
+    /// Set rotation φ (rad) at `tau_s` into the current step.
+    pub(super) fn phase_rad(&self, tau_s: f64) -> f64 {
+        let elapsed = (self.step_index - self.segment.start_step) as f64 * self.step_s + tau_s;
+        self.segment.phase_rad + self.segment.set.speed_rad_s() * elapsed
+    }
+
+    pub(super) fn osc_phase_rad(&self, tau_s: f64) -> f64 {
+        let elapsed = (self.step_index - self.segment.start_step) as f64 * self.step_s + tau_s;
+        self.segment.osc_phase_rad + self.segment.set.oscillating_load_rad_s() * elapsed
+    }
+
+    /// Absolute angle of the driving gear θ2 = φ + X2 (rad) at `tau_s` into the step.
+    pub(super) fn driving_gear_angle_rad(&self, tau_s: f64) -> f64 {
+        self.phase_rad(tau_s) + self.u[X0 + 1]
+    }
+}
+
+/// Turns each harmonic pair of `u` by one step: (index of the cos state, cos ωh, sin ωh).
+pub(super) fn rotate(u: &mut [f64; Layout::MAX_LEN], rotations: &[(usize, f64, f64)]) {
+    for &(index, cos, sin) in rotations {
+        let (c, s) = (u[index], u[index + 1]);
+        u[index] = c * cos - s * sin;
+        u[index + 1] = s * cos + c * sin;
+    }
+}

@@ -1,0 +1,316 @@
+//! The plant's state: parameters, set-point segment, augmented state, mode, logs; its
+//! construction and accessors.
+
+use std::f64::consts::TAU;
+
+use crate::error::RigError;
+use crate::events::EventFlags;
+use crate::geometry::GearGeometry;
+use crate::layout::{LOAD, Layout, N_MECH, UNIT, X0, Z};
+use crate::mode::{MeshMode, Mode, MotorMode, PairZone};
+use crate::model::ModelConstants;
+use crate::options::{ContactLaw, MeshPairs};
+use crate::params::RigParams;
+use crate::propagator::{MAX_ROW_EVENTS, TAYLOR_ORDER, TaylorVectors};
+use crate::records::{Impact, RevolutionSample};
+use crate::schedule::{Schedule, SetPoints};
+use crate::system_cache::SystemCache;
+
+/// Output and set-point timing of a run.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PlantConfig {
+    /// Rate of the true signals (Hz).
+    pub output_rate_hz: f64,
+    /// During a ramp the set points change in steps this long (s).
+    pub setpoint_update_s: f64,
+}
+
+impl Default for PlantConfig {
+    fn default() -> Self {
+        Self {
+            output_rate_hz: 51_200.0,
+            setpoint_update_s: 0.01,
+        }
+    }
+}
+
+/// Most switches handled within one internal step before the run is declared chattering.
+pub const SWITCH_LIMIT: usize = 64;
+
+/// Largest relative twist (rad) or relative speed (rad/s) the state may reach before the
+/// run is declared blown up: far beyond anything the shafts or gears could bear.
+pub(super) const TWIST_LIMIT_RAD: f64 = 1.0;
+pub(super) const SPEED_LIMIT_RAD_S: f64 = 1.0e4;
+
+/// Samples gathered on the stack before they are appended to a block column by column.
+pub(super) const CHUNK: usize = 64;
+
+/// Internal steps between exact re-syncs of the harmonic states from the phase.
+pub(super) const RESYNC_STEPS: u64 = 4096;
+
+/// The set points held over the current stretch of internal steps.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Segment {
+    pub(super) start_step: u64,
+    pub(super) end_step: Option<u64>,
+    pub(super) phase_rad: f64,
+    pub(super) osc_phase_rad: f64,
+    pub(super) set: SetPoints,
+}
+
+/// The five-inertia rig with backlash, advanced in virtual time.
+pub struct Plant {
+    pub(super) params: RigParams,
+    pub(super) mc: ModelConstants,
+    pub(super) geometry: GearGeometry,
+    pub(super) schedule: Schedule,
+    pub(super) layout: Layout,
+    pub(super) law: ContactLaw,
+    pub(super) flags: EventFlags,
+    pub(super) output_step_s: f64,
+    pub(super) substeps: u64,
+    pub(super) step_s: f64,
+    pub(super) setpoint_update_s: f64,
+    pub(super) cache: SystemCache,
+    pub(super) u: [f64; Layout::MAX_LEN],
+    pub(super) mode: Mode,
+    pub(super) step_index: u64,
+    pub(super) segment: Segment,
+    pub(super) zone_index: i64,
+    pub(super) next_tooth_rad: f64,
+    pub(super) next_rev_rad: f64,
+    pub(super) taylor: Box<TaylorVectors>,
+    /// Row events' values and slopes at the current state, when known from the last fast step.
+    pub(super) edge: Option<[f64; 2 * MAX_ROW_EVENTS]>,
+    pub(super) impacts: Vec<Impact>,
+    pub(super) revolutions: Vec<RevolutionSample>,
+    pub(super) switch_count: u64,
+}
+
+impl Plant {
+    /// A plant at the steady state of the schedule's first set points (shafts twisted by
+    /// the load, teeth on the loaded flank, or centred in the free play at zero load), at
+    /// t = 0 with the driving gear at angle 0.
+    pub fn new(
+        params: RigParams,
+        schedule: Schedule,
+        config: PlantConfig,
+    ) -> Result<Self, RigError> {
+        params.validate()?;
+        schedule.validate()?;
+        check_config(&config)?;
+        let mc = ModelConstants::of(&params);
+        let geometry = GearGeometry::of(&params);
+        let layout = Layout::new(
+            params.gear_error_c3_nm != 0.0,
+            schedule.has_oscillating_load(),
+        );
+        let alternating =
+            params.mesh_pairs == MeshPairs::Alternating && geometry.double_pair_fraction() > 0.0;
+        let flags = EventFlags {
+            alternating_pairs: alternating && geometry.double_pair_fraction() < 1.0,
+            tooth_shifting: params.tooth_shifting,
+        };
+        let output_step_s = 1.0 / config.output_rate_hz;
+        let substeps = SystemCache::substeps_for(&mc, &layout, &schedule, output_step_s);
+        let step_s = output_step_s / substeps as f64;
+        let set = schedule.held_over(0.0, 0.0);
+        let segment = Segment {
+            start_step: 0,
+            end_step: Some(0),
+            phase_rad: 0.0,
+            osc_phase_rad: 0.0,
+            set,
+        };
+        let law = params.contact_law;
+        let mut plant = Self {
+            cache: SystemCache::new(mc.clone(), layout, law, flags, step_s),
+            params,
+            mc,
+            geometry,
+            schedule,
+            layout,
+            law,
+            flags,
+            output_step_s,
+            substeps,
+            step_s,
+            setpoint_update_s: config.setpoint_update_s,
+            u: [0.0; Layout::MAX_LEN],
+            mode: Mode {
+                mesh: MeshMode::Apart,
+                pairs: PairZone::One,
+                motor: MotorMode::Linear,
+            },
+            step_index: 0,
+            segment,
+            zone_index: 0,
+            next_tooth_rad: 0.0,
+            next_rev_rad: 0.0,
+            taylor: Box::new([[0.0; Layout::MAX_LEN]; TAYLOR_ORDER + 1]),
+            edge: None,
+            impacts: Vec::new(),
+            revolutions: Vec::new(),
+            switch_count: 0,
+        };
+        plant.set_steady_state(set);
+        plant.begin_segment();
+        Ok(plant)
+    }
+
+    /// Steady state at `set`: no vibration, every shaft carrying the load.
+    pub(super) fn set_steady_state(&mut self, set: SetPoints) {
+        let load = set.load_nm;
+        let [k12, k34, k45] = self.mc.shaft_stiffness_nm_per_rad;
+        let b = self.mc.half_backlash_rad * (1.0 - self.mc.backlash_variation);
+        let k23 = self.mc.mesh_stiffness_nm_per_rad;
+        // Loaded: on the loaded flank; unloaded: centred in the free play.
+        let d = match load.partial_cmp(&0.0) {
+            Some(std::cmp::Ordering::Greater) => -b - load / k23,
+            Some(std::cmp::Ordering::Less) => b - load / k23,
+            _ => 0.0,
+        };
+        let x = [
+            load / k12,
+            0.0,
+            d,
+            d - load / k34,
+            d - load / k34 - load / k45,
+        ];
+        self.u = [0.0; Layout::MAX_LEN];
+        self.u[X0..X0 + 5].copy_from_slice(&x);
+        self.u[Z] = if self.mc.ki_nm_per_rad > 0.0 {
+            load / self.mc.ki_nm_per_rad
+        } else {
+            0.0
+        };
+        self.u[UNIT] = 1.0;
+        self.u[LOAD] = load;
+        let mesh = match load.partial_cmp(&0.0) {
+            Some(std::cmp::Ordering::Greater) => MeshMode::Drive,
+            Some(std::cmp::Ordering::Less) => MeshMode::Back,
+            _ => MeshMode::Apart,
+        };
+        let motor = if load > self.mc.torque_limit_nm {
+            MotorMode::LimitHigh
+        } else if load < -self.mc.torque_limit_nm {
+            MotorMode::LimitLow
+        } else {
+            MotorMode::Linear
+        };
+        self.mode = Mode {
+            mesh,
+            pairs: PairZone::One,
+            motor,
+        };
+        self.reset_angle_targets();
+    }
+
+    /// Replaces the relative state [X1..X5, V1..V5, Vf, z] and the mesh mode (for tests
+    /// and studies that start from a chosen condition).
+    pub fn set_relative_state(&mut self, state: [f64; N_MECH], mesh: MeshMode) {
+        self.u[..N_MECH].copy_from_slice(&state);
+        self.edge = None;
+        self.mode.mesh = mesh;
+        self.reset_angle_targets();
+    }
+
+    pub(super) fn reset_angle_targets(&mut self) {
+        let theta2 = self.driving_gear_angle_rad(0.0);
+        let pitch = self.geometry.tooth_pitch_rad;
+        self.next_tooth_rad = ((theta2 / pitch).floor() + 1.0) * pitch;
+        self.next_rev_rad = ((theta2 / TAU).floor() + 1.0) * TAU;
+        self.set_zone_from_angle(0.0);
+    }
+
+    /// Simulated time (s).
+    pub fn time_s(&self) -> f64 {
+        self.time_at(0.0)
+    }
+
+    /// Every contact start so far.
+    pub fn impacts(&self) -> &[Impact] {
+        &self.impacts
+    }
+
+    /// Takes the impacts logged so far, leaving the log empty (keeps memory flat in long runs).
+    pub fn drain_impacts(&mut self) -> Vec<Impact> {
+        std::mem::take(&mut self.impacts)
+    }
+
+    /// Once-per-revolution samples so far.
+    pub fn revolutions(&self) -> &[RevolutionSample] {
+        &self.revolutions
+    }
+
+    /// Takes the revolution samples logged so far.
+    pub fn drain_revolutions(&mut self) -> Vec<RevolutionSample> {
+        std::mem::take(&mut self.revolutions)
+    }
+
+    /// Number of mode switches handled so far.
+    pub fn switch_count(&self) -> u64 {
+        self.switch_count
+    }
+
+    /// The relative state [X1..X5 (rad), V1..V5 (rad/s), Vf (rad/s), z (rad)].
+    pub fn relative_state(&self) -> [f64; N_MECH] {
+        std::array::from_fn(|i| self.u[i])
+    }
+
+    /// The current discrete mode.
+    pub fn mode(&self) -> Mode {
+        self.mode
+    }
+
+    /// The parameters the plant runs with.
+    pub fn params(&self) -> &RigParams {
+        &self.params
+    }
+
+    /// The plant's constants as the equations use them.
+    pub fn constants(&self) -> &ModelConstants {
+        &self.mc
+    }
+
+    /// Gear geometry derived from the parameters.
+    pub fn geometry(&self) -> &GearGeometry {
+        &self.geometry
+    }
+
+    /// Output sample period (s).
+    pub fn output_step_s(&self) -> f64 {
+        self.output_step_s
+    }
+
+    /// Internal steps per output sample.
+    pub fn substeps(&self) -> u64 {
+        self.substeps
+    }
+
+    /// Set points in force now.
+    pub fn set_points(&self) -> SetPoints {
+        self.segment.set
+    }
+}
+
+fn check_config(config: &PlantConfig) -> Result<(), RigError> {
+    if !(config.output_rate_hz.is_finite()
+        && config.output_rate_hz >= 100.0
+        && config.output_rate_hz <= 10.0e6)
+    {
+        return Err(RigError::InvalidOption {
+            name: "output_rate_hz",
+            value: config.output_rate_hz.to_string(),
+            allowed: "must lie in [100, 1e7] Hz",
+        });
+    }
+    if !(config.setpoint_update_s.is_finite() && config.setpoint_update_s > 0.0) {
+        return Err(RigError::InvalidOption {
+            name: "setpoint_update_s",
+            value: config.setpoint_update_s.to_string(),
+            allowed: "must be a finite time > 0 s",
+        });
+    }
+    Ok(())
+}

@@ -1,0 +1,191 @@
+//! The stepping loop: the fast exact step, the checks for switches within it, and the
+//! exact path that locates every switch and continues from it.
+
+use crate::error::RigError;
+use crate::events::{EventFn, EventKind, first_crossing, may_cross};
+use crate::layout::{Layout, N_MECH, V0, X0};
+use crate::propagator::{FUSED_ROWS, FusedRows, MAX_ROW_EVENTS, ModeSystem, TAYLOR_ORDER};
+
+use super::segments::rotate;
+use super::state::{Plant, RESYNC_STEPS, SWITCH_LIMIT};
+
+impl Plant {
+    /// One internal step, handling every switch inside it.
+    pub(super) fn advance_step(&mut self) -> Result<(), RigError> {
+        if Some(self.step_index) == self.segment.end_step {
+            self.begin_segment();
+        } else if self.step_index.is_multiple_of(RESYNC_STEPS) {
+            self.resync_harmonics(0.0);
+        }
+        self.cache.ensure(self.mode);
+        let system = self.cache.built(self.mode);
+        let fused = system.step(&self.u);
+        let start = self
+            .edge
+            .unwrap_or_else(|| system.row_event_values(&self.u));
+        if self.may_switch(system, &start, &fused) {
+            self.edge = None;
+            self.advance_exactly()?;
+        } else {
+            self.u[..N_MECH].copy_from_slice(&fused[..N_MECH]);
+            let rotations = self.cache.rotations();
+            rotate(&mut self.u, rotations);
+            let mut edge = [0.0; 2 * MAX_ROW_EVENTS];
+            edge.copy_from_slice(&fused[N_MECH..FUSED_ROWS]);
+            self.edge = Some(edge);
+        }
+        self.step_index += 1;
+        Ok(())
+    }
+
+    /// Whether any switching function may cross within a whole step, from the row events'
+    /// values and slopes at the step's start (`start`) and end (`end`, from the fused step),
+    /// and the driving gear's angle at both ends.
+    pub(super) fn may_switch(
+        &self,
+        system: &ModeSystem,
+        start: &[f64; 2 * MAX_ROW_EVENTS],
+        end: &FusedRows,
+    ) -> bool {
+        let h = self.step_s;
+        let n = system.row_events.len();
+        for j in 0..n {
+            let g1 = end[N_MECH + j];
+            if g1 > 0.0 {
+                return true;
+            }
+            let d1 = end[N_MECH + n + j] * h;
+            // ≤ 0 at both ends and rising at the end: no interior maximum.
+            if d1 < 0.0 && may_cross(start[j].min(0.0), start[n + j] * h, g1, d1) {
+                return true;
+            }
+        }
+        let omega = self.segment.set.speed_rad_s();
+        let phase = self.phase_rad(0.0);
+        let theta0 = phase + self.u[X0 + 1];
+        let theta1 = phase + omega * h + end[X0 + 1];
+        let (rate0, rate1) = (omega + self.u[V0 + 1], omega + end[V0 + 1]);
+        system.angle_events.iter().any(|&k| {
+            let event = &system.events[k];
+            let sign = event.angle_sign;
+            let target = self.angle_target(event.kind);
+            let g1 = sign * (theta1 - target);
+            if g1 > 0.0 {
+                return true;
+            }
+            let d1 = sign * rate1 * h;
+            d1 < 0.0
+                && may_cross(
+                    (sign * (theta0 - target)).min(0.0),
+                    sign * rate0 * h,
+                    g1,
+                    d1,
+                )
+        })
+    }
+
+    pub(super) fn event_may_cross(
+        &self,
+        event: &EventFn,
+        u0: &[f64],
+        u1: &[f64],
+        tau_s: f64,
+        delta_s: f64,
+    ) -> bool {
+        let (offset, rate) = self.angle_terms(event.kind, event.angle_sign, tau_s);
+        let g1 = event.value.dot(u1) + offset + rate * delta_s;
+        if g1 > 0.0 {
+            return true;
+        }
+        let g0 = event.value.dot(u0) + offset;
+        let d0 = (event.slope.dot(u0) + rate) * delta_s;
+        let d1 = (event.slope.dot(u1) + rate) * delta_s;
+        may_cross(g0.min(0.0), d0, g1, d1)
+    }
+
+    /// Offset and rate of an angle event's φ term at `tau_s` into the step: sign·(φ − target), sign·Ω.
+    pub(super) fn angle_terms(&self, kind: EventKind, sign: f64, tau_s: f64) -> (f64, f64) {
+        if sign == 0.0 {
+            return (0.0, 0.0);
+        }
+        let phase = self.phase_rad(tau_s);
+        (
+            sign * (phase - self.angle_target(kind)),
+            sign * self.segment.set.speed_rad_s(),
+        )
+    }
+
+    /// The driving-gear angle an angle event waits for (rad).
+    pub(super) fn angle_target(&self, kind: EventKind) -> f64 {
+        match kind {
+            EventKind::ToothPass => self.next_tooth_rad,
+            EventKind::Revolution => self.next_rev_rad,
+            EventKind::ZoneEnd => self.zone_bounds().1,
+            EventKind::ZoneStart => self.zone_bounds().0,
+            _ => 0.0,
+        }
+    }
+
+    /// Redoes the current step on the Taylor expansion, switching at every crossing.
+    pub(super) fn advance_exactly(&mut self) -> Result<(), RigError> {
+        let mut tau = 0.0;
+        for _ in 0..SWITCH_LIMIT {
+            let delta = self.step_s - tau;
+            self.cache.ensure(self.mode);
+            let system = self.cache.built(self.mode);
+            let order = system.taylor(&self.u, delta, &mut self.taylor);
+            let mut end = [0.0; Layout::MAX_LEN];
+            system.taylor_state(&self.taylor, order, 1.0, &mut end);
+            match self.first_event(system, &end, order, tau, delta) {
+                None => {
+                    self.u = end;
+                    return Ok(());
+                }
+                Some((s, kind)) => {
+                    let mut at = [0.0; Layout::MAX_LEN];
+                    system.taylor_state(&self.taylor, order, s, &mut at);
+                    self.u = at;
+                    tau += s * delta;
+                    self.switch_count += 1;
+                    self.handle(kind, tau);
+                }
+            }
+        }
+        Err(RigError::Chatter {
+            t_s: self.time_at(tau),
+            limit: SWITCH_LIMIT,
+        })
+    }
+
+    /// The earliest crossing (fraction s of the remaining `delta_s`, kind) of any switching
+    /// function, given the Taylor vectors from the state now and the state `end` at `delta_s`.
+    pub(super) fn first_event(
+        &self,
+        system: &ModeSystem,
+        end: &[f64],
+        order: usize,
+        tau_s: f64,
+        delta_s: f64,
+    ) -> Option<(f64, EventKind)> {
+        let mut best: Option<(f64, EventKind)> = None;
+        let mut buffer = [0.0; TAYLOR_ORDER + 1];
+        let coeffs = &mut buffer[..=order];
+        for event in &system.events {
+            if !self.event_may_cross(event, &self.u, end, tau_s, delta_s) {
+                continue;
+            }
+            for (c, v) in coeffs.iter_mut().zip(self.taylor.iter()) {
+                *c = event.value.dot(v);
+            }
+            let (offset, rate) = self.angle_terms(event.kind, event.angle_sign, tau_s);
+            coeffs[0] += offset;
+            coeffs[1] += rate * delta_s;
+            if let Some(s) = first_crossing(coeffs)
+                && best.is_none_or(|(b, _)| s < b)
+            {
+                best = Some((s, event.kind));
+            }
+        }
+        best
+    }
+}

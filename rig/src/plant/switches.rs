@@ -1,0 +1,154 @@
+//! What each switch does: contact starts (impacts), separations, clipped torque, pair
+//! zones, motor limits, tooth shifting and revolution samples.
+
+use std::f64::consts::TAU;
+
+use crate::events::EventKind;
+use crate::layout::{REV, V0, X0};
+use crate::mode::{MeshMode, MotorMode, PairZone};
+use crate::options::ContactLaw;
+use crate::records::{Flank, Impact, RevolutionSample};
+
+use super::state::Plant;
+
+impl Plant {
+    /// Applies the consequences of a crossing at `tau_s` into the current step.
+    pub(super) fn handle(&mut self, kind: EventKind, tau_s: f64) {
+        match kind {
+            EventKind::TouchDrive => self.touch(Flank::Drive, tau_s),
+            EventKind::TouchBack => self.touch(Flank::Back, tau_s),
+            EventKind::LeaveDrive | EventKind::LeaveBack => self.set_mesh(MeshMode::Apart, tau_s),
+            EventKind::DriveUnloads => self.set_mesh(MeshMode::DriveClipped, tau_s),
+            EventKind::DriveReloads => self.set_mesh(MeshMode::Drive, tau_s),
+            EventKind::BackUnloads => self.set_mesh(MeshMode::BackClipped, tau_s),
+            EventKind::BackReloads => self.set_mesh(MeshMode::Back, tau_s),
+            EventKind::ZoneEnd => self.move_zone(1),
+            EventKind::ZoneStart => self.move_zone(-1),
+            EventKind::LimitHigh => self.mode.motor = MotorMode::LimitHigh,
+            EventKind::LimitLow => self.mode.motor = MotorMode::LimitLow,
+            EventKind::LimitRelease => self.mode.motor = MotorMode::Linear,
+            EventKind::ToothPass => self.tooth_pass(tau_s),
+            EventKind::Revolution => self.revolution(tau_s),
+        }
+    }
+
+    pub(super) fn touch(&mut self, flank: Flank, tau_s: f64) {
+        let (gap, closing) = self.gap(flank);
+        debug_assert!(gap.abs() < 1e-9);
+        let theta2 = self.driving_gear_angle_rad(tau_s);
+        self.impacts.push(Impact {
+            time_s: self.time_at(tau_s),
+            flank,
+            tooth: self.tooth_at(theta2),
+            closing_speed_rad_s: closing,
+        });
+        let mesh = match flank {
+            Flank::Drive => MeshMode::Drive,
+            Flank::Back => MeshMode::Back,
+        };
+        self.set_mesh(mesh, tau_s);
+    }
+
+    /// Overlap of `flank` (rad, > 0 when the teeth overlap) and its rate (rad/s) in the
+    /// current state, whose harmonic states hold cos φ and sin φ of this instant.
+    pub(super) fn gap(&self, flank: Flank) -> (f64, f64) {
+        let u = &self.u;
+        let omega = self.segment.set.speed_rad_s();
+        let b0 = self.mc.half_backlash_rad;
+        let c1 = self.mc.backlash_variation;
+        let b = b0 * (1.0 - c1 * u[REV]);
+        let b_rate = b0 * c1 * omega * u[REV + 1];
+        let d = u[X0 + 2] - u[X0 + 1];
+        let d_rate = u[V0 + 2] - u[V0 + 1];
+        match flank {
+            Flank::Drive => (-d - b, -d_rate - b_rate),
+            Flank::Back => (d - b, d_rate - b_rate),
+        }
+    }
+
+    pub(super) fn set_mesh(&mut self, mesh: MeshMode, tau_s: f64) {
+        self.mode.mesh = mesh;
+        self.set_zone_from_angle(tau_s);
+    }
+
+    /// Thesis §5.4.5: at each tooth pass a loaded pair hands its deflection back, so that
+    /// the new pair starts undeflected (X2, X3 each move by half the overlap).
+    pub(super) fn tooth_pass(&mut self, tau_s: f64) {
+        self.next_tooth_rad += self.geometry.tooth_pitch_rad;
+        let flank = match self.mode.mesh {
+            MeshMode::Drive | MeshMode::DriveClipped => Flank::Drive,
+            MeshMode::Back | MeshMode::BackClipped => Flank::Back,
+            MeshMode::Apart => return,
+        };
+        let (overlap, _) = self.gap(flank);
+        let half = 0.5 * overlap.max(0.0);
+        let sign = if flank == Flank::Drive { 1.0 } else { -1.0 };
+        self.u[X0 + 2] += sign * half;
+        self.u[X0 + 1] -= sign * half;
+        let (_, closing) = self.gap(flank);
+        let force = closing * self.mc.mesh_spring(self.mode.pairs).1;
+        let mesh = match (
+            flank,
+            closing > 0.0,
+            self.law == ContactLaw::NoPull && force <= 0.0,
+        ) {
+            (_, false, _) => MeshMode::Apart,
+            (Flank::Drive, true, false) => MeshMode::Drive,
+            (Flank::Drive, true, true) => MeshMode::DriveClipped,
+            (Flank::Back, true, false) => MeshMode::Back,
+            (Flank::Back, true, true) => MeshMode::BackClipped,
+        };
+        self.set_mesh(mesh, tau_s);
+    }
+
+    pub(super) fn revolution(&mut self, tau_s: f64) {
+        self.next_rev_rad += TAU;
+        let mut state = [0.0; 10];
+        state.copy_from_slice(&self.u[..10]);
+        self.revolutions.push(RevolutionSample {
+            time_s: self.time_at(tau_s),
+            state,
+            shaft_torque_nm: self.mc.shaft_torques_nm(&self.u)[1],
+        });
+    }
+
+    /// Pair zones alternate along θ2: zone 2k is [kp, kp + fp) with two pairs, zone 2k+1
+    /// [kp + fp, (k+1)p) with one, f = ε − 1.
+    pub(super) fn zone_bounds(&self) -> (f64, f64) {
+        let pitch = self.geometry.tooth_pitch_rad;
+        let f = self.geometry.double_pair_fraction();
+        let k = self.zone_index.div_euclid(2) as f64;
+        if self.zone_index.rem_euclid(2) == 0 {
+            (k * pitch, (k + f) * pitch)
+        } else {
+            ((k + f) * pitch, (k + 1.0) * pitch)
+        }
+    }
+
+    pub(super) fn set_zone_from_angle(&mut self, tau_s: f64) {
+        let engaged = matches!(self.mode.mesh, MeshMode::Drive | MeshMode::Back);
+        if !(self.flags.alternating_pairs && engaged) {
+            self.mode.pairs = PairZone::One;
+            return;
+        }
+        let pitch = self.geometry.tooth_pitch_rad;
+        let theta2 = self.driving_gear_angle_rad(tau_s);
+        let k = (theta2 / pitch).floor();
+        let in_double = theta2 - k * pitch < self.geometry.double_pair_fraction() * pitch;
+        self.zone_index = 2 * k as i64 + i64::from(!in_double);
+        self.apply_zone();
+    }
+
+    pub(super) fn move_zone(&mut self, by: i64) {
+        self.zone_index += by;
+        self.apply_zone();
+    }
+
+    pub(super) fn apply_zone(&mut self) {
+        self.mode.pairs = if self.zone_index.rem_euclid(2) == 0 {
+            PairZone::Two
+        } else {
+            PairZone::One
+        };
+    }
+}
