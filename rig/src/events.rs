@@ -311,28 +311,44 @@ fn refine(coeffs: &[f64], mut a: f64, mut b: f64) -> f64 {
         } else {
             a = s;
         }
-        let newton = if slope != 0.0 {
-            s - value / slope
-        } else {
-            f64::NAN
-        };
+        let newton = s - value / slope;
         let next = if newton > a && newton < b {
             newton
         } else {
             0.5 * (a + b)
         };
-        if next <= a || next >= b || b - a <= f64::EPSILON * b {
+        // Converged when the next iterate moves by a few ulps or leaves no float between a and b.
+        if next <= a || next >= b || (next - s).abs() <= 4.0 * f64::EPSILON * s {
             break;
         }
         s = next;
     }
-    b
+    // Tighten the bracket around the converged iterate, then bisect to adjacent floats.
+    let delta = 16.0 * f64::EPSILON * s.abs().max(f64::MIN_POSITIVE);
+    if s - delta > a && poly_eval(coeffs, s - delta).0 <= 0.0 {
+        a = s - delta;
+    }
+    if s + delta < b && poly_eval(coeffs, s + delta).0 > 0.0 {
+        b = s + delta;
+    }
+    loop {
+        let mid = 0.5 * (a + b);
+        if mid <= a || mid >= b {
+            return b;
+        }
+        if poly_eval(coeffs, mid).0 > 0.0 {
+            b = mid;
+        } else {
+            a = mid;
+        }
+    }
 }
 
 /// Whether a cubic through (0, g0, d0) and (1, g1, d1) (values and slopes in s) may exceed 0 in (0, 1).
 ///
 /// Used before any expensive search: true on a sign change or when the Hermite cubic's
 /// interior maximum lies within a safety margin of zero.
+#[inline]
 pub fn may_cross(g0: f64, d0: f64, g1: f64, d1: f64) -> bool {
     if g1 > 0.0 {
         return true;

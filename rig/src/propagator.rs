@@ -42,10 +42,8 @@ pub struct ModeSystem {
     pub row_events: Vec<usize>,
     /// Indices in `events` of the angle events (checked from θ2 directly).
     pub angle_events: Vec<usize>,
-    /// Non-zero entries of A by row: `row_starts[r]..row_starts[r + 1]` index `entries`.
-    row_starts: Vec<usize>,
-    /// (column, value) of each non-zero entry, row after row.
-    entries: Vec<(usize, f64)>,
+    /// Columns of A (rows past `len` zero), for the Taylor expansion.
+    a_columns: [[f64; Layout::MAX_LEN]; Layout::MAX_LEN],
     /// Spectral radius of A (rad/s).
     spectral_radius: f64,
     len: usize,
@@ -82,28 +80,22 @@ impl ModeSystem {
                 }
             })
         });
-        let mut row_starts = vec![0];
-        let mut entries = Vec::new();
-        for row in 0..len {
-            entries.extend(
-                (0..len)
-                    .filter(|&col| a[(row, col)] != 0.0)
-                    .map(|col| (col, a[(row, col)])),
-            );
-            row_starts.push(entries.len());
-        }
-        assert!(
-            events.len() <= MAX_EVENTS,
-            "a mode has at most {MAX_EVENTS} switching functions"
-        );
+        let a_columns = std::array::from_fn(|col| {
+            std::array::from_fn(|row| {
+                if col < len && row < len {
+                    a[(row, col)]
+                } else {
+                    0.0
+                }
+            })
+        });
         Self {
             mode,
             events,
             step_columns,
             row_events,
             angle_events,
-            row_starts,
-            entries,
+            a_columns,
             spectral_radius: rho,
             len,
         }
@@ -135,19 +127,25 @@ impl ModeSystem {
     }
 
     /// A·u for the augmented state (the time derivative u').
-    pub fn derivative(&self, u: &[f64], out: &mut [f64]) {
+    pub fn derivative(&self, u: &[f64; Layout::MAX_LEN], out: &mut [f64; Layout::MAX_LEN]) {
         self.scaled_derivative(u, 1.0, out);
     }
 
-    /// scale·A·u.
-    fn scaled_derivative(&self, u: &[f64], scale: f64, out: &mut [f64]) {
-        for (row, o) in out[..self.len].iter_mut().enumerate() {
-            let entries = &self.entries[self.row_starts[row]..self.row_starts[row + 1]];
-            *o = scale
-                * entries
-                    .iter()
-                    .map(|&(col, value)| value * u[col])
-                    .sum::<f64>();
+    /// scale·A·u over whole padded columns (vectorised multiply-adds).
+    fn scaled_derivative(
+        &self,
+        u: &[f64; Layout::MAX_LEN],
+        scale: f64,
+        out: &mut [f64; Layout::MAX_LEN],
+    ) {
+        let mut sum = [0.0; Layout::MAX_LEN];
+        for (column, &weight) in self.a_columns.iter().zip(u) {
+            for (s, &c) in sum.iter_mut().zip(column) {
+                *s = c.mul_add(weight, *s);
+            }
+        }
+        for (o, s) in out.iter_mut().zip(sum) {
+            *o = scale * s;
         }
     }
 

@@ -91,20 +91,25 @@ impl SystemCache {
     }
 
     /// Builds the system of `mode` if it is not built yet.
+    #[inline]
     pub fn ensure(&mut self, mode: Mode) {
-        let slot = &mut self.systems[mode.index()];
-        if slot.is_none() {
-            let a = system_matrix(&self.mc, &self.layout, mode, self.frequencies);
-            let events = mode_events(
-                &self.mc,
-                self.law,
-                self.flags,
-                mode,
-                &a,
-                self.frequencies.rotation_rad_s,
-            );
-            *slot = Some(ModeSystem::new(mode, &a, self.step_s, events));
+        if self.systems[mode.index()].is_none() {
+            self.build(mode);
         }
+    }
+
+    #[cold]
+    fn build(&mut self, mode: Mode) {
+        let a = system_matrix(&self.mc, &self.layout, mode, self.frequencies);
+        let events = mode_events(
+            &self.mc,
+            self.law,
+            self.flags,
+            mode,
+            &a,
+            self.frequencies.rotation_rad_s,
+        );
+        self.systems[mode.index()] = Some(ModeSystem::new(mode, &a, self.step_s, events));
     }
 
     /// The system of `mode`; [`SystemCache::ensure`] must have been called for it.
