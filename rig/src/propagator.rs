@@ -105,9 +105,19 @@ impl ModeSystem {
     /// (rows 0..12) and the row events' values and slopes there (rows 12..).
     #[inline]
     pub fn step(&self, u: &[f64; Layout::MAX_LEN]) -> FusedRows {
-        // All MAX_LEN columns (those past `len` are zero): a fixed shape the compiler unrolls.
+        match self.len {
+            16 => self.fused_product::<16>(u),
+            18 => self.fused_product::<18>(u),
+            _ => self.fused_product::<{ Layout::MAX_LEN }>(u),
+        }
+    }
+
+    /// The fused product over the first `N` columns (the rest are zero), a fixed shape
+    /// the compiler unrolls into vector multiply-adds.
+    #[inline(always)]
+    fn fused_product<const N: usize>(&self, u: &[f64; Layout::MAX_LEN]) -> FusedRows {
         let mut out = [0.0; FUSED_ROWS];
-        for (column, &weight) in self.step_columns.iter().zip(u) {
+        for (column, &weight) in self.step_columns[..N].iter().zip(&u[..N]) {
             for (o, &c) in out.iter_mut().zip(column) {
                 *o = c.mul_add(weight, *o);
             }

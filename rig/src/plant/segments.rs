@@ -7,6 +7,7 @@ use super::state::{Plant, Segment};
 
 impl Plant {
     /// Starts a new stretch of constant set points at the current step.
+    #[inline(never)]
     pub(super) fn begin_segment(&mut self) {
         let t = self.time_at(0.0);
         let next_knot = self.schedule.next_knot_after(t);
@@ -44,6 +45,7 @@ impl Plant {
     }
 
     /// Sets the harmonic states from the exact phases at `tau_s` into the step.
+    #[inline(never)]
     pub(super) fn resync_harmonics(&mut self, tau_s: f64) {
         self.edge = None;
         let phase = self.phase_rad(tau_s);

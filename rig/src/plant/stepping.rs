@@ -127,6 +127,7 @@ impl Plant {
     }
 
     /// Redoes the current step on the Taylor expansion, switching at every crossing.
+    #[inline(never)]
     pub(super) fn advance_exactly(&mut self) -> Result<(), RigError> {
         let mut tau = 0.0;
         for _ in 0..SWITCH_LIMIT {
