@@ -23,7 +23,16 @@ impl Plant {
         let start = self
             .edge
             .unwrap_or_else(|| system.row_event_values(&self.u));
-        if self.may_switch(system, &start, &fused) {
+        let targets = self.angle_targets(system);
+        let crossing = StepEnds {
+            start: &start,
+            end: &fused,
+            u0: &self.u,
+            phase_rad: self.phase_rad(0.0),
+            speed_rad_s: self.segment.set.speed_rad_s(),
+            step_s: self.step_s,
+        };
+        if crossing.may_switch(system, &targets) {
             self.edge = None;
             self.advance_exactly()?;
         } else {
@@ -36,52 +45,6 @@ impl Plant {
         }
         self.step_index += 1;
         Ok(())
-    }
-
-    /// Whether any switching function may cross within a whole step, from the row events'
-    /// values and slopes at the step's start (`start`) and end (`end`, from the fused step),
-    /// and the driving gear's angle at both ends.
-    pub(super) fn may_switch(
-        &self,
-        system: &ModeSystem,
-        start: &[f64; 2 * MAX_ROW_EVENTS],
-        end: &FusedRows,
-    ) -> bool {
-        let h = self.step_s;
-        let n = system.row_events.len();
-        for j in 0..n {
-            let g1 = end[N_MECH + j];
-            if g1 > 0.0 {
-                return true;
-            }
-            let d1 = end[N_MECH + n + j] * h;
-            // ≤ 0 at both ends and rising at the end: no interior maximum.
-            if d1 < 0.0 && may_cross(start[j].min(0.0), start[n + j] * h, g1, d1) {
-                return true;
-            }
-        }
-        let omega = self.segment.set.speed_rad_s();
-        let phase = self.phase_rad(0.0);
-        let theta0 = phase + self.u[X0 + 1];
-        let theta1 = phase + omega * h + end[X0 + 1];
-        let (rate0, rate1) = (omega + self.u[V0 + 1], omega + end[V0 + 1]);
-        system.angle_events.iter().any(|&k| {
-            let event = &system.events[k];
-            let sign = event.angle_sign;
-            let target = self.angle_target(event.kind);
-            let g1 = sign * (theta1 - target);
-            if g1 > 0.0 {
-                return true;
-            }
-            let d1 = sign * rate1 * h;
-            d1 < 0.0
-                && may_cross(
-                    (sign * (theta0 - target)).min(0.0),
-                    sign * rate0 * h,
-                    g1,
-                    d1,
-                )
-        })
     }
 
     pub(super) fn event_may_cross(
@@ -113,6 +76,17 @@ impl Plant {
             sign * (phase - self.angle_target(kind)),
             sign * self.segment.set.speed_rad_s(),
         )
+    }
+
+    /// (sign, target angle) of each angle event of `system`, in its order.
+    pub(super) fn angle_targets(&self, system: &ModeSystem) -> AngleTargets {
+        let mut targets = AngleTargets::default();
+        for &k in &system.angle_events {
+            let event = &system.events[k];
+            targets.list[targets.len] = (event.angle_sign, self.angle_target(event.kind));
+            targets.len += 1;
+        }
+        targets
     }
 
     /// The driving-gear angle an angle event waits for (rad).
@@ -188,5 +162,71 @@ impl Plant {
             }
         }
         best
+    }
+}
+
+/// Most angle events one mode has (two pair-zone bounds, tooth pass, revolution).
+const MAX_ANGLE_EVENTS: usize = 4;
+
+/// (sign, target angle in rad) of each angle event of a mode.
+#[derive(Clone, Copy, Debug, Default)]
+pub(super) struct AngleTargets {
+    list: [(f64, f64); MAX_ANGLE_EVENTS],
+    len: usize,
+}
+
+/// One whole step as the fast path sees it, for the switch checks.
+pub(super) struct StepEnds<'a> {
+    /// Row events' values and slopes at the step's start.
+    pub start: &'a [f64; 2 * MAX_ROW_EVENTS],
+    /// The fused step: state and row events at the step's end.
+    pub end: &'a FusedRows,
+    /// The augmented state at the step's start.
+    pub u0: &'a [f64; Layout::MAX_LEN],
+    /// Set rotation φ at the step's start (rad).
+    pub phase_rad: f64,
+    /// Set speed Ω (rad/s).
+    pub speed_rad_s: f64,
+    /// Internal step (s).
+    pub step_s: f64,
+}
+
+impl StepEnds<'_> {
+    /// Whether any switching function may cross within the step: a row event from its
+    /// values and slopes at both ends, an angle event from the driving gear's angle
+    /// θ2 = φ + X2 and its rate at both ends.
+    #[inline]
+    pub(super) fn may_switch(&self, system: &ModeSystem, targets: &AngleTargets) -> bool {
+        let (start, end, h) = (self.start, self.end, self.step_s);
+        let n = system.row_events.len();
+        for j in 0..n {
+            let g1 = end[N_MECH + j];
+            if g1 > 0.0 {
+                return true;
+            }
+            let d1 = end[N_MECH + n + j] * h;
+            // ≤ 0 at both ends and rising at the end: no interior maximum.
+            if d1 < 0.0 && may_cross(start[j].min(0.0), start[n + j] * h, g1, d1) {
+                return true;
+            }
+        }
+        let omega = self.speed_rad_s;
+        let theta0 = self.phase_rad + self.u0[X0 + 1];
+        let theta1 = self.phase_rad + omega * h + end[X0 + 1];
+        let (rate0, rate1) = (omega + self.u0[V0 + 1], omega + end[V0 + 1]);
+        targets.list[..targets.len].iter().any(|&(sign, target)| {
+            let g1 = sign * (theta1 - target);
+            if g1 > 0.0 {
+                return true;
+            }
+            let d1 = sign * rate1 * h;
+            d1 < 0.0
+                && may_cross(
+                    (sign * (theta0 - target)).min(0.0),
+                    sign * rate0 * h,
+                    g1,
+                    d1,
+                )
+        })
     }
 }

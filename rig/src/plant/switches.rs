@@ -4,11 +4,12 @@
 use std::f64::consts::TAU;
 
 use crate::events::EventKind;
-use crate::layout::{REV, V0, X0};
+use crate::layout::X0;
 use crate::mode::{MeshMode, MotorMode, PairZone};
 use crate::options::ContactLaw;
 use crate::records::{Flank, Impact, RevolutionSample};
 
+use super::output::flank_gap;
 use super::state::Plant;
 
 impl Plant {
@@ -49,21 +50,9 @@ impl Plant {
         self.set_mesh(mesh, tau_s);
     }
 
-    /// Overlap of `flank` (rad, > 0 when the teeth overlap) and its rate (rad/s) in the
-    /// current state, whose harmonic states hold cos φ and sin φ of this instant.
+    /// Overlap of `flank` (rad, > 0 when the teeth overlap) and its rate (rad/s) now.
     pub(super) fn gap(&self, flank: Flank) -> (f64, f64) {
-        let u = &self.u;
-        let omega = self.segment.set.speed_rad_s();
-        let b0 = self.mc.half_backlash_rad;
-        let c1 = self.mc.backlash_variation;
-        let b = b0 * (1.0 - c1 * u[REV]);
-        let b_rate = b0 * c1 * omega * u[REV + 1];
-        let d = u[X0 + 2] - u[X0 + 1];
-        let d_rate = u[V0 + 2] - u[V0 + 1];
-        match flank {
-            Flank::Drive => (-d - b, -d_rate - b_rate),
-            Flank::Back => (d - b, d_rate - b_rate),
-        }
+        flank_gap(&self.mc, self.segment.set.speed_rad_s(), &self.u, flank)
     }
 
     pub(super) fn set_mesh(&mut self, mesh: MeshMode, tau_s: f64) {
