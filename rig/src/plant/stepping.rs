@@ -78,13 +78,20 @@ impl Plant {
         )
     }
 
-    /// (sign, target angle) of each angle event of `system`, in its order.
+    /// The nearest angles ahead and behind at which an angle event of `system` fires.
     pub(super) fn angle_targets(&self, system: &ModeSystem) -> AngleTargets {
-        let mut targets = AngleTargets::default();
+        let mut targets = AngleTargets {
+            ahead_rad: f64::INFINITY,
+            behind_rad: f64::NEG_INFINITY,
+        };
         for &k in &system.angle_events {
             let event = &system.events[k];
-            targets.list[targets.len] = (event.angle_sign, self.angle_target(event.kind));
-            targets.len += 1;
+            let target = self.angle_target(event.kind);
+            if event.angle_sign > 0.0 {
+                targets.ahead_rad = targets.ahead_rad.min(target);
+            } else {
+                targets.behind_rad = targets.behind_rad.max(target);
+            }
         }
         targets
     }
@@ -165,14 +172,14 @@ impl Plant {
     }
 }
 
-/// Most angle events one mode has (two pair-zone bounds, tooth pass, revolution).
-const MAX_ANGLE_EVENTS: usize = 4;
-
-/// (sign, target angle in rad) of each angle event of a mode.
-#[derive(Clone, Copy, Debug, Default)]
+/// The driving-gear angles at which the nearest angle events fire. Checking the nearest
+/// target ahead (and behind) suffices: a farther one cannot be reached without passing it.
+#[derive(Clone, Copy, Debug)]
 pub(super) struct AngleTargets {
-    list: [(f64, f64); MAX_ANGLE_EVENTS],
-    len: usize,
+    /// Smallest target of the events that fire as θ2 rises past it (rad; +∞ if none).
+    ahead_rad: f64,
+    /// Largest target of the events that fire as θ2 falls past it (rad; −∞ if none).
+    behind_rad: f64,
 }
 
 /// One whole step as the fast path sees it, for the switch checks.
@@ -214,19 +221,22 @@ impl StepEnds<'_> {
         let theta0 = self.phase_rad + self.u0[X0 + 1];
         let theta1 = self.phase_rad + omega * h + end[X0 + 1];
         let (rate0, rate1) = (omega + self.u0[V0 + 1], omega + end[V0 + 1]);
-        targets.list[..targets.len].iter().any(|&(sign, target)| {
-            let g1 = sign * (theta1 - target);
-            if g1 > 0.0 {
-                return true;
-            }
-            let d1 = sign * rate1 * h;
-            d1 < 0.0
-                && may_cross(
-                    (sign * (theta0 - target)).min(0.0),
-                    sign * rate0 * h,
-                    g1,
-                    d1,
-                )
-        })
+        [(1.0, targets.ahead_rad), (-1.0, targets.behind_rad)]
+            .into_iter()
+            .filter(|(_, target)| target.is_finite())
+            .any(|(sign, target)| {
+                let g1 = sign * (theta1 - target);
+                if g1 > 0.0 {
+                    return true;
+                }
+                let d1 = sign * rate1 * h;
+                d1 < 0.0
+                    && may_cross(
+                        (sign * (theta0 - target)).min(0.0),
+                        sign * rate0 * h,
+                        g1,
+                        d1,
+                    )
+            })
     }
 }
