@@ -202,22 +202,35 @@ impl ModeSystem {
     }
 }
 
-/// e^{A h} computed on the balanced matrix D⁻¹AD, D = diag(1 for angles and forcing,
-/// ρ for speeds), whose entries are all of order ρ: the Padé exponential is then accurate
-/// to rounding in every entry, not only relative to the largest (K/J·h ≈ 3000 for the mesh).
+/// e^{A h} computed on the balanced matrix D⁻¹AD, whose entries are all of order ρ or
+/// less: D = 1 for angles and the controller integral, ρ for speeds, and for each forcing
+/// state (unit, load, harmonics) the scale that brings its column's largest entry to ρ.
+/// The Padé exponential is then accurate to rounding in every entry, not only relative
+/// to the largest (K/J·h ≈ 3000 for the mesh), and the constant forcing adds no bias.
 fn balanced_exp(a: &DMatrix<f64>, step_s: f64, rho: f64) -> DMatrix<f64> {
     let len = a.nrows();
-    let speed_scale = rho.max(1.0);
-    let scale = |i: usize| {
+    let rho = rho.max(1.0);
+    let mechanical = |i: usize| {
         if (V0..V0 + 5).contains(&i) || i == VF {
-            speed_scale
+            rho
         } else {
             1.0
         }
     };
-    let balanced = DMatrix::from_fn(len, len, |r, c| a[(r, c)] * scale(c) / scale(r) * step_s);
+    let scale: Vec<f64> = (0..len)
+        .map(|c| {
+            if c < N_MECH {
+                return mechanical(c);
+            }
+            let largest = (0..N_MECH)
+                .map(|r| a[(r, c)].abs() / mechanical(r))
+                .fold(0.0, f64::max);
+            if largest > 0.0 { rho / largest } else { 1.0 }
+        })
+        .collect();
+    let balanced = DMatrix::from_fn(len, len, |r, c| a[(r, c)] * scale[c] / scale[r] * step_s);
     let exp = balanced.exp();
-    DMatrix::from_fn(len, len, |r, c| exp[(r, c)] * scale(r) / scale(c))
+    DMatrix::from_fn(len, len, |r, c| exp[(r, c)] * scale[r] / scale[c])
 }
 
 /// Spectral radius of `a` (rad/s): the fastest rate the Taylor expansion must resolve.
