@@ -265,21 +265,29 @@ const SCAN: usize = 4;
 /// (found where p' changes sign) brackets the crossing, which is then refined to full
 /// precision. Returns the right end of the final bracket, where p > 0.
 pub fn first_crossing(coeffs: &[f64]) -> Option<f64> {
-    let (_, mut slope_a) = poly_eval(coeffs, 0.0);
+    let (value_0, mut slope_a) = poly_eval(coeffs, 0.0);
+    let mut value_a = value_0.min(0.0);
     let mut s_a = 0.0;
+    let width = 1.0 / SCAN as f64;
     for j in 1..=SCAN {
-        let s_b = j as f64 / SCAN as f64;
+        let s_b = j as f64 * width;
         let (value_b, slope_b) = poly_eval(coeffs, s_b);
         if value_b > 0.0 {
             return Some(refine(coeffs, s_a, s_b));
         }
-        if slope_a > 0.0 && slope_b < 0.0 {
+        // An interior maximum above zero needs p' to turn from + to −, and (the quarter
+        // being near-cubic) a Hermite cubic through the ends that comes near zero.
+        if slope_a > 0.0
+            && slope_b < 0.0
+            && may_cross(value_a, slope_a * width, value_b, slope_b * width)
+        {
             let s_max = slope_root(coeffs, s_a, s_b);
             if poly_eval(coeffs, s_max).0 > 0.0 {
                 return Some(refine(coeffs, s_a, s_max));
             }
         }
         s_a = s_b;
+        value_a = value_b;
         slope_a = slope_b;
     }
     None
