@@ -367,12 +367,17 @@ pub fn may_cross(g0: f64, d0: f64, g1: f64, d1: f64) -> bool {
     if !(d0 > 0.0 && d1 < 0.0) {
         return false;
     }
-    // Hermite cubic p(s) = g0 + d0 s + c2 s² + c3 s³.
-    let c2 = 3.0 * (g1 - g0) - 2.0 * d0 - d1;
-    let c3 = 2.0 * (g0 - g1) + d0 + d1;
-    let peak = hermite_max(g0, d0, c2, c3);
     let margin = 0.25 * (g0.abs() + g1.abs() + d0.abs() + d1.abs());
-    peak > -margin
+    // The cubic departs from the chord by s(1−s)[(1−s)(d0 − Δ) − s(d1 − Δ)], Δ = g1 − g0,
+    // at most (|d0 − Δ| + |d1 − Δ|)/4: a cheap bound that settles most cases.
+    let delta = g1 - g0;
+    if g0.max(g1) + 0.25 * ((d0 - delta).abs() + (d1 - delta).abs()) <= -margin {
+        return false;
+    }
+    // Hermite cubic p(s) = g0 + d0 s + c2 s² + c3 s³.
+    let c2 = 3.0 * delta - 2.0 * d0 - d1;
+    let c3 = -2.0 * delta + d0 + d1;
+    hermite_max(g0, d0, c2, c3) > -margin
 }
 
 /// Largest value on (0, 1) of g0 + d0 s + c2 s² + c3 s³ given d0 > 0 > p'(1): at the root
