@@ -4,7 +4,7 @@
 use nalgebra::DMatrix;
 
 use crate::events::EventFn;
-use crate::layout::{Layout, N_MECH, V0, VF};
+use crate::layout::{Layout, N_MECH, UNIT, V0, VF};
 use crate::mode::Mode;
 
 /// Highest Taylor order kept; with ρ·h ≤ 0.5 the remainder of order 16 is below 1e-17.
@@ -19,8 +19,8 @@ pub const MAX_EVENTS: usize = 8;
 /// Most switching functions of one mode that are not angle events (mesh and motor).
 pub const MAX_ROW_EVENTS: usize = 4;
 
-/// Rows of the fused step: the 12 mechanical states, then the values and slopes of the
-/// mode's row events, all at the end of the step.
+/// Rows of the fused step: the 12 mechanical states, then the values of the mode's row
+/// events in four fixed slots and their slopes in four more, all at the end of the step.
 pub const FUSED_ROWS: usize = N_MECH + 2 * MAX_ROW_EVENTS;
 
 /// Result of one fused step.
@@ -62,14 +62,29 @@ impl ModeSystem {
             "a mode has at most {MAX_ROW_EVENTS} mesh and motor switching functions"
         );
         let n = row_events.len();
+        // Row events sit in fixed slots: values at N_MECH + j, slopes at N_MECH + 4 + j.
+        // An empty slot's value is −1 (the unit state's column), its slope 0: never crossing.
         let fused_entry = |row: usize, col: usize| -> f64 {
-            let form = match row.checked_sub(N_MECH) {
-                None => return step[(row, col)],
-                Some(r) if r < n => &events[row_events[r]].value,
-                Some(r) if r < 2 * n => &events[row_events[r - n]].slope,
-                Some(_) => return 0.0,
+            let Some(r) = row.checked_sub(N_MECH) else {
+                return step[(row, col)];
             };
-            form.terms.iter().map(|&(i, c)| c * step[(i, col)]).sum()
+            let (slot, is_slope) = (r % MAX_ROW_EVENTS, r >= MAX_ROW_EVENTS);
+            match (slot < n, is_slope) {
+                (true, false) => events[row_events[slot]]
+                    .value
+                    .terms
+                    .iter()
+                    .map(|&(i, c)| c * step[(i, col)])
+                    .sum(),
+                (true, true) => events[row_events[slot]]
+                    .slope
+                    .terms
+                    .iter()
+                    .map(|&(i, c)| c * step[(i, col)])
+                    .sum(),
+                (false, false) => -step[(UNIT, col)],
+                (false, true) => 0.0,
+            }
         };
         let step_columns = std::array::from_fn(|col| {
             std::array::from_fn(|row| {
@@ -125,13 +140,14 @@ impl ModeSystem {
         out
     }
 
-    /// Values (0..n) and slopes (n..2n) of the row events at `u`.
+    /// Values (slots 0..4) and slopes (slots 4..8) of the row events at `u`; an empty
+    /// slot holds value −1 and slope 0.
     pub fn row_event_values(&self, u: &[f64; Layout::MAX_LEN]) -> [f64; 2 * MAX_ROW_EVENTS] {
         let mut rows = [0.0; 2 * MAX_ROW_EVENTS];
-        let n = self.row_events.len();
+        rows[..MAX_ROW_EVENTS].fill(-1.0);
         for (j, &k) in self.row_events.iter().enumerate() {
             rows[j] = self.events[k].value.dot(u);
-            rows[n + j] = self.events[k].slope.dot(u);
+            rows[MAX_ROW_EVENTS + j] = self.events[k].slope.dot(u);
         }
         rows
     }

@@ -52,7 +52,7 @@ impl Plant {
                 speed_rad_s: speed,
                 step_s: h,
             };
-            if ends.may_switch(system, &targets) {
+            if ends.may_switch(&targets) {
                 break;
             }
             if RECORD {

@@ -32,7 +32,7 @@ impl Plant {
             speed_rad_s: self.segment.set.speed_rad_s(),
             step_s: self.step_s,
         };
-        if crossing.may_switch(system, &targets) {
+        if crossing.may_switch(&targets) {
             self.edge = None;
             self.advance_exactly()?;
         } else {
@@ -203,17 +203,16 @@ impl StepEnds<'_> {
     /// values and slopes at both ends, an angle event from the driving gear's angle
     /// θ2 = φ + X2 and its rate at both ends.
     #[inline]
-    pub(super) fn may_switch(&self, system: &ModeSystem, targets: &AngleTargets) -> bool {
+    pub(super) fn may_switch(&self, targets: &AngleTargets) -> bool {
         let (start, end, h) = (self.start, self.end, self.step_s);
-        let n = system.row_events.len();
-        for j in 0..n {
-            let g1 = end[N_MECH + j];
+        for j in 0..MAX_ROW_EVENTS {
+            let (g1, d1) = (end[N_MECH + j], end[N_MECH + MAX_ROW_EVENTS + j] * h);
             if g1 > 0.0 {
                 return true;
             }
-            let d1 = end[N_MECH + n + j] * h;
-            // ≤ 0 at both ends and rising at the end: no interior maximum.
-            if d1 < 0.0 && may_cross(start[j].min(0.0), start[n + j] * h, g1, d1) {
+            // ≤ 0 at both ends: an interior maximum needs rising at the start, falling at the end.
+            let d0 = start[MAX_ROW_EVENTS + j] * h;
+            if d0 > 0.0 && d1 < 0.0 && may_cross(start[j].min(0.0), d0, g1, d1) {
                 return true;
             }
         }
