@@ -1,6 +1,24 @@
 //! The physical plant of testrig: F. Basmaji's 1983 geared rig (five inertias on a line,
 //! a 1:1 spur pair with backlash, speed-controlled DC motor, eddy-current brake), advanced
 //! exactly between contact switches. See `ARCHITECTURE.md` at the project root.
+//!
+//! ```
+//! use rig::{Plant, PlantConfig, RigChains, Schedule, SignalBlock, preset};
+//!
+//! // The thesis's numbers reproduce its App. C fundamental.
+//! let params = preset("basmaji-1983")?;
+//! let fundamental = RigChains::of(&params).whole_rig.modes()[0].frequency_hz;
+//! assert!((fundamental - 17.84).abs() < 0.01);
+//!
+//! // 200 rev/min with 2.712 N m on the brake: one revolution (0.3 s) of true signals.
+//! let mut plant = Plant::new(params, Schedule::constant(200.0, 2.712), PlantConfig::default())?;
+//! let mut block = SignalBlock::default();
+//! plant.run(15_360, &mut block)?;
+//! let torque = &block.shaft_torque_nm[rig::INTERMEDIATE_SHAFT];
+//! let mean = torque.iter().sum::<f64>() / torque.len() as f64;
+//! assert!((mean - 2.712).abs() < 0.05, "the output shaft carries the load: {mean}");
+//! # Ok::<(), rig::RigError>(())
+//! ```
 
 pub mod energy;
 pub mod error;
