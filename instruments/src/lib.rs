@@ -1,0 +1,33 @@
+//! The measuring chain of testrig: each instrument of the 1983 rig as a block that turns
+//! a sampled input into a sampled output (see `ARCHITECTURE.md` at the project root).
+//!
+//! This first part holds the block trait, the anti-alias low-pass filter (Butterworth and
+//! Bessel as cascaded second-order sections) and the analyser's windows and spectrum
+//! scalings (Heinzel, Rüdiger & Schilling 2002).
+//!
+//! ```
+//! use instruments::{AntiAliasFilter, Block, FilterKind, LowPassSpec};
+//!
+//! // The thesis's 2 kHz setting on the 51.2 kHz stream: an 8th-order Butterworth.
+//! let spec = LowPassSpec { kind: FilterKind::Butterworth, order: 8, cutoff_hz: 2_000.0 };
+//! let filter = AntiAliasFilter::new(Some(spec), 51_200.0)?;
+//! let at = |hz: f64| 20.0 * filter.response(hz).unwrap().norm().log10();
+//! assert!((at(2_000.0) + 3.01).abs() < 0.01);
+//! // A 2.2 kHz line that would alias to 1.8 kHz at 4 kHz sampling is cut by about 6.6 dB.
+//! assert!(at(2_200.0) < -6.0);
+//! # Ok::<(), instruments::InstrumentError>(())
+//! ```
+
+pub mod analog;
+pub mod biquad;
+pub mod block;
+pub mod error;
+pub mod lowpass;
+pub mod spectrum;
+pub mod window;
+
+pub use block::Block;
+pub use error::InstrumentError;
+pub use lowpass::{AntiAliasFilter, FilterKind, LowPassSpec};
+pub use spectrum::{Spectrum, SpectrumEstimator};
+pub use window::Window;
