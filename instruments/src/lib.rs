@@ -1,9 +1,10 @@
 //! The measuring chain of testrig: each instrument of the 1983 rig as a block that turns
 //! a sampled input into a sampled output (see `ARCHITECTURE.md` at the project root).
 //!
-//! This first part holds the block trait, the anti-alias low-pass filter (Butterworth and
-//! Bessel as cascaded second-order sections) and the analyser's windows and spectrum
-//! scalings (Heinzel, Rüdiger & Schilling 2002).
+//! This first part holds the block trait; shaft strain, the strain-gauge bridge, the
+//! RMS voltmeters, the tacho and its digital voltmeter; the anti-alias low-pass filter
+//! (Butterworth and Bessel as cascaded second-order sections); the ADC; and the
+//! analyser's windows and spectrum scalings (Heinzel, Rüdiger & Schilling 2002).
 //!
 //! ```
 //! use instruments::{AntiAliasFilter, Block, FilterKind, LowPassSpec};
@@ -18,16 +19,26 @@
 //! # Ok::<(), instruments::InstrumentError>(())
 //! ```
 
+pub mod adc;
 pub mod analog;
 pub mod biquad;
 pub mod block;
+pub mod bridge;
 pub mod error;
 pub mod lowpass;
 pub mod spectrum;
+pub mod strain;
+pub mod tacho;
+pub mod voltmeter;
 pub mod window;
 
+pub use adc::{Adc, AdcSettings};
 pub use block::Block;
+pub use bridge::{BridgeArrangement, StrainBridge};
 pub use error::InstrumentError;
 pub use lowpass::{AntiAliasFilter, FilterKind, LowPassSpec};
 pub use spectrum::{Spectrum, SpectrumEstimator};
+pub use strain::ShaftStrain;
+pub use tacho::{DigitalVoltmeter, Tacho};
+pub use voltmeter::{Detector, Voltmeter};
 pub use window::Window;
