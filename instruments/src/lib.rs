@@ -21,6 +21,7 @@
 
 pub mod adc;
 pub mod analog;
+pub mod analyser;
 pub mod biquad;
 pub mod block;
 pub mod bridge;
@@ -29,10 +30,12 @@ pub mod lowpass;
 pub mod spectrum;
 pub mod strain;
 pub mod tacho;
+pub mod truth;
 pub mod voltmeter;
 pub mod window;
 
 pub use adc::{Adc, AdcSettings};
+pub use analyser::{Analyser, AnalyserSettings, Averaging, Line, Sampling};
 pub use block::Block;
 pub use bridge::{BridgeArrangement, StrainBridge};
 pub use error::InstrumentError;
@@ -40,5 +43,6 @@ pub use lowpass::{AntiAliasFilter, FilterKind, LowPassSpec};
 pub use spectrum::{Spectrum, SpectrumEstimator};
 pub use strain::ShaftStrain;
 pub use tacho::{DigitalVoltmeter, Tacho};
+pub use truth::AliasTruth;
 pub use voltmeter::{Detector, Voltmeter};
 pub use window::Window;
