@@ -94,6 +94,14 @@ impl AntiAliasFilter {
         self.spec
     }
 
+    /// One sample through the filter.
+    #[inline]
+    pub fn tick(&mut self, x: f64) -> f64 {
+        self.sections
+            .iter_mut()
+            .fold(x, |v, section| section.tick(v))
+    }
+
     /// The second-order sections, in processing order.
     pub fn sections(&self) -> &[Biquad] {
         &self.sections

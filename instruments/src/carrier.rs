@@ -1,0 +1,139 @@
+//! The carrier amplifier (Tektronix 3C66 style) as two blocks sharing one carrier: the
+//! modulator (the AC-excited bridge: bridge output × cos ω_c t) before the slip rings, and
+//! the demodulator after them (×2 cos ω_c t, a second-order Butterworth low-pass, and the
+//! calibrated gain). What the low-pass leaves of the 2ω_c product is the carrier ripple.
+
+use num_complex::Complex64;
+
+use crate::biquad::Biquad;
+use crate::block::Block;
+use crate::error::InstrumentError;
+use crate::lowpass::{AntiAliasFilter, FilterKind, LowPassSpec};
+
+/// Carrier settings shared by modulator and demodulator.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CarrierSettings {
+    /// Carrier frequency (Hz); below the stream's Nyquist (the 3C66's is not known: a parameter).
+    pub carrier_hz: f64,
+    /// Corner of the output low-pass (Hz).
+    pub output_lowpass_hz: f64,
+    /// Output volts per volt of bridge output (the calibration, e.g. 3 V on the scope for
+    /// the bridge voltage of 200 µε).
+    pub gain: f64,
+}
+
+fn check(settings: &CarrierSettings, rate_hz: f64) -> Result<(), InstrumentError> {
+    let nyquist = rate_hz / 2.0;
+    if !(settings.carrier_hz > 0.0 && settings.carrier_hz < nyquist / 2.0) {
+        return Err(InstrumentError::setting(
+            "carrier amplifier",
+            "carrier",
+            settings.carrier_hz,
+            format!(
+                "must lie in (0, {}) Hz so that 2ω_c stays below the stream's Nyquist",
+                nyquist / 2.0
+            ),
+        ));
+    }
+    if !(settings.output_lowpass_hz > 0.0 && settings.output_lowpass_hz < settings.carrier_hz) {
+        return Err(InstrumentError::setting(
+            "carrier amplifier",
+            "output low-pass",
+            settings.output_lowpass_hz,
+            "must lie between 0 and the carrier frequency",
+        ));
+    }
+    if !settings.gain.is_finite() {
+        return Err(InstrumentError::setting(
+            "carrier amplifier",
+            "gain",
+            settings.gain,
+            "must be finite",
+        ));
+    }
+    Ok(())
+}
+
+/// The AC-excited bridge: multiplies the (DC-equivalent) bridge output by the carrier.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CarrierModulator {
+    omega_per_sample: f64,
+    sample: u64,
+}
+
+impl CarrierModulator {
+    /// A modulator at stream rate `rate_hz`.
+    pub fn new(settings: CarrierSettings, rate_hz: f64) -> Result<Self, InstrumentError> {
+        check(&settings, rate_hz)?;
+        Ok(Self {
+            omega_per_sample: std::f64::consts::TAU * settings.carrier_hz / rate_hz,
+            sample: 0,
+        })
+    }
+}
+
+impl Block for CarrierModulator {
+    fn reset(&mut self) {
+        self.sample = 0;
+    }
+
+    fn process(&mut self, input: &[f64], output: &mut [f64]) {
+        for (y, &v) in output.iter_mut().zip(input) {
+            *y = v * (self.omega_per_sample * self.sample as f64).cos();
+            self.sample += 1;
+        }
+    }
+}
+
+/// Synchronous demodulation, output low-pass and calibrated gain.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CarrierDemodulator {
+    omega_per_sample: f64,
+    sample: u64,
+    gain: f64,
+    lowpass: AntiAliasFilter,
+}
+
+impl CarrierDemodulator {
+    /// A demodulator at stream rate `rate_hz`, in step with a modulator built alike.
+    pub fn new(settings: CarrierSettings, rate_hz: f64) -> Result<Self, InstrumentError> {
+        check(&settings, rate_hz)?;
+        let spec = LowPassSpec {
+            kind: FilterKind::Butterworth,
+            order: 2,
+            cutoff_hz: settings.output_lowpass_hz,
+        };
+        Ok(Self {
+            omega_per_sample: std::f64::consts::TAU * settings.carrier_hz / rate_hz,
+            sample: 0,
+            gain: settings.gain,
+            lowpass: AntiAliasFilter::new(Some(spec), rate_hz)?,
+        })
+    }
+
+    /// The output low-pass's sections.
+    pub fn lowpass_sections(&self) -> &[Biquad] {
+        self.lowpass.sections()
+    }
+}
+
+impl Block for CarrierDemodulator {
+    fn reset(&mut self) {
+        self.sample = 0;
+        self.lowpass.reset();
+    }
+
+    fn process(&mut self, input: &[f64], output: &mut [f64]) {
+        for (y, &v) in output.iter_mut().zip(input) {
+            let mixed = 2.0 * v * (self.omega_per_sample * self.sample as f64).cos();
+            self.sample += 1;
+            *y = self.gain * self.lowpass.tick(mixed);
+        }
+    }
+
+    /// From bridge output (before modulation) to amplifier output, for the baseband:
+    /// the gain times the output low-pass.
+    fn response(&self, freq_hz: f64) -> Option<Complex64> {
+        self.lowpass.response(freq_hz).map(|h| h * self.gain)
+    }
+}
