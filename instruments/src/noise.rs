@@ -27,7 +27,7 @@ impl GaussianSource {
     }
 
     /// One sample of N(0, 1).
-    pub fn next(&mut self) -> f64 {
+    pub fn sample(&mut self) -> f64 {
         if let Some(z) = self.spare.take() {
             return z;
         }

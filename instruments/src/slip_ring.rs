@@ -89,9 +89,9 @@ impl Block for SlipRing {
         let s = self.settings;
         for (y, &v) in output.iter_mut().zip(input) {
             let gain = 1.0
-                + s.broadband_rms * self.broadband.next()
+                + s.broadband_rms * self.broadband.sample()
                 + s.per_rev_amplitude * self.phase_rad.sin();
-            *y = v * gain + s.contact_noise_v_rms * self.contact.next();
+            *y = v * gain + s.contact_noise_v_rms * self.contact.sample();
             self.phase_rad = (self.phase_rad
                 + std::f64::consts::TAU * self.rotation_hz * self.step_s)
                 .rem_euclid(std::f64::consts::TAU);
