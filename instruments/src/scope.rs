@@ -1,0 +1,135 @@
+//! The storage oscilloscope (Tektronix 564 with 2B67 time base): volts/div, time/div over
+//! ten divisions, a trigger level and slope, repeated or single sweeps, and the stored
+//! trace as data. The stream passes through unchanged.
+
+use crate::block::Block;
+use crate::error::InstrumentError;
+
+/// Trigger slope.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Slope {
+    /// Trigger on a rising crossing of the level.
+    Rising,
+    /// Trigger on a falling crossing.
+    Falling,
+}
+
+/// Sweep mode.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SweepMode {
+    /// Sweep on every trigger; the stored trace is the latest complete one.
+    Repeat,
+    /// Sweep once on the first trigger and hold it.
+    Single,
+}
+
+/// Scope settings.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ScopeSettings {
+    /// Vertical scale (V per division).
+    pub volts_per_div: f64,
+    /// Horizontal scale (s per division, ten divisions).
+    pub seconds_per_div: f64,
+    /// Trigger level (V).
+    pub trigger_v: f64,
+    /// Trigger slope.
+    pub slope: Slope,
+    /// Sweep mode.
+    pub mode: SweepMode,
+}
+
+/// Vertical half-height of the screen (divisions); the trace clips beyond it.
+pub const HALF_HEIGHT_DIV: f64 = 4.0;
+
+/// The oscilloscope.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Scope {
+    settings: ScopeSettings,
+    sweep_samples: usize,
+    step_s: f64,
+    previous: Option<f64>,
+    sweeping: Vec<f64>,
+    armed: bool,
+    stored: Option<Vec<f64>>,
+}
+
+impl Scope {
+    /// A scope on a stream at `rate_hz`.
+    pub fn new(settings: ScopeSettings, rate_hz: f64) -> Result<Self, InstrumentError> {
+        let valid = settings.volts_per_div > 0.0
+            && settings.seconds_per_div > 0.0
+            && rate_hz > 0.0
+            && settings.trigger_v.is_finite();
+        let sweep = (10.0 * settings.seconds_per_div * rate_hz).round();
+        if !(valid && sweep.is_finite() && sweep >= 2.0) {
+            return Err(InstrumentError::setting(
+                "oscilloscope",
+                "scales",
+                format!("{settings:?} at {rate_hz} Hz"),
+                "V/div and s/div > 0, a sweep of at least two samples",
+            ));
+        }
+        Ok(Self {
+            settings,
+            sweep_samples: sweep as usize,
+            step_s: 1.0 / rate_hz,
+            previous: None,
+            sweeping: Vec::with_capacity(sweep as usize),
+            armed: true,
+            stored: None,
+        })
+    }
+
+    /// The stored sweep as (time from the trigger in s, vertical position in divisions,
+    /// clipped to ±4), or `None` before the first complete sweep.
+    pub fn trace(&self) -> Option<Vec<(f64, f64)>> {
+        let v = self.settings.volts_per_div;
+        self.stored.as_ref().map(|trace| {
+            trace
+                .iter()
+                .enumerate()
+                .map(|(k, &x)| {
+                    (
+                        k as f64 * self.step_s,
+                        (x / v).clamp(-HALF_HEIGHT_DIV, HALF_HEIGHT_DIV),
+                    )
+                })
+                .collect()
+        })
+    }
+
+    fn triggers(&self, previous: f64, now: f64) -> bool {
+        let level = self.settings.trigger_v;
+        match self.settings.slope {
+            Slope::Rising => previous < level && now >= level,
+            Slope::Falling => previous > level && now <= level,
+        }
+    }
+}
+
+impl Block for Scope {
+    fn reset(&mut self) {
+        self.previous = None;
+        self.sweeping.clear();
+        self.armed = true;
+        self.stored = None;
+    }
+
+    fn process(&mut self, input: &[f64], output: &mut [f64]) {
+        output.copy_from_slice(input);
+        for &x in input {
+            let sweeping = !self.sweeping.is_empty();
+            if sweeping {
+                self.sweeping.push(x);
+            } else if self.armed && self.previous.is_some_and(|p| self.triggers(p, x)) {
+                self.sweeping.push(x);
+            }
+            if self.sweeping.len() == self.sweep_samples {
+                self.stored = Some(std::mem::take(&mut self.sweeping));
+                self.sweeping.reserve(self.sweep_samples);
+                self.armed = self.settings.mode == SweepMode::Repeat;
+            }
+            self.previous = Some(x);
+        }
+    }
+}
