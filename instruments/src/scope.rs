@@ -118,10 +118,8 @@ impl Block for Scope {
     fn process(&mut self, input: &[f64], output: &mut [f64]) {
         output.copy_from_slice(input);
         for &x in input {
-            let sweeping = !self.sweeping.is_empty();
-            if sweeping {
-                self.sweeping.push(x);
-            } else if self.armed && self.previous.is_some_and(|p| self.triggers(p, x)) {
+            let triggered = self.armed && self.previous.is_some_and(|p| self.triggers(p, x));
+            if !self.sweeping.is_empty() || triggered {
                 self.sweeping.push(x);
             }
             if self.sweeping.len() == self.sweep_samples {
