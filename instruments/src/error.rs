@@ -15,6 +15,16 @@ pub enum InstrumentError {
         /// What is allowed.
         allowed: String,
     },
+    /// A keyboard program line that cannot be read or run.
+    #[error(
+        "keyboard program line {line}: `{text}` (commands: LABEL n, CLEAR BLOCK b, ANALOG IN CHANNEL c BLOCK b, FOURIER TRANSFORM, POWER SPECTRUM, COUNT LOOP LABEL n TIMES k, DIVIDE BLOCK b BY k, LOG, DISPLAY, END)"
+    )]
+    Program {
+        /// Line number (1-based).
+        line: usize,
+        /// The line, or what went wrong there.
+        text: String,
+    },
 }
 
 impl InstrumentError {
