@@ -2,7 +2,7 @@
 //! active) or quarter (one active, nonlinear) arrangement.
 
 use crate::block::Block;
-use crate::error::InstrumentError;
+use crate::error::{InstrumentError, require_positive};
 
 /// How many arms of the bridge carry active gauges.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -37,16 +37,8 @@ impl StrainBridge {
         gauge_factor: f64,
         excitation_v: f64,
     ) -> Result<Self, InstrumentError> {
-        for (name, value) in [("gauge factor", gauge_factor), ("excitation", excitation_v)] {
-            if !(value.is_finite() && value > 0.0) {
-                return Err(InstrumentError::setting(
-                    "strain bridge",
-                    name,
-                    value,
-                    "must be finite and > 0",
-                ));
-            }
-        }
+        require_positive("strain bridge", "gauge factor", gauge_factor)?;
+        require_positive("strain bridge", "excitation", excitation_v)?;
         Ok(Self {
             arrangement,
             gauge_factor,

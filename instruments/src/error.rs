@@ -27,6 +27,24 @@ pub enum InstrumentError {
     },
 }
 
+/// Checks that `value` is finite and > 0; the error names the instrument and setting.
+pub fn require_positive(
+    instrument: &'static str,
+    setting: &'static str,
+    value: f64,
+) -> Result<(), InstrumentError> {
+    if value.is_finite() && value > 0.0 {
+        Ok(())
+    } else {
+        Err(InstrumentError::setting(
+            instrument,
+            setting,
+            value,
+            "must be finite and > 0",
+        ))
+    }
+}
+
 impl InstrumentError {
     /// A setting error.
     pub fn setting(

@@ -11,7 +11,7 @@ use num_complex::Complex64;
 use crate::analog::{bessel_poles, butterworth_poles};
 use crate::biquad::Biquad;
 use crate::block::Block;
-use crate::error::InstrumentError;
+use crate::error::{InstrumentError, require_positive};
 
 /// Response family of the filter.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -49,14 +49,7 @@ impl AntiAliasFilter {
     /// stream's Nyquist frequency.
     pub fn new(spec: Option<LowPassSpec>, rate_hz: f64) -> Result<Self, InstrumentError> {
         const NAME: &str = "anti-alias filter";
-        if !(rate_hz.is_finite() && rate_hz > 0.0) {
-            return Err(InstrumentError::setting(
-                NAME,
-                "sample rate",
-                rate_hz,
-                "must be a finite rate > 0 Hz",
-            ));
-        }
+        require_positive(NAME, "sample rate", rate_hz)?;
         let sections = match spec {
             None => Vec::new(),
             Some(s) => {

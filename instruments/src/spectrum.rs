@@ -8,7 +8,7 @@ use std::sync::Arc;
 use num_complex::Complex64;
 use rustfft::{Fft, FftPlanner};
 
-use crate::error::InstrumentError;
+use crate::error::{InstrumentError, require_positive};
 use crate::window::Window;
 
 /// Which spectrum, with its unit.
@@ -57,14 +57,7 @@ impl SpectrumEstimator {
                 "must be a power of two from 16 to 1048576",
             ));
         }
-        if !(rate_hz.is_finite() && rate_hz > 0.0) {
-            return Err(InstrumentError::setting(
-                NAME,
-                "sample rate",
-                rate_hz,
-                "must be a finite rate > 0 Hz",
-            ));
-        }
+        require_positive(NAME, "sample rate", rate_hz)?;
         let weights = window.coefficients(n);
         let fft = FftPlanner::new().plan_fft_forward(n);
         let scratch = vec![Complex64::default(); fft.get_inplace_scratch_len()];

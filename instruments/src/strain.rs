@@ -1,7 +1,7 @@
 //! Shaft strain from torque: surface shear of a solid round shaft, seen by gauges at ±45°.
 
 use crate::block::Block;
-use crate::error::InstrumentError;
+use crate::error::{InstrumentError, require_positive};
 use num_complex::Complex64;
 
 /// Torque (N m) → principal surface strain (dimensionless) of a solid round shaft in
@@ -26,19 +26,8 @@ impl ShaftStrain {
 
     /// A shaft of `diameter_m` and `shear_modulus_pa`, both finite and > 0.
     pub fn new(diameter_m: f64, shear_modulus_pa: f64) -> Result<Self, InstrumentError> {
-        for (name, value) in [
-            ("diameter", diameter_m),
-            ("shear modulus", shear_modulus_pa),
-        ] {
-            if !(value.is_finite() && value > 0.0) {
-                return Err(InstrumentError::setting(
-                    "shaft strain",
-                    name,
-                    value,
-                    "must be finite and > 0",
-                ));
-            }
-        }
+        require_positive("shaft strain", "diameter", diameter_m)?;
+        require_positive("shaft strain", "shear modulus", shear_modulus_pa)?;
         Ok(Self {
             diameter_m,
             shear_modulus_pa,

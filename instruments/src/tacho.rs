@@ -2,7 +2,7 @@
 //! voltmeter that reads it (Schlumberger A200).
 
 use crate::block::Block;
-use crate::error::InstrumentError;
+use crate::error::{InstrumentError, require_positive};
 
 /// An AC tacho-generator on the motor shaft: input the shaft speed (rad/s), output its
 /// terminal voltage (V). Amplitude and frequency are proportional to speed:
@@ -24,14 +24,7 @@ impl Tacho {
     /// The rig's tacho at stream rate `rate_hz`: 0.04 V rms per rev/min, 4 poles (thesis
     /// silent), no ripple.
     pub fn crompton_parkinson(rate_hz: f64) -> Result<Self, InstrumentError> {
-        if !(rate_hz.is_finite() && rate_hz > 0.0) {
-            return Err(InstrumentError::setting(
-                "tacho",
-                "sample rate",
-                rate_hz,
-                "must be finite and > 0",
-            ));
-        }
+        require_positive("tacho", "sample rate", rate_hz)?;
         Ok(Self {
             volts_rms_per_rpm: 0.04,
             poles: 4,
