@@ -22,6 +22,8 @@ pub enum Command {
     Simulate(SimulateArgs),
     /// Every parameter with its value, unit and meaning.
     Params(ParamsArgs),
+    /// Any WAV file as the analogue signal through filter, ADC and Fourier analyser.
+    Analyse(AnalyseArgs),
 }
 
 /// Choice of parameter set.
@@ -84,4 +86,47 @@ pub struct ParamsArgs {
     /// Print JSON instead of a table.
     #[arg(long)]
     pub json: bool,
+}
+
+/// `testrig analyse`.
+#[derive(Debug, Args)]
+pub struct AnalyseArgs {
+    /// The WAV file (ours or a real recording), taken as the analogue signal at its own rate.
+    pub file: PathBuf,
+    /// Channel of the file (0 = first).
+    #[arg(long, default_value_t = 0)]
+    pub channel: usize,
+    /// Top of the displayed band (Hz).
+    #[arg(long, default_value_t = 2_000.0)]
+    pub fmax: f64,
+    /// Block size N (a power of two).
+    #[arg(long, default_value_t = 1024)]
+    pub block: usize,
+    /// Window: uniform, hanning or flattop.
+    #[arg(long, default_value = "hanning")]
+    pub window: String,
+    /// Spectra to average (linear: sum, then divide).
+    #[arg(long, default_value_t = 10)]
+    pub averages: usize,
+    /// Overlap of successive blocks (%).
+    #[arg(long, default_value_t = 0.0)]
+    pub overlap: f64,
+    /// Sampling convention: thesis (fs = 2 Fmax, N/2 lines) or 2.56 (fs = 2.56 Fmax).
+    #[arg(long, default_value = "thesis")]
+    pub sampling: String,
+    /// Anti-alias filter: none, butterworth:ORDER or bessel:ORDER.
+    #[arg(long, default_value = "none")]
+    pub filter: String,
+    /// Filter cut-off (Hz); default Fmax.
+    #[arg(long)]
+    pub cutoff: Option<f64>,
+    /// ADC resolution (bits).
+    #[arg(long, default_value_t = 12)]
+    pub bits: u32,
+    /// ADC full scale ±range in the file's unit (integer WAVs read as ±1 full scale).
+    #[arg(long, default_value_t = 1.0)]
+    pub range: f64,
+    /// Folder for spectrum.csv and spectrum.png.
+    #[arg(long)]
+    pub out: PathBuf,
 }

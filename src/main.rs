@@ -3,6 +3,8 @@
 mod cli;
 mod commands;
 mod rig_setup;
+mod spectrum_output;
+mod wav_input;
 
 use clap::Parser;
 

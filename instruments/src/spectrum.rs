@@ -46,15 +46,30 @@ pub struct SpectrumEstimator {
 }
 
 impl SpectrumEstimator {
-    /// An estimator for blocks of `n` samples at `rate_hz` with `window`.
+    /// An estimator for blocks of `n` samples at `rate_hz` with `window`; `n` a power of
+    /// two from 16 to 2²⁰, as an analyser offers.
     pub fn new(n: usize, rate_hz: f64, window: Window) -> Result<Self, InstrumentError> {
-        const NAME: &str = "Fourier analyser";
         if !(n.is_power_of_two() && (16..=1 << 20).contains(&n)) {
+            return Err(InstrumentError::setting(
+                "Fourier analyser",
+                "block size",
+                n,
+                "must be a power of two from 16 to 1048576",
+            ));
+        }
+        Self::of_length(n, rate_hz, window)
+    }
+
+    /// An estimator for blocks of any length `n` ≥ 2 (for ground truth over a span that
+    /// is not a power of two).
+    pub fn of_length(n: usize, rate_hz: f64, window: Window) -> Result<Self, InstrumentError> {
+        const NAME: &str = "spectrum";
+        if n < 2 {
             return Err(InstrumentError::setting(
                 NAME,
                 "block size",
                 n,
-                "must be a power of two from 16 to 1048576",
+                "must be at least 2",
             ));
         }
         require_positive(NAME, "sample rate", rate_hz)?;

@@ -5,8 +5,9 @@
 //! For one analyser block (N ADC samples = N·M analogue samples, M the ADC's decimation)
 //! the analogue block is analysed with the same window over the same span, so its lines
 //! fall on the same Δf. Every analogue line above the ADC's Nyquist folds to
-//! |f − round(f/f_s)·f_s|; a displayed line is an alias when the power folded onto it
-//! exceeds the power truly there, and it is named after its largest folded contributor.
+//! |f − round(f/f_s)·f_s|; a displayed line is an alias when one folded component carries
+//! more than half of all the power that lands on it (in band plus folded), and it is named
+//! after that component. Broadband noise, whose images are all alike, names none.
 
 use crate::error::InstrumentError;
 use crate::spectrum::{Spectrum, SpectrumEstimator};
@@ -16,7 +17,8 @@ use crate::window::Window;
 pub struct AliasTruth {
     block: usize,
     estimator: SpectrumEstimator,
-    analogue: Vec<f64>,
+    one: Vec<f64>,
+    sum: Vec<f64>,
 }
 
 impl AliasTruth {
@@ -28,32 +30,54 @@ impl AliasTruth {
         analogue_rate_hz: f64,
         window: Window,
     ) -> Result<Self, InstrumentError> {
-        if decimation == 0 || !decimation.is_power_of_two() {
+        if decimation == 0 {
             return Err(InstrumentError::setting(
                 "alias truth",
                 "decimation",
                 decimation,
-                "must be a power of two ≥ 1",
+                "must be ≥ 1",
             ));
         }
-        let estimator = SpectrumEstimator::new(block * decimation, analogue_rate_hz, window)?;
+        let estimator = SpectrumEstimator::of_length(block * decimation, analogue_rate_hz, window)?;
         Ok(Self {
             block,
-            analogue: vec![0.0; estimator.lines()],
+            one: vec![0.0; estimator.lines()],
+            sum: vec![0.0; estimator.lines()],
             estimator,
         })
     }
 
+    /// Adds the analogue block of N·M samples behind one analyser block to the running sum.
+    pub fn add(&mut self, analogue_block: &[f64]) {
+        self.estimator
+            .spectrum(analogue_block, Spectrum::Power, &mut self.one);
+        self.sum
+            .iter_mut()
+            .zip(&self.one)
+            .for_each(|(s, o)| *s += o);
+    }
+
+    /// Clears the running sum.
+    pub fn restart(&mut self) {
+        self.sum.iter_mut().for_each(|s| *s = 0.0);
+    }
+
     /// For each of the first `lines` displayed lines, `None` if the line is a real
     /// component, or `Some(true frequency in Hz)` of the component aliased onto it, from
-    /// the analogue block of N·M samples that the ADC block came from.
+    /// the one analogue block of N·M samples that the ADC block came from.
     pub fn classify(&mut self, analogue_block: &[f64], lines: usize) -> Vec<Option<f64>> {
-        self.estimator
-            .spectrum(analogue_block, Spectrum::Power, &mut self.analogue);
+        self.restart();
+        self.add(analogue_block);
+        self.flags(lines)
+    }
+
+    /// As [`AliasTruth::classify`], from the analogue blocks added so far (their sum).
+    pub fn flags(&self, lines: usize) -> Vec<Option<f64>> {
         let df = self.estimator.resolution_hz();
         let adc_lines = self.block;
+        // Per displayed line: (power folded onto it, its largest contributor, that one's frequency).
         let mut folded = vec![(0.0_f64, 0.0_f64, None::<f64>); lines];
-        for (j, &power) in self.analogue.iter().enumerate().skip(self.block / 2 + 1) {
+        for (j, &power) in self.sum.iter().enumerate().skip(self.block / 2 + 1) {
             // Analogue line j folds to ADC line |j − round(j/N)·N| (f_s = N·Δf).
             let image =
                 j as i64 - ((j as f64 / adc_lines as f64).round() as i64) * adc_lines as i64;
@@ -70,8 +94,8 @@ impl AliasTruth {
         folded
             .iter()
             .enumerate()
-            .map(|(k, &(total, _, source))| {
-                if total > self.analogue[k] {
+            .map(|(k, &(total, largest, source))| {
+                if largest > 0.5 * (total + self.sum[k]) {
                     source
                 } else {
                     None

@@ -1,5 +1,6 @@
 //! One file per command.
 
+mod analyse;
 mod modes;
 mod params;
 mod simulate;
@@ -12,5 +13,6 @@ pub fn run(command: Command) -> anyhow::Result<()> {
         Command::Modes(args) => modes::run(&args),
         Command::Simulate(args) => simulate::run(&args),
         Command::Params(args) => params::run(&args),
+        Command::Analyse(args) => analyse::run(&args),
     }
 }
