@@ -118,17 +118,45 @@ fn a_2_2_khz_tone_shows_at_1_8_khz_as_an_alias_and_the_filter_cuts_it_as_designe
 }
 
 #[test]
-fn a_rate_the_adc_cannot_divide_is_refused_with_a_hint() {
-    let dir = folder("rate");
+fn a_cd_rate_recording_is_sampled_between_its_samples() {
+    let dir = folder("cd");
     let wav = dir.join("cd.wav");
-    write_wav(&wav, 44_100, 1_000.0, 0.5, 0.5);
+    write_wav(&wav, 44_100, 2_200.0, 0.5, 3.0);
     let out = analyse(&wav, &dir.join("out"), &[]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let (f, power, alias) = peak(&read_spectrum(&dir.join("out/spectrum.csv")));
+    assert!((f - 1_800.0).abs() <= 4.0, "peak at {f} Hz");
+    assert!((alias.expect("flagged") - 2_200.0).abs() <= 4.0);
+    // A 0.5 amplitude sine reads its mean square 0.125 within the Hann scalloping (1.42 dB).
+    assert!(
+        power < 0.125 * 1.001 && power > 0.125 * 10f64.powf(-0.143),
+        "{power}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn bad_input_is_refused_naming_the_field() {
+    let dir = folder("bad");
+    let wav = dir.join("low.wav");
+    write_wav(&wav, 8_000, 1_000.0, 0.5, 0.5);
+    let out = analyse(&wav, &dir.join("out"), &["--fmax", "5000"]);
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(!out.status.success());
     assert!(
-        stderr.contains("--fmax") && stderr.contains("44100"),
+        stderr.contains("--fmax") && stderr.contains("8000"),
         "{stderr}"
     );
+    let window = analyse(
+        &wav,
+        &dir.join("out"),
+        &["--fmax", "1000", "--window", "kaiser"],
+    );
+    assert!(String::from_utf8_lossy(&window.stderr).contains("--window"));
     let missing = analyse(&dir.join("nope.wav"), &dir.join("out"), &[]);
     assert!(String::from_utf8_lossy(&missing.stderr).contains("nope.wav"));
     std::fs::remove_dir_all(&dir).ok();

@@ -56,7 +56,7 @@ fn strain_chain_one_second(bencher: Bencher) {
     };
     let mut filter = AntiAliasFilter::new(Some(spec), RATE).expect("valid");
     let mut adc = Adc::new(AdcSettings {
-        decimation: 12,
+        ratio: 12.0,
         bits: 12,
         range_v: 10.0,
         dither_seed: None,

@@ -22,6 +22,19 @@ pub struct CarrierSettings {
     pub gain: f64,
 }
 
+impl CarrierSettings {
+    /// The gain that makes `microstrain_per_div` on the amplifier's scale read
+    /// `volts_per_div` at its output, for a bridge giving `bridge_volts_per_strain` (V per
+    /// unit strain: GF·E_in for the full bridge). The thesis's scope shows 3 V for 200 µε.
+    pub fn calibrated_gain(
+        microstrain_per_div: f64,
+        volts_per_div: f64,
+        bridge_volts_per_strain: f64,
+    ) -> f64 {
+        volts_per_div / (microstrain_per_div * 1e-6 * bridge_volts_per_strain)
+    }
+}
+
 fn check(settings: &CarrierSettings, rate_hz: f64) -> Result<(), InstrumentError> {
     let nyquist = rate_hz / 2.0;
     if !(settings.carrier_hz > 0.0 && settings.carrier_hz < nyquist / 2.0) {

@@ -19,7 +19,7 @@ fn sine(freq_hz: f64, amplitude: f64, samples: usize) -> Vec<f64> {
 
 fn adc() -> Adc {
     Adc::new(AdcSettings {
-        decimation: DECIMATION,
+        ratio: DECIMATION as f64,
         bits: 16,
         range_v: 2.0,
         dither_seed: None,
@@ -79,7 +79,8 @@ fn a_2_2_khz_sine_sampled_at_4_khz_shows_at_1_8_khz_flagged_as_its_alias() {
         "peak at {} Hz",
         lines[k].frequency_hz
     );
-    let mut truth = AliasTruth::new(N, DECIMATION, ANALOGUE_HZ, Window::Hanning).expect("valid");
+    let mut truth =
+        AliasTruth::new(N, DECIMATION as f64, ANALOGUE_HZ, Window::Hanning).expect("valid");
     let flags = truth.classify(&analogue, lines.len());
     let source = flags[k].expect("the 1.8 kHz line is an alias");
     assert!((source - 2_200.0).abs() <= 16.0, "alias of {source} Hz");

@@ -138,3 +138,19 @@ fn the_carrier_rejects_low_frequency_lead_noise() {
         .is_err()
     );
 }
+
+#[test]
+fn the_calibrated_gain_reads_200_microstrain_as_3_volts() {
+    // Full bridge, GF 2.1, 10 V excitation: 21 V per unit strain.
+    let gain = CarrierSettings::calibrated_gain(200.0, 3.0, 21.0);
+    let carrier = CarrierSettings { gain, ..settings() };
+    let mut modulator = CarrierModulator::new(carrier, RATE).expect("valid");
+    let mut demodulator = CarrierDemodulator::new(carrier, RATE).expect("valid");
+    let n = RATE as usize;
+    let bridge = vec![200e-6 * 21.0; n];
+    let (mut a, mut b) = (vec![0.0; n], vec![0.0; n]);
+    modulator.process(&bridge, &mut a);
+    demodulator.process(&a, &mut b);
+    let mean = b[n / 2..].iter().sum::<f64>() / (n / 2) as f64;
+    assert!((mean - 3.0).abs() < 1e-3, "{mean}");
+}

@@ -140,6 +140,57 @@ fn blocks_split_into_buffers_give_the_same_output_and_reset_reproduces_it() {
         Box::new(Voltmeter::new(Detector::TrueRms, RATE, 0.2).expect("valid")),
         Box::new(Tacho::crompton_parkinson(RATE).expect("valid")),
         Box::new(DigitalVoltmeter::new(RATE, 0.01, 0.005, 0.01).expect("valid")),
+        Box::new(
+            SlipRing::new(
+                SlipRingSettings {
+                    broadband_rms: 0.01,
+                    per_rev_amplitude: 0.02,
+                    contact_noise_v_rms: 0.1,
+                    seed: 5,
+                },
+                RATE,
+                12.0,
+            )
+            .expect("valid"),
+        ),
+        Box::new(CarrierModulator::new(carrier, RATE).expect("valid")),
+        Box::new(CarrierDemodulator::new(carrier, RATE).expect("valid")),
+        Box::new(
+            AntiAliasFilter::new(
+                Some(LowPassSpec {
+                    kind: FilterKind::Bessel,
+                    order: 5,
+                    cutoff_hz: 800.0,
+                }),
+                RATE,
+            )
+            .expect("valid"),
+        ),
+        Box::new(
+            Scope::new(
+                ScopeSettings {
+                    volts_per_div: 1.0,
+                    seconds_per_div: 1e-3,
+                    trigger_v: 5.0,
+                    slope: Slope::Rising,
+                    mode: SweepMode::Repeat,
+                },
+                RATE,
+            )
+            .expect("valid"),
+        ),
+        Box::new(
+            BrakeDrive::new(
+                BrakeDriveSettings {
+                    ac_amplitude_a: 0.3,
+                    ac_frequency_hz: 15.0,
+                    coil_time_constant_s: 0.02,
+                    torque_per_amp: 2.0,
+                },
+                RATE,
+            )
+            .expect("valid"),
+        ),
     ];
     for mut block in blocks {
         let mut whole = vec![0.0; input.len()];

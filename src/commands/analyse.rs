@@ -14,19 +14,27 @@ use crate::wav_input::read_channel;
 pub fn run(args: &AnalyseArgs) -> anyhow::Result<()> {
     let settings = analyser_settings(args)?;
     let wav = read_channel(&args.file, args.channel)?;
-    let decimation = decimation(wav.rate_hz, settings.sample_rate_hz(), args.fmax)?;
+    let ratio = wav.rate_hz / settings.sample_rate_hz();
+    if ratio < 1.0 {
+        bail!(
+            "--fmax {}: the ADC rate {} Hz exceeds the file's rate {} Hz",
+            args.fmax,
+            settings.sample_rate_hz(),
+            wav.rate_hz
+        );
+    }
     let filter_spec = filter_spec(&args.filter, args.cutoff.unwrap_or(args.fmax))?;
     let mut filter = AntiAliasFilter::new(filter_spec, wav.rate_hz).context("--filter/--cutoff")?;
     let mut analogue = vec![0.0; wav.samples.len()];
     filter.process(&wav.samples, &mut analogue);
     let mut adc = Adc::new(AdcSettings {
-        decimation,
+        ratio,
         bits: args.bits,
         range_v: args.range,
         dither_seed: None,
     })
     .context("--bits/--range")?;
-    let mut samples = Vec::with_capacity(analogue.len() / decimation + 1);
+    let mut samples = Vec::with_capacity((analogue.len() as f64 / ratio) as usize + 1);
     adc.convert(&analogue, &mut samples);
     let mut analyser = Analyser::new(settings).context("--block/--fmax/--averages/--overlap")?;
     analyser.push(&samples);
@@ -38,14 +46,16 @@ pub fn run(args: &AnalyseArgs) -> anyhow::Result<()> {
             wav.samples.len(),
             wav.rate_hz,
             args.block,
-            args.block as f64 * decimation as f64 / wav.rate_hz
+            args.block as f64 * ratio / wav.rate_hz
         );
     }
-    let mut truth = AliasTruth::new(args.block, decimation, wav.rate_hz, settings.window)?;
-    let span = args.block * decimation;
+    let mut truth = AliasTruth::new(args.block, ratio, wav.rate_hz, settings.window)?;
+    let span = truth.span();
     for b in 0..count {
-        let start = b * settings.hop() * decimation;
-        truth.add(&analogue[start..start + span]);
+        let start = (b as f64 * settings.hop() as f64 * ratio).round() as usize;
+        if let Some(block) = analogue.get(start..start + span) {
+            truth.add(block);
+        }
     }
     let lines = analyser.display();
     let alias_of = truth.flags(lines.len());
@@ -108,19 +118,6 @@ fn analyser_settings(args: &AnalyseArgs) -> anyhow::Result<AnalyserSettings> {
         averages: args.averages,
         overlap: args.overlap / 100.0,
     })
-}
-
-/// The ADC takes every M-th sample of the file: its rate must divide the file's.
-fn decimation(file_rate_hz: f64, adc_rate_hz: f64, fmax_hz: f64) -> anyhow::Result<usize> {
-    let ratio = file_rate_hz / adc_rate_hz;
-    let m = ratio.round();
-    if !(m >= 1.0 && (ratio - m).abs() < 1e-9 * ratio) {
-        let hint = (file_rate_hz / ratio.floor().max(1.0)) * fmax_hz / adc_rate_hz;
-        bail!(
-            "--fmax {fmax_hz}: the ADC rate {adc_rate_hz} Hz must divide the file's rate {file_rate_hz} Hz (the ADC takes every M-th sample); e.g. --fmax {hint}"
-        );
-    }
-    Ok(m as usize)
 }
 
 fn filter_spec(text: &str, cutoff_hz: f64) -> anyhow::Result<Option<LowPassSpec>> {
