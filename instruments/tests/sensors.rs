@@ -1,7 +1,9 @@
 //! Strain, bridge, meters and tacho against their physics.
 
 use instruments::{
-    Block, BridgeArrangement, Detector, DigitalVoltmeter, ShaftStrain, StrainBridge, Tacho,
+    AntiAliasFilter, Block, BrakeDrive, BrakeDriveSettings, BridgeArrangement, CarrierDemodulator,
+    CarrierModulator, CarrierSettings, Detector, DigitalVoltmeter, FilterKind, LowPassSpec, Scope,
+    ScopeSettings, ShaftStrain, SlipRing, SlipRingSettings, Slope, StrainBridge, SweepMode, Tacho,
     Voltmeter,
 };
 use std::f64::consts::PI;
@@ -133,6 +135,11 @@ fn blocks_split_into_buffers_give_the_same_output_and_reset_reproduces_it() {
     let input: Vec<f64> = (0..6000)
         .map(|k| ((k * 7919) % 1000) as f64 / 100.0)
         .collect();
+    let carrier = CarrierSettings {
+        carrier_hz: 5_000.0,
+        output_lowpass_hz: 500.0,
+        gain: 10.0,
+    };
     let blocks: Vec<Box<dyn Block>> = vec![
         Box::new(ShaftStrain::intermediate_shaft()),
         Box::new(StrainBridge::new(BridgeArrangement::Quarter, 2.1, 5.0).expect("valid")),
