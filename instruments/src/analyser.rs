@@ -223,6 +223,17 @@ impl Analyser {
             .collect()
     }
 
+    /// The displayed lines in dB (10·log10 of the value), as the 5451C's log display.
+    pub fn display_db(&self) -> Vec<Line> {
+        self.display()
+            .into_iter()
+            .map(|line| Line {
+                value: 10.0 * line.value.log10(),
+                ..line
+            })
+            .collect()
+    }
+
     /// Equivalent noise bandwidth of the window (Hz).
     pub fn enbw_hz(&self) -> f64 {
         self.estimator.enbw_hz()

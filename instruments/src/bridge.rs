@@ -15,7 +15,8 @@ pub enum BridgeArrangement {
     Quarter,
 }
 
-/// A bridge turning strain (dimensionless) into output voltage (V).
+/// A bridge turning strain (dimensionless) into output voltage (V), read by an amplifier
+/// of infinite input impedance (so the gauges' resistance does not enter).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct StrainBridge {
     /// Arrangement of active gauges.
@@ -26,8 +27,6 @@ pub struct StrainBridge {
     pub gauge_factor_error: f64,
     /// Bridge excitation (V).
     pub excitation_v: f64,
-    /// Gauge resistance (Ω), for the bridge's source impedance.
-    pub gauge_resistance_ohm: f64,
 }
 
 impl StrainBridge {
@@ -44,7 +43,6 @@ impl StrainBridge {
             gauge_factor,
             gauge_factor_error: 0.0,
             excitation_v,
-            gauge_resistance_ohm: 120.0,
         })
     }
 

@@ -25,8 +25,15 @@ fn appendix_e_equals_ten_linear_averages_shown_linear_then_in_db() {
     analyser.push(&samples);
     assert_eq!(analyser.average_count(), 10);
     let reference = analyser.display();
+    let reference_db = analyser.display_db();
     assert_eq!(displays[0].len(), reference.len());
-    for ((linear, db), want) in displays[0].iter().zip(&displays[1]).zip(&reference) {
+    for (((linear, db), want), want_db) in displays[0]
+        .iter()
+        .zip(&displays[1])
+        .zip(&reference)
+        .zip(&reference_db)
+    {
+        assert!((db.value - want_db.value).abs() < 1e-9);
         assert_eq!(linear.frequency_hz, want.frequency_hz);
         assert!(
             (linear.value - want.value).abs() <= 1e-12 * want.value.abs().max(1e-30),
