@@ -13,9 +13,6 @@ pub const TAYLOR_ORDER: usize = 16;
 /// Largest ρ·h (spectral radius of A times the internal step) the Taylor expansion is used at.
 pub const MAX_RHO_H: f64 = 0.5;
 
-/// Most switching functions one mode has.
-pub const MAX_EVENTS: usize = 8;
-
 /// Most switching functions of one mode that are not angle events (mesh and motor).
 pub const MAX_ROW_EVENTS: usize = 4;
 
@@ -152,11 +149,6 @@ impl ModeSystem {
         rows
     }
 
-    /// A·u for the augmented state (the time derivative u').
-    pub fn derivative(&self, u: &[f64; Layout::MAX_LEN], out: &mut [f64; Layout::MAX_LEN]) {
-        self.scaled_derivative(u, 1.0, out);
-    }
-
     /// scale·A·u over whole padded columns (vectorised multiply-adds).
     fn scaled_derivative(
         &self,
@@ -210,11 +202,6 @@ impl ModeSystem {
                 *o = *o * s + vk;
             }
         }
-    }
-
-    /// Length of the augmented state.
-    pub fn state_len(&self) -> usize {
-        self.len
     }
 }
 

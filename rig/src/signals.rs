@@ -115,16 +115,6 @@ pub struct Sample {
 }
 
 impl SignalBlock {
-    /// Makes room for `additional` more samples in every column.
-    pub fn reserve(&mut self, additional: usize) {
-        self.time_s.reserve(additional);
-        self.columns_mut().for_each(|c| c.reserve(additional));
-        self.mesh_torque_nm.reserve(additional);
-        self.motor_torque_nm.reserve(additional);
-        self.contact.reserve(additional);
-        self.tooth.reserve(additional);
-    }
-
     /// Appends `samples`, column by column.
     pub fn extend_from_samples(&mut self, samples: &[Sample]) {
         self.time_s.extend(samples.iter().map(|s| s.time_s));
@@ -141,21 +131,5 @@ impl SignalBlock {
             .extend(samples.iter().map(|s| s.motor_torque_nm));
         self.contact.extend(samples.iter().map(|s| s.contact));
         self.tooth.extend(samples.iter().map(|s| s.tooth));
-    }
-
-    /// Appends one sample.
-    pub fn push(&mut self, s: &Sample) {
-        self.time_s.push(s.time_s);
-        for k in 0..5 {
-            self.angle_rad[k].push(s.angle_rad[k]);
-            self.speed_rad_s[k].push(s.speed_rad_s[k]);
-        }
-        for k in 0..3 {
-            self.shaft_torque_nm[k].push(s.shaft_torque_nm[k]);
-        }
-        self.mesh_torque_nm.push(s.mesh_torque_nm);
-        self.motor_torque_nm.push(s.motor_torque_nm);
-        self.contact.push(s.contact);
-        self.tooth.push(s.tooth);
     }
 }
