@@ -1,0 +1,113 @@
+//! Universal File Format dataset 58 (function at nodal DOF), ASCII, as pyuff reads and
+//! writes it: records 1–5 ID lines, 6 function identification, 7 data form, 8–11 axis
+//! characteristics, 12 data as 4E20.12, between `    -1` delimiters.
+
+use std::io::Write;
+
+/// How the abscissa runs.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Uff58Abscissa {
+    /// Time (s) from `start_s` in steps of `step_s` (specific data type 17).
+    Time {
+        /// First abscissa value (s).
+        start_s: f64,
+        /// Step (s).
+        step_s: f64,
+    },
+    /// Frequency (Hz) from `start_hz` in steps of `step_hz` (specific data type 18).
+    Frequency {
+        /// First abscissa value (Hz).
+        start_hz: f64,
+        /// Step (Hz).
+        step_hz: f64,
+    },
+}
+
+/// One dataset 58.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Uff58Record<'a> {
+    /// ID line 1: the function's description (80 characters at most).
+    pub description: &'a str,
+    /// ID line 2 (e.g. the program and scenario).
+    pub source: &'a str,
+    /// Function type: 1 time response, 2 auto spectrum, 12 spectrum.
+    pub function_type: u32,
+    /// Response entity name (10 characters at most).
+    pub response_name: &'a str,
+    /// Response node.
+    pub response_node: u32,
+    /// Ordinate specific data type: 3 strain, 19 rpm, 0 unknown.
+    pub ordinate_type: u32,
+    /// Ordinate units label (20 characters at most).
+    pub ordinate_unit: &'a str,
+    /// Abscissa.
+    pub abscissa: Uff58Abscissa,
+    /// Values (real, evenly spaced).
+    pub values: &'a [f64],
+}
+
+/// Fortran E format: `width` characters, `digits` after the point, two-digit exponent.
+fn fortran_e(value: f64, width: usize, digits: usize) -> String {
+    let text = format!("{value:.digits$e}");
+    let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
+    let exponent: i32 = exponent.parse().unwrap_or(0);
+    let sign = if exponent < 0 { '-' } else { '+' };
+    format!(
+        "{:>width$}",
+        format!("{mantissa}e{sign}{:02}", exponent.abs())
+    )
+}
+
+fn padded(text: &str, width: usize) -> String {
+    let cut: String = text.chars().take(width).collect();
+    format!("{cut:<width$}")
+}
+
+/// Appends `record` to `out` as one ASCII dataset 58.
+pub fn write_uff58(out: &mut impl Write, record: &Uff58Record) -> std::io::Result<()> {
+    let (abscissa_type, start, step, abscissa_unit) = match record.abscissa {
+        Uff58Abscissa::Time { start_s, step_s } => (17, start_s, step_s, "s"),
+        Uff58Abscissa::Frequency { start_hz, step_hz } => (18, start_hz, step_hz, "Hz"),
+    };
+    writeln!(out, "{:>6}", -1)?;
+    writeln!(out, "{:>6}{:74}", 58, "")?;
+    for id in [record.description, record.source, "NONE", "NONE", "NONE"] {
+        writeln!(out, "{}", padded(id, 80))?;
+    }
+    let name: String = record.response_name.chars().take(10).collect();
+    writeln!(
+        out,
+        "{:>5}{:>10}{:>5}{:>10} {:>10}{:>10}{:>4} {:>10}{:>10}{:>4}",
+        record.function_type, 0, 0, 0, name, record.response_node, 0, "NONE", 0, 0
+    )?;
+    writeln!(
+        out,
+        "{:>10}{:>10}{:>10}{}{}{}",
+        4,
+        record.values.len(),
+        1,
+        fortran_e(start, 13, 5),
+        fortran_e(step, 13, 5),
+        fortran_e(0.0, 13, 5)
+    )?;
+    let axis = |out: &mut dyn Write, kind: u32, unit: &str| {
+        writeln!(
+            out,
+            "{kind:>10}{:>5}{:>5}{:>5} {} {}",
+            0,
+            0,
+            0,
+            padded("NONE", 20),
+            padded(unit, 20)
+        )
+    };
+    axis(out, abscissa_type, abscissa_unit)?;
+    axis(out, record.ordinate_type, record.ordinate_unit)?;
+    axis(out, 0, "NONE")?;
+    axis(out, 0, "NONE")?;
+    for row in record.values.chunks(4) {
+        let line: String = row.iter().map(|&v| fortran_e(v, 20, 11)).collect();
+        writeln!(out, "{line}")?;
+    }
+    writeln!(out, "{:>6}", -1)
+}
