@@ -24,6 +24,31 @@ pub enum Command {
     Params(ParamsArgs),
     /// Any WAV file as the analogue signal through filter, ADC and Fourier analyser.
     Analyse(AnalyseArgs),
+    /// Rehearse an experiment: a scenario's rig, chain and recordings, paced or unpaced.
+    Run(RunArgs),
+}
+
+/// `testrig run`.
+#[derive(Debug, Args)]
+pub struct RunArgs {
+    /// The scenario file (TOML; see scenarios/README.md).
+    pub scenario: PathBuf,
+    /// 1 for real time, a factor for that many times faster, or max for unpaced.
+    #[arg(long, default_value = "1")]
+    pub pace: String,
+    /// Simulated length (s), instead of the scenario's.
+    #[arg(long)]
+    pub duration: Option<f64>,
+    /// Change one scenario key (repeatable), e.g. --set schedule.speed_rpm=1500 or
+    /// --set rig.set.teeth=31.
+    #[arg(long = "set", value_name = "KEY=VALUE")]
+    pub overrides: Vec<String>,
+    /// Base seed of every random source, instead of the scenario's.
+    #[arg(long)]
+    pub seed: Option<u64>,
+    /// Output folder.
+    #[arg(long)]
+    pub out: PathBuf,
 }
 
 /// Choice of parameter set.

@@ -25,4 +25,8 @@
 //! # Ok::<(), std::io::Error>(())
 //! ```
 
+pub mod plots;
 pub mod recording;
+pub mod runtime;
+pub mod scenario;
+pub mod signal_catalog;

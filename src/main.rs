@@ -3,7 +3,6 @@
 mod cli;
 mod commands;
 mod rig_setup;
-mod spectrum_output;
 mod wav_input;
 
 use clap::Parser;
@@ -11,7 +10,7 @@ use clap::Parser;
 fn main() -> std::process::ExitCode {
     let cli = cli::Cli::parse();
     match commands::run(cli.command) {
-        Ok(()) => std::process::ExitCode::SUCCESS,
+        Ok(code) => code,
         Err(error) => {
             eprintln!("testrig: {error:#}");
             std::process::ExitCode::FAILURE

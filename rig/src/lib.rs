@@ -54,4 +54,4 @@ pub use records::{Flank, Impact, RevolutionSample};
 pub use regime::{Regime, RegimeCriteria, classify, classify_scaled};
 pub use schedule::{Schedule, SetPoints, Track};
 pub use signals::{COLUMN_NAMES, INTERMEDIATE_SHAFT, Sample, SignalBlock};
-pub use steady::{SteadySummary, run_steady};
+pub use steady::{SteadySummary, SteadyWindow, run_steady};

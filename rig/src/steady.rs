@@ -4,6 +4,7 @@ use serde::Serialize;
 
 use crate::error::RigError;
 use crate::plant::Plant;
+use crate::records::{Impact, RevolutionSample};
 use crate::regime::{RegimeCriteria, classify_scaled, impacts_per_tooth};
 use crate::signals::{INTERMEDIATE_SHAFT, SignalBlock};
 
@@ -37,6 +38,97 @@ pub struct SteadySummary {
     pub revolutions: usize,
 }
 
+/// What a measuring window accumulates, block by block, with memory bounded by the
+/// window's revolutions (impacts are counted, not kept).
+#[derive(Clone, Debug)]
+pub struct SteadyWindow {
+    samples: usize,
+    sum: f64,
+    sum_sq: f64,
+    apart: usize,
+    speed_moments: [(f64, f64); 5],
+    impacts: usize,
+    impacts_per_tooth: Vec<u64>,
+    revolutions: Vec<RevolutionSample>,
+    step_s: f64,
+}
+
+impl SteadyWindow {
+    /// An empty window for a plant of `teeth` teeth sampled every `step_s` (s).
+    pub fn new(teeth: u32, step_s: f64) -> Self {
+        Self {
+            samples: 0,
+            sum: 0.0,
+            sum_sq: 0.0,
+            apart: 0,
+            speed_moments: [(0.0, 0.0); 5],
+            impacts: 0,
+            impacts_per_tooth: vec![0; teeth as usize],
+            revolutions: Vec::new(),
+            step_s,
+        }
+    }
+
+    /// Adds a block of true signals; speeds are taken about `set_speed_rad_s`.
+    pub fn add_block(&mut self, block: &SignalBlock, set_speed_rad_s: f64) {
+        for &torque in &block.shaft_torque_nm[INTERMEDIATE_SHAFT] {
+            self.sum += torque;
+            self.sum_sq += torque * torque;
+        }
+        self.apart += block.contact.iter().filter(|&&c| c == 0).count();
+        for (moments, speeds) in self.speed_moments.iter_mut().zip(&block.speed_rad_s) {
+            for &w in speeds {
+                let v = w - set_speed_rad_s;
+                moments.0 += v;
+                moments.1 += v * v;
+            }
+        }
+        self.samples += block.len();
+    }
+
+    /// Adds contact starts of the window.
+    pub fn add_impacts(&mut self, impacts: &[Impact]) {
+        self.impacts += impacts.len();
+        let counts = impacts_per_tooth(
+            self.impacts_per_tooth.len() as u32,
+            impacts.iter().map(|i| i.tooth),
+        );
+        for (total, n) in self.impacts_per_tooth.iter_mut().zip(counts) {
+            *total += n;
+        }
+    }
+
+    /// Adds once-per-revolution samples of the window.
+    pub fn add_revolutions(&mut self, revolutions: &[RevolutionSample]) {
+        self.revolutions.extend_from_slice(revolutions);
+    }
+
+    /// The summary of everything added.
+    pub fn summary(&self, criteria: &RegimeCriteria) -> SteadySummary {
+        let count = self.samples.max(1) as f64;
+        let mean = self.sum / count;
+        let revolutions = self.revolutions.len();
+        SteadySummary {
+            measured_s: self.samples as f64 * self.step_s,
+            impacts: self.impacts,
+            impacts_per_rev: self.impacts as f64 / revolutions.max(1) as f64,
+            impacts_per_tooth: self.impacts_per_tooth.clone(),
+            regime: classify_scaled(
+                &self.revolutions,
+                &vibration_scale(&self.speed_moments, count),
+                criteria,
+            )
+            .label(),
+            separates: self.apart > 0 || self.impacts > 0,
+            apart_fraction: self.apart as f64 / count,
+            torque_mean_nm: mean,
+            torque_rms_nm: (self.sum_sq / count).sqrt(),
+            torque_ac_rms_nm: (self.sum_sq / count - mean * mean).max(0.0).sqrt(),
+            revolutions,
+        }
+    }
+}
+
 /// Runs `plant` for `settle_s` unrecorded, then `measure_s` while handing every block of
 /// true signals to `sink`, and summarises the window.
 /// Errors of the plant come back as `E`, beside the sink's own.
@@ -53,50 +145,19 @@ pub fn run_steady<E: From<RigError>>(
     plant.drain_revolutions();
     let total = (measure_s * rate).round() as usize;
     let mut block = SignalBlock::default();
-    let (mut sum, mut sum_sq, mut apart, mut done) = (0.0, 0.0, 0_usize, 0_usize);
-    let mut speed_moments = [(0.0, 0.0); 5];
+    let mut window = SteadyWindow::new(plant.params().teeth, plant.output_step_s());
+    let mut done = 0;
     while done < total {
         let n = BLOCK.min(total - done);
         block.clear();
         plant.run(n, &mut block)?;
-        for &torque in &block.shaft_torque_nm[INTERMEDIATE_SHAFT] {
-            sum += torque;
-            sum_sq += torque * torque;
-        }
-        apart += block.contact.iter().filter(|&&c| c == 0).count();
-        for (moments, speeds) in speed_moments.iter_mut().zip(&block.speed_rad_s) {
-            for &w in speeds {
-                let v = w - plant.set_points().speed_rad_s();
-                moments.0 += v;
-                moments.1 += v * v;
-            }
-        }
+        window.add_block(&block, plant.set_points().speed_rad_s());
         sink(&block)?;
         done += n;
     }
-    let count = total.max(1) as f64;
-    let mean = sum / count;
-    let impacts = plant.impacts();
-    let revolutions = plant.revolutions();
-    let teeth = plant.params().teeth;
-    Ok(SteadySummary {
-        measured_s: total as f64 / rate,
-        impacts: impacts.len(),
-        impacts_per_rev: impacts.len() as f64 / revolutions.len().max(1) as f64,
-        impacts_per_tooth: impacts_per_tooth(teeth, impacts.iter().map(|i| i.tooth)),
-        regime: classify_scaled(
-            revolutions,
-            &vibration_scale(&speed_moments, count),
-            criteria,
-        )
-        .label(),
-        separates: apart > 0 || !impacts.is_empty(),
-        apart_fraction: apart as f64 / count,
-        torque_mean_nm: mean,
-        torque_rms_nm: (sum_sq / count).sqrt(),
-        torque_ac_rms_nm: (sum_sq / count - mean * mean).max(0.0).sqrt(),
-        revolutions: revolutions.len(),
-    })
+    window.add_impacts(plant.impacts());
+    window.add_revolutions(plant.revolutions());
+    Ok(window.summary(criteria))
 }
 
 /// Scale of each Poincaré state for the regime: angles left out (infinity), speeds on the

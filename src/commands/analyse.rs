@@ -8,8 +8,9 @@ use instruments::{
 };
 
 use crate::cli::AnalyseArgs;
-use crate::spectrum_output::{Metadata, write_csv, write_png};
 use crate::wav_input::read_channel;
+use testrig::plots::{SpectrumPlot, write_spectrum_plots};
+use testrig::recording::{Metadata, write_spectrum_csv};
 
 pub fn run(args: &AnalyseArgs) -> anyhow::Result<()> {
     let settings = analyser_settings(args)?;
@@ -69,7 +70,7 @@ pub fn run(args: &AnalyseArgs) -> anyhow::Result<()> {
         count,
         adc.overloads(),
     );
-    write_csv(&args.out.join("spectrum.csv"), &metadata, &lines, &alias_of)?;
+    write_spectrum_csv(&args.out.join("spectrum.csv"), &metadata, &lines, &alias_of)?;
     let title = format!(
         "{}: {} averages, {} window, N = {}",
         args.file
@@ -79,12 +80,15 @@ pub fn run(args: &AnalyseArgs) -> anyhow::Result<()> {
         settings.window.name(),
         args.block
     );
-    write_png(
-        &args.out.join("spectrum.png"),
-        &title,
-        "WAV unit",
-        &lines,
-        &alias_of,
+    write_spectrum_plots(
+        &args.out.join("spectrum"),
+        &SpectrumPlot {
+            title: &title,
+            unit: "WAV unit",
+            lines: &lines,
+            alias_of: &alias_of,
+            running_hz: None,
+        },
     )?;
     println!(
         "{} lines to {}; {} of {} averages; {} ADC overloads",

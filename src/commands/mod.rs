@@ -3,16 +3,21 @@
 mod analyse;
 mod modes;
 mod params;
+mod run;
 mod simulate;
+
+use std::process::ExitCode;
 
 use crate::cli::Command;
 
-/// Runs one command.
-pub fn run(command: Command) -> anyhow::Result<()> {
-    match command {
+/// Runs one command; the exit status on success (130 for a run stopped by Ctrl-C).
+pub fn run(command: Command) -> anyhow::Result<ExitCode> {
+    let done = match command {
         Command::Modes(args) => modes::run(&args),
         Command::Simulate(args) => simulate::run(&args),
         Command::Params(args) => params::run(&args),
         Command::Analyse(args) => analyse::run(&args),
-    }
+        Command::Run(args) => return run::run(&args),
+    };
+    done.map(|()| ExitCode::SUCCESS)
 }

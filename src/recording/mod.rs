@@ -1,7 +1,19 @@
-//! Recorders: streams of samples to files that other tools read.
+//! Recorders: streams of samples to files that other tools read, each written under a
+//! `.partial` name until complete.
 
+pub mod csv_stream;
+pub mod partial;
+pub mod spectrum_csv;
 pub mod uff58;
+pub mod uff58_stream;
 pub mod wav;
 
-pub use uff58::{Uff58Abscissa, Uff58Record, write_uff58};
-pub use wav::{ChannelInfo, WavRecorder};
+pub use csv_stream::CsvRecorder;
+pub use partial::PartialFile;
+pub use spectrum_csv::{Metadata, write_spectrum_csv};
+pub use uff58::{
+    Uff58Abscissa, Uff58Record, write_uff58, write_uff58_header, write_uff58_trailer,
+    write_uff58_values,
+};
+pub use uff58_stream::{Uff58Channel, Uff58Recorder};
+pub use wav::{ChannelInfo, WavRecorder, WavSamples};

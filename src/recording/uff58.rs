@@ -65,6 +65,17 @@ fn padded(text: &str, width: usize) -> String {
 
 /// Appends `record` to `out` as one ASCII dataset 58.
 pub fn write_uff58(out: &mut impl Write, record: &Uff58Record) -> std::io::Result<()> {
+    write_uff58_header(out, record, record.values.len())?;
+    write_uff58_values(out, record.values)?;
+    write_uff58_trailer(out)
+}
+
+/// Writes records 1–11 of a dataset of `count` values (`record.values` is not used).
+pub fn write_uff58_header(
+    out: &mut impl Write,
+    record: &Uff58Record,
+    count: usize,
+) -> std::io::Result<()> {
     let (abscissa_type, start, step, abscissa_unit) = match record.abscissa {
         Uff58Abscissa::Time { start_s, step_s } => (17, start_s, step_s, "s"),
         Uff58Abscissa::Frequency { start_hz, step_hz } => (18, start_hz, step_hz, "Hz"),
@@ -84,7 +95,7 @@ pub fn write_uff58(out: &mut impl Write, record: &Uff58Record) -> std::io::Resul
         out,
         "{:>10}{:>10}{:>10}{}{}{}",
         4,
-        record.values.len(),
+        count,
         1,
         fortran_e(start, 13, 5),
         fortran_e(step, 13, 5),
@@ -104,10 +115,19 @@ pub fn write_uff58(out: &mut impl Write, record: &Uff58Record) -> std::io::Resul
     axis(out, abscissa_type, abscissa_unit)?;
     axis(out, record.ordinate_type, record.ordinate_unit)?;
     axis(out, 0, "NONE")?;
-    axis(out, 0, "NONE")?;
-    for row in record.values.chunks(4) {
+    axis(out, 0, "NONE")
+}
+
+/// Writes values as record 12 lines (four a line, 4E20.12; the last line may be shorter).
+pub fn write_uff58_values(out: &mut impl Write, values: &[f64]) -> std::io::Result<()> {
+    for row in values.chunks(4) {
         let line: String = row.iter().map(|&v| fortran_e(v, 20, 11)).collect();
         writeln!(out, "{line}")?;
     }
+    Ok(())
+}
+
+/// Closes a dataset.
+pub fn write_uff58_trailer(out: &mut impl Write) -> std::io::Result<()> {
     writeln!(out, "{:>6}", -1)
 }

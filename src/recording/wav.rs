@@ -1,6 +1,6 @@
-//! WAV recordings (32-bit float, one channel per signal) with a JSON sidecar giving each
-//! channel's name, unit and scale. The file is written under `NAME.wav.partial` and takes
-//! its final name only when finished, so no half-written file carries a final name.
+//! WAV recordings (32-bit float or 24-bit integer, one channel per signal) with a JSON
+//! sidecar giving each channel's name, unit and scale. The file is written under
+//! `NAME.wav.partial` and takes its final name only when finished.
 
 use std::fs::File;
 use std::io::BufWriter;
@@ -8,6 +8,8 @@ use std::path::{Path, PathBuf};
 
 use anyhow::Context;
 use serde::Serialize;
+
+use super::partial::PartialFile;
 
 /// One recorded channel.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -19,6 +21,18 @@ pub struct ChannelInfo {
     /// Physical value at full scale (WAV sample 1.0), in `unit`.
     pub scale: f64,
 }
+
+/// How samples are stored.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum WavSamples {
+    /// IEEE float: sample = value / scale (values beyond the scale are kept).
+    Float32,
+    /// Signed 24-bit: sample = round(value / scale · (2²³ − 1)), clipped at full scale.
+    Int24,
+}
+
+/// Largest 24-bit sample.
+const INT24_FULL: f64 = 8_388_607.0;
 
 #[derive(Serialize)]
 struct Sidecar<'a> {
@@ -32,32 +46,56 @@ struct Sidecar<'a> {
 pub struct WavRecorder {
     writer: hound::WavWriter<BufWriter<File>>,
     channels: Vec<ChannelInfo>,
-    partial: PathBuf,
-    path: PathBuf,
+    samples: WavSamples,
+    file: PartialFile,
     frames: u64,
+    clipped: u64,
 }
 
 impl WavRecorder {
-    /// Starts `path` (its sidecar is `path` + `.json`) at `rate_hz` with `channels`;
-    /// `scenario` (text, e.g. the scenario file) goes into the sidecar.
+    /// Starts `path` (its sidecar is `path` + `.json`) at `rate_hz` with `channels` as
+    /// 32-bit float; `scenario` (text, e.g. the scenario file) goes into the sidecar.
     pub fn create(
         path: &Path,
         rate_hz: u32,
         channels: Vec<ChannelInfo>,
         scenario: &str,
     ) -> anyhow::Result<Self> {
-        let partial = path.with_extension("wav.partial");
+        Self::create_as(path, rate_hz, channels, scenario, WavSamples::Float32)
+    }
+
+    /// As [`WavRecorder::create`], storing samples as `samples`.
+    pub fn create_as(
+        path: &Path,
+        rate_hz: u32,
+        channels: Vec<ChannelInfo>,
+        scenario: &str,
+        samples: WavSamples,
+    ) -> anyhow::Result<Self> {
+        let (bits_per_sample, sample_format, format) = match samples {
+            WavSamples::Float32 => (
+                32,
+                hound::SampleFormat::Float,
+                "32-bit float; physical value = sample × scale",
+            ),
+            WavSamples::Int24 => (
+                24,
+                hound::SampleFormat::Int,
+                "24-bit integer; physical value = sample / 8388607 × scale",
+            ),
+        };
         let spec = hound::WavSpec {
             channels: u16::try_from(channels.len()).context("too many channels for a WAV file")?,
             sample_rate: rate_hz,
-            bits_per_sample: 32,
-            sample_format: hound::SampleFormat::Float,
+            bits_per_sample,
+            sample_format,
         };
-        let writer = hound::WavWriter::create(&partial, spec)
-            .with_context(|| format!("cannot write {}", partial.display()))?;
+        let file = PartialFile::new(path);
+        let writer = hound::WavWriter::new(file.create()?, spec)
+            .with_context(|| format!("cannot write {}", file.partial_path().display()))?;
         let sidecar = Sidecar {
             sample_rate_hz: rate_hz,
-            format: "32-bit float; physical value = sample × scale",
+            format,
             channels: &channels,
             scenario,
         };
@@ -67,18 +105,28 @@ impl WavRecorder {
         Ok(Self {
             writer,
             channels,
-            partial,
-            path: path.to_path_buf(),
+            samples,
+            file,
             frames: 0,
+            clipped: 0,
         })
     }
 
     /// Appends one frame: one physical value per channel, in channel order.
     pub fn write_frame(&mut self, values: &[f64]) -> anyhow::Result<()> {
         for (value, channel) in values.iter().zip(&self.channels) {
-            self.writer
-                .write_sample((value / channel.scale) as f32)
-                .context("writing a WAV sample")?;
+            let relative = value / channel.scale;
+            let written = match self.samples {
+                WavSamples::Float32 => self.writer.write_sample(relative as f32),
+                WavSamples::Int24 => {
+                    if relative.abs() > 1.0 {
+                        self.clipped += 1;
+                    }
+                    let sample = (relative.clamp(-1.0, 1.0) * INT24_FULL).round() as i32;
+                    self.writer.write_sample(sample)
+                }
+            };
+            written.context("writing a WAV sample")?;
         }
         self.frames += 1;
         Ok(())
@@ -89,11 +137,14 @@ impl WavRecorder {
         self.frames
     }
 
+    /// Samples clipped at full scale (24-bit only).
+    pub fn clipped(&self) -> u64 {
+        self.clipped
+    }
+
     /// Closes the file and gives it its final name.
     pub fn finish(self) -> anyhow::Result<PathBuf> {
         self.writer.finalize().context("closing the WAV file")?;
-        std::fs::rename(&self.partial, &self.path)
-            .with_context(|| format!("naming {}", self.path.display()))?;
-        Ok(self.path)
+        self.file.commit()
     }
 }

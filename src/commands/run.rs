@@ -1,0 +1,98 @@
+//! `testrig run`: rehearse an experiment from a scenario file.
+
+use std::io::IsTerminal;
+use std::process::ExitCode;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+
+use anyhow::{Context, bail};
+use testrig::runtime::manifest::Ending;
+use testrig::runtime::{Pace, RunOptions, RunResult, run as run_plan, write_manifest};
+use testrig::scenario::{CommandLine, ScenarioSource, apply_override, build};
+
+use crate::cli::RunArgs;
+
+/// Exit status of a run stopped by Ctrl-C (128 + SIGINT), its files complete.
+const INTERRUPTED: u8 = 130;
+
+pub fn run(args: &RunArgs) -> anyhow::Result<ExitCode> {
+    let pace = Pace::parse(&args.pace)
+        .with_context(|| format!("--pace {}: 1 (real time), a factor > 0, or max", args.pace))?;
+    if let Some(d) = args.duration
+        && !(d.is_finite() && d > 0.0)
+    {
+        bail!("--duration {d}: a simulated length > 0 s");
+    }
+    let mut source = ScenarioSource::read(&args.scenario)?;
+    for item in &args.overrides {
+        source.text = apply_override(&source.text, item)?;
+    }
+    let plan = build(
+        &source,
+        CommandLine {
+            duration_s: args.duration,
+            seed: args.seed,
+        },
+    )?;
+    let stop = Arc::new(AtomicBool::new(false));
+    let handler_stop = Arc::clone(&stop);
+    ctrlc::set_handler(move || handler_stop.store(true, Ordering::Relaxed))
+        .context("cannot install the Ctrl-C handler")?;
+    let options = RunOptions {
+        pace,
+        out: args.out.clone(),
+        stop: Arc::clone(&stop),
+        console: std::io::stderr().is_terminal(),
+    };
+    let result = run_plan(&plan, &options)?;
+    let failed = !result.errors.is_empty() || result.plant.error.is_some();
+    let ending = match (failed, result.stopped_early) {
+        (true, _) => Ending::Failed,
+        (false, true) => Ending::Interrupted,
+        (false, false) => Ending::Completed,
+    };
+    write_manifest(&args.out, &args.scenario, &plan, pace, &result, ending)?;
+    print_summary(&plan.name, &args.out, &result, pace);
+    if failed {
+        let all: Vec<String> = result
+            .errors
+            .iter()
+            .cloned()
+            .chain(result.plant.error.clone())
+            .collect();
+        bail!(
+            "{} (files up to the stop are kept in {})",
+            all.join("; "),
+            args.out.display()
+        );
+    }
+    if ending == Ending::Interrupted {
+        eprintln!("testrig: stopped by Ctrl-C; every sample up to the stop is in the files");
+        return Ok(ExitCode::from(INTERRUPTED));
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+fn print_summary(name: &str, out: &std::path::Path, result: &RunResult, pace: Pace) {
+    let p = &result.plant;
+    let files: usize = result.sinks.iter().map(|s| s.files.len()).sum();
+    println!(
+        "{name}: {:.1} s simulated in {:.2} s wall (pace {}), regime {}, {} impacts, {} overruns",
+        result.simulated_s(),
+        result.wall_s,
+        pace.label(),
+        p.steady.regime,
+        p.impacts,
+        p.overruns
+    );
+    if matches!(pace, Pace::Factor(_)) {
+        println!(
+            "lateness p50 {:.3} ms, p99 {:.3} ms, max {:.3} ms; CPU {:.1} % of one core",
+            p.lateness.quantile_s(0.5) * 1e3,
+            p.lateness.quantile_s(0.99) * 1e3,
+            p.lateness.max_s() * 1e3,
+            100.0 * result.cpu_s / result.wall_s.max(1e-9)
+        );
+    }
+    println!("{} files and manifest.json in {}", files, out.display());
+}

@@ -1,0 +1,134 @@
+//! The analyser display as the thesis plots it: log amplitude (dB) against linear
+//! frequency (Hz), aliases marked in red, and the running-speed orders marked.
+
+use std::path::{Path, PathBuf};
+
+use instruments::Line;
+use plotters::coord::Shift;
+use plotters::prelude::*;
+
+use super::canvas::{draw_error, png_and_svg};
+
+/// A spectrum to draw.
+#[derive(Clone, Copy, Debug)]
+pub struct SpectrumPlot<'a> {
+    /// Title.
+    pub title: &'a str,
+    /// Unit of the analysed signal (the power is in unit² rms).
+    pub unit: &'a str,
+    /// Displayed lines.
+    pub lines: &'a [Line],
+    /// For each line, the true frequency of an alias on it.
+    pub alias_of: &'a [Option<f64>],
+    /// Running speed (rev/s) whose orders ½, 1, 2, … are marked; `None` for none.
+    pub running_hz: Option<f64>,
+}
+
+/// Writes `base.png` and `base.svg`.
+pub fn write_spectrum_plots(base: &Path, plot: &SpectrumPlot) -> anyhow::Result<Vec<PathBuf>> {
+    png_and_svg(base, |root| draw(root, plot), |root| draw(root, plot))
+}
+
+/// Most order lines drawn; with more orders in band only every k-th is marked.
+const MAX_ORDER_MARKS: usize = 24;
+
+fn draw<DB: DrawingBackend>(
+    root: DrawingArea<DB, Shift>,
+    plot: &SpectrumPlot,
+) -> anyhow::Result<()> {
+    let err = draw_error("spectrum");
+    let db: Vec<(f64, f64)> = plot
+        .lines
+        .iter()
+        .map(|l| (l.frequency_hz, 10.0 * l.value.max(1e-30).log10()))
+        .collect();
+    let top = db
+        .iter()
+        .map(|p| p.1)
+        .fold(f64::NEG_INFINITY, f64::max)
+        .ceil();
+    let low = db.iter().map(|p| p.1).fold(f64::INFINITY, f64::min).floor();
+    let bottom = (top - 100.0).max(low);
+    let top = if top.is_finite() { top + 3.0 } else { 0.0 };
+    let bottom = if bottom.is_finite() && bottom < top {
+        bottom
+    } else {
+        top - 100.0
+    };
+    let fmax = plot.lines.last().map_or(1.0, |l| l.frequency_hz.max(1.0));
+    root.fill(&WHITE).map_err(&err)?;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(plot.title, ("sans-serif", 20))
+        .margin(12)
+        .x_label_area_size(44)
+        .y_label_area_size(70)
+        .build_cartesian_2d(0.0..fmax, bottom..top)
+        .map_err(&err)?;
+    chart
+        .configure_mesh()
+        .disable_x_mesh()
+        .x_desc("frequency (Hz)")
+        .y_desc(format!("power (dB re 1 {}² rms)", plot.unit))
+        .label_style(("sans-serif", 14))
+        .draw()
+        .map_err(&err)?;
+    if let Some(running) = plot.running_hz.filter(|f| *f > 0.0) {
+        draw_orders(&mut chart, running, fmax, (bottom, top)).map_err(&err)?;
+    }
+    chart
+        .draw_series(LineSeries::new(
+            db.iter().map(|&(f, v)| (f, v.max(bottom))),
+            &BLUE,
+        ))
+        .map_err(&err)?;
+    let aliases = db
+        .iter()
+        .zip(plot.alias_of)
+        .filter(|(_, a)| a.is_some())
+        .map(|(&(f, v), _)| Circle::new((f, v.max(bottom)), 3, RED.filled()));
+    chart.draw_series(aliases).map_err(&err)?;
+    root.present().map_err(&err)?;
+    Ok(())
+}
+
+type Chart<'a, DB> = ChartContext<
+    'a,
+    DB,
+    Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>,
+>;
+
+/// Dashed-grey lines at the half order and at the orders of the running speed, labelled.
+fn draw_orders<DB: DrawingBackend>(
+    chart: &mut Chart<DB>,
+    running_hz: f64,
+    fmax: f64,
+    (bottom, top): (f64, f64),
+) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
+    let in_band = (fmax / running_hz).floor() as usize;
+    let every = in_band.div_ceil(MAX_ORDER_MARKS).max(1);
+    let mut orders: Vec<(f64, String)> = vec![(0.5, "½".into())];
+    orders.extend(
+        (1..=in_band)
+            .filter(|k| k % every == 0 || *k == 1)
+            .map(|k| (k as f64, k.to_string())),
+    );
+    let grey = RGBColor(150, 150, 150);
+    for (order, label) in orders {
+        let f = order * running_hz;
+        if f > fmax {
+            continue;
+        }
+        chart.draw_series(DashedLineSeries::new(
+            [(f, bottom), (f, top)],
+            4,
+            4,
+            grey.into(),
+        ))?;
+        chart.draw_series(std::iter::once(Text::new(
+            label,
+            (f, top),
+            ("sans-serif", 12).into_font().color(&grey),
+        )))?;
+    }
+    Ok(())
+}

@@ -1,0 +1,108 @@
+//! The RMS survey as the thesis plots it: the meter's RMS reading against load, one curve
+//! per speed, beside the static line (the strain the load alone would give).
+
+use std::path::{Path, PathBuf};
+
+use plotters::coord::Shift;
+use plotters::prelude::*;
+
+use super::canvas::{draw_error, png_and_svg};
+
+/// One reading of the survey.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SurveyPoint {
+    /// Speed set point (rev/min).
+    pub speed_rpm: f64,
+    /// Load (N m).
+    pub load_nm: f64,
+    /// Meter reading as strain (µε).
+    pub rms_microstrain: f64,
+}
+
+/// Writes `base.png` and `base.svg`; `static_microstrain_per_nm` draws the static line.
+pub fn write_survey_plots(
+    base: &Path,
+    title: &str,
+    points: &[SurveyPoint],
+    static_microstrain_per_nm: f64,
+) -> anyhow::Result<Vec<PathBuf>> {
+    png_and_svg(
+        base,
+        |root| draw(root, title, points, static_microstrain_per_nm),
+        |root| draw(root, title, points, static_microstrain_per_nm),
+    )
+}
+
+fn draw<DB: DrawingBackend>(
+    root: DrawingArea<DB, Shift>,
+    title: &str,
+    points: &[SurveyPoint],
+    per_nm: f64,
+) -> anyhow::Result<()> {
+    let err = draw_error("RMS survey");
+    let loads = points.iter().map(|p| p.load_nm);
+    let (low, high) = (
+        loads.clone().fold(0.0, f64::min),
+        loads.fold(0.0, f64::max).max(1e-3),
+    );
+    let top = points
+        .iter()
+        .map(|p| p.rms_microstrain)
+        .chain([high * per_nm, low.abs() * per_nm])
+        .fold(1e-3, f64::max)
+        * 1.1;
+    let mut speeds: Vec<f64> = points.iter().map(|p| p.speed_rpm).collect();
+    speeds.sort_by(f64::total_cmp);
+    speeds.dedup();
+    root.fill(&WHITE).map_err(&err)?;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(title, ("sans-serif", 20))
+        .margin(12)
+        .x_label_area_size(44)
+        .y_label_area_size(70)
+        .build_cartesian_2d(low..high, 0.0..top)
+        .map_err(&err)?;
+    chart
+        .configure_mesh()
+        .x_desc("load (N m)")
+        .y_desc("RMS strain (µε)")
+        .label_style(("sans-serif", 14))
+        .draw()
+        .map_err(&err)?;
+    chart
+        .draw_series(LineSeries::new(
+            [(low, low.abs() * per_nm), (0.0, 0.0), (high, high * per_nm)],
+            BLACK.stroke_width(2),
+        ))
+        .map_err(&err)?
+        .label("static")
+        .legend(|(x, y)| PathElement::new([(x, y), (x + 20, y)], BLACK.stroke_width(2)));
+    for (i, &speed) in speeds.iter().enumerate() {
+        let colour = Palette99::pick(i).to_rgba();
+        let curve: Vec<(f64, f64)> = points
+            .iter()
+            .filter(|p| p.speed_rpm == speed)
+            .map(|p| (p.load_nm, p.rms_microstrain))
+            .collect();
+        chart
+            .draw_series(LineSeries::new(
+                curve.iter().copied(),
+                colour.stroke_width(2),
+            ))
+            .map_err(&err)?
+            .label(format!("{speed} rev/min"))
+            .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], colour.stroke_width(2)));
+        chart
+            .draw_series(curve.iter().map(|&p| Circle::new(p, 3, colour.filled())))
+            .map_err(&err)?;
+    }
+    chart
+        .configure_series_labels()
+        .background_style(WHITE.mix(0.8))
+        .border_style(BLACK)
+        .label_font(("sans-serif", 13))
+        .draw()
+        .map_err(&err)?;
+    root.present().map_err(&err)?;
+    Ok(())
+}

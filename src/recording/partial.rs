@@ -1,0 +1,51 @@
+//! Files written under `NAME.partial` and given their final name only when complete, so
+//! no half-written file ever carries a final name.
+
+use std::fs::File;
+use std::io::BufWriter;
+use std::path::{Path, PathBuf};
+
+use anyhow::Context;
+
+/// A file on its way to `path`.
+#[derive(Clone, Debug)]
+pub struct PartialFile {
+    path: PathBuf,
+    partial: PathBuf,
+}
+
+impl PartialFile {
+    /// A file that will be `path`, written meanwhile as `path` + `.partial`.
+    pub fn new(path: &Path) -> Self {
+        let mut partial = path.as_os_str().to_owned();
+        partial.push(".partial");
+        Self {
+            path: path.to_path_buf(),
+            partial: partial.into(),
+        }
+    }
+
+    /// The name it is written under.
+    pub fn partial_path(&self) -> &Path {
+        &self.partial
+    }
+
+    /// The final name.
+    pub fn path(&self) -> &Path {
+        &self.path
+    }
+
+    /// Creates the partial file for buffered writing.
+    pub fn create(&self) -> anyhow::Result<BufWriter<File>> {
+        let file = File::create(&self.partial)
+            .with_context(|| format!("cannot write {}", self.partial.display()))?;
+        Ok(BufWriter::new(file))
+    }
+
+    /// Gives the finished file its final name.
+    pub fn commit(&self) -> anyhow::Result<PathBuf> {
+        std::fs::rename(&self.partial, &self.path)
+            .with_context(|| format!("cannot name {}", self.path.display()))?;
+        Ok(self.path.clone())
+    }
+}

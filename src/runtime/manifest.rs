@@ -1,0 +1,114 @@
+//! `manifest.json`: what was run, how, and every file written.
+
+use std::path::Path;
+
+use anyhow::Context;
+use serde_json::{Value, json};
+use sha2::{Digest, Sha256};
+
+use super::pacing::Pace;
+use super::run::RunResult;
+use crate::recording::PartialFile;
+use crate::scenario::Plan;
+
+/// How the run ended.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Ending {
+    /// It ran its whole length.
+    Completed,
+    /// Ctrl-C stopped it; files hold every sample up to the stop.
+    Interrupted,
+    /// An error stopped it; files hold every sample up to the error.
+    Failed,
+}
+
+impl Ending {
+    fn label(self) -> &'static str {
+        match self {
+            Self::Completed => "completed",
+            Self::Interrupted => "interrupted",
+            Self::Failed => "failed",
+        }
+    }
+}
+
+/// Writes `dir/manifest.json` for `result` of `plan` from `scenario_path` at `pace`.
+pub fn write_manifest(
+    dir: &Path,
+    scenario_path: &Path,
+    plan: &Plan,
+    pace: Pace,
+    result: &RunResult,
+    ending: Ending,
+) -> anyhow::Result<()> {
+    let p = &result.plant;
+    let simulated_s = result.simulated_s();
+    let mut files: Vec<String> = result
+        .sinks
+        .iter()
+        .flat_map(|s| &s.files)
+        .map(|f| relative(dir, f))
+        .collect();
+    files.push("manifest.json".into());
+    files.sort();
+    let ms = |s: f64| s * 1e3;
+    let mut manifest = json!({
+        "scenario": plan.name,
+        "scenario_file": scenario_path.display().to_string(),
+        "scenario_sha256": sha256_hex(plan.text.as_bytes()),
+        "seed": plan.seed,
+        "version": env!("CARGO_PKG_VERSION"),
+        "preset": plan.preset,
+        "ending": ending.label(),
+        "errors": result.errors.iter().cloned().chain(p.error.clone()).collect::<Vec<_>>(),
+        "simulated_s": simulated_s,
+        "wall_s": result.wall_s,
+        "realtime_factor": simulated_s / result.wall_s.max(1e-9),
+        "cpu_s": result.cpu_s,
+        "cpu_share_of_one_core": result.cpu_s / result.wall_s.max(1e-9),
+        "peak_rss_mib": result.peak_rss_mib,
+        "pace": pace.label(),
+        "block_samples": plan.block_samples,
+        "lateness_ms": {
+            "p50": ms(p.lateness.quantile_s(0.5)),
+            "p99": ms(p.lateness.quantile_s(0.99)),
+            "max": ms(p.lateness.max_s()),
+            "releases": p.lateness.count(),
+        },
+        "overflow": format!("{:?}", plan.overflow).to_lowercase(),
+        "overruns": p.overruns,
+        "overrun_times_s": p.overrun_times_s,
+        "impacts": p.impacts,
+        "regime": p.steady.regime,
+        "regime_window_s": p.steady.measured_s,
+        "separates": p.steady.separates,
+        "impacts_per_rev": p.steady.impacts_per_rev,
+        "torque_mean_nm": p.steady.torque_mean_nm,
+        "torque_ac_rms_nm": p.steady.torque_ac_rms_nm,
+        "files": files,
+    });
+    if let Value::Object(map) = &mut manifest {
+        for (key, value) in result.sinks.iter().flat_map(|s| &s.facts) {
+            map.insert((*key).to_string(), value.clone());
+        }
+    }
+    let file = PartialFile::new(&dir.join("manifest.json"));
+    let mut out = file.create()?;
+    serde_json::to_writer_pretty(&mut out, &manifest).context("writing manifest.json")?;
+    std::io::Write::flush(&mut out)?;
+    drop(out);
+    file.commit()?;
+    Ok(())
+}
+
+fn relative(dir: &Path, file: &Path) -> String {
+    file.strip_prefix(dir).unwrap_or(file).display().to_string()
+}
+
+/// Lower-case hex SHA-256 of `bytes`.
+pub fn sha256_hex(bytes: &[u8]) -> String {
+    Sha256::digest(bytes)
+        .iter()
+        .map(|b| format!("{b:02x}"))
+        .collect()
+}

@@ -1,0 +1,18 @@
+//! The runtime of `testrig run`: the paced plant, the instrument stages and the sinks as
+//! threads joined by crossbeam channels, and the run's manifest.
+
+pub mod console;
+pub mod frame;
+pub mod manifest;
+pub mod pacing;
+pub mod plant_source;
+pub mod process_usage;
+pub mod run;
+pub mod sinks;
+pub mod stages;
+pub mod status;
+pub mod wiring;
+
+pub use manifest::write_manifest;
+pub use pacing::Pace;
+pub use run::{RunOptions, RunResult, run};

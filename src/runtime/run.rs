@@ -1,0 +1,211 @@
+//! One run of a scenario: the plant's thread, a thread per instrument stage and per sink,
+//! the console on the calling thread; returns when every file is closed.
+
+use std::path::{Path, PathBuf};
+use std::sync::atomic::AtomicBool;
+use std::sync::{Arc, Mutex, PoisonError};
+use std::time::{Duration, Instant};
+
+use anyhow::Context;
+use rig::{Plant, PlantConfig};
+
+use super::console::Console;
+use super::frame::SignalNames;
+use super::pacing::Pace;
+use super::plant_source::{PlantJob, PlantReport, run_plant};
+use super::process_usage::cpu_s_and_peak_rss_mib;
+use super::sinks::analyser::{ANALYSED_SIGNAL, AnalyserSink};
+use super::sinks::monitor::MonitorSink;
+use super::sinks::recorder::RecorderSink;
+use super::sinks::scope::ScopeSink;
+use super::sinks::{Sink, SinkReport};
+use super::stages::build_stages;
+use super::status::SharedStatus;
+use super::wiring::{channel, run_sink, run_stage};
+use crate::scenario::{Measure, Plan};
+
+/// How to run.
+#[derive(Clone, Debug)]
+pub struct RunOptions {
+    /// Pace.
+    pub pace: Pace,
+    /// Output folder.
+    pub out: PathBuf,
+    /// Set (e.g. by Ctrl-C) to end the run early, keeping what was recorded.
+    pub stop: Arc<AtomicBool>,
+    /// Draw the console (progress and rack readings).
+    pub console: bool,
+}
+
+/// What a run did.
+#[derive(Debug)]
+pub struct RunResult {
+    /// The plant's report.
+    pub plant: PlantReport,
+    /// The sinks' reports.
+    pub sinks: Vec<SinkReport>,
+    /// Wall time (s).
+    pub wall_s: f64,
+    /// CPU time of the process during the run (s).
+    pub cpu_s: f64,
+    /// Peak resident memory of the process (MiB).
+    pub peak_rss_mib: f64,
+    /// Errors of the sinks (the plant's is in its report).
+    pub errors: Vec<String>,
+    /// Whether the run was stopped before its end (Ctrl-C or an error).
+    pub stopped_early: bool,
+}
+
+impl RunResult {
+    /// Simulated time released by the plant (s).
+    pub fn simulated_s(&self) -> f64 {
+        self.plant.samples as f64 * self.plant.step_s
+    }
+}
+
+/// Runs `plan`, writing into `options.out`.
+pub fn run(plan: &Plan, options: &RunOptions) -> anyhow::Result<RunResult> {
+    std::fs::create_dir_all(&options.out).with_context(|| {
+        format!(
+            "--out {}: cannot create the output folder",
+            options.out.display()
+        )
+    })?;
+    let config = PlantConfig {
+        output_rate_hz: plan.rate_hz,
+        ..PlantConfig::default()
+    };
+    let plant = Plant::new(plan.params.clone(), plan.schedule.clone(), config)
+        .context("the rig and schedule of the scenario")?;
+    let mut names = SignalNames::default();
+    for name in rig::COLUMN_NAMES {
+        names.push(name);
+    }
+    let stages = build_stages(&plan.chain, plan.rate_hz, &mut names)?;
+    let status = SharedStatus::default();
+    let sinks = build_sinks(plan, &options.out, &names, &status)?;
+    let total_samples = (plan.duration_s * plan.rate_hz).round() as u64;
+    let job = PlantJob {
+        plant,
+        total_samples,
+        block_samples: plan.block_samples,
+        pace: options.pace,
+        overflow: plan.overflow,
+        stop: Arc::clone(&options.stop),
+        status: status.clone(),
+    };
+    let (cpu_before, _) = cpu_s_and_peak_rss_mib();
+    let started = Instant::now();
+    let console = Console::new(total_samples, plan.rate_hz, options.console);
+    let errors = Mutex::new(Vec::new());
+    let (plant, sink_reports) = std::thread::scope(|scope| {
+        let (plant_tx, mut input) = channel(plan.queue_blocks);
+        let plant = scope.spawn(move || run_plant(job, plant_tx));
+        let (sink_outputs, sink_inputs): (Vec<_>, Vec<_>) =
+            sinks.iter().map(|_| channel(plan.queue_blocks)).unzip();
+        let mut sink_outputs = Some(sink_outputs);
+        let count = stages.len();
+        for (i, stage) in stages.into_iter().enumerate() {
+            let (outputs, next) = if i + 1 == count {
+                (sink_outputs.take().unwrap_or_default(), None)
+            } else {
+                let (tx, rx) = channel(plan.queue_blocks);
+                (vec![tx], Some(rx))
+            };
+            let stage_input = input;
+            scope.spawn(move || run_stage(stage, stage_input, outputs));
+            match next {
+                Some(rx) => input = rx,
+                None => break,
+            }
+        }
+        let stop = &options.stop;
+        let errors = &errors;
+        let handles: Vec<_> = sinks
+            .into_iter()
+            .zip(sink_inputs)
+            .map(|((name, sink), rx)| scope.spawn(move || run_sink(name, sink, rx, stop, errors)))
+            .collect();
+        while !plant.is_finished() {
+            console.show(&status.snapshot());
+            std::thread::sleep(Duration::from_millis(100));
+        }
+        let plant = plant.join();
+        let reports: Vec<SinkReport> = handles.into_iter().filter_map(|h| h.join().ok()).collect();
+        (plant, reports)
+    });
+    console.finish();
+    let plant = plant.map_err(|_| anyhow::anyhow!("the plant's thread panicked"))?;
+    let (cpu_after, peak_rss_mib) = cpu_s_and_peak_rss_mib();
+    let errors = errors.into_inner().unwrap_or_else(PoisonError::into_inner);
+    Ok(RunResult {
+        stopped_early: plant.samples < total_samples,
+        plant,
+        sinks: sink_reports,
+        wall_s: started.elapsed().as_secs_f64(),
+        cpu_s: cpu_after - cpu_before,
+        peak_rss_mib,
+        errors,
+    })
+}
+
+/// The measurements the sinks work to: the scenario's, or one at the start.
+fn effective_measures(plan: &Plan) -> Vec<Measure> {
+    if !plan.measures.is_empty() {
+        return plan.measures.clone();
+    }
+    vec![Measure {
+        at_s: 0.0,
+        label: "from the start".into(),
+        speed_rpm: plan.schedule.speed_rpm.value_at(0.0),
+        load_nm: plan.schedule.load_nm.value_at(0.0),
+    }]
+}
+
+type NamedSink = (&'static str, Box<dyn Sink>);
+
+fn build_sinks(
+    plan: &Plan,
+    dir: &Path,
+    names: &SignalNames,
+    status: &SharedStatus,
+) -> anyhow::Result<Vec<NamedSink>> {
+    let measures = effective_measures(plan);
+    let index = |n: &str| {
+        names
+            .index(n)
+            .ok_or_else(|| anyhow::anyhow!("internal wiring: no `{n}`"))
+    };
+    let mut sinks: Vec<NamedSink> = vec![
+        (
+            "monitor",
+            Box::new(MonitorSink::create(
+                dir,
+                plan,
+                names,
+                plan.measures.clone(),
+                status.clone(),
+            )?),
+        ),
+        (
+            "recorder",
+            Box::new(RecorderSink::create(dir, plan, names)?),
+        ),
+    ];
+    if let Some(analyser) = plan.analyser {
+        let sink = AnalyserSink::create(
+            dir,
+            plan,
+            analyser,
+            index(ANALYSED_SIGNAL)?,
+            measures.clone(),
+            status.clone(),
+        )?;
+        sinks.push(("analyser", Box::new(sink)));
+    }
+    if let Some(scope) = plan.chain.scope {
+        let sink = ScopeSink::create(dir, plan, scope, index("amplifier_v")?, measures);
+        sinks.push(("scope", Box::new(sink)));
+    }
+    Ok(sinks)
+}

@@ -1,0 +1,269 @@
+//! The Fourier analyser at the end of the chain: at each measurement it starts a fresh
+//! average of ADC blocks of the filtered amplifier output; each finished average is written
+//! as a spectrum (CSV in the `testrig analyse` format, PNG and SVG, UFF58 when asked), with
+//! the ground truth of which lines are aliases.
+
+use std::path::{Path, PathBuf};
+
+use instruments::{Adc, AliasTruth, Analyser, Spectrum};
+
+use super::measure_clock::MeasureClock;
+use super::{Sink, SinkReport};
+use crate::plots::{SpectrumPlot, write_spectrum_plots};
+use crate::recording::{
+    Metadata, PartialFile, Uff58Abscissa, Uff58Record, write_spectrum_csv, write_uff58,
+};
+use crate::runtime::frame::Frame;
+use crate::runtime::status::SharedStatus;
+use crate::scenario::{AnalyserPlan, Measure, Plan};
+
+/// Name of the analysed signal.
+pub const ANALYSED_SIGNAL: &str = "filter_v";
+
+/// The analyser with its ADC and the alias truth.
+pub struct AnalyserSink {
+    plan: AnalyserPlan,
+    input: usize,
+    dir: PathBuf,
+    scenario: String,
+    filter: String,
+    uff: bool,
+    measures: Vec<Measure>,
+    clock: MeasureClock,
+    adc: Adc,
+    analyser: Analyser,
+    truth: AliasTruth,
+    active: Option<usize>,
+    analogue: Vec<f64>,
+    adc_out: Vec<f64>,
+    overloads: u64,
+    files: Vec<PathBuf>,
+    incomplete: Vec<String>,
+    status: SharedStatus,
+}
+
+impl AnalyserSink {
+    /// An analyser reading channel `input`, writing to `dir`, started at `measures`.
+    pub fn create(
+        dir: &Path,
+        plan: &Plan,
+        analyser: AnalyserPlan,
+        input: usize,
+        measures: Vec<Measure>,
+        status: SharedStatus,
+    ) -> anyhow::Result<Self> {
+        let s = analyser.settings;
+        let filter = match plan.chain.filter {
+            Some(f) => format!("{:?} order {} at {} Hz", f.kind, f.order, f.cutoff_hz),
+            None => "none".into(),
+        };
+        Ok(Self {
+            plan: analyser,
+            input,
+            dir: dir.to_path_buf(),
+            scenario: plan.name.clone(),
+            filter,
+            uff: plan.record.as_ref().is_some_and(|r| r.uff58),
+            clock: MeasureClock::new(measures.iter().map(|m| m.at_s), plan.rate_hz),
+            measures,
+            adc: Adc::new(analyser.adc)?,
+            analyser: Analyser::new(s)?,
+            truth: AliasTruth::new(s.block, analyser.adc.ratio, plan.rate_hz, s.window)?,
+            active: None,
+            analogue: Vec::new(),
+            adc_out: Vec::new(),
+            overloads: 0,
+            files: Vec::new(),
+            incomplete: Vec::new(),
+            status,
+        })
+    }
+
+    fn start(&mut self, index: usize) -> anyhow::Result<()> {
+        self.close_measurement()?;
+        self.overloads += self.adc.overloads();
+        self.adc.reset();
+        self.analyser.restart();
+        self.analogue.clear();
+        self.active = Some(index);
+        Ok(())
+    }
+
+    fn feed(&mut self, analogue: &[f64]) -> anyhow::Result<()> {
+        if self.active.is_none() || analogue.is_empty() {
+            return Ok(());
+        }
+        self.analogue.extend_from_slice(analogue);
+        self.adc_out.clear();
+        self.adc.convert(analogue, &mut self.adc_out);
+        self.analyser.push(&self.adc_out);
+        let (n, of) = (self.analyser.average_count(), self.plan.settings.averages);
+        let overloads = self.overloads + self.adc.overloads();
+        self.status.update(|s| {
+            s.averages = (n, of);
+            s.adc_overloads = overloads;
+        });
+        if self.analyser.is_complete() {
+            self.close_measurement()?;
+        }
+        Ok(())
+    }
+
+    /// Writes the measurement under way (if any spectrum was averaged) and ends it.
+    fn close_measurement(&mut self) -> anyhow::Result<()> {
+        let Some(index) = self.active.take() else {
+            return Ok(());
+        };
+        let count = self.analyser.average_count();
+        if count < self.plan.settings.averages {
+            self.incomplete.push(format!(
+                "measurement {}: {count} of {} averages",
+                index + 1,
+                self.plan.settings.averages
+            ));
+        }
+        if count == 0 {
+            return Ok(());
+        }
+        self.truth.restart();
+        let span = self.truth.span();
+        let hop = self.plan.settings.hop() as f64 * self.plan.adc.ratio;
+        for b in 0..count {
+            let start = (b as f64 * hop).round() as usize;
+            if let Some(block) = self.analogue.get(start..start + span) {
+                self.truth.add(block);
+            }
+        }
+        self.write_spectrum(index, count)
+    }
+
+    fn write_spectrum(&mut self, index: usize, count: usize) -> anyhow::Result<()> {
+        let lines = self.analyser.display();
+        let alias_of = self.truth.flags(lines.len());
+        let measure = &self.measures[index];
+        let base = self.dir.join(format!("spectrum-{:02}", index + 1));
+        let csv = base.with_extension("csv");
+        write_spectrum_csv(&csv, &self.metadata(measure, count), &lines, &alias_of)?;
+        self.files.push(csv);
+        let s = &self.plan.settings;
+        let title = format!(
+            "{}: {}, {count} averages, {}, N = {}",
+            self.scenario,
+            measure.label,
+            s.window.name(),
+            s.block
+        );
+        let plot = SpectrumPlot {
+            title: &title,
+            unit: "V",
+            lines: &lines,
+            alias_of: &alias_of,
+            running_hz: Some(measure.speed_rpm / 60.0),
+        };
+        self.files.extend(write_spectrum_plots(&base, &plot)?);
+        if self.uff {
+            self.files.push(write_spectrum_uff(&base, &title, &lines)?);
+        }
+        Ok(())
+    }
+
+    fn metadata(&self, measure: &Measure, count: usize) -> Metadata {
+        let s = &self.plan.settings;
+        let adc = &self.plan.adc;
+        vec![
+            ("scenario", self.scenario.clone()),
+            ("measurement", measure.label.clone()),
+            ("started_s", measure.at_s.to_string()),
+            ("speed_set_rpm", measure.speed_rpm.to_string()),
+            ("load_set_nm", measure.load_nm.to_string()),
+            (
+                "signal",
+                format!("{ANALYSED_SIGNAL} (amplifier output after the anti-alias filter)"),
+            ),
+            ("fs_hz", s.sample_rate_hz().to_string()),
+            ("n", s.block.to_string()),
+            ("fmax_hz", s.fmax_hz.to_string()),
+            ("sampling", format!("{:?}", s.sampling)),
+            ("window", s.window.name().to_string()),
+            ("enbw_hz", self.analyser.enbw_hz().to_string()),
+            (
+                "averages",
+                format!(
+                    "{count} of {} requested, linear (sum then divide)",
+                    s.averages
+                ),
+            ),
+            ("overlap_pct", (100.0 * s.overlap).to_string()),
+            ("filter", self.filter.clone()),
+            (
+                "adc",
+                format!(
+                    "{} bits over +-{} V, {} overloads",
+                    adc.bits,
+                    adc.range_v,
+                    self.adc.overloads()
+                ),
+            ),
+            ("scaling", Spectrum::Power.scaling().replace("unit", "V")),
+            (
+                "alias_of_hz",
+                "true frequency of a component aliased onto the line; empty for a real component"
+                    .to_string(),
+            ),
+        ]
+    }
+}
+
+fn write_spectrum_uff(
+    base: &Path,
+    title: &str,
+    lines: &[instruments::Line],
+) -> anyhow::Result<PathBuf> {
+    let values: Vec<f64> = lines.iter().map(|l| l.value).collect();
+    let step_hz = lines.get(1).map_or(1.0, |l| l.frequency_hz);
+    let record = Uff58Record {
+        description: title,
+        source: "testrig analyser (power spectrum, V^2 rms)",
+        function_type: 12,
+        response_name: "amplifier",
+        response_node: 1,
+        ordinate_type: 0,
+        ordinate_unit: "V^2",
+        abscissa: Uff58Abscissa::Frequency {
+            start_hz: 0.0,
+            step_hz,
+        },
+        values: &values,
+    };
+    let file = PartialFile::new(&base.with_extension("uff"));
+    let mut out = file.create()?;
+    write_uff58(&mut out, &record)?;
+    std::io::Write::flush(&mut out)?;
+    drop(out);
+    file.commit()
+}
+
+impl Sink for AnalyserSink {
+    fn consume(&mut self, frame: &Frame) -> anyhow::Result<()> {
+        let x = frame.channels[self.input].clone();
+        let mut offset = 0;
+        while let Some((at, index)) = self.clock.next_within(frame.start_sample, x.len()) {
+            self.feed(&x[offset..at])?;
+            self.start(index)?;
+            offset = at;
+        }
+        self.feed(&x[offset..])
+    }
+
+    fn finish(mut self: Box<Self>) -> anyhow::Result<SinkReport> {
+        self.close_measurement()?;
+        self.overloads += self.adc.overloads();
+        Ok(SinkReport {
+            files: std::mem::take(&mut self.files),
+            facts: vec![
+                ("adc_overloads", self.overloads.into()),
+                ("spectra_incomplete", self.incomplete.clone().into()),
+            ],
+        })
+    }
+}

@@ -1,0 +1,33 @@
+//! Where the scenario's measurement instants fall within the stream of blocks.
+
+/// Sample indices of the measurements, consumed in order.
+#[derive(Clone, Debug)]
+pub struct MeasureClock {
+    marks: Vec<u64>,
+    next: usize,
+}
+
+impl MeasureClock {
+    /// Marks at `times_s` on a stream of `rate_hz`.
+    pub fn new(times_s: impl IntoIterator<Item = f64>, rate_hz: f64) -> Self {
+        Self {
+            marks: times_s
+                .into_iter()
+                .map(|t| (t * rate_hz).round() as u64)
+                .collect(),
+            next: 0,
+        }
+    }
+
+    /// The next measurement within samples `[start, start + len)`: its offset in the
+    /// block and its index; each is returned once.
+    pub fn next_within(&mut self, start: u64, len: usize) -> Option<(usize, usize)> {
+        let mark = *self.marks.get(self.next)?;
+        if mark >= start + len as u64 {
+            return None;
+        }
+        let index = self.next;
+        self.next += 1;
+        Some((mark.saturating_sub(start) as usize, index))
+    }
+}

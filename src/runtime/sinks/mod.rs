@@ -1,0 +1,28 @@
+//! The ends of the chain: each consumes every frame in its own thread and writes files.
+
+pub mod analyser;
+pub mod measure_clock;
+pub mod monitor;
+pub mod recorder;
+pub mod scope;
+
+use std::path::PathBuf;
+
+use super::frame::Frame;
+
+/// A consumer of frames.
+pub trait Sink: Send {
+    /// Takes one frame.
+    fn consume(&mut self, frame: &Frame) -> anyhow::Result<()>;
+    /// Closes the sink's files (everything consumed is kept) and reports.
+    fn finish(self: Box<Self>) -> anyhow::Result<SinkReport>;
+}
+
+/// What a sink leaves behind.
+#[derive(Debug, Default)]
+pub struct SinkReport {
+    /// Files written.
+    pub files: Vec<PathBuf>,
+    /// Facts for the manifest, by key.
+    pub facts: Vec<(&'static str, serde_json::Value)>,
+}

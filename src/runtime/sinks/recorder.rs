@@ -1,0 +1,191 @@
+//! The recorder: chosen signals to WAV (with sidecar), CSV and UFF58 as they come, and
+//! the impact log to `impacts.csv`.
+
+use std::path::Path;
+
+use rig::Impact;
+
+use super::{Sink, SinkReport};
+use crate::recording::{
+    ChannelInfo, CsvRecorder, Uff58Channel, Uff58Recorder, WavRecorder, WavSamples,
+};
+use crate::runtime::frame::{Frame, SignalNames};
+use crate::scenario::{Plan, WavFormat};
+use crate::signal_catalog::unit_of;
+
+/// Writes every recorded frame.
+pub struct RecorderSink {
+    indices: Vec<usize>,
+    decimate: u64,
+    wav: Option<WavRecorder>,
+    csv: Option<CsvRecorder>,
+    uff: Option<Uff58Recorder>,
+    impacts: CsvRecorder,
+    row: Vec<f64>,
+    rate_hz: f64,
+    expected_seq: u64,
+    gaps: u64,
+}
+
+impl RecorderSink {
+    /// Opens the files in `dir` for `plan`'s recording, over channels named by `names`.
+    pub fn create(dir: &Path, plan: &Plan, names: &SignalNames) -> anyhow::Result<Self> {
+        let impacts = CsvRecorder::create(
+            &dir.join("impacts.csv"),
+            &["time_s", "flank", "tooth", "closing_speed_rad_s"].map(String::from),
+        )?;
+        let mut sink = Self {
+            indices: Vec::new(),
+            decimate: 1,
+            wav: None,
+            csv: None,
+            uff: None,
+            impacts,
+            row: Vec::new(),
+            rate_hz: plan.rate_hz,
+            expected_seq: 0,
+            gaps: 0,
+        };
+        let Some(record) = &plan.record else {
+            return Ok(sink);
+        };
+        sink.indices = record
+            .signals
+            .iter()
+            .map(|s| {
+                names
+                    .index(s)
+                    .ok_or_else(|| anyhow::anyhow!("internal wiring: no `{s}`"))
+            })
+            .collect::<anyhow::Result<_>>()?;
+        sink.decimate = record.decimate as u64;
+        let rate = plan.rate_hz / record.decimate as f64;
+        if let Some(format) = record.wav {
+            let channels = record
+                .signals
+                .iter()
+                .zip(&record.full_scale)
+                .map(|(name, &scale)| ChannelInfo {
+                    name: name.clone(),
+                    unit: unit_of(name).into(),
+                    scale: if format == WavFormat::Float32 {
+                        1.0
+                    } else {
+                        scale
+                    },
+                })
+                .collect();
+            let samples = match format {
+                WavFormat::Float32 => WavSamples::Float32,
+                WavFormat::Int24 => WavSamples::Int24,
+            };
+            let wav_rate = rate.round() as u32;
+            sink.wav = Some(WavRecorder::create_as(
+                &dir.join("recording.wav"),
+                wav_rate,
+                channels,
+                &plan.text,
+                samples,
+            )?);
+        }
+        if record.csv {
+            let mut header = vec!["time_s".to_string()];
+            header.extend(record.signals.iter().cloned());
+            sink.csv = Some(CsvRecorder::create(&dir.join("recording.csv"), &header)?);
+        }
+        if record.uff58 {
+            let channels = record
+                .signals
+                .iter()
+                .enumerate()
+                .map(|(i, s)| uff_channel(s, i))
+                .collect();
+            let source = format!("testrig scenario {}", plan.name);
+            sink.uff = Some(Uff58Recorder::create(
+                &dir.join("recording.uff"),
+                channels,
+                &source,
+                0.0,
+                1.0 / rate,
+            )?);
+        }
+        Ok(sink)
+    }
+
+    fn write_impacts(&mut self, impacts: &[Impact]) -> anyhow::Result<()> {
+        for impact in impacts {
+            self.impacts.write_row(impact)?;
+        }
+        Ok(())
+    }
+}
+
+fn uff_channel(name: &str, index: usize) -> Uff58Channel {
+    Uff58Channel {
+        description: format!("testrig {name}"),
+        response_name: name.chars().take(10).collect(),
+        response_node: index as u32 + 1,
+        ordinate_type: if name == "strain" { 3 } else { 0 },
+        ordinate_unit: unit_of(name).into(),
+    }
+}
+
+impl Sink for RecorderSink {
+    fn consume(&mut self, frame: &Frame) -> anyhow::Result<()> {
+        if frame.seq != self.expected_seq {
+            self.gaps += frame.seq - self.expected_seq;
+        }
+        self.expected_seq = frame.seq + 1;
+        self.write_impacts(&frame.impacts)?;
+        if self.indices.is_empty() {
+            return Ok(());
+        }
+        for i in 0..frame.len() {
+            let sample = frame.start_sample + i as u64;
+            if !sample.is_multiple_of(self.decimate) {
+                continue;
+            }
+            self.row.clear();
+            self.row
+                .extend(self.indices.iter().map(|&c| frame.channels[c][i]));
+            if let Some(wav) = &mut self.wav {
+                wav.write_frame(&self.row)?;
+            }
+            if let Some(uff) = &mut self.uff {
+                uff.write_frame(&self.row)?;
+            }
+            if let Some(csv) = &mut self.csv {
+                self.row.insert(0, sample as f64 / self.rate_hz);
+                csv.write_row(&self.row)?;
+            }
+        }
+        Ok(())
+    }
+
+    fn finish(self: Box<Self>) -> anyhow::Result<SinkReport> {
+        let mut report = SinkReport::default();
+        report.files.push(self.impacts.finish()?);
+        if let Some(wav) = self.wav {
+            report.facts.push(("wav_frames", wav.frames().into()));
+            report
+                .facts
+                .push(("wav_clipped_samples", wav.clipped().into()));
+            report.files.push(wav.finish()?);
+            let mut sidecar = report.files[report.files.len() - 1]
+                .clone()
+                .into_os_string();
+            sidecar.push(".json");
+            report.files.push(sidecar.into());
+        }
+        if let Some(csv) = self.csv {
+            report.files.push(csv.finish()?);
+        }
+        if let Some(uff) = self.uff {
+            report.files.push(uff.finish()?);
+        }
+        report
+            .facts
+            .push(("recording_gaps_blocks", self.gaps.into()));
+        Ok(report)
+    }
+}

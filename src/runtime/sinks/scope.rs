@@ -1,0 +1,128 @@
+//! The storage scope on the amplifier output: armed for one sweep at each measurement;
+//! each stored sweep is written as CSV (time, volts) and drawn as PNG and SVG.
+
+use std::path::{Path, PathBuf};
+
+use instruments::{Block, Scope, ScopeSettings};
+
+use super::measure_clock::MeasureClock;
+use super::{Sink, SinkReport};
+use crate::plots::write_scope_plots;
+use crate::recording::CsvRecorder;
+use crate::runtime::frame::Frame;
+use crate::scenario::{Measure, Plan};
+
+/// The scope.
+pub struct ScopeSink {
+    settings: ScopeSettings,
+    rate_hz: f64,
+    input: usize,
+    dir: PathBuf,
+    scenario: String,
+    measures: Vec<Measure>,
+    clock: MeasureClock,
+    armed: Option<(usize, Scope)>,
+    scratch: Vec<f64>,
+    files: Vec<PathBuf>,
+    untriggered: Vec<usize>,
+}
+
+impl ScopeSink {
+    /// A scope on channel `input`, writing to `dir`, armed at `measures`.
+    pub fn create(
+        dir: &Path,
+        plan: &Plan,
+        settings: ScopeSettings,
+        input: usize,
+        measures: Vec<Measure>,
+    ) -> Self {
+        Self {
+            settings,
+            rate_hz: plan.rate_hz,
+            input,
+            dir: dir.to_path_buf(),
+            scenario: plan.name.clone(),
+            clock: MeasureClock::new(measures.iter().map(|m| m.at_s), plan.rate_hz),
+            measures,
+            armed: None,
+            scratch: Vec::new(),
+            files: Vec::new(),
+            untriggered: Vec::new(),
+        }
+    }
+
+    fn watch(&mut self, x: &[f64]) -> anyhow::Result<()> {
+        let Some((index, scope)) = &mut self.armed else {
+            return Ok(());
+        };
+        self.scratch.resize(x.len(), 0.0);
+        scope.process(x, &mut self.scratch);
+        if let Some(trace) = scope.trace() {
+            let index = *index;
+            self.armed = None;
+            self.write(index, &trace)?;
+        }
+        Ok(())
+    }
+
+    fn arm(&mut self, index: usize) -> anyhow::Result<()> {
+        if let Some((previous, _)) = self.armed.take() {
+            self.untriggered.push(previous + 1);
+        }
+        self.armed = Some((index, Scope::new(self.settings, self.rate_hz)?));
+        Ok(())
+    }
+
+    fn write(&mut self, index: usize, trace: &[(f64, f64)]) -> anyhow::Result<()> {
+        let base = self.dir.join(format!("scope-{:02}", index + 1));
+        let v = self.settings.volts_per_div;
+        let mut csv = CsvRecorder::create(
+            &base.with_extension("csv"),
+            &["time_from_trigger_s".to_string(), "amplifier_v".to_string()],
+        )?;
+        for &(t, div) in trace {
+            csv.write_row(&[t, div * v])?;
+        }
+        self.files.push(csv.finish()?);
+        let title = format!(
+            "{}: {} ({} V/div, {} ms/div)",
+            self.scenario,
+            self.measures[index].label,
+            v,
+            self.settings.seconds_per_div * 1e3
+        );
+        self.files.extend(write_scope_plots(
+            &base,
+            &title,
+            trace,
+            self.settings.seconds_per_div,
+        )?);
+        Ok(())
+    }
+}
+
+impl Sink for ScopeSink {
+    fn consume(&mut self, frame: &Frame) -> anyhow::Result<()> {
+        let x = frame.channels[self.input].clone();
+        let mut offset = 0;
+        while let Some((at, index)) = self.clock.next_within(frame.start_sample, x.len()) {
+            self.watch(&x[offset..at])?;
+            self.arm(index)?;
+            offset = at;
+        }
+        self.watch(&x[offset..])
+    }
+
+    fn finish(mut self: Box<Self>) -> anyhow::Result<SinkReport> {
+        if let Some((index, _)) = self.armed.take() {
+            self.untriggered.push(index + 1);
+        }
+        Ok(SinkReport {
+            files: std::mem::take(&mut self.files),
+            facts: vec![(
+                "scope_untriggered_measurements",
+                self.untriggered.clone().into(),
+            )],
+        })
+    }
+}

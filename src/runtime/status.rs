@@ -1,0 +1,39 @@
+//! What the console shows while a run goes: shared between the threads that know it.
+
+use std::sync::{Arc, Mutex, PoisonError};
+
+/// The rack as the experimenter reads it.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Status {
+    /// Samples the plant has released.
+    pub simulated_samples: u64,
+    /// Tacho DVM display (V).
+    pub dvm_v: f64,
+    /// RMS meter reading (V).
+    pub meter_v: f64,
+    /// Analyser averages taken in the current measurement, and the number set.
+    pub averages: (usize, usize),
+    /// ADC overloads so far.
+    pub adc_overloads: u64,
+    /// Blocks dropped at a full queue.
+    pub overruns: u64,
+}
+
+/// A handle every thread can update.
+#[derive(Clone, Debug, Default)]
+pub struct SharedStatus(Arc<Mutex<Status>>);
+
+impl SharedStatus {
+    /// Changes the status under the lock.
+    pub fn update(&self, change: impl FnOnce(&mut Status)) {
+        change(&mut self.0.lock().unwrap_or_else(PoisonError::into_inner));
+    }
+
+    /// A copy of the status now.
+    pub fn snapshot(&self) -> Status {
+        self.0
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner)
+            .clone()
+    }
+}

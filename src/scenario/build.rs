@@ -1,0 +1,69 @@
+//! From a parsed scenario file to a checked [`Plan`].
+
+use super::chain_part::{analyser_plan, chain_plan, record_plan};
+use super::file::ScenarioFile;
+use super::plan::Plan;
+use super::rig_part::{rig_params, schedule_and_measures};
+use super::source::ScenarioSource;
+
+/// Run-time choices from the command line that override the file.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct CommandLine {
+    /// `--duration S`.
+    pub duration_s: Option<f64>,
+    /// `--seed N`.
+    pub seed: Option<u64>,
+}
+
+/// Reads, parses and checks the scenario source into a plan.
+pub fn build(src: &ScenarioSource, command_line: CommandLine) -> anyhow::Result<Plan> {
+    let file: ScenarioFile = src.parse()?;
+    let rate_hz = file.rate_hz.get_ref().0;
+    for (value, field) in [
+        (&file.block_samples, "block_samples"),
+        (&file.queue_blocks, "queue_blocks"),
+    ] {
+        if *value.get_ref() == 0 {
+            return Err(src.error(value.span(), field, "must be ≥ 1"));
+        }
+    }
+    let seed = command_line.seed.unwrap_or(file.seed);
+    let (preset, params) = rig_params(src, &file.rig)?;
+    let (schedule, measures, survey_s) = schedule_and_measures(src, &file)?;
+    let duration_s = match (command_line.duration_s, &file.duration_s, survey_s) {
+        (Some(d), _, _) => d,
+        (None, Some(d), _) => d.get_ref().0,
+        (None, None, Some(d)) => d,
+        (None, None, None) => {
+            return Err(src.error(0..0, "duration_s", "missing: the simulated run length (s)"));
+        }
+    };
+    let chain = chain_plan(src, &file.chain, rate_hz, seed)?;
+    let analyser = match &file.analyser {
+        Some(a) => Some(analyser_plan(src, a, rate_hz, seed)?),
+        None => None,
+    };
+    let record = match &file.record {
+        Some(r) => Some(record_plan(src, r, chain.slip_rings.is_some())?),
+        None => None,
+    };
+    Ok(Plan {
+        name: file.name,
+        description: file.description,
+        text: src.text.clone(),
+        seed,
+        duration_s,
+        rate_hz,
+        block_samples: *file.block_samples.get_ref(),
+        overflow: file.overflow,
+        queue_blocks: *file.queue_blocks.get_ref(),
+        preset,
+        params,
+        schedule,
+        measures,
+        is_survey: file.survey.is_some(),
+        chain,
+        analyser,
+        record,
+    })
+}

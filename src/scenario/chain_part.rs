@@ -1,0 +1,307 @@
+//! The measuring chain, the analyser and the recordings of a scenario.
+
+use instruments::{
+    Adc, AdcSettings, Analyser, AnalyserSettings, AntiAliasFilter, Averaging, BridgeArrangement,
+    CarrierDemodulator, CarrierSettings, Detector, FilterKind, LowPassSpec, Sampling, Scope,
+    ScopeSettings, ShaftStrain, SlipRingSettings, Slope, Spectrum, StrainBridge, SweepMode, Window,
+};
+use toml::Spanned;
+
+use super::file::{AnalyserFile, ChainFile, RecordFile};
+use super::plan::{AnalyserPlan, ChainPlan, RecordPlan, WavFormat};
+use super::source::ScenarioSource;
+use crate::signal_catalog;
+
+/// The chain's settings, each checked by building the instrument once.
+pub fn chain_plan(
+    src: &ScenarioSource,
+    chain: &ChainFile,
+    rate_hz: f64,
+    seed: u64,
+) -> anyhow::Result<ChainPlan> {
+    let g = &chain.gauges;
+    let arrangement = match g.arrangement.as_str() {
+        "full" => BridgeArrangement::Full,
+        "half" => BridgeArrangement::Half,
+        "quarter" => BridgeArrangement::Quarter,
+        other => {
+            return Err(src.error(
+                0..0,
+                "chain.gauges.arrangement",
+                format!("`{other}` is not one of full, half, quarter"),
+            ));
+        }
+    };
+    let mut bridge = StrainBridge::new(arrangement, g.gauge_factor.0, g.excitation_v.0)
+        .map_err(|e| src.error(0..0, "chain.gauges", e))?;
+    bridge.gauge_factor_error = g.gauge_factor_error.0;
+    let carrier = carrier_settings(src, chain, &bridge, rate_hz)?;
+    let slip_rings = chain.slip_rings.as_ref().map(|s| SlipRingSettings {
+        broadband_rms: s.broadband_rms.0,
+        per_rev_amplitude: s.per_rev_amplitude.0,
+        contact_noise_v_rms: s.contact_noise_v_rms.0,
+        seed: seed.wrapping_add(1),
+    });
+    Ok(ChainPlan {
+        shaft: ShaftStrain::intermediate_shaft(),
+        bridge,
+        carrier,
+        slip_rings,
+        filter: filter_spec(src, chain, rate_hz)?,
+        meter: (detector(src, chain)?, chain.meter.tau_s.0),
+        dvm: (
+            chain.tacho.gate_s.0,
+            chain.tacho.tau_s.0,
+            chain.tacho.resolution_v.0,
+        ),
+        scope: scope_settings(src, chain, rate_hz)?,
+    })
+}
+
+fn carrier_settings(
+    src: &ScenarioSource,
+    chain: &ChainFile,
+    bridge: &StrainBridge,
+    rate_hz: f64,
+) -> anyhow::Result<CarrierSettings> {
+    let a = &chain.amplifier;
+    let settings = CarrierSettings {
+        carrier_hz: a.carrier_hz.get_ref().0,
+        output_lowpass_hz: a.output_lowpass_hz.get_ref().0,
+        gain: CarrierSettings::calibrated_gain(
+            a.calibration_microstrain.0,
+            a.calibration_v.0,
+            bridge.output_v(1.0),
+        ),
+    };
+    CarrierDemodulator::new(settings, rate_hz)
+        .map_err(|e| src.error(a.carrier_hz.span(), "chain.amplifier", e))?;
+    Ok(settings)
+}
+
+fn filter_spec(
+    src: &ScenarioSource,
+    chain: &ChainFile,
+    rate_hz: f64,
+) -> anyhow::Result<Option<LowPassSpec>> {
+    let f = &chain.filter;
+    let kind = match f.kind.get_ref().as_str() {
+        "none" => return Ok(None),
+        "butterworth" => FilterKind::Butterworth,
+        "bessel" => FilterKind::Bessel,
+        other => {
+            return Err(src.error(
+                f.kind.span(),
+                "chain.filter.kind",
+                format!("`{other}` is not one of none, butterworth, bessel"),
+            ));
+        }
+    };
+    let cutoff = f.cutoff_hz.get_ref().0;
+    if cutoff >= rate_hz / 2.0 {
+        return Err(src.error(
+            f.cutoff_hz.span(),
+            "chain.filter.cutoff_hz",
+            format!(
+                "{cutoff} Hz is at or above the analogue Nyquist rate {} Hz (half of rate_hz); a cut-off below it is allowed",
+                rate_hz / 2.0
+            ),
+        ));
+    }
+    let spec = LowPassSpec {
+        kind,
+        order: *f.order.get_ref(),
+        cutoff_hz: cutoff,
+    };
+    AntiAliasFilter::new(Some(spec), rate_hz)
+        .map_err(|e| src.error(f.order.span(), "chain.filter", e))?;
+    Ok(Some(spec))
+}
+
+fn detector(src: &ScenarioSource, chain: &ChainFile) -> anyhow::Result<Detector> {
+    let d = &chain.meter.detector;
+    match d.get_ref().as_str() {
+        "average" => Ok(Detector::AverageRmsCalibrated),
+        "true-rms" => Ok(Detector::TrueRms),
+        other => Err(src.error(
+            d.span(),
+            "chain.meter.detector",
+            format!("`{other}` is not one of average (HP 400E), true-rms"),
+        )),
+    }
+}
+
+fn scope_settings(
+    src: &ScenarioSource,
+    chain: &ChainFile,
+    rate_hz: f64,
+) -> anyhow::Result<Option<ScopeSettings>> {
+    let Some(s) = &chain.scope else {
+        return Ok(None);
+    };
+    let slope = match s.slope.get_ref().as_str() {
+        "rising" => Slope::Rising,
+        "falling" => Slope::Falling,
+        other => {
+            return Err(src.error(
+                s.slope.span(),
+                "chain.scope.slope",
+                format!("`{other}` is not one of rising, falling"),
+            ));
+        }
+    };
+    let settings = ScopeSettings {
+        volts_per_div: s.volts_per_div.0,
+        seconds_per_div: s.seconds_per_div.0,
+        trigger_v: s.trigger_v.0,
+        slope,
+        mode: SweepMode::Single,
+    };
+    Scope::new(settings, rate_hz).map_err(|e| src.error(0..0, "chain.scope", e))?;
+    Ok(Some(settings))
+}
+
+/// The analyser's and ADC's settings.
+pub fn analyser_plan(
+    src: &ScenarioSource,
+    file: &AnalyserFile,
+    rate_hz: f64,
+    seed: u64,
+) -> anyhow::Result<AnalyserPlan> {
+    let window = parse_choice(src, &file.window, "analyser.window", Window::NAMES, |t| {
+        Window::parse(t)
+    })?;
+    let sampling = parse_choice(
+        src,
+        &file.sampling,
+        "analyser.sampling",
+        "thesis, 2.56",
+        |t| match t {
+            "thesis" => Some(Sampling::Thesis),
+            "2.56" | "modern" => Some(Sampling::Modern),
+            _ => None,
+        },
+    )?;
+    let overlap = file.overlap_pct.as_ref().map_or(0.0, |o| o.get_ref().0);
+    if overlap >= 100.0 {
+        let span = file.overlap_pct.as_ref().map_or(0..0, Spanned::span);
+        return Err(src.error(span, "analyser.overlap_pct", "must lie in [0, 100)"));
+    }
+    let settings = AnalyserSettings {
+        block: *file.block.get_ref(),
+        fmax_hz: file.fmax_hz.get_ref().0,
+        sampling,
+        window,
+        spectrum: Spectrum::Power,
+        averaging: Averaging::Linear,
+        averages: *file.averages.get_ref(),
+        overlap: overlap / 100.0,
+    };
+    Analyser::new(settings).map_err(|e| src.error(file.block.span(), "analyser", e))?;
+    let ratio = rate_hz / settings.sample_rate_hz();
+    if ratio < 1.0 {
+        return Err(src.error(
+            file.fmax_hz.span(),
+            "analyser.fmax_hz",
+            format!(
+                "needs an ADC rate of {} Hz, above the stream rate {rate_hz} Hz",
+                settings.sample_rate_hz()
+            ),
+        ));
+    }
+    let adc = AdcSettings {
+        ratio,
+        bits: *file.bits.get_ref(),
+        range_v: file.range_v.0,
+        dither_seed: file.dither.then_some(seed.wrapping_add(2)),
+    };
+    Adc::new(adc).map_err(|e| src.error(file.bits.span(), "analyser.bits", e))?;
+    Ok(AnalyserPlan { settings, adc })
+}
+
+fn parse_choice<T>(
+    src: &ScenarioSource,
+    value: &Spanned<String>,
+    field: &str,
+    allowed: &str,
+    parse: impl Fn(&str) -> Option<T>,
+) -> anyhow::Result<T> {
+    parse(value.get_ref()).ok_or_else(|| {
+        src.error(
+            value.span(),
+            field,
+            format!("`{}` is not one of {allowed}", value.get_ref()),
+        )
+    })
+}
+
+/// What to record, with each name checked.
+pub fn record_plan(
+    src: &ScenarioSource,
+    file: &RecordFile,
+    slip_rings: bool,
+) -> anyhow::Result<RecordPlan> {
+    let mut signals = Vec::new();
+    for name in &file.signals {
+        let n = name.get_ref();
+        let wired = signal_catalog::is_known(n) && (slip_rings || n != "slip_ring_v");
+        if !wired {
+            return Err(src.error(
+                name.span(),
+                "record.signals",
+                format!(
+                    "`{n}` is not a signal of this run; known: {}",
+                    signal_catalog::all_names()
+                ),
+            ));
+        }
+        signals.push(n.clone());
+    }
+    if signals.is_empty() {
+        return Err(src.error(0..0, "record.signals", "name at least one signal"));
+    }
+    let mut plan = RecordPlan {
+        full_scale: signals
+            .iter()
+            .map(|s| {
+                file.full_scale
+                    .get(s)
+                    .map_or(signal_catalog::default_full_scale(s), |v| v.get_ref().0)
+            })
+            .collect(),
+        signals,
+        wav: None,
+        csv: false,
+        uff58: false,
+        decimate: (*file.decimate.get_ref()).max(1),
+    };
+    if *file.decimate.get_ref() == 0 {
+        return Err(src.error(file.decimate.span(), "record.decimate", "must be ≥ 1"));
+    }
+    let wav_format = parse_choice(
+        src,
+        &file.wav_format,
+        "record.wav_format",
+        "float32, int24",
+        |t| match t {
+            "float32" => Some(WavFormat::Float32),
+            "int24" => Some(WavFormat::Int24),
+            _ => None,
+        },
+    )?;
+    for format in &file.formats {
+        match format.get_ref().as_str() {
+            "wav" => plan.wav = Some(wav_format),
+            "csv" => plan.csv = true,
+            "uff58" => plan.uff58 = true,
+            other => {
+                return Err(src.error(
+                    format.span(),
+                    "record.formats",
+                    format!("`{other}` is not one of wav, csv, uff58"),
+                ));
+            }
+        }
+    }
+    Ok(plan)
+}

@@ -1,0 +1,16 @@
+//! Scenario files (TOML): what a rehearsal runs, checked with errors at file, line and field.
+
+pub mod build;
+pub mod chain_part;
+pub mod file;
+pub mod overrides;
+pub mod plan;
+pub mod rig_part;
+pub mod source;
+pub mod values;
+
+pub use build::{CommandLine, build};
+pub use file::Overflow;
+pub use overrides::apply_override;
+pub use plan::{AnalyserPlan, ChainPlan, Measure, Plan, RecordPlan, WavFormat};
+pub use source::ScenarioSource;

@@ -1,0 +1,81 @@
+//! `--set KEY=VALUE` on a scenario: the file's text is edited (the key's value replaced, or
+//! the key added to its table), so errors still point at lines of the scenario as run.
+
+use anyhow::{Context, bail};
+
+/// Applies one `KEY=VALUE` (KEY a dotted path such as `schedule.speed_rpm` or
+/// `rig.set.teeth`) to `text`. VALUE is taken as TOML (a number, `true`, `"text"`), or as
+/// a string when it is not valid TOML.
+pub fn apply_override(text: &str, item: &str) -> anyhow::Result<String> {
+    let (key, value) = item.split_once('=').with_context(|| {
+        format!("--set {item}: expected KEY=VALUE, e.g. schedule.speed_rpm=1500")
+    })?;
+    let (key, value) = (key.trim(), value.trim());
+    let value = toml_value(value);
+    let (table, leaf) = match key.rsplit_once('.') {
+        Some((table, leaf)) => (table, leaf),
+        None => ("", key),
+    };
+    if leaf.is_empty()
+        || !leaf
+            .chars()
+            .all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-')
+    {
+        bail!("--set {item}: `{key}` is not a key path like schedule.speed_rpm");
+    }
+    let mut lines: Vec<String> = text.lines().map(str::to_string).collect();
+    let mut current = String::new();
+    let mut header_line = (table.is_empty()).then_some(0usize);
+    for (i, line) in lines.iter_mut().enumerate() {
+        let trimmed = line.trim();
+        if trimmed.starts_with("[[") {
+            current = format!("[[{}", trimmed.trim_start_matches('['));
+            continue;
+        }
+        if let Some(name) = trimmed.strip_prefix('[') {
+            current = name.split(']').next().unwrap_or("").trim().to_string();
+            if current == table {
+                header_line = Some(i + 1);
+            }
+            continue;
+        }
+        if current == table
+            && let Some((k, _)) = trimmed.split_once('=')
+            && k.trim() == leaf
+        {
+            *line = format!("{leaf} = {value} # --set");
+            return Ok(lines.join("\n") + "\n");
+        }
+    }
+    match header_line {
+        Some(at) => {
+            let at = if table.is_empty() {
+                first_table_line(&lines)
+            } else {
+                at
+            };
+            lines.insert(at, format!("{leaf} = {value} # --set"));
+        }
+        None => {
+            lines.push(format!("[{table}]"));
+            lines.push(format!("{leaf} = {value} # --set"));
+        }
+    }
+    Ok(lines.join("\n") + "\n")
+}
+
+fn first_table_line(lines: &[String]) -> usize {
+    lines
+        .iter()
+        .position(|l| l.trim_start().starts_with('['))
+        .unwrap_or(lines.len())
+}
+
+fn toml_value(value: &str) -> String {
+    let probe = format!("v = {value}");
+    if toml::from_str::<toml::Table>(&probe).is_ok() {
+        value.to_string()
+    } else {
+        format!("{:?}", value)
+    }
+}

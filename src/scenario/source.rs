@@ -1,0 +1,75 @@
+//! A scenario file's text, parsed, with errors that name the file, line, column and field.
+
+use std::fmt::Display;
+use std::ops::Range;
+use std::path::{Path, PathBuf};
+
+use anyhow::anyhow;
+
+use super::file::ScenarioFile;
+
+/// A scenario file as read from disk.
+#[derive(Clone, Debug)]
+pub struct ScenarioSource {
+    /// Where it was read from.
+    pub path: PathBuf,
+    /// Its text.
+    pub text: String,
+}
+
+impl ScenarioSource {
+    /// Reads `path`.
+    pub fn read(path: &Path) -> anyhow::Result<Self> {
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| anyhow!("{}: cannot read the scenario: {e}", path.display()))?;
+        Ok(Self {
+            path: path.to_path_buf(),
+            text,
+        })
+    }
+
+    /// Parses the text; unknown keys and out-of-range values are errors at their place.
+    pub fn parse(&self) -> anyhow::Result<ScenarioFile> {
+        toml::from_str(&self.text).map_err(|e| {
+            let span = e.span().unwrap_or(0..0);
+            let message = e.message().trim().to_string();
+            self.error(span, &self.key_at(e.span()), message)
+        })
+    }
+
+    /// An error at `span` of the text about `field`: `FILE:LINE:COLUMN: field: message`.
+    /// A span of 0..0 marks a value the file left out (a default).
+    pub fn error(&self, span: Range<usize>, field: &str, message: impl Display) -> anyhow::Error {
+        if span == (0..0) {
+            return anyhow!("{}: {field} (default): {message}", self.path.display());
+        }
+        let (line, column) = self.line_column(span.start);
+        anyhow!(
+            "{}:{line}:{column}: {field}: {message}",
+            self.path.display()
+        )
+    }
+
+    /// One-based line and column of byte `offset`.
+    pub fn line_column(&self, offset: usize) -> (usize, usize) {
+        let before = &self.text[..offset.min(self.text.len())];
+        let line = before.matches('\n').count() + 1;
+        let column = before.rsplit('\n').next().map_or(0, |s| s.chars().count()) + 1;
+        (line, column)
+    }
+
+    /// The key written on the line of `span` (for parse errors, which carry no field name).
+    fn key_at(&self, span: Option<Range<usize>>) -> String {
+        let Some(span) = span else {
+            return "file".into();
+        };
+        let start = self.text[..span.start.min(self.text.len())]
+            .rfind('\n')
+            .map_or(0, |i| i + 1);
+        let line = self.text[start..].lines().next().unwrap_or("");
+        match line.split_once('=') {
+            Some((key, _)) => key.trim().to_string(),
+            None => line.trim().to_string(),
+        }
+    }
+}
