@@ -142,6 +142,10 @@ pub fn mode_events(
     let (kp, ki) = (mc.kp_nms_per_rad, mc.ki_nm_per_rad);
     let over_high = [(VF, -kp), (Z, ki), (UNIT, -limit)];
     let under_low = [(VF, kp), (Z, -ki), (UNIT, -limit)];
+    // At the limit the command is held there; it leaves when the unclamped controller
+    // would move it back inside: −(rate of kp·(−VF) + ki·Z) = kp·ωf·(V1 − VF) + ki·VF > 0.
+    let wf = mc.filter_rad_s;
+    let falls_back = [(V0, kp * wf), (VF, ki - kp * wf)];
 
     let mut list: Vec<(EventKind, SparseRow, f64)> = Vec::new();
     let mut push = |kind, terms: &[(usize, f64)]| list.push((kind, SparseRow::new(terms), 0.0));
@@ -187,13 +191,10 @@ pub fn mode_events(
             push(EventKind::LimitHigh, &over_high);
             push(EventKind::LimitLow, &under_low);
         }
-        MotorMode::LimitHigh => push(
-            EventKind::LimitRelease,
-            &SparseRow::new(&over_high).negated().terms,
-        ),
+        MotorMode::LimitHigh => push(EventKind::LimitRelease, &falls_back),
         MotorMode::LimitLow => push(
             EventKind::LimitRelease,
-            &SparseRow::new(&under_low).negated().terms,
+            &SparseRow::new(&falls_back).negated().terms,
         ),
     }
     let angle = [(x2, 1.0)];

@@ -32,9 +32,9 @@ pub enum PairZone {
 pub enum MotorMode {
     /// PI output within the torque limit.
     Linear,
-    /// At +limit; integrator frozen (anti-windup).
+    /// At +limit; the integrator tracks so that the command stays at the limit.
     LimitHigh,
-    /// At −limit; integrator frozen.
+    /// At −limit; the integrator tracks likewise.
     LimitLow,
 }
 

@@ -219,8 +219,21 @@ fn add_motor(a: &mut DMatrix<f64>, mc: &ModelConstants, motor: MotorMode) {
             a[(V0, Z)] += mc.ki_nm_per_rad / j1;
             a[(Z, VF)] = -1.0;
         }
-        MotorMode::LimitHigh => a[(V0, UNIT)] += mc.torque_limit_nm / j1,
-        MotorMode::LimitLow => a[(V0, UNIT)] -= mc.torque_limit_nm / j1,
+        MotorMode::LimitHigh | MotorMode::LimitLow => {
+            let sign = if motor == MotorMode::LimitHigh {
+                1.0
+            } else {
+                -1.0
+            };
+            a[(V0, UNIT)] += sign * mc.torque_limit_nm / j1;
+            // The integrator tracks so that the command stays at the limit (an analogue PI
+            // whose output clamp holds the integrator): ki·Ż = kp·V̇F.
+            if mc.ki_nm_per_rad > 0.0 {
+                let gain = mc.kp_nms_per_rad * mc.filter_rad_s / mc.ki_nm_per_rad;
+                a[(Z, V0)] = gain;
+                a[(Z, VF)] = -gain;
+            }
+        }
     }
 }
 

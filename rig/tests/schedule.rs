@@ -105,3 +105,52 @@ fn the_motor_torque_stays_within_its_limit() {
             .all(|t| t.abs() <= limit + 1e-12)
     );
 }
+
+#[test]
+fn speed_steps_at_no_load_ride_the_limit_without_chatter_or_windup() {
+    // The subharmonic survey at no load: steps of the speed set point every 18 s. With the
+    // integrator frozen at the limit the command slid along it after the 1900 rev/min step
+    // and the drive switched in and out of the limit for ever (chatter at t = 110.34 s).
+    let mut p = support::thesis();
+    p.centre_distance_shift_m = 0.73e-3 / (2.0 * 20f64.to_radians().tan());
+    let limit = p.motor_torque_limit_nm;
+    let speeds = [800.0, 1000.0, 1100.0, 1300.0, 1500.0, 1700.0, 1900.0];
+    let mut speed = Track::hold(speeds[0]);
+    for (i, rpm) in speeds.iter().enumerate() {
+        speed = speed.step_to(18.0 * i as f64, *rpm);
+    }
+    let schedule = Schedule {
+        speed_rpm: speed,
+        ..Schedule::constant(800.0, 0.0)
+    };
+    let mut plant = support::plant(p, schedule, 51_200.0);
+    plant
+        .skip(108 * 51_200)
+        .expect("no chatter through five steps");
+    let block = support::record(&mut plant, 18.0);
+    let rate = 51_200;
+    let at_limit = block
+        .motor_torque_nm
+        .iter()
+        .filter(|t| (**t - limit).abs() < 1e-9)
+        .count();
+    assert!(
+        at_limit > rate / 10,
+        "a 200 rev/min step saturates the drive"
+    );
+    assert!(
+        block
+            .motor_torque_nm
+            .iter()
+            .all(|t| t.abs() <= limit + 1e-9)
+    );
+    let settled = mean_speed_rpm(&block, 16 * rate, 18 * rate);
+    assert!((settled - 1900.0).abs() < 0.5, "{settled}");
+    let peak = (0..16 * rate)
+        .map(|i| block.speed_rad_s[0][i] * 30.0 / std::f64::consts::PI)
+        .fold(f64::NEG_INFINITY, f64::max);
+    assert!(
+        peak < 1900.0 + 0.1 * 200.0,
+        "overshoot {peak} rev/min: integrator wound up"
+    );
+}

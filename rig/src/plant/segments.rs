@@ -24,6 +24,9 @@ impl Plant {
             *v -= delta_speed;
         }
         self.u[VF] -= delta_speed;
+        if delta_speed != 0.0 {
+            self.clamp_controller();
+        }
         self.u[LOAD] = set.load_nm;
         let frequencies_changed =
             delta_speed != 0.0 || set.oscillating_load_hz != old.set.oscillating_load_hz;

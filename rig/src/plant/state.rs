@@ -191,18 +191,12 @@ impl Plant {
             Some(std::cmp::Ordering::Less) => MeshMode::Back,
             _ => MeshMode::Apart,
         };
-        let motor = if load > self.mc.torque_limit_nm {
-            MotorMode::LimitHigh
-        } else if load < -self.mc.torque_limit_nm {
-            MotorMode::LimitLow
-        } else {
-            MotorMode::Linear
-        };
         self.mode = Mode {
             mesh,
             pairs: PairZone::One,
-            motor,
+            motor: MotorMode::Linear,
         };
+        self.clamp_controller();
         self.reset_angle_targets();
     }
 

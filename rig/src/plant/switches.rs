@@ -4,13 +4,17 @@
 use std::f64::consts::TAU;
 
 use crate::events::EventKind;
-use crate::layout::X0;
+use crate::layout::{X0, Z};
 use crate::mode::{MeshMode, MotorMode, PairZone};
 use crate::options::ContactLaw;
 use crate::records::{Flank, Impact, RevolutionSample};
 
 use super::output::flank_gap;
 use super::state::Plant;
+
+/// How far inside the torque limit a released controller command starts (N m): far above
+/// the rounding of the command (~1e-13 N m), far below anything measurable.
+pub const RELEASE_MARGIN_NM: f64 = 1e-9;
 
 impl Plant {
     /// Applies the consequences of a crossing at `tau_s` into the current step.
@@ -27,7 +31,7 @@ impl Plant {
             EventKind::ZoneStart => self.move_zone(-1),
             EventKind::LimitHigh => self.mode.motor = MotorMode::LimitHigh,
             EventKind::LimitLow => self.mode.motor = MotorMode::LimitLow,
-            EventKind::LimitRelease => self.mode.motor = MotorMode::Linear,
+            EventKind::LimitRelease => self.release_controller(),
             EventKind::ToothPass => self.tooth_pass(tau_s),
             EventKind::Revolution => self.revolution(tau_s),
         }
@@ -88,6 +92,41 @@ impl Plant {
             (Flank::Back, true, true) => MeshMode::BackClipped,
         };
         self.set_mesh(mesh, tau_s);
+    }
+
+    /// Puts the speed controller in the mode its command calls for after a jump (a speed
+    /// set-point step, the start): beyond a limit, the output clamp holds the command at
+    /// the limit, so the integrator takes the value that puts it there.
+    pub(super) fn clamp_controller(&mut self) {
+        let command = self.mc.controller_torque_nm(&self.u);
+        let limit = self.mc.torque_limit_nm;
+        let (motor, held) = if command >= limit {
+            (MotorMode::LimitHigh, limit)
+        } else if command <= -limit {
+            (MotorMode::LimitLow, -limit)
+        } else {
+            (MotorMode::Linear, command)
+        };
+        if self.mc.ki_nm_per_rad > 0.0 {
+            self.u[Z] += (held - command) / self.mc.ki_nm_per_rad;
+        }
+        self.mode.motor = motor;
+    }
+
+    /// Leaves the limit: the command, held there up to rounding, starts just inside it
+    /// (by [`RELEASE_MARGIN_NM`]) so that rounding cannot put it straight back.
+    fn release_controller(&mut self) {
+        let limit = self.mc.torque_limit_nm;
+        let inside = match self.mode.motor {
+            MotorMode::LimitHigh => limit - RELEASE_MARGIN_NM,
+            MotorMode::LimitLow => -limit + RELEASE_MARGIN_NM,
+            MotorMode::Linear => return,
+        };
+        if self.mc.ki_nm_per_rad > 0.0 {
+            let command = self.mc.controller_torque_nm(&self.u);
+            self.u[Z] += (inside - command) / self.mc.ki_nm_per_rad;
+        }
+        self.mode.motor = MotorMode::Linear;
     }
 
     pub(super) fn revolution(&mut self, tau_s: f64) {
