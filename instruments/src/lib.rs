@@ -19,6 +19,7 @@
 //! # Ok::<(), instruments::InstrumentError>(())
 //! ```
 
+pub mod ac_coupling;
 pub mod adc;
 pub mod analog;
 pub mod analyser;
@@ -40,6 +41,7 @@ pub mod truth;
 pub mod voltmeter;
 pub mod window;
 
+pub use ac_coupling::AcCoupling;
 pub use adc::{Adc, AdcSettings};
 pub use analyser::{Analyser, AnalyserSettings, Averaging, Line, Sampling};
 pub use block::Block;

@@ -1,6 +1,7 @@
 //! RMS voltmeters: the HP 400E as it is (average-responding, RMS-calibrated) and a true-RMS
 //! meter beside it. Both settle as a first-order detector with time constant τ.
 
+use crate::ac_coupling::AcCoupling;
 use crate::block::Block;
 use crate::error::InstrumentError;
 
@@ -22,6 +23,7 @@ pub struct Voltmeter {
     detector: Detector,
     alpha: f64,
     state: f64,
+    coupling: Option<AcCoupling>,
 }
 
 impl Voltmeter {
@@ -40,7 +42,15 @@ impl Voltmeter {
             detector,
             alpha: 1.0 - (-1.0 / (rate_hz * tau_s)).exp(),
             state: 0.0,
+            coupling: None,
         })
+    }
+
+    /// The meter AC-coupled: a first-order high-pass with corner `corner_hz` (the HP 400E
+    /// is specified from 10 Hz; its corner lies below) on a stream at `rate_hz`.
+    pub fn ac_coupled(mut self, corner_hz: f64, rate_hz: f64) -> Result<Self, InstrumentError> {
+        self.coupling = Some(AcCoupling::new(corner_hz, rate_hz)?);
+        Ok(self)
     }
 
     /// The reading now (V).
@@ -55,10 +65,17 @@ impl Voltmeter {
 impl Block for Voltmeter {
     fn reset(&mut self) {
         self.state = 0.0;
+        if let Some(c) = &mut self.coupling {
+            c.reset();
+        }
     }
 
     fn process(&mut self, input: &[f64], output: &mut [f64]) {
-        for (y, &v) in output.iter_mut().zip(input) {
+        for (y, &x) in output.iter_mut().zip(input) {
+            let v = match &mut self.coupling {
+                Some(c) => c.tick(x),
+                None => x,
+            };
             let detected = match self.detector {
                 Detector::AverageRmsCalibrated => v.abs(),
                 Detector::TrueRms => v * v,

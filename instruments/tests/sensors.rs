@@ -1,10 +1,10 @@
 //! Strain, bridge, meters and tacho against their physics.
 
 use instruments::{
-    AntiAliasFilter, Block, BrakeDrive, BrakeDriveSettings, BridgeArrangement, CarrierDemodulator,
-    CarrierModulator, CarrierSettings, Detector, DigitalVoltmeter, FilterKind, LowPassSpec, Scope,
-    ScopeSettings, ShaftStrain, SlipRing, SlipRingSettings, Slope, StrainBridge, SweepMode, Tacho,
-    Voltmeter,
+    AcCoupling, AntiAliasFilter, Block, BrakeDrive, BrakeDriveSettings, BridgeArrangement,
+    CarrierDemodulator, CarrierModulator, CarrierSettings, Detector, DigitalVoltmeter, FilterKind,
+    LowPassSpec, Scope, ScopeSettings, ShaftStrain, SlipRing, SlipRingSettings, Slope,
+    StrainBridge, SweepMode, Tacho, Voltmeter,
 };
 use std::f64::consts::PI;
 
@@ -92,6 +92,59 @@ fn the_400e_reads_a_sine_right_and_a_square_wave_high_by_its_form_factor() {
         "{}",
         hp_square / true_square
     );
+}
+
+#[test]
+fn the_ac_coupled_400e_ignores_the_static_strain_and_passes_10_hz() {
+    // 2 V static + a 1 V-amplitude sine: the AC meter reads the sine alone.
+    let corner_hz = 1.0;
+    let mut ac = Voltmeter::new(Detector::AverageRmsCalibrated, RATE, 0.2)
+        .expect("valid")
+        .ac_coupled(corner_hz, RATE)
+        .expect("valid");
+    let offset_sine = |t: f64| 2.0 + (2.0 * PI * 50.0 * t).sin();
+    let reading = settle(&mut ac, offset_sine, 6.0);
+    assert!((reading / 0.5f64.sqrt() - 1.0).abs() < 3e-3, "{reading}");
+    // At 10 Hz a first-order high-pass at 1 Hz passes 1/√(1 + 0.01) of the amplitude
+    // (read with a slow detector, τ = 2 s, so the 20 Hz ripple of the rectified sine is small).
+    let mut ac = Voltmeter::new(Detector::AverageRmsCalibrated, RATE, 2.0)
+        .expect("valid")
+        .ac_coupled(corner_hz, RATE)
+        .expect("valid");
+    let at_10_hz = settle(&mut ac, |t| (2.0 * PI * 10.0 * t).sin(), 25.0);
+    let expected = 0.5f64.sqrt() / (1.0 + (corner_hz / 10.0f64).powi(2)).sqrt();
+    assert!(
+        (at_10_hz / expected - 1.0).abs() < 5e-3,
+        "{at_10_hz} vs {expected}"
+    );
+    assert!(
+        Voltmeter::new(Detector::TrueRms, RATE, 0.2)
+            .expect("valid")
+            .ac_coupled(RATE, RATE)
+            .is_err()
+    );
+}
+
+#[test]
+fn ac_coupling_passes_a_sine_as_its_response_says() {
+    let mut coupling = AcCoupling::new(1.6, RATE).expect("valid");
+    for freq_hz in [0.5, 1.6, 3.33, 50.0] {
+        coupling.reset();
+        let n = (20.0 * RATE) as usize;
+        let input: Vec<f64> = (0..n)
+            .map(|k| (2.0 * PI * freq_hz * k as f64 / RATE).sin())
+            .collect();
+        let mut output = vec![0.0; n];
+        coupling.process(&input, &mut output);
+        let tail = &output[n / 2..];
+        let amplitude = tail.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        let expected = coupling.response(freq_hz).expect("linear").norm();
+        assert!(
+            (amplitude / expected - 1.0).abs() < 2e-3,
+            "{freq_hz} Hz: {amplitude} vs {expected}"
+        );
+    }
+    assert!((coupling.response(1.6).expect("linear").norm() - 0.5f64.sqrt()).abs() < 1e-3);
 }
 
 #[test]

@@ -97,7 +97,8 @@ impl LatenessHistogram {
         self.count
     }
 
-    /// The `q` quantile (0–1) in s, to the bin's upper edge (10 µs); 0 when empty.
+    /// The `q` quantile (0–1) in s, to the bin's upper edge (10 µs; beyond 100 ms, the
+    /// largest value); 0 when empty.
     pub fn quantile_s(&self, q: f64) -> f64 {
         if self.count == 0 {
             return 0.0;
@@ -107,7 +108,12 @@ impl LatenessHistogram {
         for (i, &n) in self.bins.iter().enumerate() {
             seen += n;
             if seen >= rank {
-                return ((i + 1) as f64 * BIN_S).min(self.max_s);
+                // The last bin gathers everything beyond 100 ms: its largest is the max.
+                return if i == BINS {
+                    self.max_s
+                } else {
+                    ((i + 1) as f64 * BIN_S).min(self.max_s)
+                };
             }
         }
         self.max_s

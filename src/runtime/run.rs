@@ -203,8 +203,15 @@ fn build_sinks(
         )?;
         sinks.push(("analyser", Box::new(sink)));
     }
-    if let Some(scope) = plan.chain.scope {
-        let sink = ScopeSink::create(dir, plan, scope, index("amplifier_v")?, measures);
+    if let Some((scope, coupling_hz)) = plan.chain.scope {
+        let sink = ScopeSink::create(
+            dir,
+            plan,
+            scope,
+            coupling_hz,
+            index("amplifier_v")?,
+            measures,
+        )?;
         sinks.push(("scope", Box::new(sink)));
     }
     Ok(sinks)

@@ -4,12 +4,12 @@
 //! tacho → DVM. Each stage reads channels of the frame and adds its own.
 
 use instruments::{
-    AntiAliasFilter, Block, CarrierDemodulator, CarrierModulator, DigitalVoltmeter, SlipRing,
-    Tacho, Voltmeter,
+    AntiAliasFilter, Block, CarrierDemodulator, CarrierModulator, DigitalVoltmeter, SlipRing, Tacho,
 };
 
 use super::frame::{Frame, SignalNames};
 use crate::scenario::ChainPlan;
+use crate::scenario::chain_part::build_meter;
 
 /// One instrument working on frames.
 pub trait Stage: Send {
@@ -101,11 +101,10 @@ pub fn build_stages(
         "filter_v",
         block(AntiAliasFilter::new(plan.filter, rate_hz)?, amplifier),
     );
-    let (detector, tau_s) = plan.meter;
     add(
         names,
         "meter_v",
-        block(Voltmeter::new(detector, rate_hz, tau_s)?, amplifier),
+        block(build_meter(plan.meter, rate_hz)?, amplifier),
     );
     let motor_speed = index(names, "speed1_rad_s")?;
     add(

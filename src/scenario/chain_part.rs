@@ -1,9 +1,10 @@
 //! The measuring chain, the analyser and the recordings of a scenario.
 
 use instruments::{
-    Adc, AdcSettings, Analyser, AnalyserSettings, AntiAliasFilter, Averaging, BridgeArrangement,
-    CarrierDemodulator, CarrierSettings, Detector, FilterKind, LowPassSpec, Sampling, Scope,
-    ScopeSettings, ShaftStrain, SlipRingSettings, Slope, Spectrum, StrainBridge, SweepMode, Window,
+    AcCoupling, Adc, AdcSettings, Analyser, AnalyserSettings, AntiAliasFilter, Averaging,
+    BridgeArrangement, CarrierDemodulator, CarrierSettings, Detector, FilterKind, LowPassSpec,
+    Sampling, Scope, ScopeSettings, ShaftStrain, SlipRingSettings, Slope, Spectrum, StrainBridge,
+    SweepMode, Voltmeter, Window,
 };
 use toml::Spanned;
 
@@ -48,7 +49,7 @@ pub fn chain_plan(
         carrier,
         slip_rings,
         filter: filter_spec(src, chain, rate_hz)?,
-        meter: (detector(src, chain)?, chain.meter.tau_s.0),
+        meter: meter_settings(src, chain, rate_hz)?,
         dvm: (
             chain.tacho.gate_s.0,
             chain.tacho.tau_s.0,
@@ -118,6 +119,34 @@ fn filter_spec(
     Ok(Some(spec))
 }
 
+fn meter_settings(
+    src: &ScenarioSource,
+    chain: &ChainFile,
+    rate_hz: f64,
+) -> anyhow::Result<(Detector, f64, f64)> {
+    let settings = (
+        detector(src, chain)?,
+        chain.meter.tau_s.0,
+        chain.meter.ac_coupling_hz.get_ref().0,
+    );
+    build_meter(settings, rate_hz)
+        .map_err(|e| src.error(chain.meter.ac_coupling_hz.span(), "chain.meter", e))?;
+    Ok(settings)
+}
+
+/// The RMS meter of `(detector, tau_s, ac_coupling_hz)` on a stream at `rate_hz`.
+pub fn build_meter(
+    (detector, tau_s, coupling_hz): (Detector, f64, f64),
+    rate_hz: f64,
+) -> Result<Voltmeter, instruments::InstrumentError> {
+    let meter = Voltmeter::new(detector, rate_hz, tau_s)?;
+    if coupling_hz > 0.0 {
+        meter.ac_coupled(coupling_hz, rate_hz)
+    } else {
+        Ok(meter)
+    }
+}
+
 fn detector(src: &ScenarioSource, chain: &ChainFile) -> anyhow::Result<Detector> {
     let d = &chain.meter.detector;
     match d.get_ref().as_str() {
@@ -135,7 +164,7 @@ fn scope_settings(
     src: &ScenarioSource,
     chain: &ChainFile,
     rate_hz: f64,
-) -> anyhow::Result<Option<ScopeSettings>> {
+) -> anyhow::Result<Option<(ScopeSettings, f64)>> {
     let Some(s) = &chain.scope else {
         return Ok(None);
     };
@@ -158,7 +187,12 @@ fn scope_settings(
         mode: SweepMode::Single,
     };
     Scope::new(settings, rate_hz).map_err(|e| src.error(0..0, "chain.scope", e))?;
-    Ok(Some(settings))
+    let coupling = s.ac_coupling_hz.get_ref().0;
+    if coupling > 0.0 {
+        AcCoupling::new(coupling, rate_hz)
+            .map_err(|e| src.error(s.ac_coupling_hz.span(), "chain.scope.ac_coupling_hz", e))?;
+    }
+    Ok(Some((settings, coupling)))
 }
 
 /// The analyser's and ADC's settings.

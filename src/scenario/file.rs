@@ -345,6 +345,10 @@ pub struct MeterFile {
     /// Detector time constant (s).
     #[serde(default = "default_meter_tau")]
     pub tau_s: Positive,
+    /// Corner (Hz) of the AC coupling (the 400E is an AC meter, specified from 10 Hz); 0
+    /// couples DC, so the static strain is read too.
+    #[serde(default = "default_coupling")]
+    pub ac_coupling_hz: Spanned<NonNegative>,
 }
 
 impl Default for MeterFile {
@@ -352,8 +356,13 @@ impl Default for MeterFile {
         Self {
             detector: default_detector(),
             tau_s: default_meter_tau(),
+            ac_coupling_hz: default_coupling(),
         }
     }
+}
+
+fn default_coupling() -> Spanned<NonNegative> {
+    Spanned::new(0..0, NonNegative(1.0))
 }
 
 fn default_detector() -> Spanned<String> {
@@ -415,6 +424,13 @@ pub struct ScopeFile {
     /// rising or falling.
     #[serde(default = "default_slope")]
     pub slope: Spanned<String>,
+    /// Corner (Hz) of the AC input coupling (a Tektronix AC input: about 1.6 Hz); 0 for DC.
+    #[serde(default = "default_scope_coupling")]
+    pub ac_coupling_hz: Spanned<NonNegative>,
+}
+
+fn default_scope_coupling() -> Spanned<NonNegative> {
+    Spanned::new(0..0, NonNegative(1.6))
 }
 
 fn default_slope() -> Spanned<String> {

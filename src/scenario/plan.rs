@@ -73,12 +73,12 @@ pub struct ChainPlan {
     pub slip_rings: Option<SlipRingSettings>,
     /// Anti-alias filter (`None`: bypassed).
     pub filter: Option<LowPassSpec>,
-    /// RMS meter detector and time constant (s).
-    pub meter: (Detector, f64),
+    /// RMS meter detector, time constant (s) and AC-coupling corner (Hz; 0 for DC).
+    pub meter: (Detector, f64, f64),
     /// Tacho DVM gate (s), time constant (s), resolution (V).
     pub dvm: (f64, f64, f64),
-    /// Scope, if wired.
-    pub scope: Option<ScopeSettings>,
+    /// Scope, if wired, and its AC-coupling corner (Hz; 0 for DC).
+    pub scope: Option<(ScopeSettings, f64)>,
 }
 
 impl ChainPlan {

@@ -3,7 +3,7 @@
 
 use std::path::{Path, PathBuf};
 
-use instruments::{Block, Scope, ScopeSettings};
+use instruments::{AcCoupling, Block, Scope, ScopeSettings};
 
 use super::measure_clock::MeasureClock;
 use super::{Sink, SinkReport};
@@ -22,21 +22,32 @@ pub struct ScopeSink {
     measures: Vec<Measure>,
     clock: MeasureClock,
     armed: Option<(usize, Scope)>,
+    coupling: Option<AcCoupling>,
+    coupled: Vec<f64>,
     scratch: Vec<f64>,
     files: Vec<PathBuf>,
     untriggered: Vec<usize>,
 }
 
 impl ScopeSink {
-    /// A scope on channel `input`, writing to `dir`, armed at `measures`.
+    /// A scope on channel `input` (AC-coupled at `coupling_hz`, DC when 0), writing to
+    /// `dir`, armed at `measures`.
     pub fn create(
         dir: &Path,
         plan: &Plan,
         settings: ScopeSettings,
+        coupling_hz: f64,
         input: usize,
         measures: Vec<Measure>,
-    ) -> Self {
-        Self {
+    ) -> anyhow::Result<Self> {
+        let coupling = if coupling_hz > 0.0 {
+            Some(AcCoupling::new(coupling_hz, plan.rate_hz)?)
+        } else {
+            None
+        };
+        Ok(Self {
+            coupling,
+            coupled: Vec::new(),
             settings,
             rate_hz: plan.rate_hz,
             input,
@@ -48,7 +59,7 @@ impl ScopeSink {
             scratch: Vec::new(),
             files: Vec::new(),
             untriggered: Vec::new(),
-        }
+        })
     }
 
     fn watch(&mut self, x: &[f64]) -> anyhow::Result<()> {
@@ -103,14 +114,24 @@ impl ScopeSink {
 
 impl Sink for ScopeSink {
     fn consume(&mut self, frame: &Frame) -> anyhow::Result<()> {
-        let x = frame.channels[self.input].clone();
+        let raw = &frame.channels[self.input];
+        let x: Vec<f64> = match &mut self.coupling {
+            Some(c) => {
+                self.coupled.resize(raw.len(), 0.0);
+                c.process(raw, &mut self.coupled);
+                std::mem::take(&mut self.coupled)
+            }
+            None => raw.to_vec(),
+        };
         let mut offset = 0;
         while let Some((at, index)) = self.clock.next_within(frame.start_sample, x.len()) {
             self.watch(&x[offset..at])?;
             self.arm(index)?;
             offset = at;
         }
-        self.watch(&x[offset..])
+        self.watch(&x[offset..])?;
+        self.coupled = x;
+        Ok(())
     }
 
     fn finish(mut self: Box<Self>) -> anyhow::Result<SinkReport> {
