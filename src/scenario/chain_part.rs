@@ -294,6 +294,13 @@ pub fn record_plan(
     if signals.is_empty() {
         return Err(src.error(0..0, "record.signals", "name at least one signal"));
     }
+    if let Some((name, value)) = file.full_scale.iter().find(|(n, _)| !signals.contains(n)) {
+        return Err(src.error(
+            value.span(),
+            &format!("record.full_scale.{name}"),
+            "is not one of the recorded signals",
+        ));
+    }
     let mut plan = RecordPlan {
         full_scale: signals
             .iter()

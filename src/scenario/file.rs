@@ -63,7 +63,7 @@ fn default_block() -> Spanned<usize> {
 }
 
 fn default_queue() -> Spanned<usize> {
-    Spanned::new(0..0, 64)
+    Spanned::new(0..0, 16)
 }
 
 /// Consumer overflow policy.

@@ -1,7 +1,8 @@
 //! The rack as the experimenter reads it: the tacho DVM and the RMS meter, shown on the
 //! console as the run goes and written to `readings.csv` at each measurement, beside the
 //! truth (the shaft torque's mean and RMS over the second before the reading). A survey's
-//! readings are also drawn as RMS against load per speed with the static line.
+//! readings over two or more loads are also drawn as RMS against load per speed with the
+//! static line.
 
 use std::path::{Path, PathBuf};
 
@@ -194,8 +195,11 @@ impl Sink for MonitorSink {
 
     fn finish(self: Box<Self>) -> anyhow::Result<SinkReport> {
         let mut files = vec![self.csv.finish()?];
+        let mut loads: Vec<f64> = self.points.iter().map(|p| p.load_nm).collect();
+        loads.sort_by(f64::total_cmp);
+        loads.dedup();
         if let Some((base, name)) = &self.survey_plot
-            && !self.points.is_empty()
+            && loads.len() >= 2
         {
             let title = format!("{name}: RMS meter reading against load");
             files.extend(write_survey_plots(
