@@ -114,77 +114,51 @@ fn number(row: &std::collections::HashMap<String, String>, key: &str) -> f64 {
     row[key].parse().expect("number")
 }
 
-/// Shortened runs of each shipped scenario: (file stem, arguments).
-const SHORTENED: [(&str, &[&str]); 6] = [
+/// `--set` before each of `items`, then `extra`.
+fn sets<'a>(items: &[&'a str], extra: &[&'a str]) -> Vec<&'a str> {
+    let mut args: Vec<&str> = items.iter().flat_map(|item| ["--set", *item]).collect();
+    args.extend(extra);
+    args
+}
+
+/// The overrides that shorten a subharmonic survey to one short point at 1100 rev/min.
+const ONE_SUBHARMONIC_POINT: [&str; 4] = [
+    "survey.speeds_rpm=[1100]",
+    "survey.settle_s=2",
+    "survey.measure_s=2",
+    "analyser.averages=1",
+];
+
+/// Shortened runs of each shipped scenario: (file stem, `--set` items, other arguments).
+const SHORTENED: [(&str, &[&str], &[&str]); 6] = [
     (
         "aliasing-windowing",
-        &["--duration", "6", "--set", "analyser.averages=1"],
+        &["analyser.averages=1"],
+        &["--duration", "6"],
     ),
     (
         "load-series-200rpm",
         &[
-            "--set",
             "survey.loads_nm=[0.0, 5.424]",
-            "--set",
             "survey.settle_s=2",
-            "--set",
             "survey.measure_s=3",
-            "--set",
             "analyser.block=256",
-            "--set",
             "analyser.averages=2",
         ],
+        &[],
     ),
     (
         "rms-survey",
         &[
-            "--set",
             "survey.speeds_rpm=[200, 600]",
-            "--set",
             "survey.loads_nm=[0.0, 2.712]",
-            "--set",
             "survey.settle_s=2",
         ],
+        &[],
     ),
-    (
-        "subharmonic-0nm",
-        &[
-            "--set",
-            "survey.speeds_rpm=[1100]",
-            "--set",
-            "survey.settle_s=2",
-            "--set",
-            "survey.measure_s=2",
-            "--set",
-            "analyser.averages=1",
-        ],
-    ),
-    (
-        "subharmonic-2712nm",
-        &[
-            "--set",
-            "survey.speeds_rpm=[1100]",
-            "--set",
-            "survey.settle_s=2",
-            "--set",
-            "survey.measure_s=2",
-            "--set",
-            "analyser.averages=1",
-        ],
-    ),
-    (
-        "subharmonic-5424nm",
-        &[
-            "--set",
-            "survey.speeds_rpm=[1100]",
-            "--set",
-            "survey.settle_s=2",
-            "--set",
-            "survey.measure_s=2",
-            "--set",
-            "analyser.averages=1",
-        ],
-    ),
+    ("subharmonic-0nm", &ONE_SUBHARMONIC_POINT, &[]),
+    ("subharmonic-2712nm", &ONE_SUBHARMONIC_POINT, &[]),
+    ("subharmonic-5424nm", &ONE_SUBHARMONIC_POINT, &[]),
 ];
 
 #[test]
@@ -198,13 +172,13 @@ fn every_shipped_scenario_runs_end_to_end_shortened() {
         })
         .collect();
     shipped.sort();
-    let tested: Vec<&str> = SHORTENED.iter().map(|(n, _)| *n).collect();
+    let tested: Vec<&str> = SHORTENED.iter().map(|(n, _, _)| *n).collect();
     assert_eq!(
         shipped, tested,
         "every shipped scenario has a shortened run here"
     );
-    for (name, args) in SHORTENED {
-        let (out, manifest) = run_ok(name, &scenario(name), args);
+    for (name, items, extra) in SHORTENED {
+        let (out, manifest) = run_ok(name, &scenario(name), &sets(items, extra));
         assert_eq!(manifest["ending"], "completed", "{name}");
         check_files(&out, &manifest);
         for key in [
@@ -236,16 +210,15 @@ fn the_subharmonic_scenario_shows_the_half_order_line_through_the_whole_chain() 
     let (out, manifest) = run_ok(
         "half-order",
         &scenario("subharmonic-2712nm"),
-        &[
-            "--set",
-            "survey.speeds_rpm=[1300]",
-            "--set",
-            "survey.settle_s=4",
-            "--set",
-            "survey.measure_s=6",
-            "--set",
-            "analyser.averages=4",
-        ],
+        &sets(
+            &[
+                "survey.speeds_rpm=[1300]",
+                "survey.settle_s=4",
+                "survey.measure_s=6",
+                "analyser.averages=4",
+            ],
+            &[],
+        ),
     );
     assert_eq!(manifest["regime"], "period-2");
     let lines = spectrum(&out.join("spectrum-01.csv"));
@@ -280,18 +253,16 @@ fn survey_readings(
     let (out, manifest) = run_ok(
         tag,
         &scenario("rms-survey"),
-        &[
-            "--set",
-            "survey.speeds_rpm=[200, 600]",
-            "--set",
-            "survey.loads_nm=[0.0, 2.712]",
-            "--set",
-            "survey.settle_s=8",
-            "--set",
-            &detector,
-            "--set",
-            &coupling,
-        ],
+        &sets(
+            &[
+                "survey.speeds_rpm=[200, 600]",
+                "survey.loads_nm=[0.0, 2.712]",
+                "survey.settle_s=8",
+                &detector,
+                &coupling,
+            ],
+            &[],
+        ),
     );
     assert!(has_file(&manifest, "rms-survey.png") && has_file(&manifest, "rms-survey.svg"));
     let rows = csv_rows(&out.join("readings.csv"));
@@ -339,18 +310,16 @@ fn the_load_series_stores_one_scope_sweep_per_load() {
     let (out, manifest) = run_ok(
         "load-series",
         &scenario("load-series-200rpm"),
-        &[
-            "--set",
-            "survey.loads_nm=[2.712]",
-            "--set",
-            "survey.settle_s=2",
-            "--set",
-            "survey.measure_s=3",
-            "--set",
-            "analyser.block=256",
-            "--set",
-            "analyser.averages=2",
-        ],
+        &sets(
+            &[
+                "survey.loads_nm=[2.712]",
+                "survey.settle_s=2",
+                "survey.measure_s=3",
+                "analyser.block=256",
+                "analyser.averages=2",
+            ],
+            &[],
+        ),
     );
     assert!(has_file(&manifest, "scope-01.csv"));
     let trace = csv_rows(&out.join("scope-01.csv"));
@@ -366,20 +335,16 @@ fn the_load_series_stores_one_scope_sweep_per_load() {
 
 #[test]
 fn the_aliasing_study_flags_aliases_that_the_filter_removes() {
-    let args = ["--duration", "7", "--set", "analyser.averages=2"];
-    let (open_out, _) = run_ok("alias-open", &scenario("aliasing-windowing"), &args);
-    let mut filtered_args = args.to_vec();
-    filtered_args.extend([
-        "--set",
+    let open = ["analyser.averages=2"];
+    let filtered = [
+        "analyser.averages=2",
         "chain.filter.kind=butterworth",
-        "--set",
         "chain.filter.cutoff_hz=180",
-    ]);
-    let (filtered_out, _) = run_ok(
-        "alias-filtered",
-        &scenario("aliasing-windowing"),
-        &filtered_args,
-    );
+    ];
+    let shortened = ["--duration", "7"];
+    let study = scenario("aliasing-windowing");
+    let (open_out, _) = run_ok("alias-open", &study, &sets(&open, &shortened));
+    let (filtered_out, _) = run_ok("alias-filtered", &study, &sets(&filtered, &shortened));
     let aliased_power = |dir: &Path| -> (usize, f64) {
         let lines = spectrum(&dir.join("spectrum-01.csv"));
         let flagged: Vec<_> = lines.iter().filter(|l| l.2).collect();

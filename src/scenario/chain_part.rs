@@ -21,18 +21,18 @@ pub fn chain_plan(
     seed: u64,
 ) -> anyhow::Result<ChainPlan> {
     let g = &chain.gauges;
-    let arrangement = match g.arrangement.as_str() {
-        "full" => BridgeArrangement::Full,
-        "half" => BridgeArrangement::Half,
-        "quarter" => BridgeArrangement::Quarter,
-        other => {
-            return Err(src.error(
-                0..0,
-                "chain.gauges.arrangement",
-                format!("`{other}` is not one of full, half, quarter"),
-            ));
-        }
-    };
+    let arrangement = parse_choice(
+        src,
+        &g.arrangement,
+        "chain.gauges.arrangement",
+        "full, half, quarter",
+        |t| match t {
+            "full" => Some(BridgeArrangement::Full),
+            "half" => Some(BridgeArrangement::Half),
+            "quarter" => Some(BridgeArrangement::Quarter),
+            _ => None,
+        },
+    )?;
     let mut bridge = StrainBridge::new(arrangement, g.gauge_factor.0, g.excitation_v.0)
         .map_err(|e| src.error(0..0, "chain.gauges", e))?;
     bridge.gauge_factor_error = g.gauge_factor_error.0;
@@ -86,17 +86,20 @@ fn filter_spec(
     rate_hz: f64,
 ) -> anyhow::Result<Option<LowPassSpec>> {
     let f = &chain.filter;
-    let kind = match f.kind.get_ref().as_str() {
-        "none" => return Ok(None),
-        "butterworth" => FilterKind::Butterworth,
-        "bessel" => FilterKind::Bessel,
-        other => {
-            return Err(src.error(
-                f.kind.span(),
-                "chain.filter.kind",
-                format!("`{other}` is not one of none, butterworth, bessel"),
-            ));
-        }
+    let kind = parse_choice(
+        src,
+        &f.kind,
+        "chain.filter.kind",
+        "none, butterworth, bessel",
+        |t| match t {
+            "none" => Some(None),
+            "butterworth" => Some(Some(FilterKind::Butterworth)),
+            "bessel" => Some(Some(FilterKind::Bessel)),
+            _ => None,
+        },
+    )?;
+    let Some(kind) = kind else {
+        return Ok(None);
     };
     let cutoff = f.cutoff_hz.get_ref().0;
     if cutoff >= rate_hz / 2.0 {
@@ -148,16 +151,17 @@ pub fn build_meter(
 }
 
 fn detector(src: &ScenarioSource, chain: &ChainFile) -> anyhow::Result<Detector> {
-    let d = &chain.meter.detector;
-    match d.get_ref().as_str() {
-        "average" => Ok(Detector::AverageRmsCalibrated),
-        "true-rms" => Ok(Detector::TrueRms),
-        other => Err(src.error(
-            d.span(),
-            "chain.meter.detector",
-            format!("`{other}` is not one of average (HP 400E), true-rms"),
-        )),
-    }
+    parse_choice(
+        src,
+        &chain.meter.detector,
+        "chain.meter.detector",
+        "average (HP 400E), true-rms",
+        |t| match t {
+            "average" => Some(Detector::AverageRmsCalibrated),
+            "true-rms" => Some(Detector::TrueRms),
+            _ => None,
+        },
+    )
 }
 
 fn scope_settings(
@@ -168,17 +172,17 @@ fn scope_settings(
     let Some(s) = &chain.scope else {
         return Ok(None);
     };
-    let slope = match s.slope.get_ref().as_str() {
-        "rising" => Slope::Rising,
-        "falling" => Slope::Falling,
-        other => {
-            return Err(src.error(
-                s.slope.span(),
-                "chain.scope.slope",
-                format!("`{other}` is not one of rising, falling"),
-            ));
-        }
-    };
+    let slope = parse_choice(
+        src,
+        &s.slope,
+        "chain.scope.slope",
+        "rising, falling",
+        |t| match t {
+            "rising" => Some(Slope::Rising),
+            "falling" => Some(Slope::Falling),
+            _ => None,
+        },
+    )?;
     let settings = ScopeSettings {
         volts_per_div: s.volts_per_div.0,
         seconds_per_div: s.seconds_per_div.0,

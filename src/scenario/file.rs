@@ -202,7 +202,7 @@ pub struct ChainFile {
 pub struct GaugesFile {
     /// full, half or quarter.
     #[serde(default = "default_arrangement")]
-    pub arrangement: String,
+    pub arrangement: Spanned<String>,
     /// Nominal gauge factor.
     #[serde(default = "default_gauge_factor")]
     pub gauge_factor: Positive,
@@ -225,8 +225,8 @@ impl Default for GaugesFile {
     }
 }
 
-fn default_arrangement() -> String {
-    "full".into()
+fn default_arrangement() -> Spanned<String> {
+    Spanned::new(0..0, "full".into())
 }
 
 fn default_gauge_factor() -> Positive {
