@@ -573,3 +573,54 @@ fn ctrl_c_closes_every_file_with_the_samples_up_to_the_stop() {
     assert_eq!(manifest["wav_frames"].as_u64(), Some(frames));
     std::fs::remove_dir_all(&out).ok();
 }
+
+#[test]
+fn a_run_records_uff58_that_pyuff_reads_and_24_bit_wav_at_its_full_scale() {
+    let (out, manifest) = run_ok(
+        "uff",
+        &scenario("aliasing-windowing"),
+        &sets(
+            &[
+                "record.wav_format=int24",
+                "record.signals=[\"filter_v\", \"torque_intermediate_shaft_nm\"]",
+            ],
+            &["--duration", "0.5"],
+        ),
+    );
+    assert!(has_file(&manifest, "recording.uff"));
+    let script = format!(
+        "import pyuff\nsets = pyuff.UFF(r'{}').read_sets()\nprint(len(sets), sets[1]['num_pts'], repr(float(sets[1]['x'][1])), repr(float(sets[1]['data'][1000])), sets[1]['id1'].strip())",
+        out.join("recording.uff").display()
+    );
+    let py = Command::new("python3")
+        .args(["-c", &script])
+        .output()
+        .expect("python3 runs");
+    assert!(
+        py.status.success(),
+        "pyuff failed (is it installed? .ci/run installs it): {}",
+        String::from_utf8_lossy(&py.stderr)
+    );
+    let text = String::from_utf8_lossy(&py.stdout);
+    let fields: Vec<&str> = text.split_whitespace().collect();
+    assert_eq!(&fields[..2], ["2", "25600"], "{text}");
+    assert!((fields[2].parse::<f64>().expect("step") - 1.0 / 51_200.0).abs() < 1e-9);
+    let torque_uff: f64 = fields[3].parse().expect("value");
+    // The same sample in the 24-bit WAV: full scale 100 N m for a torque.
+    let mut reader = hound::WavReader::open(out.join("recording.wav")).expect("WAV");
+    assert_eq!(reader.spec().bits_per_sample, 24);
+    let samples: Vec<i32> = reader
+        .samples::<i32>()
+        .map(|s| s.expect("sample"))
+        .collect();
+    let torque_wav = f64::from(samples[2 * 1000 + 1]) / 8_388_607.0 * 100.0;
+    assert!(
+        (torque_wav - torque_uff).abs() <= 100.0 / 8_388_607.0,
+        "{torque_wav} vs {torque_uff}"
+    );
+    assert!(
+        torque_uff.abs() > 1e-3,
+        "a torque, not an empty channel: {torque_uff}"
+    );
+    std::fs::remove_dir_all(&out).ok();
+}
