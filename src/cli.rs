@@ -26,6 +26,44 @@ pub enum Command {
     Analyse(AnalyseArgs),
     /// Rehearse an experiment: a scenario's rig, chain and recordings, paced or unpaced.
     Run(RunArgs),
+    /// A grid of cases (speed, load, backlash, any parameter) through the chain, in parallel.
+    Sweep(SweepArgs),
+    /// Join the outputs of sweep shards into one table and its plots.
+    Merge(MergeArgs),
+}
+
+/// `testrig sweep`.
+#[derive(Debug, Args)]
+pub struct SweepArgs {
+    /// The sweep file (TOML).
+    pub sweep: PathBuf,
+    /// Worker threads (default: one per core).
+    #[arg(long)]
+    pub jobs: Option<usize>,
+    /// Run every N-th case from K (K/N, from 0); default from SLURM_ARRAY_TASK_ID and
+    /// SLURM_ARRAY_TASK_COUNT, else all.
+    #[arg(long)]
+    pub shard: Option<String>,
+    /// Skip the cases already finished in the output folder.
+    #[arg(long)]
+    pub resume: bool,
+    /// Change one key of the sweep file (repeatable), e.g. --set case.measure_s=10.
+    #[arg(long = "set", value_name = "KEY=VALUE")]
+    pub overrides: Vec<String>,
+    /// Output folder.
+    #[arg(long)]
+    pub out: PathBuf,
+}
+
+/// `testrig merge`.
+#[derive(Debug, Args)]
+pub struct MergeArgs {
+    /// Output folders of the shards.
+    #[arg(required = true)]
+    pub dirs: Vec<PathBuf>,
+    /// Folder for the merged table, cases and plots.
+    #[arg(long)]
+    pub out: PathBuf,
 }
 
 /// `testrig run`.

@@ -30,3 +30,4 @@ pub mod recording;
 pub mod runtime;
 pub mod scenario;
 pub mod signal_catalog;
+pub mod sweep;

@@ -1,10 +1,12 @@
 //! One file per command.
 
 mod analyse;
+mod merge;
 mod modes;
 mod params;
 mod run;
 mod simulate;
+mod sweep;
 
 use std::process::ExitCode;
 
@@ -18,6 +20,8 @@ pub fn run(command: Command) -> anyhow::Result<ExitCode> {
         Command::Params(args) => params::run(&args),
         Command::Analyse(args) => analyse::run(&args),
         Command::Run(args) => return run::run(&args),
+        Command::Sweep(args) => sweep::run(&args),
+        Command::Merge(args) => merge::run(&args),
     };
     done.map(|()| ExitCode::SUCCESS)
 }

@@ -18,8 +18,9 @@ pub fn png_and_svg(
 ) -> anyhow::Result<Vec<PathBuf>> {
     plotters::style::register_font("sans-serif", FontStyle::Normal, FONT)
         .map_err(|_| anyhow::anyhow!("the embedded font cannot be read"))?;
-    let png = base.with_extension("png");
-    let svg = base.with_extension("svg");
+    // Appended, not `with_extension`: a base such as `waterfall-2.712_N_m` keeps its dot.
+    let png = PathBuf::from(format!("{}.png", base.display()));
+    let svg = PathBuf::from(format!("{}.svg", base.display()));
     draw_png(BitMapBackend::new(&png, SIZE).into_drawing_area())?;
     draw_svg(SVGBackend::new(&svg, SIZE).into_drawing_area())?;
     Ok(vec![png, svg])

@@ -2,10 +2,16 @@
 //! system font libraries are needed).
 
 pub mod canvas;
+pub mod frequency_map;
+pub mod regime_map;
 pub mod scope;
 pub mod spectrum;
 pub mod survey;
+pub mod waterfall;
 
+pub use frequency_map::{SpeedLines, write_frequency_map};
+pub use regime_map::{RegimeCell, write_regime_map};
 pub use scope::write_scope_plots;
 pub use spectrum::{SpectrumPlot, write_spectrum_plots};
 pub use survey::{SurveyPoint, write_survey_plots};
+pub use waterfall::{WaterfallTrace, write_waterfall};

@@ -3,7 +3,7 @@
 
 use std::sync::Arc;
 
-use rig::Impact;
+use rig::{Impact, SignalBlock};
 
 /// One block of samples. Channels are shared (`Arc`), so a stage that adds its output
 /// copies only pointers; channel `i` is named by the run's [`SignalNames`] entry `i`.
@@ -20,6 +20,36 @@ pub struct Frame {
 }
 
 impl Frame {
+    /// A frame of the plant's true signals, channels in the order of
+    /// [`rig::COLUMN_NAMES`].
+    pub fn of_block(
+        seq: u64,
+        start_sample: u64,
+        block: &SignalBlock,
+        impacts: Vec<Impact>,
+    ) -> Self {
+        let mut channels: Vec<Arc<[f64]>> = Vec::with_capacity(rig::COLUMN_NAMES.len());
+        channels.push(block.time_s.as_slice().into());
+        for v in block
+            .angle_rad
+            .iter()
+            .chain(&block.speed_rad_s)
+            .chain(&block.shaft_torque_nm)
+        {
+            channels.push(v.as_slice().into());
+        }
+        channels.push(block.mesh_torque_nm.as_slice().into());
+        channels.push(block.motor_torque_nm.as_slice().into());
+        channels.push(block.contact.iter().map(|&c| f64::from(c)).collect());
+        channels.push(block.tooth.iter().map(|&t| f64::from(t)).collect());
+        Self {
+            seq,
+            start_sample,
+            channels,
+            impacts: impacts.into(),
+        }
+    }
+
     /// Samples per channel.
     pub fn len(&self) -> usize {
         self.channels.first().map_or(0, |c| c.len())
@@ -49,6 +79,11 @@ impl Frame {
 pub struct SignalNames(Vec<String>);
 
 impl SignalNames {
+    /// The plant's channels, in the order of [`rig::COLUMN_NAMES`].
+    pub fn plant() -> Self {
+        Self(rig::COLUMN_NAMES.iter().map(|n| n.to_string()).collect())
+    }
+
     /// Appends `name`, returning its channel index.
     pub fn push(&mut self, name: &str) -> usize {
         self.0.push(name.to_string());

@@ -97,12 +97,7 @@ pub fn run_plant(mut job: PlantJob, out: Sender<Frame>) -> PlantReport {
             window.add_impacts(&impacts);
             window.add_revolutions(&revolutions);
         }
-        let frame = Frame {
-            seq,
-            start_sample: report.samples,
-            channels: columns(&block),
-            impacts: impacts.into(),
-        };
+        let frame = Frame::of_block(seq, report.samples, &block, impacts);
         report.samples += n as u64;
         seq += 1;
         if let Some(pacer) = &pacer {
@@ -140,23 +135,4 @@ fn release(
             Err(TrySendError::Disconnected(_)) => false,
         },
     }
-}
-
-/// The block's columns in the order of [`rig::COLUMN_NAMES`].
-fn columns(block: &SignalBlock) -> Vec<Arc<[f64]>> {
-    let mut columns: Vec<Arc<[f64]>> = Vec::with_capacity(rig::COLUMN_NAMES.len());
-    columns.push(block.time_s.as_slice().into());
-    for v in block
-        .angle_rad
-        .iter()
-        .chain(&block.speed_rad_s)
-        .chain(&block.shaft_torque_nm)
-    {
-        columns.push(v.as_slice().into());
-    }
-    columns.push(block.mesh_torque_nm.as_slice().into());
-    columns.push(block.motor_torque_nm.as_slice().into());
-    columns.push(block.contact.iter().map(|&c| f64::from(c)).collect());
-    columns.push(block.tooth.iter().map(|&t| f64::from(t)).collect());
-    columns
 }

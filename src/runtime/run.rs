@@ -77,10 +77,7 @@ pub fn run(plan: &Plan, options: &RunOptions) -> anyhow::Result<RunResult> {
     };
     let plant = Plant::new(plan.params.clone(), plan.schedule.clone(), config)
         .context("the rig and schedule of the scenario")?;
-    let mut names = SignalNames::default();
-    for name in rig::COLUMN_NAMES {
-        names.push(name);
-    }
+    let mut names = SignalNames::plant();
     let stages = build_stages(&plan.chain, plan.rate_hz, &mut names)?;
     let status = SharedStatus::default();
     let sinks = build_sinks(plan, &options.out, &names, &status)?;

@@ -28,8 +28,14 @@ impl ScenarioSource {
         })
     }
 
-    /// Parses the text; unknown keys and out-of-range values are errors at their place.
+    /// Parses the text as a scenario; unknown keys and out-of-range values are errors at
+    /// their place.
     pub fn parse(&self) -> anyhow::Result<ScenarioFile> {
+        self.parse_as()
+    }
+
+    /// Parses the text as any file of this TOML family (a scenario, a sweep).
+    pub fn parse_as<T: serde::de::DeserializeOwned>(&self) -> anyhow::Result<T> {
         toml::from_str(&self.text).map_err(|e| {
             let span = e.span().unwrap_or(0..0);
             let message = e.message().trim().to_string();

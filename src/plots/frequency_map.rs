@@ -1,0 +1,123 @@
+//! Output frequency against input frequency (thesis Figs 4.73–4.75): every spectral line
+//! of every speed as a point, with the natural frequencies as horizontal lines and the
+//! orders ½, 1, 2, … of the running speed as rays from the origin.
+
+use std::path::{Path, PathBuf};
+
+use plotters::coord::Shift;
+use plotters::prelude::*;
+
+use super::canvas::{draw_error, png_and_svg};
+
+/// The lines of one speed.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SpeedLines {
+    /// Running speed (rev/s).
+    pub running_hz: f64,
+    /// Lines that stand out: (Hz, power).
+    pub peaks: Vec<(f64, f64)>,
+}
+
+/// Writes `base.png` and `base.svg`, frequencies up to `fmax_hz`.
+pub fn write_frequency_map(
+    base: &Path,
+    title: &str,
+    speeds: &[SpeedLines],
+    natural_hz: &[f64],
+    fmax_hz: f64,
+) -> anyhow::Result<Vec<PathBuf>> {
+    png_and_svg(
+        base,
+        |root| draw(root, title, speeds, natural_hz, fmax_hz),
+        |root| draw(root, title, speeds, natural_hz, fmax_hz),
+    )
+}
+
+fn draw<DB: DrawingBackend>(
+    root: DrawingArea<DB, Shift>,
+    title: &str,
+    speeds: &[SpeedLines],
+    natural_hz: &[f64],
+    fmax_hz: f64,
+) -> anyhow::Result<()> {
+    let err = draw_error("frequency map");
+    let xmax = speeds.iter().map(|s| s.running_hz).fold(1.0, f64::max) * 1.05;
+    root.fill(&WHITE).map_err(&err)?;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(title, ("sans-serif", 20))
+        .margin(12)
+        .x_label_area_size(44)
+        .y_label_area_size(60)
+        .build_cartesian_2d(0.0..xmax, 0.0..fmax_hz)
+        .map_err(&err)?;
+    chart
+        .configure_mesh()
+        .x_desc("input frequency: running speed (rev/s)")
+        .y_desc("output frequency (Hz)")
+        .label_style(("sans-serif", 14))
+        .draw()
+        .map_err(&err)?;
+    let grey = RGBColor(160, 160, 160);
+    for &f in natural_hz.iter().filter(|f| **f < fmax_hz) {
+        chart
+            .draw_series(DashedLineSeries::new(
+                [(0.0, f), (xmax, f)],
+                6,
+                4,
+                grey.stroke_width(1),
+            ))
+            .map_err(&err)?;
+        chart
+            .draw_series(std::iter::once(Text::new(
+                format!("{f:.1} Hz"),
+                (xmax * 0.9, f),
+                ("sans-serif", 12).into_font().color(&grey),
+            )))
+            .map_err(&err)?;
+    }
+    let orders = [0.5, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 8.0, 10.0];
+    for &k in &orders {
+        let end = (xmax * k).min(fmax_hz);
+        chart
+            .draw_series(LineSeries::new(
+                [(0.0, 0.0), (end / k, end)],
+                grey.stroke_width(1),
+            ))
+            .map_err(&err)?;
+        let label = if k == 0.5 {
+            "½".to_string()
+        } else {
+            format!("{k}")
+        };
+        chart
+            .draw_series(std::iter::once(Text::new(
+                label,
+                (end / k, end),
+                ("sans-serif", 12).into_font().color(&grey),
+            )))
+            .map_err(&err)?;
+    }
+    let strongest = speeds
+        .iter()
+        .flat_map(|s| s.peaks.iter().map(|p| p.1))
+        .fold(f64::MIN_POSITIVE, f64::max);
+    for s in speeds {
+        let points = s
+            .peaks
+            .iter()
+            .filter(|p| p.0 <= fmax_hz)
+            .map(|&(f, power)| {
+                // Darker and larger for stronger lines: 60 dB of range.
+                let level = (10.0 * (power / strongest).log10() / 60.0 + 1.0).clamp(0.1, 1.0);
+                let shade = (200.0 * (1.0 - level)) as u8;
+                Circle::new(
+                    (s.running_hz, f),
+                    (2.0 + 3.0 * level) as i32,
+                    RGBColor(shade, shade, 255).filled(),
+                )
+            });
+        chart.draw_series(points).map_err(&err)?;
+    }
+    root.present().map_err(&err)?;
+    Ok(())
+}

@@ -1,0 +1,118 @@
+//! The regime map: speed × load, each case coloured by its period.
+
+use std::path::{Path, PathBuf};
+
+use plotters::coord::Shift;
+use plotters::prelude::*;
+
+use super::canvas::{draw_error, png_and_svg};
+
+/// One cell: (rpm, load N m, period; 0 for aperiodic).
+pub type RegimeCell = (f64, f64, usize);
+
+/// Writes `base.png` and `base.svg`.
+pub fn write_regime_map(
+    base: &Path,
+    title: &str,
+    cells: &[RegimeCell],
+) -> anyhow::Result<Vec<PathBuf>> {
+    png_and_svg(
+        base,
+        |root| draw(root, title, cells),
+        |root| draw(root, title, cells),
+    )
+}
+
+/// Colour of a period: 1 green, 2 red, 3 orange, 4 purple, more blue, aperiodic black.
+fn colour(period: usize) -> RGBColor {
+    match period {
+        0 => RGBColor(0, 0, 0),
+        1 => RGBColor(60, 170, 60),
+        2 => RGBColor(220, 40, 40),
+        3 => RGBColor(240, 150, 20),
+        4 => RGBColor(140, 60, 180),
+        _ => RGBColor(40, 90, 220),
+    }
+}
+
+/// Smallest gap between distinct values, if there are two.
+fn smallest_step(values: impl Iterator<Item = f64>) -> Option<f64> {
+    let mut v: Vec<f64> = values.collect();
+    v.sort_by(f64::total_cmp);
+    v.dedup();
+    v.windows(2).map(|w| w[1] - w[0]).reduce(f64::min)
+}
+
+fn draw<DB: DrawingBackend>(
+    root: DrawingArea<DB, Shift>,
+    title: &str,
+    cells: &[RegimeCell],
+) -> anyhow::Result<()> {
+    let err = draw_error("regime map");
+    let (r0, r1) = cells
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), c| {
+            (a.min(c.0), b.max(c.0))
+        });
+    let (l0, l1) = cells
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), c| {
+            (a.min(c.1), b.max(c.1))
+        });
+    let half_r = 0.45 * smallest_step(cells.iter().map(|c| c.0)).unwrap_or(100.0);
+    let half_l = 0.45 * smallest_step(cells.iter().map(|c| c.1)).unwrap_or(1.0);
+    let (pad_r, pad_l) = (2.0 * half_r, 2.0 * half_l);
+    root.fill(&WHITE).map_err(&err)?;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(title, ("sans-serif", 20))
+        .margin(12)
+        .x_label_area_size(44)
+        .y_label_area_size(60)
+        .build_cartesian_2d((r0 - pad_r)..(r1 + pad_r), (l0 - pad_l)..(l1 + pad_l))
+        .map_err(&err)?;
+    chart
+        .configure_mesh()
+        .x_desc("speed (rev/min)")
+        .y_desc("load (N m)")
+        .label_style(("sans-serif", 14))
+        .draw()
+        .map_err(&err)?;
+    let mut periods: Vec<usize> = cells.iter().map(|c| c.2).collect();
+    periods.sort_unstable();
+    periods.dedup();
+    for period in periods {
+        let c = colour(period);
+        let label = if period == 0 {
+            "aperiodic".to_string()
+        } else {
+            format!("period-{period}")
+        };
+        chart
+            .draw_series(
+                cells
+                    .iter()
+                    .filter(|cell| cell.2 == period)
+                    .map(move |cell| {
+                        Rectangle::new(
+                            [
+                                (cell.0 - half_r, cell.1 - half_l),
+                                (cell.0 + half_r, cell.1 + half_l),
+                            ],
+                            c.filled(),
+                        )
+                    }),
+            )
+            .map_err(&err)?
+            .label(label)
+            .legend(move |(x, y)| Rectangle::new([(x, y - 5), (x + 12, y + 5)], c.filled()));
+    }
+    chart
+        .configure_series_labels()
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .label_font(("sans-serif", 13))
+        .draw()
+        .map_err(&err)?;
+    root.present().map_err(&err)?;
+    Ok(())
+}

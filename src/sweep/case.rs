@@ -1,0 +1,182 @@
+//! One case of a sweep: the plant at fixed set points, settled, then measured through the
+//! chain (one thread, stage after stage) into the analyser.
+
+use instruments::{Adc, Analyser, Line};
+use rig::{Plant, PlantConfig, RegimeCriteria, Schedule, SignalBlock, SteadySummary, SteadyWindow};
+use serde::{Deserialize, Serialize};
+
+use super::lines::{OrderLine, order_line, peaks};
+use super::plan::{Case, SweepPlan};
+use crate::runtime::frame::{Frame, SignalNames};
+use crate::runtime::sinks::analyser::ANALYSED_SIGNAL;
+use crate::runtime::stages::build_stages;
+
+/// Chain time run before the analyser starts, so the filters have settled (s).
+const CHAIN_LEAD_S: f64 = 1.0;
+/// Samples per block.
+const BLOCK: usize = 4096;
+
+/// What one case shows.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct CaseResult {
+    /// Index in the grid.
+    pub index: usize,
+    /// Speed set point (rev/min).
+    pub rpm: f64,
+    /// Load (N m).
+    pub load_nm: f64,
+    /// Swept parameter values, in the sweep's column order.
+    pub values: Vec<String>,
+    /// The case's seed.
+    pub seed: u64,
+    /// `period-k` or `aperiodic`.
+    pub regime: String,
+    /// k of period-k, 0 when aperiodic.
+    pub period: usize,
+    /// Power of the half-order line (V² rms at the amplifier output).
+    pub half_order: f64,
+    /// Power of the first-order line.
+    pub first_order: f64,
+    /// Power of the second-order line.
+    pub second_order: f64,
+    /// Height of the half-order line above the lines around it (dB).
+    pub half_order_db: f64,
+    /// Whether the half-order line stands out (by the sweep's `line_db`).
+    pub half_order_present: bool,
+    /// Contact starts per revolution of the driving gear.
+    pub impacts_per_rev: f64,
+    /// Contact starts on each tooth of the driving gear per revolution.
+    pub impacts_per_tooth_per_rev: Vec<f64>,
+    /// Whether the teeth ever separate.
+    pub separates: bool,
+    /// Share of the time apart.
+    pub apart_fraction: f64,
+    /// Mean output-shaft torque (N m).
+    pub torque_mean_nm: f64,
+    /// RMS of the output-shaft torque about its mean (N m).
+    pub torque_ac_rms_nm: f64,
+    /// Analyser averages taken.
+    pub averages: usize,
+    /// The displayed spectrum: (Hz, V² rms) per line.
+    pub spectrum: Vec<(f64, f64)>,
+    /// The lines that stand out: (Hz, V² rms).
+    pub peaks: Vec<(f64, f64)>,
+}
+
+/// Runs `case` of `plan`.
+pub fn run_case(plan: &SweepPlan, case: &Case) -> anyhow::Result<CaseResult> {
+    let config = PlantConfig {
+        output_rate_hz: plan.rate_hz,
+        ..PlantConfig::default()
+    };
+    let schedule = Schedule::constant(case.rpm, case.load_nm);
+    let mut plant = Plant::new(case.params.clone(), schedule, config)?;
+    let lead = CHAIN_LEAD_S.min(plan.settle_s);
+    plant.skip(((plan.settle_s - lead) * plan.rate_hz).round() as usize)?;
+    plant.drain_impacts();
+    plant.drain_revolutions();
+    let mut chain = plan.chain.clone();
+    if let Some(rings) = &mut chain.slip_rings {
+        rings.seed = case.seed;
+    }
+    let mut names = SignalNames::plant();
+    let mut stages = build_stages(&chain, plan.rate_hz, &mut names)?;
+    let input = names
+        .index(ANALYSED_SIGNAL)
+        .ok_or_else(|| anyhow::anyhow!("internal wiring: no {ANALYSED_SIGNAL}"))?;
+    let mut adc_settings = plan.analyser.adc;
+    adc_settings.dither_seed = adc_settings.dither_seed.map(|_| case.seed ^ 1);
+    let mut adc = Adc::new(adc_settings)?;
+    let mut analyser = Analyser::new(plan.analyser.settings)?;
+    let mut window = SteadyWindow::new(case.params.teeth, plant.output_step_s());
+    let lead_samples = (lead * plan.rate_hz).round() as usize;
+    let total = lead_samples + (plan.measure_s * plan.rate_hz).round() as usize;
+    let mut block = SignalBlock::default();
+    let mut adc_out = Vec::new();
+    let mut done = 0;
+    while done < total {
+        let until = if done < lead_samples {
+            lead_samples
+        } else {
+            total
+        };
+        let n = BLOCK.min(until - done);
+        block.clear();
+        plant.run(n, &mut block)?;
+        let mut frame = Frame::of_block(0, done as u64, &block, Vec::new());
+        for stage in &mut stages {
+            let mut out = vec![0.0; n];
+            stage.stage.process(&frame, &mut out);
+            frame = frame.with(out);
+        }
+        if done >= lead_samples {
+            window.add_block(&block, plant.set_points().speed_rad_s());
+            adc_out.clear();
+            adc.convert(&frame.channels[input], &mut adc_out);
+            analyser.push(&adc_out);
+        } else {
+            plant.drain_impacts();
+            plant.drain_revolutions();
+        }
+        done += n;
+    }
+    window.add_impacts(plant.impacts());
+    window.add_revolutions(plant.revolutions());
+    let summary = window.summary(&RegimeCriteria::default());
+    Ok(result(
+        plan,
+        case,
+        &summary,
+        &analyser.display(),
+        analyser.average_count(),
+    ))
+}
+
+fn result(
+    plan: &SweepPlan,
+    case: &Case,
+    s: &SteadySummary,
+    lines: &[Line],
+    averages: usize,
+) -> CaseResult {
+    let running_hz = case.rpm / 60.0;
+    let order = |k: f64| {
+        order_line(lines, k * running_hz).unwrap_or(OrderLine {
+            power: f64::NAN,
+            above_floor_db: f64::NAN,
+        })
+    };
+    let half = order(0.5);
+    let revolutions = s.revolutions.max(1) as f64;
+    CaseResult {
+        index: case.index,
+        rpm: case.rpm,
+        load_nm: case.load_nm,
+        values: case.values.clone(),
+        seed: case.seed,
+        regime: s.regime.clone(),
+        period: s
+            .regime
+            .strip_prefix("period-")
+            .and_then(|k| k.parse().ok())
+            .unwrap_or(0),
+        half_order: half.power,
+        first_order: order(1.0).power,
+        second_order: order(2.0).power,
+        half_order_db: half.above_floor_db,
+        half_order_present: half.above_floor_db >= plan.line_db,
+        impacts_per_rev: s.impacts_per_rev,
+        impacts_per_tooth_per_rev: s
+            .impacts_per_tooth
+            .iter()
+            .map(|&n| n as f64 / revolutions)
+            .collect(),
+        separates: s.separates,
+        apart_fraction: s.apart_fraction,
+        torque_mean_nm: s.torque_mean_nm,
+        torque_ac_rms_nm: s.torque_ac_rms_nm,
+        averages,
+        spectrum: lines.iter().map(|l| (l.frequency_hz, l.value)).collect(),
+        peaks: peaks(lines, plan.line_db),
+    }
+}

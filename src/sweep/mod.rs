@@ -1,0 +1,15 @@
+//! Sweeps: a grid of cases (speed, load, backlash, any parameter), each run at fixed set
+//! points through the chain and the analyser, in parallel, shardable and resumable.
+
+pub mod case;
+pub mod file;
+pub mod lines;
+pub mod plan;
+pub mod run;
+pub mod shard;
+pub mod table;
+
+pub use case::{CaseResult, run_case};
+pub use plan::{Case, SweepPlan, build_sweep};
+pub use run::{SweepMeta, SweepOptions, SweepOutcome, assemble, read_meta, run_sweep};
+pub use shard::Shard;

@@ -1,0 +1,158 @@
+//! A sweep file checked and expanded into its cases.
+
+use rig::RigParams;
+
+use crate::scenario::chain_part::{analyser_plan, chain_plan};
+use crate::scenario::rig_part::{backlash_shift_m, rig_params};
+use crate::scenario::{AnalyserPlan, ChainPlan, ScenarioSource};
+
+use super::file::SweepFile;
+
+/// Everything a sweep needs, checked.
+#[derive(Clone, Debug)]
+pub struct SweepPlan {
+    /// Sweep name.
+    pub name: String,
+    /// Base seed.
+    pub seed: u64,
+    /// Stream rate (Hz).
+    pub rate_hz: f64,
+    /// Preset name.
+    pub preset: String,
+    /// Settle time per case (s).
+    pub settle_s: f64,
+    /// Measured time per case (s).
+    pub measure_s: f64,
+    /// The chain (slip-ring seed replaced per case).
+    pub chain: ChainPlan,
+    /// The analyser.
+    pub analyser: AnalyserPlan,
+    /// Line presence threshold (dB above the local floor).
+    pub line_db: f64,
+    /// Names of the swept parameters, in column order.
+    pub swept: Vec<String>,
+    /// The cases, in index order.
+    pub cases: Vec<Case>,
+}
+
+/// One case of the grid.
+#[derive(Clone, Debug)]
+pub struct Case {
+    /// Index in the grid (0-based).
+    pub index: usize,
+    /// Speed set point (rev/min).
+    pub rpm: f64,
+    /// Load (N m).
+    pub load_nm: f64,
+    /// Values of the swept parameters, as text, in `SweepPlan::swept` order.
+    pub values: Vec<String>,
+    /// The rig of this case.
+    pub params: RigParams,
+    /// The case's seed.
+    pub seed: u64,
+}
+
+/// Checks `file` (read from `src`) and expands its grid.
+pub fn build_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<SweepPlan> {
+    let rate_hz = file.rate_hz.get_ref().0;
+    let (preset, base) = rig_params(src, &file.rig)?;
+    let chain = chain_plan(src, &file.chain, rate_hz, file.seed)?;
+    let analyser = analyser_plan(src, &file.analyser, rate_hz, file.seed)?;
+    let grid = &file.grid;
+    if grid.rpm.is_empty() || grid.load_nm.is_empty() {
+        return Err(src.error(0..0, "grid", "rpm and load_nm each need at least one value"));
+    }
+    let mut swept = Vec::new();
+    let mut variants: Vec<(Vec<String>, RigParams)> = vec![(Vec::new(), base)];
+    if !grid.backlash_mm.is_empty() {
+        swept.push("backlash_mm".to_string());
+        variants = expand(
+            variants,
+            grid.backlash_mm.iter().map(|b| {
+                let text = b.0.to_string();
+                (text, move |p: &mut RigParams| -> anyhow::Result<()> {
+                    p.centre_distance_shift_m = backlash_shift_m(p, b.0);
+                    Ok(())
+                })
+            }),
+        )?;
+    }
+    for (name, values) in &grid.set {
+        swept.push(name.clone());
+        let texts: Vec<String> = values
+            .get_ref()
+            .iter()
+            .map(|v| match v {
+                toml::Value::String(s) => s.clone(),
+                other => other.to_string(),
+            })
+            .collect();
+        variants = expand(
+            variants,
+            texts.into_iter().map(|text| {
+                let t = text.clone();
+                (text, move |p: &mut RigParams| -> anyhow::Result<()> {
+                    rig::set_param(p, name, &t)
+                        .and_then(|()| p.validate())
+                        .map_err(|e| src.error(values.span(), &format!("grid.set.{name}"), e))
+                })
+            }),
+        )?;
+    }
+    let mut cases = Vec::new();
+    for (values, params) in &variants {
+        for rpm in &grid.rpm {
+            for load in &grid.load_nm {
+                let index = cases.len();
+                cases.push(Case {
+                    index,
+                    rpm: rpm.0,
+                    load_nm: load.0,
+                    values: values.clone(),
+                    params: params.clone(),
+                    seed: case_seed(file.seed, index),
+                });
+            }
+        }
+    }
+    Ok(SweepPlan {
+        name: file.name.clone(),
+        seed: file.seed,
+        rate_hz,
+        preset,
+        settle_s: file.case.settle_s.get_ref().0,
+        measure_s: file.case.measure_s.get_ref().0,
+        chain,
+        analyser,
+        line_db: file.detect.line_db.0,
+        swept,
+        cases,
+    })
+}
+
+/// Every variant so far with every value of one more parameter.
+fn expand<F: Fn(&mut RigParams) -> anyhow::Result<()>>(
+    variants: Vec<(Vec<String>, RigParams)>,
+    values: impl Iterator<Item = (String, F)> + Clone,
+) -> anyhow::Result<Vec<(Vec<String>, RigParams)>> {
+    let mut out = Vec::new();
+    for (texts, params) in variants {
+        for (text, apply) in values.clone() {
+            let mut p = params.clone();
+            apply(&mut p)?;
+            let mut t = texts.clone();
+            t.push(text);
+            out.push((t, p));
+        }
+    }
+    Ok(out)
+}
+
+/// Seed of case `index`: the base seed and the index mixed (SplitMix64), so neighbouring
+/// cases get unrelated noise and any shard reproduces any case.
+pub fn case_seed(base: u64, index: usize) -> u64 {
+    let mut z = base.wrapping_add((index as u64 + 1).wrapping_mul(0x9E37_79B9_7F4A_7C15));
+    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    z ^ (z >> 31)
+}

@@ -1,0 +1,255 @@
+//! Running a sweep: this shard's cases in parallel (rayon) with a progress bar, each
+//! written as it finishes; then the table and the plots from every finished case.
+
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use anyhow::Context;
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
+
+use super::case::{CaseResult, run_case};
+use super::plan::SweepPlan;
+use super::shard::Shard;
+use super::table::{CASES_DIR, case_path, read_cases, write_case, write_table};
+use crate::plots::{
+    RegimeCell, SpeedLines, WaterfallTrace, write_frequency_map, write_regime_map, write_waterfall,
+};
+use crate::recording::PartialFile;
+
+/// How to run.
+#[derive(Clone, Debug)]
+pub struct SweepOptions {
+    /// Worker threads (`None`: one per core).
+    pub jobs: Option<usize>,
+    /// Which cases.
+    pub shard: Shard,
+    /// Skip cases already finished in the output folder.
+    pub resume: bool,
+    /// Output folder.
+    pub out: PathBuf,
+    /// Draw a progress bar.
+    pub progress: bool,
+}
+
+/// What a sweep did.
+#[derive(Debug)]
+pub struct SweepOutcome {
+    /// Cases run now.
+    pub ran: usize,
+    /// Cases skipped as already finished.
+    pub skipped: usize,
+    /// Cases that failed: (index, error).
+    pub failed: Vec<(usize, String)>,
+    /// Wall time of the cases (s).
+    pub wall_s: f64,
+    /// Files written by the assembly.
+    pub files: Vec<PathBuf>,
+}
+
+/// What the table and plots need besides the cases (`sweep.json`, so that `merge` can
+/// assemble shards without the sweep file).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SweepMeta {
+    /// Sweep name.
+    pub name: String,
+    /// Swept parameter columns.
+    pub swept: Vec<String>,
+    /// Natural frequencies of the rig (Hz), for the frequency map.
+    pub natural_hz: Vec<f64>,
+    /// Top of the analysed band (Hz).
+    pub fmax_hz: f64,
+    /// Number of cases in the whole grid.
+    pub cases: usize,
+}
+
+/// Runs this shard's cases of `plan` and assembles what is finished.
+pub fn run_sweep(
+    plan: &SweepPlan,
+    meta: &SweepMeta,
+    options: &SweepOptions,
+) -> anyhow::Result<SweepOutcome> {
+    let dir = &options.out;
+    std::fs::create_dir_all(dir.join(CASES_DIR))
+        .with_context(|| format!("--out {}: cannot create the output folder", dir.display()))?;
+    write_meta(dir, meta)?;
+    let mine: Vec<_> = plan
+        .cases
+        .iter()
+        .filter(|c| options.shard.has(c.index))
+        .collect();
+    let todo: Vec<_> = mine
+        .iter()
+        .filter(|c| !(options.resume && case_path(dir, c.index).exists()))
+        .copied()
+        .collect();
+    let bar = progress_bar(todo.len() as u64, options.progress);
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(options.jobs.unwrap_or(0))
+        .build()
+        .context("cannot start the worker threads")?;
+    let started = Instant::now();
+    let failed: Vec<(usize, String)> = pool.install(|| {
+        todo.par_iter()
+            .filter_map(|case| {
+                let done = run_case(plan, case).and_then(|r| write_case(dir, &r));
+                bar.inc(1);
+                done.err().map(|e| (case.index, format!("{e:#}")))
+            })
+            .collect()
+    });
+    bar.finish_and_clear();
+    let wall_s = started.elapsed().as_secs_f64();
+    let files = assemble(std::slice::from_ref(dir), dir)?;
+    Ok(SweepOutcome {
+        ran: todo.len(),
+        skipped: mine.len() - todo.len(),
+        failed,
+        wall_s,
+        files,
+    })
+}
+
+fn progress_bar(len: u64, visible: bool) -> ProgressBar {
+    let target = if visible {
+        ProgressDrawTarget::stderr_with_hz(4)
+    } else {
+        ProgressDrawTarget::hidden()
+    };
+    let bar = ProgressBar::with_draw_target(Some(len), target);
+    if let Ok(style) = ProgressStyle::with_template("{bar:30} {pos}/{len} cases (eta {eta})") {
+        bar.set_style(style);
+    }
+    bar
+}
+
+fn write_meta(dir: &Path, meta: &SweepMeta) -> anyhow::Result<()> {
+    let file = PartialFile::new(&dir.join("sweep.json"));
+    let mut out = file.create()?;
+    serde_json::to_writer_pretty(&mut out, meta)?;
+    std::io::Write::flush(&mut out)?;
+    drop(out);
+    file.commit()?;
+    Ok(())
+}
+
+/// Reads `sweep.json` of a sweep folder.
+pub fn read_meta(dir: &Path) -> anyhow::Result<SweepMeta> {
+    let path = dir.join("sweep.json");
+    let text = std::fs::read_to_string(&path)
+        .with_context(|| format!("{}: cannot read", path.display()))?;
+    serde_json::from_str(&text)
+        .with_context(|| format!("{}: not a sweep description", path.display()))
+}
+
+/// Writes into `out` the table and the plots of every case finished in `dirs` (and the
+/// cases themselves when `out` is not among `dirs`).
+pub fn assemble(dirs: &[PathBuf], out: &Path) -> anyhow::Result<Vec<PathBuf>> {
+    let meta = read_meta(dirs.first().context("no sweep folder given")?)?;
+    let cases = read_cases(dirs)?;
+    std::fs::create_dir_all(out.join(CASES_DIR))
+        .with_context(|| format!("{}: cannot create the folder", out.display()))?;
+    if !dirs.iter().any(|d| d == out) {
+        write_meta(out, &meta)?;
+        for c in &cases {
+            write_case(out, c)?;
+        }
+    }
+    let mut files = vec![write_table(out, &meta.swept, &cases)?];
+    files.extend(plots(out, &meta, &cases)?);
+    Ok(files)
+}
+
+/// One group per swept-parameter variant and load: its label and cases in speed order.
+fn groups(cases: &[CaseResult]) -> Vec<(String, Vec<&CaseResult>)> {
+    let mut groups: Vec<(String, Vec<&CaseResult>)> = Vec::new();
+    for c in cases {
+        let mut label: Vec<String> = c.values.clone();
+        label.push(format!("{} N m", c.load_nm));
+        let label = label.join(", ");
+        match groups.iter_mut().find(|(l, _)| *l == label) {
+            Some((_, members)) => members.push(c),
+            None => groups.push((label, vec![c])),
+        }
+    }
+    for (_, members) in &mut groups {
+        members.sort_by(|a, b| a.rpm.total_cmp(&b.rpm));
+    }
+    groups
+}
+
+fn file_label(label: &str) -> String {
+    label
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || c == '.' || c == '-' {
+                c
+            } else {
+                '_'
+            }
+        })
+        .collect::<String>()
+        .replace("__", "_")
+}
+
+fn plots(out: &Path, meta: &SweepMeta, cases: &[CaseResult]) -> anyhow::Result<Vec<PathBuf>> {
+    let mut files = Vec::new();
+    for (label, members) in groups(cases) {
+        let tag = file_label(&label);
+        let speeds: Vec<SpeedLines> = members
+            .iter()
+            .map(|c| SpeedLines {
+                running_hz: c.rpm / 60.0,
+                peaks: c.peaks.clone(),
+            })
+            .collect();
+        let title = format!("{}: output against input frequency, {label}", meta.name);
+        files.extend(write_frequency_map(
+            &out.join(format!("frequency-map-{tag}")),
+            &title,
+            &speeds,
+            &meta.natural_hz,
+            meta.fmax_hz,
+        )?);
+        let traces: Vec<WaterfallTrace> = members
+            .iter()
+            .map(|c| WaterfallTrace {
+                rpm: c.rpm,
+                lines: c.spectrum.clone(),
+            })
+            .collect();
+        let title = format!("{}: spectra against speed, {label}", meta.name);
+        files.extend(write_waterfall(
+            &out.join(format!("waterfall-{tag}")),
+            &title,
+            &traces,
+        )?);
+    }
+    let mut variants: Vec<Vec<String>> = cases.iter().map(|c| c.values.clone()).collect();
+    variants.dedup();
+    for values in variants {
+        let cells: Vec<RegimeCell> = cases
+            .iter()
+            .filter(|c| c.values == values)
+            .map(|c| (c.rpm, c.load_nm, c.period))
+            .collect();
+        let what = if values.is_empty() {
+            String::new()
+        } else {
+            format!(", {}", values.join(", "))
+        };
+        let tag = if values.is_empty() {
+            String::new()
+        } else {
+            format!("-{}", file_label(&values.join("_")))
+        };
+        let title = format!("{}: regime by speed and load{what}", meta.name);
+        files.extend(write_regime_map(
+            &out.join(format!("regime-map{tag}")),
+            &title,
+            &cells,
+        )?);
+    }
+    Ok(files)
+}

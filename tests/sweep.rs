@@ -1,0 +1,199 @@
+//! `testrig sweep` and `testrig merge`: shards that merge into the unsharded table, resume,
+//! SLURM job arrays, and what a case measures.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use testrig::sweep::Shard;
+
+fn testrig(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_testrig"))
+        .args(args)
+        .output()
+        .expect("the binary runs")
+}
+
+fn folder(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("testrig-sweep-{name}-{}", std::process::id()));
+    std::fs::remove_dir_all(&dir).ok();
+    std::fs::create_dir_all(&dir).expect("temp folder");
+    dir
+}
+
+/// A small grid: two speeds, two loads, two tooth counts; short cases.
+const SWEEP: &str = r#"name = "small"
+seed = 5
+
+[rig]
+backlash_mm = 0.73
+
+[grid]
+rpm = [600, 1300]
+load_nm = [0.0, 2.712]
+set = { teeth = [30, 31] }
+
+[case]
+settle_s = 3
+measure_s = 5
+
+[chain.slip_rings]
+broadband_rms = 0.005
+per_rev_amplitude = 0.01
+contact_noise_v_rms = 2e-6
+
+[chain.amplifier]
+carrier_hz = 2000
+output_lowpass_hz = 1000
+
+[chain.filter]
+kind = "butterworth"
+order = 8
+cutoff_hz = 180
+
+[analyser]
+fmax_hz = 200
+block = 512
+averages = 3
+"#;
+
+fn sweep(dir: &Path, out: &str, extra: &[&str]) -> String {
+    let file = dir.join("small.toml");
+    std::fs::write(&file, SWEEP).expect("sweep file");
+    let out = dir.join(out);
+    let mut args = vec![
+        "sweep",
+        file.to_str().expect("utf-8"),
+        "--out",
+        out.to_str().expect("utf-8"),
+    ];
+    args.extend(extra);
+    let output = testrig(&args);
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    String::from_utf8_lossy(&output.stdout).into_owned()
+}
+
+fn table(dir: &Path) -> String {
+    std::fs::read_to_string(dir.join("cases.csv")).expect("cases.csv")
+}
+
+#[test]
+fn shards_merged_equal_the_unsharded_sweep_and_resume_skips_finished_cases() {
+    let dir = folder("shards");
+    sweep(&dir, "all", &["--jobs", "2"]);
+    for k in 0..3 {
+        sweep(
+            &dir,
+            &format!("shard{k}"),
+            &["--shard", &format!("{k}/3"), "--jobs", "1"],
+        );
+    }
+    let shards: Vec<String> = (0..3)
+        .map(|k| dir.join(format!("shard{k}")).display().to_string())
+        .collect();
+    let merged = dir.join("merged");
+    let mut args = vec!["merge"];
+    args.extend(shards.iter().map(String::as_str));
+    args.extend(["--out", merged.to_str().expect("utf-8")]);
+    let output = testrig(&args);
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let all = table(&dir.join("all"));
+    assert_eq!(all.lines().count(), 1 + 8, "{all}");
+    assert_eq!(
+        table(&merged),
+        all,
+        "merged shards differ from the unsharded sweep"
+    );
+    assert!(merged.join("regime-map-30.svg").exists() && merged.join("regime-map-31.svg").exists());
+    // A shard's own table has its cases only.
+    assert_eq!(table(&dir.join("shard1")).lines().count(), 1 + 3);
+    // Resuming shard 1's folder runs only the other cases and ends with the whole table.
+    let said = sweep(&dir, "shard1", &["--resume"]);
+    assert!(
+        said.contains("5 cases run") && said.contains("3 skipped"),
+        "{said}"
+    );
+    assert_eq!(table(&dir.join("shard1")), all);
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn a_case_measures_the_half_order_line_and_the_regime_of_its_point() {
+    let dir = folder("physics");
+    sweep(
+        &dir,
+        "out",
+        &[
+            "--set",
+            "grid.set={ teeth = [30] }",
+            "--set",
+            "grid.load_nm=[2.712]",
+        ],
+    );
+    let mut reader = csv::Reader::from_path(dir.join("out/cases.csv")).expect("CSV");
+    let header = reader.headers().expect("header").clone();
+    let col = |name: &str| header.iter().position(|h| h == name).expect("column");
+    let rows: Vec<csv::StringRecord> = reader.records().map(|r| r.expect("row")).collect();
+    assert_eq!(rows.len(), 2);
+    for row in &rows {
+        let rpm: f64 = row[col("rpm")].parse().expect("rpm");
+        let present = &row[col("half_order_present")] == "true";
+        let regime = &row[col("regime")];
+        if rpm == 1300.0 {
+            // The thesis's subharmonic point: period-2 motion puts a line at half the
+            // running speed, far above the floor.
+            assert_eq!(regime, "period-2");
+            assert!(present);
+            let db: f64 = row[col("half_order_db")].parse().expect("dB");
+            assert!(db > 30.0, "{db}");
+        } else {
+            assert!(!present, "600 rev/min: no half order ({regime})");
+        }
+        assert_eq!(&row[col("teeth")], "30");
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn a_slurm_job_array_picks_its_shard_and_the_flag_wins() {
+    let env = |k: &str| match k {
+        "SLURM_ARRAY_TASK_ID" => Some("2".to_string()),
+        "SLURM_ARRAY_TASK_COUNT" => Some("4".to_string()),
+        _ => None,
+    };
+    assert_eq!(
+        Shard::choose(None, env).expect("valid"),
+        Shard { index: 2, count: 4 }
+    );
+    assert_eq!(
+        Shard::choose(Some("1/3"), env).expect("valid"),
+        Shard { index: 1, count: 3 }
+    );
+    assert_eq!(Shard::choose(None, |_| None).expect("valid"), Shard::ALL);
+    // --array=1-4: task 3 is the third, shard 2 of 4.
+    let from_one = |k: &str| match k {
+        "SLURM_ARRAY_TASK_ID" => Some("3".to_string()),
+        "SLURM_ARRAY_TASK_MIN" => Some("1".to_string()),
+        "SLURM_ARRAY_TASK_COUNT" => Some("4".to_string()),
+        _ => None,
+    };
+    assert_eq!(
+        Shard::choose(None, from_one).expect("valid"),
+        Shard { index: 2, count: 4 }
+    );
+    assert!(
+        Shard::parse("3/3").is_err() && Shard::parse("a/2").is_err() && Shard::parse("1").is_err()
+    );
+    let shard = Shard { index: 1, count: 3 };
+    assert_eq!(
+        (0..9).filter(|&i| shard.has(i)).collect::<Vec<_>>(),
+        [1, 4, 7]
+    );
+}
