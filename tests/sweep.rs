@@ -197,3 +197,49 @@ fn a_slurm_job_array_picks_its_shard_and_the_flag_wins() {
         [1, 4, 7]
     );
 }
+
+#[test]
+fn the_shipped_campaign_runs_shortened_and_reports_against_the_thesis() {
+    let dir = folder("campaign");
+    let out = dir.join("out");
+    let campaign = format!(
+        "{}/scenarios/thesis-campaign.toml",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let output = testrig(&[
+        "sweep",
+        &campaign,
+        "--out",
+        out.to_str().expect("utf-8"),
+        "--set",
+        "grid.rpm=[600, 1300]",
+        "--set",
+        "grid.load_nm=[2.712, 5.424]",
+        "--set",
+        "case.settle_s=2",
+        "--set",
+        "case.measure_s=4",
+        "--set",
+        "analyser.averages=1",
+    ]);
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let report = std::fs::read_to_string(out.join("report.md")).expect("report.md");
+    assert!(
+        report.contains("4 points") && report.contains("Score against the thesis"),
+        "{report}"
+    );
+    for name in [
+        "cases.csv",
+        "regime-map.png",
+        "regime-map.svg",
+        "frequency-map-2.712_N_m.png",
+        "waterfall-5.424_N_m.svg",
+    ] {
+        assert!(out.join(name).exists(), "{name} missing");
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}

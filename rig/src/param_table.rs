@@ -137,6 +137,7 @@ param_specs! {
     speed_feedback_filter_hz, "Hz", "low-pass on the controller's speed feedback (thesis silent: 2)";
     motor_torque_limit_nm, "N m", "drive torque limit: 2 hp at 2000 rev/min = 7.12";
     brake_speed_slope_nms_per_rad, "N m s/rad", "brake torque slope with speed (thesis: constant torque, 0)";
+    brake_drag_nm, "N m", "residual drag added to the set load: bearings, seals, windage, brake remanence (thesis: none, 0)";
 }
 
 /// Looks a parameter up by name.

@@ -74,6 +74,9 @@ pub struct RigParams {
     pub motor_torque_limit_nm: f64,
     /// Slope of the brake torque with speed about the set point (N m s/rad); 0 is the thesis's constant torque.
     pub brake_speed_slope_nms_per_rad: f64,
+    /// Residual drag at the brake (N m, ≥ 0): bearing and seal friction, windage and the
+    /// brake's remanence, present at zero set load and added to the set load.
+    pub brake_drag_nm: f64,
 }
 
 impl RigParams {
@@ -159,6 +162,12 @@ impl RigParams {
         for (name, value) in any_finite {
             require(name, value, true, "must be a finite number")?;
         }
+        require(
+            "brake_drag_nm",
+            self.brake_drag_nm,
+            self.brake_drag_nm >= 0.0,
+            "must be a finite torque ≥ 0 N m",
+        )?;
         let teeth = f64::from(self.teeth);
         require(
             "teeth",

@@ -5,7 +5,7 @@ use anyhow::{Context, bail};
 
 /// Applies one `KEY=VALUE` (KEY a dotted path such as `schedule.speed_rpm` or
 /// `rig.set.teeth`) to `text`. VALUE is taken as TOML (a number, `true`, `"text"`), or as
-/// a string when it is not valid TOML.
+/// a string when it is not valid TOML. The key's value must sit on one line of the file.
 pub fn apply_override(text: &str, item: &str) -> anyhow::Result<String> {
     let (key, value) = item.split_once('=').with_context(|| {
         format!("--set {item}: expected KEY=VALUE, e.g. schedule.speed_rpm=1500")

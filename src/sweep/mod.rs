@@ -5,6 +5,7 @@ pub mod case;
 pub mod file;
 pub mod lines;
 pub mod plan;
+pub mod report;
 pub mod run;
 pub mod shard;
 pub mod table;

@@ -11,6 +11,7 @@ use serde::{Deserialize, Serialize};
 
 use super::case::{CaseResult, run_case};
 use super::plan::SweepPlan;
+use super::report::write_report;
 use super::shard::Shard;
 use super::table::{CASES_DIR, case_path, read_cases, write_case, write_table};
 use crate::plots::{
@@ -158,6 +159,8 @@ pub fn assemble(dirs: &[PathBuf], out: &Path) -> anyhow::Result<Vec<PathBuf>> {
     }
     let mut files = vec![write_table(out, &meta.swept, &cases)?];
     files.extend(plots(out, &meta, &cases)?);
+    let report = write_report(out, &meta, &cases, &files)?;
+    files.push(report);
     Ok(files)
 }
 

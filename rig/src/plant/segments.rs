@@ -27,7 +27,7 @@ impl Plant {
         if delta_speed != 0.0 {
             self.clamp_controller();
         }
-        self.u[LOAD] = set.load_nm;
+        self.u[LOAD] = set.load_nm + self.params.brake_drag_nm;
         let frequencies_changed =
             delta_speed != 0.0 || set.oscillating_load_hz != old.set.oscillating_load_hz;
         self.segment = Segment {

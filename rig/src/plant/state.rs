@@ -160,7 +160,7 @@ impl Plant {
 
     /// Steady state at `set`: no vibration, every shaft carrying the load.
     pub(super) fn set_steady_state(&mut self, set: SetPoints) {
-        let load = set.load_nm;
+        let load = set.load_nm + self.params.brake_drag_nm;
         let [k12, k34, k45] = self.mc.shaft_stiffness_nm_per_rad;
         let b = self.mc.half_backlash_rad * (1.0 - self.mc.backlash_variation);
         let k23 = self.mc.mesh_stiffness_nm_per_rad;

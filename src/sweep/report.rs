@@ -1,0 +1,173 @@
+//! `report.md`: the sweep held against the thesis's findings (rig-spec §4), point by point
+//! and scored, with the plots.
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+use super::case::CaseResult;
+use super::run::SweepMeta;
+use crate::recording::PartialFile;
+
+/// Speed from which the thesis saw the half-order line (rev/min).
+pub const HALF_ORDER_FROM_RPM: f64 = 1100.0;
+/// Load at which it vanished at high speed (N m) ...
+pub const HEAVY_LOAD_NM: f64 = 5.424;
+/// ... from this speed up (rev/min).
+pub const VANISHES_FROM_RPM: f64 = 1900.0;
+/// The measured fundamental natural frequency (Hz).
+pub const MEASURED_FUNDAMENTAL_HZ: f64 = 13.33;
+
+/// Whether the thesis saw a half-order line at `rpm` and `load_nm`: from 1100 rev/min up,
+/// with or without load, except with 5.424 N m from 1900 rev/min up.
+pub fn thesis_expects_half_order(rpm: f64, load_nm: f64) -> bool {
+    rpm >= HALF_ORDER_FROM_RPM && !(load_nm >= HEAVY_LOAD_NM - 1e-6 && rpm >= VANISHES_FROM_RPM)
+}
+
+/// Points whose half-order verdict matches the thesis, of all points.
+pub fn score(cases: &[CaseResult]) -> (usize, usize) {
+    let hits = cases
+        .iter()
+        .filter(|c| c.half_order_present == thesis_expects_half_order(c.rpm, c.load_nm))
+        .count();
+    (hits, cases.len())
+}
+
+/// Writes `dir/report.md` and returns its path.
+pub fn write_report(
+    dir: &Path,
+    meta: &SweepMeta,
+    cases: &[CaseResult],
+    plots: &[PathBuf],
+) -> anyhow::Result<PathBuf> {
+    let mut md = String::new();
+    let (hits, total) = score(cases);
+    let _ = writeln!(
+        md,
+        "# {}: the thesis's findings, point by point\n",
+        meta.name
+    );
+    let _ = writeln!(
+        md,
+        "{total} points. A half-order line counts as present when it stands 10 dB above the lines around it in the averaged spectrum of the output-shaft strain (the thesis's chain: gauges, bridge, carrier amplifier, slip rings, anti-alias filter, 5451C). Score against the thesis (half order present from {HALF_ORDER_FROM_RPM} rev/min up at every load, absent below, absent with {HEAVY_LOAD_NM} N m from {VANISHES_FROM_RPM} rev/min): **{hits} of {total} = {:.0} %** (target 95 %).\n",
+        100.0 * hits as f64 / total.max(1) as f64
+    );
+    findings(&mut md, meta, cases);
+    table(&mut md, cases);
+    let _ = writeln!(md, "\n## Plots\n");
+    for p in plots
+        .iter()
+        .filter(|p| p.extension().is_some_and(|e| e == "png"))
+    {
+        let name = p
+            .file_name()
+            .map(|n| n.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        let _ = writeln!(md, "![{name}]({name})\n");
+    }
+    let file = PartialFile::new(&dir.join("report.md"));
+    std::fs::write(file.partial_path(), md)?;
+    file.commit()
+}
+
+fn verdict(ok: bool) -> &'static str {
+    if ok { "reproduced" } else { "not reproduced" }
+}
+
+fn findings(md: &mut String, meta: &SweepMeta, cases: &[CaseResult]) {
+    let _ = writeln!(md, "## Findings (rig-spec §4)\n");
+    let count = |f: &dyn Fn(&CaseResult) -> bool, g: &dyn Fn(&CaseResult) -> bool| {
+        let chosen: Vec<_> = cases.iter().filter(|c| f(c)).collect();
+        (chosen.iter().filter(|c| g(c)).count(), chosen.len())
+    };
+    let (a, an) = count(&|c| c.rpm < HALF_ORDER_FROM_RPM, &|c| !c.half_order_present);
+    let _ = writeln!(
+        md,
+        "1. Below about 1000 rev/min only the running speed and its multiples: {} — no half-order line at {a} of {an} points.",
+        verdict(a == an)
+    );
+    let (b, bn) = count(&|c| thesis_expects_half_order(c.rpm, c.load_nm), &|c| {
+        c.half_order_present
+    });
+    let _ = writeln!(
+        md,
+        "2. From 1100 rev/min up a half-order line, with and without load: {} — present at {b} of {bn} points.",
+        verdict(b == bn && bn > 0)
+    );
+    let (c, cn) = count(
+        &|c| c.load_nm >= HEAVY_LOAD_NM - 1e-6 && c.rpm >= VANISHES_FROM_RPM,
+        &|c| !c.half_order_present,
+    );
+    let (s, sn) = count(
+        &|c| c.load_nm >= HEAVY_LOAD_NM - 1e-6 && c.rpm >= VANISHES_FROM_RPM,
+        &|c| !c.separates,
+    );
+    let _ = writeln!(
+        md,
+        "3. With 5.424 N m the line is gone from 1900 rev/min: {} — absent at {c} of {cn} points. The thesis's reason, the load keeping the teeth together: {} — no separation at {s} of {sn}.",
+        verdict(c == cn && cn > 0),
+        verdict(s == sn && sn > 0)
+    );
+    let at_1100: Vec<_> = cases
+        .iter()
+        .filter(|c| c.rpm == 1100.0 && c.half_order_present)
+        .collect();
+    let _ = writeln!(
+        md,
+        "4. At 1100 rev/min the line lies at 9.17 Hz and the trace repeats every two revolutions: {} of {} loads show it; periods there: {}.",
+        at_1100.len(),
+        cases.iter().filter(|c| c.rpm == 1100.0).count(),
+        cases
+            .iter()
+            .filter(|c| c.rpm == 1100.0)
+            .map(|c| c.regime.clone())
+            .collect::<Vec<_>>()
+            .join(", ")
+    );
+    let f1 = meta.natural_hz.first().copied().unwrap_or(f64::NAN);
+    let _ = writeln!(
+        md,
+        "5. Fundamental natural frequency: {f1:.2} Hz in the model against {MEASURED_FUNDAMENTAL_HZ} Hz measured: {}.\n",
+        verdict((f1 - MEASURED_FUNDAMENTAL_HZ).abs() < 0.2)
+    );
+}
+
+fn table(md: &mut String, cases: &[CaseResult]) {
+    let mut loads: Vec<f64> = cases.iter().map(|c| c.load_nm).collect();
+    loads.sort_by(f64::total_cmp);
+    loads.dedup();
+    let _ = writeln!(
+        md,
+        "## Half-order line by speed (rows) and load (columns)\n"
+    );
+    let _ = writeln!(
+        md,
+        "Each cell: height of the half-order line above the floor (dB), the regime; ✓ where the verdict matches the thesis, ✗ where not.\n"
+    );
+    let header: Vec<String> = loads.iter().map(|l| format!("{l} N m")).collect();
+    let _ = writeln!(md, "| rev/min | {} |", header.join(" | "));
+    let _ = writeln!(md, "|---|{}", "---|".repeat(loads.len()));
+    let mut speeds: Vec<f64> = cases.iter().map(|c| c.rpm).collect();
+    speeds.sort_by(f64::total_cmp);
+    speeds.dedup();
+    for rpm in speeds {
+        let cells: Vec<String> = loads
+            .iter()
+            .map(|&l| {
+                cases
+                    .iter()
+                    .find(|c| c.rpm == rpm && c.load_nm == l)
+                    .map_or("–".into(), |c| {
+                        let ok =
+                            c.half_order_present == thesis_expects_half_order(c.rpm, c.load_nm);
+                        format!(
+                            "{:.0} dB, {} {}",
+                            c.half_order_db,
+                            c.regime,
+                            if ok { "✓" } else { "✗" }
+                        )
+                    })
+            })
+            .collect();
+        let _ = writeln!(md, "| {rpm} | {} |", cells.join(" | "));
+    }
+}
