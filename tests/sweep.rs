@@ -243,3 +243,53 @@ fn the_shipped_campaign_runs_shortened_and_reports_against_the_thesis() {
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn simulate_with_its_defaults_classifies_a_campaign_point_as_the_campaign_does() {
+    // The campaign settles 10 s and measures 30 s; its regime comes from the last 10 s,
+    // the window `simulate` classifies after its default 30 s of settling.
+    let dir = folder("agree");
+    let out = dir.join("out");
+    let campaign = format!(
+        "{}/scenarios/thesis-campaign.toml",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let output = testrig(&[
+        "sweep",
+        &campaign,
+        "--out",
+        out.to_str().expect("utf-8"),
+        "--set",
+        "grid.rpm=[1300]",
+        "--set",
+        "grid.load_nm=[2.712]",
+    ]);
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let table = std::fs::read_to_string(out.join("cases.csv")).expect("cases.csv");
+    let regime = table
+        .lines()
+        .nth(1)
+        .and_then(|l| l.split(',').nth(3))
+        .expect("regime")
+        .to_string();
+    let simulated = testrig(&[
+        "simulate",
+        "--preset",
+        "basmaji-1983-calibrated",
+        "--rpm",
+        "1300",
+        "--load",
+        "2.712",
+        "--set",
+        "centre_distance_shift_m=0.0010028292581",
+        "--json",
+    ]);
+    assert!(simulated.status.success());
+    let json: serde_json::Value = serde_json::from_slice(&simulated.stdout).expect("JSON");
+    assert_eq!(json["regime"].as_str(), Some(regime.as_str()));
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -8,6 +8,7 @@ use serde::{Deserialize, Serialize};
 use super::lines::{OrderLine, order_line, peaks};
 use super::plan::{Case, SweepPlan};
 use crate::runtime::frame::{Frame, SignalNames};
+use crate::runtime::plant_source::REGIME_WINDOW_S;
 use crate::runtime::sinks::analyser::ANALYSED_SIGNAL;
 use crate::runtime::stages::build_stages;
 
@@ -89,14 +90,20 @@ pub fn run_case(plan: &SweepPlan, case: &Case) -> anyhow::Result<CaseResult> {
     let mut adc = Adc::new(adc_settings)?;
     let mut analyser = Analyser::new(plan.analyser.settings)?;
     let mut window = SteadyWindow::new(case.params.teeth, plant.output_step_s());
+    // The regime from the last stretch only, as `testrig simulate` and `testrig run` take it.
+    let mut late = SteadyWindow::new(case.params.teeth, plant.output_step_s());
     let lead_samples = (lead * plan.rate_hz).round() as usize;
     let total = lead_samples + (plan.measure_s * plan.rate_hz).round() as usize;
+    let late_from =
+        total - (REGIME_WINDOW_S.min(plan.measure_s / 2.0) * plan.rate_hz).round() as usize;
     let mut block = SignalBlock::default();
     let mut adc_out = Vec::new();
     let mut done = 0;
     while done < total {
         let until = if done < lead_samples {
             lead_samples
+        } else if done < late_from {
+            late_from
         } else {
             total
         };
@@ -109,6 +116,17 @@ pub fn run_case(plan: &SweepPlan, case: &Case) -> anyhow::Result<CaseResult> {
             stage.stage.process(&frame, &mut out);
             frame = frame.with(out);
         }
+        if done >= late_from {
+            let (impacts, revolutions) = (plant.drain_impacts(), plant.drain_revolutions());
+            late.add_block(&block, plant.set_points().speed_rad_s());
+            late.add_revolutions(&revolutions);
+            late.add_impacts(&impacts);
+            window.add_impacts(&impacts);
+            window.add_revolutions(&revolutions);
+        } else if done >= lead_samples {
+            window.add_impacts(&plant.drain_impacts());
+            window.add_revolutions(&plant.drain_revolutions());
+        }
         if done >= lead_samples {
             window.add_block(&block, plant.set_points().speed_rad_s());
             adc_out.clear();
@@ -120,9 +138,9 @@ pub fn run_case(plan: &SweepPlan, case: &Case) -> anyhow::Result<CaseResult> {
         }
         done += n;
     }
-    window.add_impacts(plant.impacts());
-    window.add_revolutions(plant.revolutions());
-    let summary = window.summary(&RegimeCriteria::default());
+    let criteria = RegimeCriteria::default();
+    let mut summary = window.summary(&criteria);
+    summary.regime = late.summary(&criteria).regime;
     Ok(result(
         plan,
         case,
