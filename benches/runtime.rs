@@ -5,8 +5,11 @@
 //! - pacing: a run at pace 1 for 60 s with the full chain: overruns, lateness p50/p99/max,
 //!   CPU share of one core.
 //!
-//! Both read the figures from the run's manifest.json. `TESTRIG_BENCH=memory` or
-//! `TESTRIG_BENCH=pacing` runs one of them only.
+//! - campaign: `testrig sweep scenarios/thesis-campaign.toml` (78 points, each 10 s
+//!   settling + 30 s measured, ten-average spectra) on every core: wall time, median of 3.
+//!
+//! The first two read the figures from the run's manifest.json. `TESTRIG_BENCH=memory`,
+//! `pacing` or `campaign` runs one of them only.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -87,6 +90,32 @@ fn pacing(dir: &Path) {
     );
 }
 
+fn campaign(dir: &Path) {
+    let file = format!(
+        "{}/scenarios/thesis-campaign.toml",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let mut walls: Vec<f64> = (0..3)
+        .map(|k| {
+            let out = dir.join(format!("campaign-{k}"));
+            let started = std::time::Instant::now();
+            let status = Command::new(env!("CARGO_BIN_EXE_testrig"))
+                .args(["sweep", &file, "--out", out.to_str().expect("utf-8")])
+                .stdout(std::process::Stdio::null())
+                .status()
+                .expect("testrig runs");
+            assert!(status.success());
+            std::fs::remove_dir_all(&out).ok();
+            started.elapsed().as_secs_f64()
+        })
+        .collect();
+    walls.sort_by(f64::total_cmp);
+    println!(
+        "campaign: 78 points in {:.2} s wall (median of 3; range {:.2}-{:.2} s; target ≤ 10 s)",
+        walls[1], walls[0], walls[2]
+    );
+}
+
 fn main() {
     let dir: PathBuf = std::env::temp_dir().join(format!("testrig-bench-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("temp folder");
@@ -96,6 +125,9 @@ fn main() {
     }
     if which.is_empty() || which == "pacing" {
         pacing(&dir);
+    }
+    if which.is_empty() || which == "campaign" {
+        campaign(&dir);
     }
     std::fs::remove_dir_all(&dir).ok();
 }
