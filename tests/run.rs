@@ -425,7 +425,15 @@ load_nm = 2.712
 #[test]
 fn bad_input_is_named_by_file_line_and_field_without_a_panic() {
     let dir = folder("bad");
-    let cases: [(&str, String, &[&str]); 6] = [
+    let cases: [(&str, String, &[&str]); 7] = [
+        (
+            "wav-size.toml",
+            format!(
+                "{}\n[record]\nsignals = [\"amplifier_v\"]\nformats = [\"wav\"]\n",
+                MINIMAL.replace("duration_s = 1", "duration_s = 30000")
+            ),
+            &[":9:", "record.signals", "4 GiB"],
+        ),
         (
             "negative-speed.toml",
             MINIMAL.replace("speed_rpm = 600", "speed_rpm = -600"),

@@ -2,7 +2,7 @@
 
 use super::chain_part::{analyser_plan, chain_plan, record_plan};
 use super::file::ScenarioFile;
-use super::plan::Plan;
+use super::plan::{Plan, RecordPlan, WavFormat};
 use super::rig_part::{rig_params, schedule_and_measures};
 use super::source::ScenarioSource;
 
@@ -47,6 +47,12 @@ pub fn build(src: &ScenarioSource, command_line: CommandLine) -> anyhow::Result<
         Some(r) => Some(record_plan(src, r, chain.slip_rings.is_some())?),
         None => None,
     };
+    if let (Some(r), Some(written)) = (&record, &file.record)
+        && r.wav.is_some()
+    {
+        let span = written.signals.first().map_or(0..0, |s| s.span());
+        check_wav_size(src, r, duration_s * rate_hz, span)?;
+    }
     Ok(Plan {
         name: file.name,
         description: file.description,
@@ -66,4 +72,33 @@ pub fn build(src: &ScenarioSource, command_line: CommandLine) -> anyhow::Result<
         analyser,
         record,
     })
+}
+
+/// Largest WAV data a RIFF size field can describe (bytes), less room for the header.
+const WAV_LIMIT_BYTES: f64 = 4_294_967_295.0 - 1024.0;
+
+/// A WAV recording must fit the 4 GiB a RIFF file can hold (hound does not guard it).
+fn check_wav_size(
+    src: &ScenarioSource,
+    record: &RecordPlan,
+    samples: f64,
+    span: std::ops::Range<usize>,
+) -> anyhow::Result<()> {
+    let bytes_per_sample = match record.wav {
+        Some(WavFormat::Int24) => 3.0,
+        _ => 4.0,
+    };
+    let frames = (samples / record.decimate as f64).ceil();
+    let bytes = frames * record.signals.len() as f64 * bytes_per_sample;
+    if bytes > WAV_LIMIT_BYTES {
+        return Err(src.error(
+            span,
+            "record.signals",
+            format!(
+                "a WAV file of {:.1} GiB: beyond the 4 GiB a WAV file can hold; record fewer signals, raise decimate, shorten the run, or use csv/uff58",
+                bytes / 1_073_741_824.0
+            ),
+        ));
+    }
+    Ok(())
 }
