@@ -1,24 +1,12 @@
 //! `testrig sweep` and `testrig merge`: shards that merge into the unsharded table, resume,
 //! SLURM job arrays, and what a case measures.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+mod common;
 
+use std::path::Path;
+
+use common::{folder, testrig};
 use testrig::sweep::Shard;
-
-fn testrig(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_testrig"))
-        .args(args)
-        .output()
-        .expect("the binary runs")
-}
-
-fn folder(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("testrig-sweep-{name}-{}", std::process::id()));
-    std::fs::remove_dir_all(&dir).ok();
-    std::fs::create_dir_all(&dir).expect("temp folder");
-    dir
-}
 
 /// A small grid: two speeds, two loads, two tooth counts; short cases.
 const SWEEP: &str = r#"name = "small"

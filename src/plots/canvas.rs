@@ -2,7 +2,11 @@
 
 use std::path::{Path, PathBuf};
 
+use std::ops::Range;
+
+use plotters::chart::MeshStyle;
 use plotters::coord::Shift;
+use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 
 const FONT: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
@@ -29,4 +33,51 @@ pub fn png_and_svg(
 /// A plotters error as an anyhow error naming what was drawn.
 pub fn draw_error<E: std::fmt::Debug>(what: &'static str) -> impl Fn(E) -> anyhow::Error {
     move |error| anyhow::anyhow!("drawing the {what}: {error:?}")
+}
+
+/// Linear axes in x and y, as every plot here draws.
+pub type Axes<'a, DB> = ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+
+/// Clears `root` to white and sets up `title` and axes over `x` × `y`.
+pub fn axes<'a, DB: DrawingBackend>(
+    root: &'a DrawingArea<DB, Shift>,
+    title: &str,
+    x: Range<f64>,
+    y: Range<f64>,
+) -> anyhow::Result<Axes<'a, DB>> {
+    let err = draw_error("axes");
+    root.fill(&WHITE).map_err(&err)?;
+    ChartBuilder::on(root)
+        .caption(title, ("sans-serif", 20))
+        .margin(12)
+        .x_label_area_size(44)
+        .y_label_area_size(70)
+        .build_cartesian_2d(x, y)
+        .map_err(err)
+}
+
+/// Draws the grid and the axis descriptions; `style` adjusts the grid (label counts,
+/// grid lines left out).
+pub fn mesh<DB: DrawingBackend>(
+    chart: &mut Axes<DB>,
+    (x_desc, y_desc): (&str, &str),
+    style: impl FnOnce(&mut MeshStyle<RangedCoordf64, RangedCoordf64, DB>),
+) -> anyhow::Result<()> {
+    let mut mesh = chart.configure_mesh();
+    mesh.x_desc(x_desc)
+        .y_desc(y_desc)
+        .label_style(("sans-serif", 14));
+    style(&mut mesh);
+    mesh.draw().map_err(draw_error("grid"))
+}
+
+/// Draws the legend of the labelled series.
+pub fn legend<'a, DB: DrawingBackend + 'a>(chart: &mut Axes<'a, DB>) -> anyhow::Result<()> {
+    chart
+        .configure_series_labels()
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .label_font(("sans-serif", 13))
+        .draw()
+        .map_err(draw_error("legend"))
 }

@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::canvas::{draw_error, png_and_svg};
+use super::canvas::{axes, draw_error, mesh, png_and_svg};
 
 /// The lines of one speed.
 #[derive(Clone, Debug, PartialEq)]
@@ -42,21 +42,15 @@ fn draw<DB: DrawingBackend>(
 ) -> anyhow::Result<()> {
     let err = draw_error("frequency map");
     let xmax = speeds.iter().map(|s| s.running_hz).fold(1.0, f64::max) * 1.05;
-    root.fill(&WHITE).map_err(&err)?;
-    let mut chart = ChartBuilder::on(&root)
-        .caption(title, ("sans-serif", 20))
-        .margin(12)
-        .x_label_area_size(44)
-        .y_label_area_size(60)
-        .build_cartesian_2d(0.0..xmax, 0.0..fmax_hz)
-        .map_err(&err)?;
-    chart
-        .configure_mesh()
-        .x_desc("input frequency: running speed (rev/s)")
-        .y_desc("output frequency (Hz)")
-        .label_style(("sans-serif", 14))
-        .draw()
-        .map_err(&err)?;
+    let mut chart = axes(&root, title, 0.0..xmax, 0.0..fmax_hz)?;
+    mesh(
+        &mut chart,
+        (
+            "input frequency: running speed (rev/s)",
+            "output frequency (Hz)",
+        ),
+        |_| {},
+    )?;
     let grey = RGBColor(160, 160, 160);
     for &f in natural_hz.iter().filter(|f| **f < fmax_hz) {
         chart

@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::canvas::{draw_error, png_and_svg};
+use super::canvas::{axes, draw_error, legend, mesh, png_and_svg};
 
 /// One cell: (rpm, load N m, period; 0 for aperiodic).
 pub type RegimeCell = (f64, f64, usize);
@@ -62,21 +62,13 @@ fn draw<DB: DrawingBackend>(
     let half_r = 0.45 * smallest_step(cells.iter().map(|c| c.0)).unwrap_or(100.0);
     let half_l = 0.45 * smallest_step(cells.iter().map(|c| c.1)).unwrap_or(1.0);
     let (pad_r, pad_l) = (2.0 * half_r, 2.0 * half_l);
-    root.fill(&WHITE).map_err(&err)?;
-    let mut chart = ChartBuilder::on(&root)
-        .caption(title, ("sans-serif", 20))
-        .margin(12)
-        .x_label_area_size(44)
-        .y_label_area_size(60)
-        .build_cartesian_2d((r0 - pad_r)..(r1 + pad_r), (l0 - pad_l)..(l1 + pad_l))
-        .map_err(&err)?;
-    chart
-        .configure_mesh()
-        .x_desc("speed (rev/min)")
-        .y_desc("load (N m)")
-        .label_style(("sans-serif", 14))
-        .draw()
-        .map_err(&err)?;
+    let mut chart = axes(
+        &root,
+        title,
+        (r0 - pad_r)..(r1 + pad_r),
+        (l0 - pad_l)..(l1 + pad_l),
+    )?;
+    mesh(&mut chart, ("speed (rev/min)", "load (N m)"), |_| {})?;
     let mut periods: Vec<usize> = cells.iter().map(|c| c.2).collect();
     periods.sort_unstable();
     periods.dedup();
@@ -106,13 +98,7 @@ fn draw<DB: DrawingBackend>(
             .label(label)
             .legend(move |(x, y)| Rectangle::new([(x, y - 5), (x + 12, y + 5)], c.filled()));
     }
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .label_font(("sans-serif", 13))
-        .draw()
-        .map_err(&err)?;
+    legend(&mut chart)?;
     root.present().map_err(&err)?;
     Ok(())
 }

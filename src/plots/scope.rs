@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::canvas::{draw_error, png_and_svg};
+use super::canvas::{axes, draw_error, mesh, png_and_svg};
 
 /// Writes `base.png` and `base.svg` of a trace of (time from trigger in s, divisions),
 /// with the scales in the title.
@@ -30,23 +30,10 @@ fn draw<DB: DrawingBackend>(
 ) -> anyhow::Result<()> {
     let err = draw_error("scope trace");
     let width_ms = 10.0 * seconds_per_div * 1e3;
-    root.fill(&WHITE).map_err(&err)?;
-    let mut chart = ChartBuilder::on(&root)
-        .caption(title, ("sans-serif", 20))
-        .margin(12)
-        .x_label_area_size(44)
-        .y_label_area_size(60)
-        .build_cartesian_2d(0.0..width_ms, -4.0..4.0)
-        .map_err(&err)?;
-    chart
-        .configure_mesh()
-        .x_labels(11)
-        .y_labels(9)
-        .x_desc("time from trigger (ms)")
-        .y_desc("divisions")
-        .label_style(("sans-serif", 14))
-        .draw()
-        .map_err(&err)?;
+    let mut chart = axes(&root, title, 0.0..width_ms, -4.0..4.0)?;
+    mesh(&mut chart, ("time from trigger (ms)", "divisions"), |m| {
+        m.x_labels(11).y_labels(9);
+    })?;
     chart
         .draw_series(LineSeries::new(
             trace.iter().map(|&(t, d)| (t * 1e3, d)),

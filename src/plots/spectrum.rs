@@ -7,7 +7,7 @@ use instruments::Line;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::canvas::{draw_error, png_and_svg};
+use super::canvas::{axes, draw_error, mesh, png_and_svg};
 
 /// A spectrum to draw.
 #[derive(Clone, Copy, Debug)]
@@ -56,22 +56,17 @@ fn draw<DB: DrawingBackend>(
         top - 100.0
     };
     let fmax = plot.lines.last().map_or(1.0, |l| l.frequency_hz.max(1.0));
-    root.fill(&WHITE).map_err(&err)?;
-    let mut chart = ChartBuilder::on(&root)
-        .caption(plot.title, ("sans-serif", 20))
-        .margin(12)
-        .x_label_area_size(44)
-        .y_label_area_size(70)
-        .build_cartesian_2d(0.0..fmax, bottom..top)
-        .map_err(&err)?;
-    chart
-        .configure_mesh()
-        .disable_x_mesh()
-        .x_desc("frequency (Hz)")
-        .y_desc(format!("power (dB re 1 {}² rms)", plot.unit))
-        .label_style(("sans-serif", 14))
-        .draw()
-        .map_err(&err)?;
+    let mut chart = axes(&root, plot.title, 0.0..fmax, bottom..top)?;
+    mesh(
+        &mut chart,
+        (
+            "frequency (Hz)",
+            &format!("power (dB re 1 {}² rms)", plot.unit),
+        ),
+        |m| {
+            m.disable_x_mesh();
+        },
+    )?;
     if let Some(running) = plot.running_hz.filter(|f| *f > 0.0) {
         draw_orders(&mut chart, running, fmax, (bottom, top)).map_err(&err)?;
     }

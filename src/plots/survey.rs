@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::canvas::{draw_error, png_and_svg};
+use super::canvas::{axes, draw_error, legend, mesh, png_and_svg};
 
 /// One reading of the survey.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -54,21 +54,8 @@ fn draw<DB: DrawingBackend>(
     let mut speeds: Vec<f64> = points.iter().map(|p| p.speed_rpm).collect();
     speeds.sort_by(f64::total_cmp);
     speeds.dedup();
-    root.fill(&WHITE).map_err(&err)?;
-    let mut chart = ChartBuilder::on(&root)
-        .caption(title, ("sans-serif", 20))
-        .margin(12)
-        .x_label_area_size(44)
-        .y_label_area_size(70)
-        .build_cartesian_2d(low..high, 0.0..top)
-        .map_err(&err)?;
-    chart
-        .configure_mesh()
-        .x_desc("load (N m)")
-        .y_desc("RMS strain (µε)")
-        .label_style(("sans-serif", 14))
-        .draw()
-        .map_err(&err)?;
+    let mut chart = axes(&root, title, low..high, 0.0..top)?;
+    mesh(&mut chart, ("load (N m)", "RMS strain (µε)"), |_| {})?;
     chart
         .draw_series(LineSeries::new(
             [(low, low.abs() * per_nm), (0.0, 0.0), (high, high * per_nm)],
@@ -96,13 +83,7 @@ fn draw<DB: DrawingBackend>(
             .draw_series(curve.iter().map(|&p| Circle::new(p, 3, colour.filled())))
             .map_err(&err)?;
     }
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.8))
-        .border_style(BLACK)
-        .label_font(("sans-serif", 13))
-        .draw()
-        .map_err(&err)?;
+    legend(&mut chart)?;
     root.present().map_err(&err)?;
     Ok(())
 }

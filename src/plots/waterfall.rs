@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::canvas::{draw_error, png_and_svg};
+use super::canvas::{axes, draw_error, mesh, png_and_svg};
 
 /// One spectrum of the waterfall.
 #[derive(Clone, Debug, PartialEq)]
@@ -57,22 +57,22 @@ fn draw<DB: DrawingBackend>(
         .iter()
         .flat_map(|t| t.lines.iter().map(|l| 10.0 * l.1.max(1e-30).log10()))
         .fold(f64::NEG_INFINITY, f64::max);
-    root.fill(&WHITE).map_err(&err)?;
-    let mut chart = ChartBuilder::on(&root)
-        .caption(title, ("sans-serif", 20))
-        .margin(12)
-        .x_label_area_size(44)
-        .y_label_area_size(70)
-        .build_cartesian_2d(0.0..fmax, (low - spacing * 0.2)..(high + 2.5 * spacing))
-        .map_err(&err)?;
-    chart
-        .configure_mesh()
-        .disable_mesh()
-        .x_desc("frequency (Hz)")
-        .y_desc(format!("speed (rev/min); each trace {RANGE_DB} dB tall"))
-        .label_style(("sans-serif", 14))
-        .draw()
-        .map_err(&err)?;
+    let mut chart = axes(
+        &root,
+        title,
+        0.0..fmax,
+        (low - spacing * 0.2)..(high + 2.5 * spacing),
+    )?;
+    mesh(
+        &mut chart,
+        (
+            "frequency (Hz)",
+            &format!("speed (rev/min); each trace {RANGE_DB} dB tall"),
+        ),
+        |m| {
+            m.disable_mesh();
+        },
+    )?;
     for t in traces {
         let scale = 2.5 * spacing / RANGE_DB;
         let points = t.lines.iter().map(|&(f, p)| {

@@ -1,6 +1,7 @@
 //! Scenario files (TOML): what a rehearsal runs, checked with errors at file, line and field.
 
 pub mod build;
+pub mod chain_file;
 pub mod chain_part;
 pub mod file;
 pub mod overrides;

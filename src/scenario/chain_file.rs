@@ -1,0 +1,330 @@
+//! The measuring chain and the analyser as a scenario (or sweep) file writes them:
+//! `[chain.*]` and `[analyser]`, with defaults.
+
+use serde::Deserialize;
+use toml::Spanned;
+
+use super::values::{Finite, NonNegative, Positive};
+
+/// `[chain]`: the measuring chain. Stages left out take their defaults; slip rings and the
+/// scope are wired only when their table is present.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ChainFile {
+    /// Strain gauges and bridge.
+    #[serde(default)]
+    pub gauges: GaugesFile,
+    /// Carrier amplifier.
+    #[serde(default)]
+    pub amplifier: AmplifierFile,
+    /// Slip rings between the shaft and the amplifier.
+    pub slip_rings: Option<SlipRingsFile>,
+    /// Anti-alias low-pass before the analyser.
+    #[serde(default)]
+    pub filter: FilterFile,
+    /// The RMS voltmeter on the amplifier output.
+    #[serde(default)]
+    pub meter: MeterFile,
+    /// Tacho and its digital voltmeter.
+    #[serde(default)]
+    pub tacho: TachoFile,
+    /// Storage oscilloscope on the amplifier output.
+    pub scope: Option<ScopeFile>,
+}
+
+/// `[chain.gauges]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct GaugesFile {
+    /// full, half or quarter.
+    #[serde(default = "default_arrangement")]
+    pub arrangement: Spanned<String>,
+    /// Nominal gauge factor.
+    #[serde(default = "default_gauge_factor")]
+    pub gauge_factor: Positive,
+    /// Relative error of the actual gauge factor.
+    #[serde(default = "default_zero")]
+    pub gauge_factor_error: Finite,
+    /// Bridge excitation (V).
+    #[serde(default = "default_excitation")]
+    pub excitation_v: Positive,
+}
+
+impl Default for GaugesFile {
+    fn default() -> Self {
+        Self {
+            arrangement: default_arrangement(),
+            gauge_factor: default_gauge_factor(),
+            gauge_factor_error: default_zero(),
+            excitation_v: default_excitation(),
+        }
+    }
+}
+
+fn default_arrangement() -> Spanned<String> {
+    Spanned::new(0..0, "full".into())
+}
+
+fn default_gauge_factor() -> Positive {
+    Positive(2.1)
+}
+
+fn default_zero() -> Finite {
+    Finite(0.0)
+}
+
+fn default_excitation() -> Positive {
+    Positive(5.0)
+}
+
+/// `[chain.amplifier]`: the carrier amplifier and its calibration.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct AmplifierFile {
+    /// Microstrain of the calibration (the thesis: 200 µε ...).
+    #[serde(default = "default_cal_microstrain")]
+    pub calibration_microstrain: Positive,
+    /// ... giving this output (V) (the thesis: 3 V).
+    #[serde(default = "default_cal_v")]
+    pub calibration_v: Positive,
+    /// Carrier frequency (Hz), below a quarter of the stream rate.
+    #[serde(default = "default_carrier")]
+    pub carrier_hz: Spanned<Positive>,
+    /// Corner of the output low-pass (Hz).
+    #[serde(default = "default_output_lowpass")]
+    pub output_lowpass_hz: Spanned<Positive>,
+}
+
+impl Default for AmplifierFile {
+    fn default() -> Self {
+        Self {
+            calibration_microstrain: default_cal_microstrain(),
+            calibration_v: default_cal_v(),
+            carrier_hz: default_carrier(),
+            output_lowpass_hz: default_output_lowpass(),
+        }
+    }
+}
+
+fn default_cal_microstrain() -> Positive {
+    Positive(200.0)
+}
+
+fn default_cal_v() -> Positive {
+    Positive(3.0)
+}
+
+fn default_carrier() -> Spanned<Positive> {
+    Spanned::new(0..0, Positive(10_000.0))
+}
+
+fn default_output_lowpass() -> Spanned<Positive> {
+    Spanned::new(0..0, Positive(5_000.0))
+}
+
+/// `[chain.slip_rings]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SlipRingsFile {
+    /// RMS of the broadband relative resistance fluctuation.
+    pub broadband_rms: NonNegative,
+    /// Once-per-revolution relative fluctuation.
+    pub per_rev_amplitude: NonNegative,
+    /// Additive contact noise (V rms).
+    pub contact_noise_v_rms: NonNegative,
+}
+
+/// `[chain.filter]`: the anti-alias low-pass.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FilterFile {
+    /// none, butterworth or bessel.
+    #[serde(default = "default_filter_kind")]
+    pub kind: Spanned<String>,
+    /// Order 1–12.
+    #[serde(default = "default_filter_order")]
+    pub order: Spanned<usize>,
+    /// Cut-off (Hz), below the stream's Nyquist frequency.
+    #[serde(default = "default_filter_cutoff")]
+    pub cutoff_hz: Spanned<Positive>,
+}
+
+impl Default for FilterFile {
+    fn default() -> Self {
+        Self {
+            kind: default_filter_kind(),
+            order: default_filter_order(),
+            cutoff_hz: default_filter_cutoff(),
+        }
+    }
+}
+
+fn default_filter_kind() -> Spanned<String> {
+    Spanned::new(0..0, "butterworth".into())
+}
+
+fn default_filter_order() -> Spanned<usize> {
+    Spanned::new(0..0, 8)
+}
+
+fn default_filter_cutoff() -> Spanned<Positive> {
+    Spanned::new(0..0, Positive(2_000.0))
+}
+
+/// `[chain.meter]`: the RMS voltmeter.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MeterFile {
+    /// average (the HP 400E, RMS-calibrated for sines) or true-rms.
+    #[serde(default = "default_detector")]
+    pub detector: Spanned<String>,
+    /// Detector time constant (s).
+    #[serde(default = "default_meter_tau")]
+    pub tau_s: Positive,
+    /// Corner (Hz) of the AC coupling (the 400E is an AC meter, specified from 10 Hz); 0
+    /// couples DC, so the static strain is read too.
+    #[serde(default = "default_coupling")]
+    pub ac_coupling_hz: Spanned<NonNegative>,
+}
+
+impl Default for MeterFile {
+    fn default() -> Self {
+        Self {
+            detector: default_detector(),
+            tau_s: default_meter_tau(),
+            ac_coupling_hz: default_coupling(),
+        }
+    }
+}
+
+fn default_coupling() -> Spanned<NonNegative> {
+    Spanned::new(0..0, NonNegative(1.0))
+}
+
+fn default_detector() -> Spanned<String> {
+    Spanned::new(0..0, "average".into())
+}
+
+fn default_meter_tau() -> Positive {
+    Positive(0.2)
+}
+
+/// `[chain.tacho]`: the digital voltmeter reading the tacho.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TachoFile {
+    /// Gate (s).
+    #[serde(default = "default_gate")]
+    pub gate_s: Positive,
+    /// RMS converter time constant (s).
+    #[serde(default = "default_dvm_tau")]
+    pub tau_s: Positive,
+    /// Display resolution (V).
+    #[serde(default = "default_resolution")]
+    pub resolution_v: Positive,
+}
+
+impl Default for TachoFile {
+    fn default() -> Self {
+        Self {
+            gate_s: default_gate(),
+            tau_s: default_dvm_tau(),
+            resolution_v: default_resolution(),
+        }
+    }
+}
+
+fn default_gate() -> Positive {
+    Positive(1.0)
+}
+
+fn default_dvm_tau() -> Positive {
+    Positive(0.3)
+}
+
+fn default_resolution() -> Positive {
+    Positive(0.1)
+}
+
+/// `[chain.scope]`: the storage oscilloscope, one single sweep armed at each measurement.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ScopeFile {
+    /// V per division.
+    pub volts_per_div: Positive,
+    /// s per division (ten divisions).
+    pub seconds_per_div: Positive,
+    /// Trigger level (V).
+    #[serde(default = "default_zero")]
+    pub trigger_v: Finite,
+    /// rising or falling.
+    #[serde(default = "default_slope")]
+    pub slope: Spanned<String>,
+    /// Corner (Hz) of the AC input coupling (a Tektronix AC input: about 1.6 Hz); 0 for DC.
+    #[serde(default = "default_scope_coupling")]
+    pub ac_coupling_hz: Spanned<NonNegative>,
+}
+
+fn default_scope_coupling() -> Spanned<NonNegative> {
+    Spanned::new(0..0, NonNegative(1.6))
+}
+
+fn default_slope() -> Spanned<String> {
+    Spanned::new(0..0, "rising".into())
+}
+
+/// `[analyser]`: the HP 5451C with its ADC, started at each measurement.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct AnalyserFile {
+    /// Block size N (a power of two).
+    #[serde(default = "default_analyser_block")]
+    pub block: Spanned<usize>,
+    /// Top of the band (Hz).
+    pub fmax_hz: Spanned<Positive>,
+    /// thesis (fs = 2 Fmax, N/2 lines) or 2.56.
+    #[serde(default = "default_sampling")]
+    pub sampling: Spanned<String>,
+    /// uniform, hanning or flattop.
+    #[serde(default = "default_window")]
+    pub window: Spanned<String>,
+    /// Spectra averaged (linear: sum, then divide).
+    #[serde(default = "default_averages")]
+    pub averages: Spanned<usize>,
+    /// Overlap of successive blocks (%).
+    #[serde(default)]
+    pub overlap_pct: Option<Spanned<NonNegative>>,
+    /// ADC resolution (bits).
+    #[serde(default = "default_bits")]
+    pub bits: Spanned<u32>,
+    /// ADC full scale ±range (V).
+    #[serde(default = "default_range")]
+    pub range_v: Positive,
+    /// Triangular dither of ±1 LSB.
+    #[serde(default)]
+    pub dither: bool,
+}
+
+fn default_analyser_block() -> Spanned<usize> {
+    Spanned::new(0..0, 1024)
+}
+
+fn default_sampling() -> Spanned<String> {
+    Spanned::new(0..0, "thesis".into())
+}
+
+fn default_window() -> Spanned<String> {
+    Spanned::new(0..0, "hanning".into())
+}
+
+fn default_averages() -> Spanned<usize> {
+    Spanned::new(0..0, 10)
+}
+
+fn default_bits() -> Spanned<u32> {
+    Spanned::new(0..0, 12)
+}
+
+fn default_range() -> Positive {
+    Positive(5.0)
+}

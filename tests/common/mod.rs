@@ -1,0 +1,120 @@
+//! Helpers the end-to-end tests of `testrig run` and `testrig sweep` share.
+#![allow(dead_code)]
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+pub fn testrig(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_testrig"))
+        .args(args)
+        .output()
+        .expect("the binary runs")
+}
+
+pub fn folder(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("testrig-e2e-{name}-{}", std::process::id()));
+    std::fs::remove_dir_all(&dir).ok();
+    std::fs::create_dir_all(&dir).expect("temp folder");
+    dir
+}
+
+pub fn scenario(name: &str) -> String {
+    format!("{}/scenarios/{name}.toml", env!("CARGO_MANIFEST_DIR"))
+}
+
+/// Runs `scenario_path` unpaced with `extra` arguments into a fresh folder; checks success.
+pub fn run_ok(tag: &str, scenario_path: &str, extra: &[&str]) -> (PathBuf, serde_json::Value) {
+    let out = folder(tag);
+    let mut args = vec!["run", scenario_path, "--out", out.to_str().expect("utf-8")];
+    if !extra.contains(&"--pace") {
+        args.extend(["--pace", "max"]);
+    }
+    args.extend(extra);
+    let output = testrig(&args);
+    assert!(
+        output.status.success(),
+        "{tag}: {}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let manifest = read_manifest(&out);
+    (out, manifest)
+}
+
+pub fn read_manifest(out: &Path) -> serde_json::Value {
+    let text = std::fs::read_to_string(out.join("manifest.json")).expect("manifest.json");
+    serde_json::from_str(&text).expect("JSON")
+}
+
+/// Every file the manifest lists exists and is not empty; no `.partial` file is left.
+pub fn check_files(out: &Path, manifest: &serde_json::Value) {
+    for f in manifest["files"].as_array().expect("files") {
+        let path = out.join(f.as_str().expect("name"));
+        let size = std::fs::metadata(&path).map(|m| m.len()).unwrap_or(0);
+        assert!(size > 0, "{} missing or empty", path.display());
+    }
+    for entry in std::fs::read_dir(out).expect("folder") {
+        let name = entry.expect("entry").file_name();
+        assert!(
+            !name.to_string_lossy().contains(".partial"),
+            "{name:?} left half-written"
+        );
+    }
+}
+
+pub fn has_file(manifest: &serde_json::Value, name: &str) -> bool {
+    manifest["files"]
+        .as_array()
+        .expect("files")
+        .iter()
+        .any(|f| f == name)
+}
+
+/// (frequency, power, alias flag) of each line of a spectrum CSV.
+pub fn spectrum(path: &Path) -> Vec<(f64, f64, bool)> {
+    let text = std::fs::read_to_string(path).expect("spectrum CSV");
+    text.lines()
+        .filter(|l| !l.starts_with('#'))
+        .skip(1)
+        .map(|l| {
+            let cols: Vec<&str> = l.split(',').collect();
+            (
+                cols[0].parse().expect("frequency"),
+                cols[1].parse().expect("power"),
+                !cols[2].is_empty(),
+            )
+        })
+        .collect()
+}
+
+/// Rows of a CSV file as maps from header to text.
+pub fn csv_rows(path: &Path) -> Vec<std::collections::HashMap<String, String>> {
+    let mut reader = csv::Reader::from_path(path).expect("CSV");
+    let header: Vec<String> = reader
+        .headers()
+        .expect("header")
+        .iter()
+        .map(String::from)
+        .collect();
+    reader
+        .records()
+        .map(|r| {
+            let r = r.expect("row");
+            header
+                .iter()
+                .cloned()
+                .zip(r.iter().map(String::from))
+                .collect()
+        })
+        .collect()
+}
+
+pub fn number(row: &std::collections::HashMap<String, String>, key: &str) -> f64 {
+    row[key].parse().expect("number")
+}
+
+/// `--set` before each of `items`, then `extra`.
+pub fn sets<'a>(items: &[&'a str], extra: &[&'a str]) -> Vec<&'a str> {
+    let mut args: Vec<&str> = items.iter().flat_map(|item| ["--set", *item]).collect();
+    args.extend(extra);
+    args
+}
