@@ -55,7 +55,7 @@ pub use scope::{Scope, ScopeSettings, Slope, SweepMode};
 pub use slip_ring::{SlipRing, SlipRingSettings};
 pub use spectrum::{Spectrum, SpectrumEstimator};
 pub use strain::ShaftStrain;
-pub use tacho::{DigitalVoltmeter, Tacho};
+pub use tacho::{CROMPTON_PARKINSON_V_PER_RPM, DigitalVoltmeter, Tacho};
 pub use truth::AliasTruth;
 pub use voltmeter::{Detector, Voltmeter};
 pub use window::Window;

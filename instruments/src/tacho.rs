@@ -4,6 +4,9 @@
 use crate::block::Block;
 use crate::error::{InstrumentError, require_positive};
 
+/// The rig's tacho: 40 V rms per 1000 rev/min (V rms per rev/min).
+pub const CROMPTON_PARKINSON_V_PER_RPM: f64 = 0.04;
+
 /// An AC tacho-generator on the motor shaft: input the shaft speed (rad/s), output its
 /// terminal voltage (V). Amplitude and frequency are proportional to speed:
 /// v = √2 · k · n · sin ψ · (1 + r sin θ), n in rev/min, ψ' = (poles/2)·ω the electrical
@@ -26,7 +29,7 @@ impl Tacho {
     pub fn crompton_parkinson(rate_hz: f64) -> Result<Self, InstrumentError> {
         require_positive("tacho", "sample rate", rate_hz)?;
         Ok(Self {
-            volts_rms_per_rpm: 0.04,
+            volts_rms_per_rpm: CROMPTON_PARKINSON_V_PER_RPM,
             poles: 4,
             ripple: 0.0,
             step_s: 1.0 / rate_hz,

@@ -2,11 +2,9 @@
 //! the experimenter reads off the rack. Drawn only on a terminal.
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use instruments::CROMPTON_PARKINSON_V_PER_RPM;
 
 use super::status::Status;
-
-/// Tacho volts (rms) per rev/min.
-const TACHO_V_PER_RPM: f64 = 0.04;
 
 /// The console display.
 pub struct Console {
@@ -37,7 +35,7 @@ impl Console {
             "t {:.1} s | tacho {:.1} V = {:.0} rev/min | meter {:.3} V | analyser {n} of {of} | overloads {} | overruns {}",
             status.simulated_samples as f64 / self.rate_hz,
             status.dvm_v,
-            status.dvm_v / TACHO_V_PER_RPM,
+            status.dvm_v / CROMPTON_PARKINSON_V_PER_RPM,
             status.meter_v,
             status.adc_overloads,
             status.overruns,

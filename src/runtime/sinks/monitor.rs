@@ -6,6 +6,7 @@
 
 use std::path::{Path, PathBuf};
 
+use instruments::CROMPTON_PARKINSON_V_PER_RPM;
 use serde::Serialize;
 
 use super::measure_clock::MeasureClock;
@@ -18,8 +19,6 @@ use crate::scenario::{Measure, Plan};
 
 /// Length of the truth window before each reading (s).
 pub const TRUTH_WINDOW_S: f64 = 1.0;
-/// Tacho volts (rms) per rev/min: the Crompton Parkinson's 40 V per 1000 rev/min.
-const TACHO_V_PER_RPM: f64 = 0.04;
 
 /// One reading of the rack.
 #[derive(Clone, Debug, Serialize)]
@@ -138,7 +137,7 @@ impl MonitorSink {
             speed_set_rpm: m.speed_rpm,
             load_set_nm: m.load_nm,
             dvm_v,
-            dvm_rpm: dvm_v / TACHO_V_PER_RPM,
+            dvm_rpm: dvm_v / CROMPTON_PARKINSON_V_PER_RPM,
             meter_v,
             meter_microstrain: meter_v / self.volts_per_microstrain,
             true_torque_mean_nm: mean,

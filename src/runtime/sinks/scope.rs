@@ -2,6 +2,7 @@
 //! each stored sweep is written as CSV (time, volts) and drawn as PNG and SVG.
 
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 use instruments::{AcCoupling, Block, Scope, ScopeSettings};
 
@@ -23,7 +24,6 @@ pub struct ScopeSink {
     clock: MeasureClock,
     armed: Option<(usize, Scope)>,
     coupling: Option<AcCoupling>,
-    coupled: Vec<f64>,
     scratch: Vec<f64>,
     files: Vec<PathBuf>,
     untriggered: Vec<usize>,
@@ -47,7 +47,6 @@ impl ScopeSink {
         };
         Ok(Self {
             coupling,
-            coupled: Vec::new(),
             settings,
             rate_hz: plan.rate_hz,
             input,
@@ -115,13 +114,13 @@ impl ScopeSink {
 impl Sink for ScopeSink {
     fn consume(&mut self, frame: &Frame) -> anyhow::Result<()> {
         let raw = &frame.channels[self.input];
-        let x: Vec<f64> = match &mut self.coupling {
+        let x: Arc<[f64]> = match &mut self.coupling {
             Some(c) => {
-                self.coupled.resize(raw.len(), 0.0);
-                c.process(raw, &mut self.coupled);
-                std::mem::take(&mut self.coupled)
+                let mut coupled = vec![0.0; raw.len()];
+                c.process(raw, &mut coupled);
+                coupled.into()
             }
-            None => raw.to_vec(),
+            None => Arc::clone(raw),
         };
         let mut offset = 0;
         while let Some((at, index)) = self.clock.next_within(frame.start_sample, x.len()) {
@@ -129,9 +128,7 @@ impl Sink for ScopeSink {
             self.arm(index)?;
             offset = at;
         }
-        self.watch(&x[offset..])?;
-        self.coupled = x;
-        Ok(())
+        self.watch(&x[offset..])
     }
 
     fn finish(mut self: Box<Self>) -> anyhow::Result<SinkReport> {
