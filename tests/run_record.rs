@@ -62,7 +62,14 @@ load_nm = 2.712
 #[test]
 fn bad_input_is_named_by_file_line_and_field_without_a_panic() {
     let dir = folder("bad");
-    let cases: [(&str, String, &[&str]); 7] = [
+    let cases: [(&str, String, &[&str]); 8] = [
+        (
+            "decimate.toml",
+            format!(
+                "{MINIMAL}\n[record]\ndecimate = 100000000\nsignals = [\"amplifier_v\"]\nformats = [\"wav\"]\n"
+            ),
+            &[":9:", "record.decimate", "whole sample rate"],
+        ),
         (
             "wav-size.toml",
             format!(

@@ -5,6 +5,7 @@ use super::file::ScenarioFile;
 use super::plan::{Plan, RecordPlan, WavFormat};
 use super::rig_part::{rig_params, schedule_and_measures};
 use super::source::ScenarioSource;
+use super::values::Positive;
 
 /// Run-time choices from the command line that override the file.
 #[derive(Clone, Copy, Debug, Default)]
@@ -18,7 +19,7 @@ pub struct CommandLine {
 /// Reads, parses and checks the scenario source into a plan.
 pub fn build(src: &ScenarioSource, command_line: CommandLine) -> anyhow::Result<Plan> {
     let file: ScenarioFile = src.parse()?;
-    let rate_hz = file.rate_hz.get_ref().0;
+    let rate_hz = stream_rate_hz(src, &file.rate_hz)?;
     for (value, field) in [
         (&file.block_samples, "block_samples"),
         (&file.queue_blocks, "queue_blocks"),
@@ -50,6 +51,17 @@ pub fn build(src: &ScenarioSource, command_line: CommandLine) -> anyhow::Result<
     if let (Some(r), Some(written)) = (&record, &file.record)
         && r.wav.is_some()
     {
+        let recorded_hz = rate_hz / r.decimate as f64;
+        if recorded_hz < 1.0 || recorded_hz.fract() != 0.0 || recorded_hz > f64::from(u32::MAX) {
+            return Err(src.error(
+                written.decimate.span(),
+                "record.decimate",
+                format!(
+                    "{rate_hz} Hz / {} = {recorded_hz} Hz: a WAV file needs a whole sample rate of at least 1 Hz",
+                    r.decimate
+                ),
+            ));
+        }
         let span = written.signals.first().map_or(0..0, |s| s.span());
         check_wav_size(src, r, duration_s * rate_hz, span)?;
     }
@@ -72,6 +84,25 @@ pub fn build(src: &ScenarioSource, command_line: CommandLine) -> anyhow::Result<
         analyser,
         record,
     })
+}
+
+/// Slowest stream rate a scenario accepts (Hz): the plant's own lower bound.
+pub const MIN_RATE_HZ: f64 = 100.0;
+/// Fastest stream rate a scenario accepts (Hz): the plant's own upper bound.
+pub const MAX_RATE_HZ: f64 = 1.0e7;
+
+/// The `rate_hz` of a scenario or sweep, checked against the plant's bounds.
+pub fn stream_rate_hz(src: &ScenarioSource, rate: &toml::Spanned<Positive>) -> anyhow::Result<f64> {
+    let rate_hz = rate.get_ref().0;
+    if (MIN_RATE_HZ..=MAX_RATE_HZ).contains(&rate_hz) {
+        Ok(rate_hz)
+    } else {
+        Err(src.error(
+            rate.span(),
+            "rate_hz",
+            format!("{rate_hz} Hz: the stream rate lies in [{MIN_RATE_HZ}, {MAX_RATE_HZ}] Hz"),
+        ))
+    }
 }
 
 /// Largest WAV data a RIFF size field can describe (bytes), less room for the header.

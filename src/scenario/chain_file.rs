@@ -253,7 +253,7 @@ pub struct ScopeFile {
     /// V per division.
     pub volts_per_div: Positive,
     /// s per division (ten divisions).
-    pub seconds_per_div: Positive,
+    pub seconds_per_div: Spanned<Positive>,
     /// Trigger level (V).
     #[serde(default = "default_zero")]
     pub trigger_v: Finite,

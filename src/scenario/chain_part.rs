@@ -185,12 +185,13 @@ fn scope_settings(
     )?;
     let settings = ScopeSettings {
         volts_per_div: s.volts_per_div.0,
-        seconds_per_div: s.seconds_per_div.0,
+        seconds_per_div: s.seconds_per_div.get_ref().0,
         trigger_v: s.trigger_v.0,
         slope,
         mode: SweepMode::Single,
     };
-    Scope::new(settings, rate_hz).map_err(|e| src.error(0..0, "chain.scope", e))?;
+    Scope::new(settings, rate_hz)
+        .map_err(|e| src.error(s.seconds_per_div.span(), "chain.scope", e))?;
     let coupling = s.ac_coupling_hz.get_ref().0;
     if coupling > 0.0 {
         AcCoupling::new(coupling, rate_hz)

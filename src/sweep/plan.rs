@@ -2,6 +2,7 @@
 
 use rig::RigParams;
 
+use crate::scenario::build::stream_rate_hz;
 use crate::scenario::chain_part::{analyser_plan, chain_plan};
 use crate::scenario::rig_part::{backlash_shift_m, rig_params};
 use crate::scenario::{AnalyserPlan, ChainPlan, ScenarioSource};
@@ -54,7 +55,7 @@ pub struct Case {
 
 /// Checks `file` (read from `src`) and expands its grid.
 pub fn build_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<SweepPlan> {
-    let rate_hz = file.rate_hz.get_ref().0;
+    let rate_hz = stream_rate_hz(src, &file.rate_hz)?;
     let (preset, base) = rig_params(src, &file.rig)?;
     let chain = chain_plan(src, &file.chain, rate_hz, file.seed)?;
     let analyser = analyser_plan(src, &file.analyser, rate_hz, file.seed)?;
