@@ -281,3 +281,51 @@ fn simulate_with_its_defaults_classifies_a_campaign_point_as_the_campaign_does()
     assert_eq!(json["regime"].as_str(), Some(regime.as_str()));
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn orders_beyond_the_band_are_recorded_as_missing_and_too_short_cases_are_refused() {
+    let dir = folder("edges");
+    let text = "name = \"edges\"\n[grid]\nrpm = [600]\nload_nm = [1.0]\n[case]\nsettle_s = 1\nmeasure_s = 3\n[analyser]\nfmax_hz = 5\nblock = 16\n";
+    let file = dir.join("edges.toml");
+    std::fs::write(&file, text).expect("sweep file");
+    let out = dir.join("out");
+    let ok = testrig(&[
+        "sweep",
+        file.to_str().expect("utf-8"),
+        "--out",
+        out.to_str().expect("utf-8"),
+    ]);
+    assert!(
+        ok.status.success(),
+        "{}",
+        String::from_utf8_lossy(&ok.stderr)
+    );
+    // 600 rev/min runs at 10 Hz, beyond a 5 Hz band: no order line, written as NaN.
+    let table = std::fs::read_to_string(out.join("cases.csv")).expect("cases.csv");
+    assert!(
+        table
+            .lines()
+            .nth(1)
+            .is_some_and(|row| row.contains(",NaN,NaN,NaN,NaN,false,")),
+        "{table}"
+    );
+    std::fs::write(
+        &file,
+        text.replace("measure_s = 3", "measure_s = 1")
+            .replace("fmax_hz = 5\nblock = 16", "fmax_hz = 200"),
+    )
+    .expect("sweep file");
+    let short = testrig(&[
+        "sweep",
+        file.to_str().expect("utf-8"),
+        "--out",
+        out.to_str().expect("utf-8"),
+    ]);
+    let stderr = String::from_utf8_lossy(&short.stderr);
+    assert_eq!(short.status.code(), Some(1));
+    assert!(
+        stderr.contains("edges.toml:7:") && stderr.contains("case.measure_s"),
+        "{stderr}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -88,11 +88,11 @@ pub struct AmplifierFile {
     #[serde(default = "default_cal_v")]
     pub calibration_v: Positive,
     /// Carrier frequency (Hz), below a quarter of the stream rate.
-    #[serde(default = "default_carrier")]
-    pub carrier_hz: Spanned<Positive>,
+    /// Left out: 10 kHz, or a fifth of the stream rate where that is lower.
+    pub carrier_hz: Option<Spanned<Positive>>,
     /// Corner of the output low-pass (Hz).
-    #[serde(default = "default_output_lowpass")]
-    pub output_lowpass_hz: Spanned<Positive>,
+    /// Left out: half the carrier frequency.
+    pub output_lowpass_hz: Option<Spanned<Positive>>,
 }
 
 impl Default for AmplifierFile {
@@ -100,8 +100,8 @@ impl Default for AmplifierFile {
         Self {
             calibration_microstrain: default_cal_microstrain(),
             calibration_v: default_cal_v(),
-            carrier_hz: default_carrier(),
-            output_lowpass_hz: default_output_lowpass(),
+            carrier_hz: None,
+            output_lowpass_hz: None,
         }
     }
 }
@@ -112,14 +112,6 @@ fn default_cal_microstrain() -> Positive {
 
 fn default_cal_v() -> Positive {
     Positive(3.0)
-}
-
-fn default_carrier() -> Spanned<Positive> {
-    Spanned::new(0..0, Positive(10_000.0))
-}
-
-fn default_output_lowpass() -> Spanned<Positive> {
-    Spanned::new(0..0, Positive(5_000.0))
 }
 
 /// `[chain.slip_rings]`.

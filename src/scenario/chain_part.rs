@@ -13,6 +13,9 @@ use super::plan::{AnalyserPlan, ChainPlan, RecordPlan, WavFormat};
 use super::source::ScenarioSource;
 use crate::signal_catalog;
 
+/// Carrier frequency when the scenario gives none and the stream allows it (Hz).
+pub const DEFAULT_CARRIER_HZ: f64 = 10_000.0;
+
 /// The chain's settings, each checked by building the instrument once.
 pub fn chain_plan(
     src: &ScenarioSource,
@@ -66,17 +69,29 @@ fn carrier_settings(
     rate_hz: f64,
 ) -> anyhow::Result<CarrierSettings> {
     let a = &chain.amplifier;
+    let carrier_hz = a
+        .carrier_hz
+        .as_ref()
+        .map_or(DEFAULT_CARRIER_HZ.min(rate_hz / 5.0), |c| c.get_ref().0);
     let settings = CarrierSettings {
-        carrier_hz: a.carrier_hz.get_ref().0,
-        output_lowpass_hz: a.output_lowpass_hz.get_ref().0,
+        carrier_hz,
+        output_lowpass_hz: a
+            .output_lowpass_hz
+            .as_ref()
+            .map_or(carrier_hz / 2.0, |l| l.get_ref().0),
         gain: CarrierSettings::calibrated_gain(
             a.calibration_microstrain.0,
             a.calibration_v.0,
             bridge.output_v(1.0),
         ),
     };
+    let span = [&a.carrier_hz, &a.output_lowpass_hz]
+        .into_iter()
+        .flatten()
+        .next()
+        .map_or(0..0, Spanned::span);
     CarrierDemodulator::new(settings, rate_hz)
-        .map_err(|e| src.error(a.carrier_hz.span(), "chain.amplifier", e))?;
+        .map_err(|e| src.error(span, "chain.amplifier", e))?;
     Ok(settings)
 }
 

@@ -44,10 +44,10 @@ impl ScenarioSource {
     }
 
     /// An error at `span` of the text about `field`: `FILE:LINE:COLUMN: field: message`.
-    /// A span of 0..0 marks a value the file left out (a default).
+    /// A span of 0..0 (a value the file left out, or a table as a whole) names no line.
     pub fn error(&self, span: Range<usize>, field: &str, message: impl Display) -> anyhow::Error {
         if span == (0..0) {
-            return anyhow!("{}: {field} (default): {message}", self.path.display());
+            return anyhow!("{}: {field}: {message}", self.path.display());
         }
         let (line, column) = self.line_column(span.start);
         anyhow!(

@@ -35,12 +35,16 @@ pub struct CaseResult {
     /// k of period-k, 0 when aperiodic.
     pub period: usize,
     /// Power of the half-order line (V² rms at the amplifier output).
+    #[serde(deserialize_with = "null_as_nan")]
     pub half_order: f64,
     /// Power of the first-order line.
+    #[serde(deserialize_with = "null_as_nan")]
     pub first_order: f64,
     /// Power of the second-order line.
+    #[serde(deserialize_with = "null_as_nan")]
     pub second_order: f64,
     /// Height of the half-order line above the lines around it (dB).
+    #[serde(deserialize_with = "null_as_nan")]
     pub half_order_db: f64,
     /// Whether the half-order line stands out (by the sweep's `line_db`).
     pub half_order_present: bool,
@@ -62,6 +66,11 @@ pub struct CaseResult {
     pub spectrum: Vec<(f64, f64)>,
     /// The lines that stand out: (Hz, V² rms).
     pub peaks: Vec<(f64, f64)>,
+}
+
+/// Reads a number that JSON holds as null (serde_json writes NaN so) back as NaN.
+fn null_as_nan<'de, D: serde::Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
+    Option::<f64>::deserialize(d).map(|v| v.unwrap_or(f64::NAN))
 }
 
 /// Runs `case` of `plan`.

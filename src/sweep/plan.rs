@@ -59,6 +59,14 @@ pub fn build_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<Swe
     let (preset, base) = rig_params(src, &file.rig)?;
     let chain = chain_plan(src, &file.chain, rate_hz, file.seed)?;
     let analyser = analyser_plan(src, &file.analyser, rate_hz, file.seed)?;
+    let block_s = analyser.settings.block as f64 / analyser.settings.sample_rate_hz();
+    if file.case.measure_s.get_ref().0 < block_s {
+        return Err(src.error(
+            file.case.measure_s.span(),
+            "case.measure_s",
+            format!("shorter than one analyser block ({block_s} s): no spectrum could be taken"),
+        ));
+    }
     let grid = &file.grid;
     if grid.rpm.is_empty() || grid.load_nm.is_empty() {
         return Err(src.error(0..0, "grid", "rpm and load_nm each need at least one value"));
