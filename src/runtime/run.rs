@@ -19,7 +19,7 @@ use super::sinks::monitor::MonitorSink;
 use super::sinks::recorder::RecorderSink;
 use super::sinks::scope::ScopeSink;
 use super::sinks::{Sink, SinkReport};
-use super::stages::build_stages;
+use super::stages::{NamedStage, build_stages};
 use super::status::SharedStatus;
 use super::wiring::{channel, run_sink, run_stage};
 use crate::scenario::{Measure, Plan};
@@ -95,42 +95,14 @@ pub fn run(plan: &Plan, options: &RunOptions) -> anyhow::Result<RunResult> {
     let started = Instant::now();
     let console = Console::new(total_samples, plan.rate_hz, options.console);
     let errors = Mutex::new(Vec::new());
-    let (plant, sink_reports) = std::thread::scope(|scope| {
-        let (plant_tx, mut input) = channel(plan.queue_blocks);
-        let plant = scope.spawn(move || run_plant(job, plant_tx));
-        let (sink_outputs, sink_inputs): (Vec<_>, Vec<_>) =
-            sinks.iter().map(|_| channel(plan.queue_blocks)).unzip();
-        let mut sink_outputs = Some(sink_outputs);
-        let count = stages.len();
-        for (i, stage) in stages.into_iter().enumerate() {
-            let (outputs, next) = if i + 1 == count {
-                (sink_outputs.take().unwrap_or_default(), None)
-            } else {
-                let (tx, rx) = channel(plan.queue_blocks);
-                (vec![tx], Some(rx))
-            };
-            let stage_input = input;
-            scope.spawn(move || run_stage(stage, stage_input, outputs));
-            match next {
-                Some(rx) => input = rx,
-                None => break,
-            }
-        }
-        let stop = &options.stop;
-        let errors = &errors;
-        let handles: Vec<_> = sinks
-            .into_iter()
-            .zip(sink_inputs)
-            .map(|((name, sink), rx)| scope.spawn(move || run_sink(name, sink, rx, stop, errors)))
-            .collect();
-        while !plant.is_finished() {
-            console.show(&status.snapshot());
-            std::thread::sleep(Duration::from_millis(100));
-        }
-        let plant = plant.join();
-        let reports: Vec<SinkReport> = handles.into_iter().filter_map(|h| h.join().ok()).collect();
-        (plant, reports)
-    });
+    let threads = Threads {
+        queue_blocks: plan.queue_blocks,
+        stop: &options.stop,
+        errors: &errors,
+        console: &console,
+        status: &status,
+    };
+    let (plant, sink_reports) = threads.run(job, stages, sinks);
     console.finish();
     let plant = plant.map_err(|_| anyhow::anyhow!("the plant's thread panicked"))?;
     let (cpu_after, peak_rss_mib) = cpu_s_and_peak_rss_mib();
@@ -144,6 +116,65 @@ pub fn run(plan: &Plan, options: &RunOptions) -> anyhow::Result<RunResult> {
         peak_rss_mib,
         errors,
     })
+}
+
+/// What the threads of a run share.
+struct Threads<'a> {
+    queue_blocks: usize,
+    stop: &'a AtomicBool,
+    errors: &'a Mutex<Vec<String>>,
+    console: &'a Console,
+    status: &'a SharedStatus,
+}
+
+type PlantOutcome = std::thread::Result<PlantReport>;
+
+impl Threads<'_> {
+    /// Spawns the plant, a thread per stage (each feeding the next, the last feeding every
+    /// sink) and a thread per sink; draws the console until the plant is done; joins all.
+    fn run(
+        &self,
+        job: PlantJob,
+        stages: Vec<NamedStage>,
+        sinks: Vec<NamedSink>,
+    ) -> (PlantOutcome, Vec<SinkReport>) {
+        std::thread::scope(|scope| {
+            let (plant_tx, mut input) = channel(self.queue_blocks);
+            let plant = scope.spawn(move || run_plant(job, plant_tx));
+            let (sink_outputs, sink_inputs): (Vec<_>, Vec<_>) =
+                sinks.iter().map(|_| channel(self.queue_blocks)).unzip();
+            let mut sink_outputs = Some(sink_outputs);
+            let count = stages.len();
+            for (i, stage) in stages.into_iter().enumerate() {
+                let (outputs, next) = if i + 1 == count {
+                    (sink_outputs.take().unwrap_or_default(), None)
+                } else {
+                    let (tx, rx) = channel(self.queue_blocks);
+                    (vec![tx], Some(rx))
+                };
+                let stage_input = input;
+                scope.spawn(move || run_stage(stage, stage_input, outputs));
+                match next {
+                    Some(rx) => input = rx,
+                    None => break,
+                }
+            }
+            let handles: Vec<_> = sinks
+                .into_iter()
+                .zip(sink_inputs)
+                .map(|((name, sink), rx)| {
+                    scope.spawn(move || run_sink(name, sink, rx, self.stop, self.errors))
+                })
+                .collect();
+            while !plant.is_finished() {
+                self.console.show(&self.status.snapshot());
+                std::thread::sleep(Duration::from_millis(100));
+            }
+            let plant = plant.join();
+            let reports = handles.into_iter().filter_map(|h| h.join().ok()).collect();
+            (plant, reports)
+        })
+    }
 }
 
 /// The measurements the sinks work to: the scenario's, or one at the start.
