@@ -5,7 +5,7 @@ mod common;
 
 use std::path::Path;
 
-use common::{folder, testrig};
+use common::{folder, sets, testrig};
 use testrig::sweep::Shard;
 
 /// A small grid: two speeds, two loads, two tooth counts; short cases.
@@ -186,34 +186,35 @@ fn a_slurm_job_array_picks_its_shard_and_the_flag_wins() {
     );
 }
 
-#[test]
-fn the_shipped_campaign_runs_shortened_and_reports_against_the_thesis() {
-    let dir = folder("campaign");
-    let out = dir.join("out");
-    let campaign = format!(
+/// Runs the shipped campaign into `out` with `--set` for each of `items`; checks success.
+fn campaign(out: &Path, items: &[&str]) {
+    let file = format!(
         "{}/scenarios/thesis-campaign.toml",
         env!("CARGO_MANIFEST_DIR")
     );
-    let output = testrig(&[
-        "sweep",
-        &campaign,
-        "--out",
-        out.to_str().expect("utf-8"),
-        "--set",
-        "grid.rpm=[600, 1300]",
-        "--set",
-        "grid.load_nm=[2.712, 5.424]",
-        "--set",
-        "case.settle_s=2",
-        "--set",
-        "case.measure_s=4",
-        "--set",
-        "analyser.averages=1",
-    ]);
+    let mut args = vec!["sweep", &file, "--out", out.to_str().expect("utf-8")];
+    args.extend(sets(items, &[]));
+    let output = testrig(&args);
     assert!(
         output.status.success(),
         "{}",
         String::from_utf8_lossy(&output.stderr)
+    );
+}
+
+#[test]
+fn the_shipped_campaign_runs_shortened_and_reports_against_the_thesis() {
+    let dir = folder("campaign");
+    let out = dir.join("out");
+    campaign(
+        &out,
+        &[
+            "grid.rpm=[600, 1300]",
+            "grid.load_nm=[2.712, 5.424]",
+            "case.settle_s=2",
+            "case.measure_s=4",
+            "analyser.averages=1",
+        ],
     );
     let report = std::fs::read_to_string(out.join("report.md")).expect("report.md");
     assert!(
@@ -238,25 +239,7 @@ fn simulate_with_its_defaults_classifies_a_campaign_point_as_the_campaign_does()
     // the window `simulate` classifies after its default 30 s of settling.
     let dir = folder("agree");
     let out = dir.join("out");
-    let campaign = format!(
-        "{}/scenarios/thesis-campaign.toml",
-        env!("CARGO_MANIFEST_DIR")
-    );
-    let output = testrig(&[
-        "sweep",
-        &campaign,
-        "--out",
-        out.to_str().expect("utf-8"),
-        "--set",
-        "grid.rpm=[1300]",
-        "--set",
-        "grid.load_nm=[2.712]",
-    ]);
-    assert!(
-        output.status.success(),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
+    campaign(&out, &["grid.rpm=[1300]", "grid.load_nm=[2.712]"]);
     let table = std::fs::read_to_string(out.join("cases.csv")).expect("cases.csv");
     let regime = table
         .lines()
