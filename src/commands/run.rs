@@ -8,7 +8,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use anyhow::{Context, bail};
 use testrig::runtime::manifest::Ending;
 use testrig::runtime::{Pace, RunOptions, RunResult, run as run_plan, write_manifest};
-use testrig::scenario::{CommandLine, ScenarioSource, apply_override, build};
+use testrig::scenario::{CommandLine, ScenarioSource, build};
 
 use crate::cli::RunArgs;
 
@@ -23,10 +23,7 @@ pub fn run(args: &RunArgs) -> anyhow::Result<ExitCode> {
     {
         bail!("--duration {d}: a simulated length > 0 s");
     }
-    let mut source = ScenarioSource::read(&args.scenario)?;
-    for item in &args.overrides {
-        source.text = apply_override(&source.text, item)?;
-    }
+    let source = ScenarioSource::read_with(&args.scenario, &args.overrides)?;
     let plan = build(
         &source,
         CommandLine {

@@ -4,7 +4,7 @@ use std::io::IsTerminal;
 
 use anyhow::bail;
 use rig::RigChains;
-use testrig::scenario::{ScenarioSource, apply_override};
+use testrig::scenario::ScenarioSource;
 use testrig::sweep::file::SweepFile;
 use testrig::sweep::{Shard, SweepMeta, SweepOptions, build_sweep, run_sweep};
 
@@ -15,10 +15,7 @@ pub fn run(args: &SweepArgs) -> anyhow::Result<()> {
         bail!("--jobs 0: at least one worker");
     }
     let shard = Shard::choose(args.shard.as_deref(), |k| std::env::var(k).ok())?;
-    let mut source = ScenarioSource::read(&args.sweep)?;
-    for item in &args.overrides {
-        source.text = apply_override(&source.text, item)?;
-    }
+    let source = ScenarioSource::read_with(&args.sweep, &args.overrides)?;
     let file: SweepFile = source.parse_as()?;
     let plan = build_sweep(&source, &file)?;
     let base = plan.cases.first().map(|c| c.params.clone());

@@ -7,6 +7,7 @@ use std::path::{Path, PathBuf};
 use anyhow::anyhow;
 
 use super::file::ScenarioFile;
+use super::overrides::apply_override;
 
 /// A scenario file as read from disk.
 #[derive(Clone, Debug)]
@@ -26,6 +27,15 @@ impl ScenarioSource {
             path: path.to_path_buf(),
             text,
         })
+    }
+
+    /// Reads `path` and applies each `--set KEY=VALUE` of `overrides` to its text, in order.
+    pub fn read_with(path: &Path, overrides: &[String]) -> anyhow::Result<Self> {
+        let mut source = Self::read(path)?;
+        for item in overrides {
+            source.text = apply_override(&source.text, item)?;
+        }
+        Ok(source)
     }
 
     /// Parses the text as a scenario; unknown keys and out-of-range values are errors at
