@@ -203,7 +203,8 @@ pub fn mode_events(
         list.push((EventKind::ZoneEnd, SparseRow::new(&angle), 1.0));
         list.push((EventKind::ZoneStart, SparseRow::new(&angle).negated(), -1.0));
     }
-    if flags.tooth_shifting {
+    // Apart, a tooth pass changes nothing: the plant catches up with it at the next contact.
+    if flags.tooth_shifting && mode.mesh != MeshMode::Apart {
         list.push((EventKind::ToothPass, SparseRow::new(&angle), 1.0));
     }
     list.push((EventKind::Revolution, SparseRow::new(&angle), 1.0));
@@ -274,7 +275,7 @@ pub fn first_crossing(coeffs: &[f64]) -> Option<f64> {
         let s_b = j as f64 * width;
         let (value_b, slope_b) = poly_eval(coeffs, s_b);
         if value_b > 0.0 {
-            return Some(refine(coeffs, s_a, s_b));
+            return Some(refine(coeffs, (s_a, value_a), (s_b, value_b)));
         }
         // An interior maximum above zero needs p' to turn from + to −, and (the quarter
         // being near-cubic) a Hermite cubic through the ends that comes near zero.
@@ -283,8 +284,9 @@ pub fn first_crossing(coeffs: &[f64]) -> Option<f64> {
             && may_cross(value_a, slope_a * width, value_b, slope_b * width)
         {
             let s_max = slope_root(coeffs, s_a, s_b);
-            if poly_eval(coeffs, s_max).0 > 0.0 {
-                return Some(refine(coeffs, s_a, s_max));
+            let value_max = poly_eval(coeffs, s_max).0;
+            if value_max > 0.0 {
+                return Some(refine(coeffs, (s_a, value_a), (s_max, value_max)));
             }
         }
         s_a = s_b;
@@ -313,9 +315,16 @@ fn slope_root(coeffs: &[f64], mut a: f64, mut b: f64) -> f64 {
     0.5 * (a + b)
 }
 
-/// Narrows [a, b] with p(a) ≤ 0 < p(b) to adjacent floats (Newton steps kept inside the bracket).
-fn refine(coeffs: &[f64], mut a: f64, mut b: f64) -> f64 {
-    let mut s = 0.5 * (a + b);
+/// Narrows [a, b] with p(a) = `value_a` ≤ 0 < p(b) = `value_b` to within 64 ulps of the
+/// crossing (far below any time the model resolves): Newton steps from the secant point,
+/// kept inside the bracket. Returns its right end, where p > 0.
+fn refine(coeffs: &[f64], (mut a, value_a): (f64, f64), (mut b, value_b): (f64, f64)) -> f64 {
+    let secant = a + (b - a) * (value_a / (value_a - value_b));
+    let mut s = if secant > a && secant < b {
+        secant
+    } else {
+        0.5 * (a + b)
+    };
     for _ in 0..100 {
         let (value, slope) = poly_eval(coeffs, s);
         if value > 0.0 {
@@ -323,30 +332,29 @@ fn refine(coeffs: &[f64], mut a: f64, mut b: f64) -> f64 {
         } else {
             a = s;
         }
+        let close = 16.0 * f64::EPSILON * b;
+        if b - a <= 4.0 * close {
+            return b;
+        }
+        // Newton inside the bracket; where it lands within `close` of the end it started
+        // from on a rising p (as where p is exactly 0 at a), a probe just inside that end
+        // closes the bracket at once; otherwise bisection.
         let newton = s - value / slope;
-        let next = if newton > a && newton < b {
+        s = if newton > a + close && newton < b - close {
             newton
+        } else if slope > 0.0 && s == a && newton <= a + close {
+            a + close
+        } else if slope > 0.0 && s == b && newton >= b - close {
+            b - close
         } else {
             0.5 * (a + b)
         };
-        // Converged when the next iterate moves by a few ulps or leaves no float between a and b.
-        if next <= a || next >= b || (next - s).abs() <= 4.0 * f64::EPSILON * s {
-            break;
-        }
-        s = next;
     }
-    // Tighten the bracket around the converged iterate, then bisect to adjacent floats.
-    let delta = 16.0 * f64::EPSILON * s.abs().max(f64::MIN_POSITIVE);
-    if s - delta > a && poly_eval(coeffs, s - delta).0 <= 0.0 {
-        a = s - delta;
-    }
-    if s + delta < b && poly_eval(coeffs, s + delta).0 > 0.0 {
-        b = s + delta;
-    }
-    loop {
+    // Should Newton fail to close in, bisection finishes the job.
+    while b - a > 64.0 * f64::EPSILON * b {
         let mid = 0.5 * (a + b);
         if mid <= a || mid >= b {
-            return b;
+            break;
         }
         if poly_eval(coeffs, mid).0 > 0.0 {
             b = mid;
@@ -354,6 +362,7 @@ fn refine(coeffs: &[f64], mut a: f64, mut b: f64) -> f64 {
             a = mid;
         }
     }
+    b
 }
 
 /// Whether a cubic through (0, g0, d0) and (1, g1, d1) (values and slopes in s) may exceed 0 in (0, 1).

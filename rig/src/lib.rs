@@ -39,6 +39,7 @@ pub mod regime;
 pub mod schedule;
 pub mod signals;
 pub mod steady;
+pub mod stride;
 pub mod system_cache;
 
 pub use error::RigError;
@@ -53,5 +54,5 @@ pub use presets::{PRESET_NAMES, preset};
 pub use records::{Flank, Impact, RevolutionSample};
 pub use regime::{Regime, RegimeCriteria, classify, classify_scaled};
 pub use schedule::{Schedule, SetPoints, Track};
-pub use signals::{COLUMN_NAMES, INTERMEDIATE_SHAFT, Sample, SignalBlock};
+pub use signals::{COLUMN_NAMES, INTERMEDIATE_SHAFT, SignalBlock};
 pub use steady::{SteadySummary, SteadyWindow, run_steady};

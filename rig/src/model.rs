@@ -92,13 +92,15 @@ impl ModelConstants {
     /// Elastic torques of the three shafts K(Xi − Xj) (N m), positive when transmitting drive torque.
     pub fn shaft_torques_nm(&self, x: &[f64]) -> [f64; 3] {
         let mut torque = [0.0; 3];
-        for (t, (&(i, j), &k)) in torque
-            .iter_mut()
-            .zip(SHAFTS.iter().zip(&self.shaft_stiffness_nm_per_rad))
-        {
+        for (t, (&(i, j), &k)) in torque.iter_mut().zip(self.shafts()) {
             *t = k * (x[X0 + i] - x[X0 + j]);
         }
         torque
+    }
+
+    /// The three shafts in order: (body i, body j) of K(Xi − Xj) and the stiffness K (N m/rad).
+    pub fn shafts(&self) -> impl Iterator<Item = (&(usize, usize), &f64)> {
+        SHAFTS.iter().zip(&self.shaft_stiffness_nm_per_rad)
     }
 
     /// Output of the PI speed controller before the limit (N m).

@@ -6,6 +6,7 @@ use nalgebra::DMatrix;
 use crate::events::EventFn;
 use crate::layout::{Layout, N_MECH, UNIT, V0, VF};
 use crate::mode::Mode;
+use crate::stride::{Stride, stride_steps};
 
 /// Highest Taylor order kept; with ρ·h ≤ 0.5 the remainder of order 16 is below 1e-17.
 pub const TAYLOR_ORDER: usize = 16;
@@ -23,6 +24,9 @@ pub const FUSED_ROWS: usize = N_MECH + 2 * MAX_ROW_EVENTS;
 /// Result of one fused step.
 pub type FusedRows = [f64; FUSED_ROWS];
 
+/// Columns of a fused step matrix, one per augmented state (zero beyond the layout's length).
+pub type FusedColumns = [[f64; FUSED_ROWS]; Layout::MAX_LEN];
+
 /// Taylor vectors v_k = (A δ)^k u₀ / k!, so that u(s δ) = Σ_k v_k s^k for s ∈ [0, 1].
 pub type TaylorVectors = [[f64; Layout::MAX_LEN]; TAYLOR_ORDER + 1];
 
@@ -34,13 +38,15 @@ pub struct ModeSystem {
     pub events: Vec<EventFn>,
     /// Columns of the fused step matrix: the mechanical rows of e^{A h}, then each row
     /// event's value and slope forms times e^{A h}; one per augmented state (zero beyond `len`).
-    step_columns: [[f64; FUSED_ROWS]; Layout::MAX_LEN],
+    step_columns: FusedColumns,
+    /// Strides of several steps at once, for the fast path.
+    pub stride: Stride,
     /// Indices in `events` of the events whose rows the fused step computes.
     pub row_events: Vec<usize>,
     /// Indices in `events` of the angle events (checked from θ2 directly).
     pub angle_events: Vec<usize>,
-    /// Columns of A (rows past `len` zero), for the Taylor expansion.
-    a_columns: [[f64; Layout::MAX_LEN]; Layout::MAX_LEN],
+    /// The nonzero entries of A row by row, for the Taylor expansion.
+    a_rows: SparseRows,
     /// Spectral radius of A (rad/s).
     spectral_radius: f64,
     len: usize,
@@ -51,63 +57,24 @@ impl ModeSystem {
     pub fn new(mode: Mode, a: &DMatrix<f64>, step_s: f64, events: Vec<EventFn>) -> Self {
         let len = a.nrows();
         let rho = spectral_radius(a);
-        let step = balanced_exp(a, step_s, rho);
+        let powers = exp_powers(a, step_s, rho, stride_steps(rho, step_s));
         let (angle_events, row_events): (Vec<usize>, Vec<usize>) =
             (0..events.len()).partition(|&k| events[k].angle_sign != 0.0);
         assert!(
             row_events.len() <= MAX_ROW_EVENTS,
             "a mode has at most {MAX_ROW_EVENTS} mesh and motor switching functions"
         );
-        let n = row_events.len();
-        // Row events sit in fixed slots: values at N_MECH + j, slopes at N_MECH + 4 + j.
-        // An empty slot's value is −1 (the unit state's column), its slope 0: never crossing.
-        let fused_entry = |row: usize, col: usize| -> f64 {
-            let Some(r) = row.checked_sub(N_MECH) else {
-                return step[(row, col)];
-            };
-            let (slot, is_slope) = (r % MAX_ROW_EVENTS, r >= MAX_ROW_EVENTS);
-            match (slot < n, is_slope) {
-                (true, false) => events[row_events[slot]]
-                    .value
-                    .terms
-                    .iter()
-                    .map(|&(i, c)| c * step[(i, col)])
-                    .sum(),
-                (true, true) => events[row_events[slot]]
-                    .slope
-                    .terms
-                    .iter()
-                    .map(|&(i, c)| c * step[(i, col)])
-                    .sum(),
-                (false, false) => -step[(UNIT, col)],
-                (false, true) => 0.0,
-            }
-        };
-        let step_columns = std::array::from_fn(|col| {
-            std::array::from_fn(|row| {
-                if col < len {
-                    fused_entry(row, col)
-                } else {
-                    0.0
-                }
-            })
-        });
-        let a_columns = std::array::from_fn(|col| {
-            std::array::from_fn(|row| {
-                if col < len && row < len {
-                    a[(row, col)]
-                } else {
-                    0.0
-                }
-            })
-        });
+        let step_columns = fused_columns(&powers[0], &events, &row_events);
+        let stride = Stride::new(&powers, &events, &row_events);
+        let a_rows = SparseRows::of(a);
         Self {
             mode,
             events,
             step_columns,
+            stride,
             row_events,
             angle_events,
-            a_columns,
+            a_rows,
             spectral_radius: rho,
             len,
         }
@@ -117,24 +84,7 @@ impl ModeSystem {
     /// (rows 0..12) and the row events' values and slopes there (rows 12..).
     #[inline]
     pub fn step(&self, u: &[f64; Layout::MAX_LEN]) -> FusedRows {
-        match self.len {
-            16 => self.fused_product::<16>(u),
-            18 => self.fused_product::<18>(u),
-            _ => self.fused_product::<{ Layout::MAX_LEN }>(u),
-        }
-    }
-
-    /// The fused product over the first `N` columns (the rest are zero), a fixed shape
-    /// the compiler unrolls into vector multiply-adds.
-    #[inline(always)]
-    fn fused_product<const N: usize>(&self, u: &[f64; Layout::MAX_LEN]) -> FusedRows {
-        let mut out = [0.0; FUSED_ROWS];
-        for (column, &weight) in self.step_columns[..N].iter().zip(&u[..N]) {
-            for (o, &c) in out.iter_mut().zip(column) {
-                *o = c.mul_add(weight, *o);
-            }
-        }
-        out
+        product(&self.step_columns, u, self.len)
     }
 
     /// Values (slots 0..4) and slopes (slots 4..8) of the row events at `u`; an empty
@@ -149,21 +99,18 @@ impl ModeSystem {
         rows
     }
 
-    /// scale·A·u over whole padded columns (vectorised multiply-adds).
+    /// scale·A·u over the nonzero entries of A (each row's terms in column order).
     fn scaled_derivative(
         &self,
         u: &[f64; Layout::MAX_LEN],
         scale: f64,
         out: &mut [f64; Layout::MAX_LEN],
     ) {
-        let mut sum = [0.0; Layout::MAX_LEN];
-        for (column, &weight) in self.a_columns.iter().zip(u) {
-            for (s, &c) in sum.iter_mut().zip(column) {
-                *s = c.mul_add(weight, *s);
-            }
-        }
-        for (o, s) in out.iter_mut().zip(sum) {
-            *o = scale * s;
+        for (o, terms) in out.iter_mut().zip(self.a_rows.rows()) {
+            let sum = terms
+                .iter()
+                .fold(0.0, |sum, &(col, a)| a.mul_add(u[col], sum));
+            *o = scale * sum;
         }
     }
 
@@ -205,12 +152,13 @@ impl ModeSystem {
     }
 }
 
-/// e^{A h} computed on the balanced matrix D⁻¹AD, whose entries are all of order ρ or
-/// less: D = 1 for angles and the controller integral, ρ for speeds, and for each forcing
-/// state (unit, load, harmonics) the scale that brings its column's largest entry to ρ.
-/// The Padé exponential is then accurate to rounding in every entry, not only relative
-/// to the largest (K/J·h ≈ 3000 for the mesh), and the constant forcing adds no bias.
-fn balanced_exp(a: &DMatrix<f64>, step_s: f64, rho: f64) -> DMatrix<f64> {
+/// e^{A k h} for k = 1..=`count`, computed on the balanced matrix D⁻¹AD, whose entries
+/// are all of order ρ or less: D = 1 for angles and the controller integral, ρ for speeds,
+/// and for each forcing state (unit, load, harmonics) the scale that brings its column's
+/// largest entry to ρ. The Padé exponential of the balanced matrix is then accurate to
+/// rounding in every entry, not only relative to the largest (K/J·h ≈ 3000 for the mesh),
+/// and the constant forcing adds no bias; its powers are taken there too.
+pub fn exp_powers(a: &DMatrix<f64>, step_s: f64, rho: f64, count: usize) -> Vec<DMatrix<f64>> {
     let len = a.nrows();
     let rho = rho.max(1.0);
     let mechanical = |i: usize| {
@@ -233,7 +181,17 @@ fn balanced_exp(a: &DMatrix<f64>, step_s: f64, rho: f64) -> DMatrix<f64> {
         .collect();
     let balanced = DMatrix::from_fn(len, len, |r, c| a[(r, c)] * scale[c] / scale[r] * step_s);
     let exp = balanced.exp();
-    DMatrix::from_fn(len, len, |r, c| exp[(r, c)] * scale[r] / scale[c])
+    let mut power = exp.clone();
+    let mut powers = Vec::with_capacity(count);
+    for k in 1..=count {
+        if k > 1 {
+            power = &exp * &power;
+        }
+        powers.push(DMatrix::from_fn(len, len, |r, c| {
+            power[(r, c)] * scale[r] / scale[c]
+        }));
+    }
+    powers
 }
 
 /// Spectral radius of `a` (rad/s): the fastest rate the Taylor expansion must resolve.
@@ -242,4 +200,99 @@ pub fn spectral_radius(a: &DMatrix<f64>) -> f64 {
         .iter()
         .map(|l| l.norm())
         .fold(0.0, f64::max)
+}
+
+/// The nonzero entries of a square matrix, row by row (compressed rows).
+struct SparseRows {
+    /// (column, value) of every nonzero entry, rows one after another.
+    terms: Vec<(usize, f64)>,
+    /// Where each row's terms start in `terms`; one more entry than rows.
+    starts: Vec<usize>,
+}
+
+impl SparseRows {
+    fn of(a: &DMatrix<f64>) -> Self {
+        let mut terms = Vec::new();
+        let mut starts = vec![0];
+        for row in 0..a.nrows() {
+            terms.extend(
+                (0..a.ncols())
+                    .filter(|&col| a[(row, col)] != 0.0)
+                    .map(|col| (col, a[(row, col)])),
+            );
+            starts.push(terms.len());
+        }
+        Self { terms, starts }
+    }
+
+    /// Each row's (column, value) terms in turn.
+    fn rows(&self) -> impl Iterator<Item = &[(usize, f64)]> {
+        self.starts.windows(2).map(|w| &self.terms[w[0]..w[1]])
+    }
+}
+
+/// The fused matrix of the step matrix `step` (e^{A h} for some h): its mechanical rows,
+/// then each row event's value and slope forms times `step`. Row events sit in fixed
+/// slots (values at N_MECH + j, slopes at N_MECH + 4 + j); an empty slot's value is −1
+/// (the unit state's column) and its slope 0, so it never crosses.
+pub fn fused_columns(
+    step: &DMatrix<f64>,
+    events: &[EventFn],
+    row_events: &[usize],
+) -> FusedColumns {
+    let len = step.nrows();
+    let n = row_events.len();
+    let form = |terms: &[(usize, f64)], col: usize| -> f64 {
+        terms.iter().map(|&(i, c)| c * step[(i, col)]).sum()
+    };
+    let fused_entry = |row: usize, col: usize| -> f64 {
+        let Some(r) = row.checked_sub(N_MECH) else {
+            return step[(row, col)];
+        };
+        let (slot, is_slope) = (r % MAX_ROW_EVENTS, r >= MAX_ROW_EVENTS);
+        match (slot < n, is_slope) {
+            (true, false) => form(&events[row_events[slot]].value.terms, col),
+            (true, true) => form(&events[row_events[slot]].slope.terms, col),
+            (false, false) => -step[(UNIT, col)],
+            (false, true) => 0.0,
+        }
+    };
+    std::array::from_fn(|col| {
+        std::array::from_fn(|row| {
+            if col < len {
+                fused_entry(row, col)
+            } else {
+                0.0
+            }
+        })
+    })
+}
+
+/// `columns` times `u` over the first `len` columns (16, 18 or 20): a fixed shape for
+/// each, which the compiler unrolls into vector multiply-adds.
+#[inline]
+pub fn product<const ROWS: usize>(
+    columns: &[[f64; ROWS]; Layout::MAX_LEN],
+    u: &[f64; Layout::MAX_LEN],
+    len: usize,
+) -> [f64; ROWS] {
+    match len {
+        16 => product_of::<ROWS, 16>(columns, u),
+        18 => product_of::<ROWS, 18>(columns, u),
+        _ => product_of::<ROWS, { Layout::MAX_LEN }>(columns, u),
+    }
+}
+
+#[inline(always)]
+fn product_of<const ROWS: usize, const N: usize>(
+    columns: &[[f64; ROWS]; Layout::MAX_LEN],
+    u: &[f64; Layout::MAX_LEN],
+) -> [f64; ROWS] {
+    let mut out = [0.0; ROWS];
+    for (column, &weight) in columns[..N].iter().zip(&u[..N]) {
+        for (o, &c) in out.iter_mut().zip(column) {
+            *o = c.mul_add(weight, *o);
+        }
+    }
+    out
 }

@@ -10,6 +10,16 @@ pub enum Flank {
     Back,
 }
 
+impl Flank {
+    /// +1 for the drive flank, −1 for the back flank: the sign of the torque it transmits.
+    pub fn sign(self) -> f64 {
+        match self {
+            Flank::Drive => 1.0,
+            Flank::Back => -1.0,
+        }
+    }
+}
+
 /// One contact start.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
 pub struct Impact {

@@ -8,6 +8,7 @@ use crate::model::{Frequencies, ModelConstants, system_matrix};
 use crate::options::ContactLaw;
 use crate::propagator::{MAX_RHO_H, ModeSystem, spectral_radius};
 use crate::schedule::Schedule;
+use crate::stride::MAX_STRIDE;
 
 /// Lazily built [`ModeSystem`]s for the current forcing frequencies.
 pub struct SystemCache {
@@ -18,7 +19,8 @@ pub struct SystemCache {
     step_s: f64,
     frequencies: Frequencies,
     systems: Vec<Option<ModeSystem>>,
-    rotations: Vec<(usize, f64, f64)>,
+    /// Rotations of the harmonic pairs by k steps, k = 1..=MAX_STRIDE.
+    rotations: Vec<Vec<(usize, f64, f64)>>,
 }
 
 impl SystemCache {
@@ -84,9 +86,14 @@ impl SystemCache {
         if let Some(osc) = self.layout.osc {
             rotations.push((osc, frequencies.oscillating_load_rad_s));
         }
-        self.rotations = rotations
-            .into_iter()
-            .map(|(i, w)| (i, (w * h).cos(), (w * h).sin()))
+        self.rotations = (1..=MAX_STRIDE)
+            .map(|k| {
+                let span_s = k as f64 * h;
+                rotations
+                    .iter()
+                    .map(|&(i, w)| (i, (w * span_s).cos(), (w * span_s).sin()))
+                    .collect()
+            })
             .collect();
     }
 
@@ -122,6 +129,12 @@ impl SystemCache {
 
     /// Per-step rotations (index of the cos state, cos ωh, sin ωh) of the harmonic pairs.
     pub fn rotations(&self) -> &[(usize, f64, f64)] {
-        &self.rotations
+        &self.rotations[0]
+    }
+
+    /// Rotations of the harmonic pairs by `steps` steps (1..=[`MAX_STRIDE`]): (index of the
+    /// cos state, cos ω·steps·h, sin ω·steps·h).
+    pub fn rotations_by(&self, steps: usize) -> &[(usize, f64, f64)] {
+        &self.rotations[steps - 1]
     }
 }

@@ -4,9 +4,8 @@
 //! set-point change or a re-sync of the harmonic states (the one-at-a-time path in
 //! `advance_step` takes those).
 
-use crate::layout::N_MECH;
-use crate::propagator::{FUSED_ROWS, MAX_ROW_EVENTS};
-use crate::signals::Sample;
+use crate::layout::{Layout, N_MECH};
+use crate::propagator::{FUSED_ROWS, FusedRows, MAX_ROW_EVENTS};
 
 use super::output::within_bounds;
 use super::segments::rotate;
@@ -14,9 +13,9 @@ use super::state::{Plant, RESYNC_STEPS};
 use super::stepping::StepEnds;
 
 impl Plant {
-    /// Fills the leading slots (written only when `RECORD`) with fast-path samples,
-    /// advancing one output period after each; returns how many it took (maybe none).
-    pub(super) fn fast_run<const RECORD: bool>(&mut self, slots: &mut [Sample]) -> usize {
+    /// Takes up to `limit` samples on the fast path (their states stored in the chunk when
+    /// `RECORD`), advancing one output period after each; returns how many it took (maybe none).
+    pub(super) fn fast_run<const RECORD: bool>(&mut self, limit: usize) -> usize {
         let first = self.step_index;
         if self.substeps != 1
             || first.is_multiple_of(RESYNC_STEPS)
@@ -24,31 +23,62 @@ impl Plant {
         {
             return 0;
         }
-        let mut limit = (first / RESYNC_STEPS + 1) * RESYNC_STEPS - first;
+        let mut steps_left = (first / RESYNC_STEPS + 1) * RESYNC_STEPS - first;
         if let Some(end) = self.segment.end_step {
-            limit = limit.min(end - first);
+            steps_left = steps_left.min(end - first);
         }
-        let count = (slots.len() as u64).min(limit) as usize;
+        let count = (limit as u64).min(steps_left) as usize;
         self.cache.ensure(self.mode);
         let system = self.cache.built(self.mode);
         let rotations = self.cache.rotations();
-        let frame = self.frame();
+        let stride = &system.stride;
+        let stride_rotations = self.cache.rotations_by(stride.steps);
+        let (segment_start, segment_phase) = (self.segment.start_step, self.segment.phase_rad);
         let targets = self.angle_targets(system);
         let (speed, h) = (self.segment.set.speed_rad_s(), self.step_s);
         let mut u = self.u;
         let mut edge = self.edge.unwrap_or_else(|| system.row_event_values(&u));
         let mut taken = 0;
+        // After a stride that may switch, single steps up to here.
+        let mut singles_until = 0;
         while taken < count {
             let step = first + taken as u64;
             if !within_bounds(&u) {
                 break;
+            }
+            let phase_rad = segment_phase + speed * ((step - segment_start) as f64 * h);
+            let m = stride.steps;
+            if m > 1 && taken >= singles_until && count - taken >= m {
+                let end = stride.end(&u);
+                let ends = StepEnds {
+                    start: &edge,
+                    end: &end,
+                    u0: &u,
+                    phase_rad,
+                    speed_rad_s: speed,
+                    step_s: m as f64 * h,
+                };
+                if !ends.may_switch(&targets) {
+                    if RECORD {
+                        self.chunk.store(taken, &u);
+                        for k in 1..m {
+                            let (c, s) = rotated(&u, self.cache.rotations_by(k)[0]);
+                            self.chunk
+                                .store_parts(taken + k, &stride.sample(k, &u), c, s);
+                        }
+                    }
+                    take_end(&mut u, &mut edge, &end, stride_rotations);
+                    taken += m;
+                    continue;
+                }
+                singles_until = taken + m;
             }
             let end = system.step(&u);
             let ends = StepEnds {
                 start: &edge,
                 end: &end,
                 u0: &u,
-                phase_rad: frame.phase_rad(step),
+                phase_rad,
                 speed_rad_s: speed,
                 step_s: h,
             };
@@ -56,12 +86,9 @@ impl Plant {
                 break;
             }
             if RECORD {
-                slots[taken] = frame.sample(&u, step);
+                self.chunk.store(taken, &u);
             }
-            u[..N_MECH].copy_from_slice(&end[..N_MECH]);
-            rotate(&mut u, rotations);
-            edge = [0.0; 2 * MAX_ROW_EVENTS];
-            edge.copy_from_slice(&end[N_MECH..FUSED_ROWS]);
+            take_end(&mut u, &mut edge, &end, rotations);
             taken += 1;
         }
         self.u = u;
@@ -69,4 +96,25 @@ impl Plant {
         self.step_index = first + taken as u64;
         taken
     }
+}
+
+/// Moves `u` to the end of a step or stride: its mechanical states from `end`, its
+/// harmonic pairs turned by `rotations`, and the row events there into `edge`.
+#[inline(always)]
+fn take_end(
+    u: &mut [f64; Layout::MAX_LEN],
+    edge: &mut [f64; 2 * MAX_ROW_EVENTS],
+    end: &FusedRows,
+    rotations: &[(usize, f64, f64)],
+) {
+    u[..N_MECH].copy_from_slice(&end[..N_MECH]);
+    rotate(u, rotations);
+    edge.copy_from_slice(&end[N_MECH..FUSED_ROWS]);
+}
+
+/// The harmonic pair at `index` of `u` turned by (cos, sin).
+#[inline(always)]
+fn rotated(u: &[f64; Layout::MAX_LEN], (index, cos, sin): (usize, f64, f64)) -> (f64, f64) {
+    let (c, s) = (u[index], u[index + 1]);
+    (c * cos - s * sin, s * cos + c * sin)
 }

@@ -7,6 +7,7 @@
 //! rounding for ρh ≤ 0.5), the first crossing is found to full precision, the mode
 //! switches there, and the step continues from that instant.
 
+mod chunk;
 mod fast;
 mod output;
 mod segments;

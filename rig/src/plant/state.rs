@@ -16,6 +16,8 @@ use crate::records::{Impact, RevolutionSample};
 use crate::schedule::{Schedule, SetPoints};
 use crate::system_cache::SystemCache;
 
+use super::chunk::StateChunk;
+
 /// Output and set-point timing of a run.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PlantConfig {
@@ -41,9 +43,6 @@ pub const SWITCH_LIMIT: usize = 64;
 /// run is declared blown up: far beyond anything the shafts or gears could bear.
 pub(super) const TWIST_LIMIT_RAD: f64 = 1.0;
 pub(super) const SPEED_LIMIT_RAD_S: f64 = 1.0e4;
-
-/// Samples gathered on the stack before they are appended to a block column by column.
-pub(super) const CHUNK: usize = 64;
 
 /// Internal steps between exact re-syncs of the harmonic states from the phase.
 pub(super) const RESYNC_STEPS: u64 = 4096;
@@ -82,6 +81,8 @@ pub struct Plant {
     pub(super) taylor: Box<TaylorVectors>,
     /// Row events' values and slopes at the current state, when known from the last fast step.
     pub(super) edge: Option<[f64; 2 * MAX_ROW_EVENTS]>,
+    /// States of the samples of the current fast run.
+    pub(super) chunk: Box<StateChunk>,
     pub(super) impacts: Vec<Impact>,
     pub(super) revolutions: Vec<RevolutionSample>,
     pub(super) switch_count: u64,
@@ -149,6 +150,7 @@ impl Plant {
             next_rev_rad: 0.0,
             taylor: Box::new([[0.0; Layout::MAX_LEN]; TAYLOR_ORDER + 1]),
             edge: None,
+            chunk: StateChunk::new(),
             impacts: Vec::new(),
             revolutions: Vec::new(),
             switch_count: 0,

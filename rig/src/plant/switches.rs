@@ -51,7 +51,17 @@ impl Plant {
             Flank::Drive => MeshMode::Drive,
             Flank::Back => MeshMode::Back,
         };
+        self.catch_up_tooth_pass(theta2);
         self.set_mesh(mesh, tau_s);
+    }
+
+    /// Moves the next tooth pass past the teeth that passed while the gears were apart
+    /// (apart, a pass changes nothing, so it is not tracked as an event): the first
+    /// multiple of the pitch above the driving gear's angle `theta2`, never backwards.
+    fn catch_up_tooth_pass(&mut self, theta2: f64) {
+        let pitch = self.geometry.tooth_pitch_rad;
+        let ahead = ((theta2 / pitch).floor() + 1.0) * pitch;
+        self.next_tooth_rad = self.next_tooth_rad.max(ahead);
     }
 
     /// Overlap of `flank` (rad, > 0 when the teeth overlap) and its rate (rad/s) now.
