@@ -114,14 +114,15 @@ impl ModeSystem {
         }
     }
 
-    /// Taylor order whose remainder (ρδ)^(K+1)/(K+1)! is below 1e-18 for a step of `delta_s`.
+    /// Taylor order whose remainder (ρδ)^(K+1)/(K+1)! is below 1e-16 (the rounding of the
+    /// state itself) for a step of `delta_s`.
     pub fn taylor_order(&self, delta_s: f64) -> usize {
         let x = self.spectral_radius * delta_s;
         let mut term = x;
         (1..TAYLOR_ORDER)
             .find(|&k| {
                 term *= x / (k + 1) as f64;
-                term < 1e-18
+                term < 1e-16
             })
             .map_or(TAYLOR_ORDER, |k| k + 1)
             .max(4)

@@ -7,6 +7,7 @@ use crate::model::ModelConstants;
 use crate::signals::SignalBlock;
 
 use super::output::flank_overlap;
+use super::state::Segment;
 
 /// Most samples a run of the fast path stores before they are turned into signals.
 pub(super) const CHUNK: usize = 64;
@@ -56,22 +57,13 @@ impl StateChunk {
 pub(super) struct SampleFrame<'a> {
     pub(super) mc: &'a ModelConstants,
     pub(super) mode: Mode,
-    pub(super) speed_rad_s: f64,
+    pub(super) segment: Segment,
     pub(super) step_s: f64,
-    pub(super) segment_phase_rad: f64,
-    pub(super) segment_start: u64,
     pub(super) tooth_pitch_rad: f64,
     pub(super) teeth: f64,
 }
 
 impl SampleFrame<'_> {
-    /// Set rotation φ (rad) at internal step `step`.
-    #[inline]
-    pub(super) fn phase_rad(&self, step: u64) -> f64 {
-        let elapsed = (step - self.segment_start) as f64 * self.step_s;
-        self.segment_phase_rad + self.speed_rad_s * elapsed
-    }
-
     /// Tooth of the driving gear in mesh at its angle `theta2` (rad), 0..teeth.
     #[inline]
     pub(super) fn tooth_at(&self, theta2: f64) -> u32 {
@@ -87,19 +79,22 @@ impl SampleFrame<'_> {
         first_step: u64,
         out: &mut SignalBlock,
     ) {
+        // Step counts as floats: exact (below 2⁵³), so φ and t are as `phase_rad` gives them.
+        let elapsed = (first_step - self.segment.start_step) as f64;
+        let step = first_step as f64;
         let mut phase = [0.0; CHUNK];
-        for (k, p) in phase[..count].iter_mut().enumerate() {
-            *p = self.phase_rad(first_step + k as u64);
+        let mut time = [0.0; CHUNK];
+        for ((p, t), k) in phase[..count].iter_mut().zip(&mut time).zip(COUNTS) {
+            *p = self.segment.phase_after(elapsed + k, self.step_s);
+            *t = (step + k) * self.step_s;
         }
         let phase = &phase[..count];
         let x = |i: usize| chunk.column(X0 + i, count);
         let v = |i: usize| chunk.column(V0 + i, count);
-        let h = self.step_s;
-        out.time_s
-            .extend((first_step..first_step + count as u64).map(|s| s as f64 * h));
+        out.time_s.extend_from_slice(&time[..count]);
         for i in 0..5 {
             out.angle_rad[i].extend(phase.iter().zip(x(i)).map(|(p, x)| p + x));
-            let omega = self.speed_rad_s;
+            let omega = self.segment.set.speed_rad_s();
             out.speed_rad_s[i].extend(v(i).iter().map(|v| omega + v));
         }
         for (s, (&(i, j), &k)) in self.mc.shafts().enumerate() {
@@ -109,13 +104,26 @@ impl SampleFrame<'_> {
         self.append_motor_torque(chunk, count, out);
         let contact = self.mode.mesh.contact_code();
         out.contact.extend(std::iter::repeat_n(contact, count));
-        let (pitch, teeth) = (self.tooth_pitch_rad, self.teeth);
-        out.tooth.extend(
-            phase
-                .iter()
-                .zip(x(1))
-                .map(|(p, x)| tooth_at(p + x, pitch, teeth)),
-        );
+        self.append_teeth(phase, x(1), out);
+    }
+
+    /// The tooth in mesh at each sample: where the whole pitches below θ2 = φ + X2 are the
+    /// same throughout (the tooth does not change within most runs), one value for all.
+    fn append_teeth(&self, phase: &[f64], x2: &[f64], out: &mut SignalBlock) {
+        let pitch = self.tooth_pitch_rad;
+        let mut pitches = [0.0; CHUNK];
+        for ((n, p), x) in pitches.iter_mut().zip(phase).zip(x2) {
+            *n = ((p + x) / pitch).floor();
+        }
+        let pitches = &pitches[..phase.len()];
+        let first = pitches.first().copied().unwrap_or(0.0);
+        if pitches.iter().all(|&n| n == first) {
+            let tooth = tooth_of_pitches(first, self.teeth);
+            out.tooth.extend(std::iter::repeat_n(tooth, pitches.len()));
+        } else {
+            out.tooth
+                .extend(pitches.iter().map(|&n| tooth_of_pitches(n, self.teeth)));
+        }
     }
 
     /// Mesh torque F_XT (N m): K δ + C δ' of the engaged flank, signed by flank.
@@ -129,7 +137,7 @@ impl SampleFrame<'_> {
             }
         };
         let (k, c) = self.mc.mesh_spring(self.mode.pairs);
-        let omega = self.speed_rad_s;
+        let omega = self.segment.set.speed_rad_s();
         let column = |i| chunk.column(i, count);
         let (x2, x3, v2, v3) = (
             column(X0 + 1),
@@ -163,11 +171,26 @@ impl SampleFrame<'_> {
     }
 }
 
-/// Tooth in mesh (0..teeth) at driving-gear angle `theta2` (rad), for a pitch in rad:
-/// the whole pitches below θ2, modulo the teeth, in floating point (exact for any angle
-/// below 2⁵² pitches).
+/// Tooth in mesh (0..teeth) at driving-gear angle `theta2` (rad), for a pitch in rad.
 #[inline]
 pub(super) fn tooth_at(theta2: f64, pitch_rad: f64, teeth: f64) -> u32 {
-    let pitches = (theta2 / pitch_rad).floor();
+    tooth_of_pitches((theta2 / pitch_rad).floor(), teeth)
+}
+
+/// The tooth after a whole number of pitches (as f64), modulo the teeth, in floating
+/// point (exact for any count below 2⁵²).
+#[inline]
+fn tooth_of_pitches(pitches: f64, teeth: f64) -> u32 {
     (pitches - teeth * (pitches / teeth).floor()) as u32
 }
+
+/// 0, 1, 2, … as floats: the offsets of the samples in a chunk.
+const COUNTS: [f64; CHUNK] = {
+    let mut counts = [0.0; CHUNK];
+    let mut k = 0;
+    while k < CHUNK {
+        counts[k] = k as f64;
+        k += 1;
+    }
+    counts
+};

@@ -33,7 +33,7 @@ impl Plant {
         let rotations = self.cache.rotations();
         let stride = &system.stride;
         let stride_rotations = self.cache.rotations_by(stride.steps);
-        let (segment_start, segment_phase) = (self.segment.start_step, self.segment.phase_rad);
+        let segment = self.segment;
         let targets = self.angle_targets(system);
         let (speed, h) = (self.segment.set.speed_rad_s(), self.step_s);
         let mut u = self.u;
@@ -46,7 +46,7 @@ impl Plant {
             if !within_bounds(&u) {
                 break;
             }
-            let phase_rad = segment_phase + speed * ((step - segment_start) as f64 * h);
+            let phase_rad = segment.phase_after((step - segment.start_step) as f64, h);
             let m = stride.steps;
             if m > 1 && taken >= singles_until && count - taken >= m {
                 let end = stride.end(&u);

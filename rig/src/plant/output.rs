@@ -65,10 +65,8 @@ impl Plant {
         SampleFrame {
             mc: &self.mc,
             mode: self.mode,
-            speed_rad_s: self.segment.set.speed_rad_s(),
+            segment: self.segment,
             step_s: self.step_s,
-            segment_phase_rad: self.segment.phase_rad,
-            segment_start: self.segment.start_step,
             tooth_pitch_rad: self.geometry.tooth_pitch_rad,
             teeth: f64::from(self.params.teeth),
         }

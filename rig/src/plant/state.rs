@@ -57,6 +57,14 @@ pub(super) struct Segment {
     pub(super) set: SetPoints,
 }
 
+impl Segment {
+    /// Set rotation φ (rad) `steps` internal steps of `step_s` into the segment.
+    #[inline(always)]
+    pub(super) fn phase_after(&self, steps: f64, step_s: f64) -> f64 {
+        self.phase_rad + self.set.speed_rad_s() * (steps * step_s)
+    }
+}
+
 /// The five-inertia rig with backlash, advanced in virtual time.
 pub struct Plant {
     pub(super) params: RigParams,
