@@ -20,6 +20,7 @@
 //! # Ok::<(), rig::RigError>(())
 //! ```
 
+pub mod derivative;
 pub mod energy;
 pub mod error;
 pub mod events;

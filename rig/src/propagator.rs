@@ -3,6 +3,7 @@
 
 use nalgebra::DMatrix;
 
+use crate::derivative::Derivative;
 use crate::events::EventFn;
 use crate::layout::{Layout, N_MECH, UNIT, V0, VF};
 use crate::mode::Mode;
@@ -45,8 +46,8 @@ pub struct ModeSystem {
     pub row_events: Vec<usize>,
     /// Indices in `events` of the angle events (checked from θ2 directly).
     pub angle_events: Vec<usize>,
-    /// The nonzero entries of A row by row, for the Taylor expansion.
-    a_rows: SparseRows,
+    /// A·u for the Taylor expansion.
+    derivative: Derivative,
     /// Spectral radius of A (rad/s).
     spectral_radius: f64,
     len: usize,
@@ -66,7 +67,7 @@ impl ModeSystem {
         );
         let step_columns = fused_columns(&powers[0], &events, &row_events);
         let stride = Stride::new(&powers, &events, &row_events);
-        let a_rows = SparseRows::of(a);
+        let derivative = Derivative::of(a);
         Self {
             mode,
             events,
@@ -74,7 +75,7 @@ impl ModeSystem {
             stride,
             row_events,
             angle_events,
-            a_rows,
+            derivative,
             spectral_radius: rho,
             len,
         }
@@ -99,21 +100,6 @@ impl ModeSystem {
         rows
     }
 
-    /// scale·A·u over the nonzero entries of A (each row's terms in column order).
-    fn scaled_derivative(
-        &self,
-        u: &[f64; Layout::MAX_LEN],
-        scale: f64,
-        out: &mut [f64; Layout::MAX_LEN],
-    ) {
-        for (o, terms) in out.iter_mut().zip(self.a_rows.rows()) {
-            let sum = terms
-                .iter()
-                .fold(0.0, |sum, &(col, a)| a.mul_add(u[col], sum));
-            *o = scale * sum;
-        }
-    }
-
     /// Taylor order whose remainder (ρδ)^(K+1)/(K+1)! is below 1e-16 (the rounding of the
     /// state itself) for a step of `delta_s`.
     pub fn taylor_order(&self, delta_s: f64) -> usize {
@@ -134,7 +120,8 @@ impl ModeSystem {
         vectors[0][..self.len].copy_from_slice(&u0[..self.len]);
         for k in 1..=order {
             let (done, rest) = vectors.split_at_mut(k);
-            self.scaled_derivative(&done[k - 1], delta_s / k as f64, &mut rest[0]);
+            self.derivative
+                .scaled(&done[k - 1], delta_s / k as f64, &mut rest[0]);
         }
         for v in &mut vectors[order + 1..] {
             v[..self.len].fill(0.0);
@@ -201,35 +188,6 @@ pub fn spectral_radius(a: &DMatrix<f64>) -> f64 {
         .iter()
         .map(|l| l.norm())
         .fold(0.0, f64::max)
-}
-
-/// The nonzero entries of a square matrix, row by row (compressed rows).
-struct SparseRows {
-    /// (column, value) of every nonzero entry, rows one after another.
-    terms: Vec<(usize, f64)>,
-    /// Where each row's terms start in `terms`; one more entry than rows.
-    starts: Vec<usize>,
-}
-
-impl SparseRows {
-    fn of(a: &DMatrix<f64>) -> Self {
-        let mut terms = Vec::new();
-        let mut starts = vec![0];
-        for row in 0..a.nrows() {
-            terms.extend(
-                (0..a.ncols())
-                    .filter(|&col| a[(row, col)] != 0.0)
-                    .map(|col| (col, a[(row, col)])),
-            );
-            starts.push(terms.len());
-        }
-        Self { terms, starts }
-    }
-
-    /// Each row's (column, value) terms in turn.
-    fn rows(&self) -> impl Iterator<Item = &[(usize, f64)]> {
-        self.starts.windows(2).map(|w| &self.terms[w[0]..w[1]])
-    }
 }
 
 /// The fused matrix of the step matrix `step` (e^{A h} for some h): its mechanical rows,

@@ -117,7 +117,8 @@ impl SampleFrame<'_> {
         }
         let pitches = &pitches[..phase.len()];
         let first = pitches.first().copied().unwrap_or(0.0);
-        if pitches.iter().all(|&n| n == first) {
+        // A fold without early exit, so that it vectorises.
+        if pitches.iter().fold(true, |same, &n| same & (n == first)) {
             let tooth = tooth_of_pitches(first, self.teeth);
             out.tooth.extend(std::iter::repeat_n(tooth, pitches.len()));
         } else {
