@@ -28,7 +28,19 @@ pub type FusedRows = [f64; FUSED_ROWS];
 /// Columns of a fused step matrix, one per augmented state (zero beyond the layout's length).
 pub type FusedColumns = [[f64; FUSED_ROWS]; Layout::MAX_LEN];
 
-/// Taylor vectors v_k = (A δ)^k u₀ / k!, so that u(s δ) = Σ_k v_k s^k for s ∈ [0, 1].
+/// 1/k for k = 0..=TAYLOR_ORDER (1/0 taken as 0, never used).
+const RECIPROCALS: [f64; TAYLOR_ORDER + 1] = {
+    let mut r = [0.0; TAYLOR_ORDER + 1];
+    let mut k = 1;
+    while k <= TAYLOR_ORDER {
+        r[k] = 1.0 / k as f64;
+        k += 1;
+    }
+    r
+};
+
+/// Taylor vectors v_k = (A δ)^k u₀ / k!, so that u(s δ) = Σ_k v_k s^k for s ∈ [0, 1]
+/// (only those up to the order of the last expansion are valid).
 pub type TaylorVectors = [[f64; Layout::MAX_LEN]; TAYLOR_ORDER + 1];
 
 /// Everything needed to advance the plant while it stays in one [`Mode`].
@@ -107,14 +119,15 @@ impl ModeSystem {
         let mut term = x;
         (1..TAYLOR_ORDER)
             .find(|&k| {
-                term *= x / (k + 1) as f64;
+                term *= x * RECIPROCALS[k + 1];
                 term < 1e-16
             })
             .map_or(TAYLOR_ORDER, |k| k + 1)
             .max(4)
     }
 
-    /// Fills `vectors` with v_k = (A δ)^k u₀ / k! for k = 0..=order and returns the order.
+    /// Fills `vectors` with v_k = (A δ)^k u₀ / k! for k = 0..=order and returns the order
+    /// (the vectors above it are left as they were).
     pub fn taylor(&self, u0: &[f64], delta_s: f64, vectors: &mut TaylorVectors) -> usize {
         let order = self.taylor_order(delta_s);
         vectors[0][..self.len].copy_from_slice(&u0[..self.len]);
@@ -122,9 +135,6 @@ impl ModeSystem {
             let (done, rest) = vectors.split_at_mut(k);
             self.derivative
                 .scaled(&done[k - 1], delta_s / k as f64, &mut rest[0]);
-        }
-        for v in &mut vectors[order + 1..] {
-            v[..self.len].fill(0.0);
         }
         order
     }
@@ -134,7 +144,7 @@ impl ModeSystem {
         out[..self.len].copy_from_slice(&vectors[order][..self.len]);
         for v in vectors[..order].iter().rev() {
             for (o, &vk) in out[..self.len].iter_mut().zip(&v[..self.len]) {
-                *o = *o * s + vk;
+                *o = o.mul_add(s, vk);
             }
         }
     }

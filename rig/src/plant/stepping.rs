@@ -32,13 +32,14 @@ impl Plant {
             speed_rad_s: self.segment.set.speed_rad_s(),
             step_s: self.step_s,
         };
+        let mut end = self.u;
+        end[..N_MECH].copy_from_slice(&fused[..N_MECH]);
+        rotate(&mut end, self.cache.rotations());
         if crossing.may_switch(&targets) {
             self.edge = None;
-            self.advance_exactly()?;
+            self.advance_exactly(end)?;
         } else {
-            self.u[..N_MECH].copy_from_slice(&fused[..N_MECH]);
-            let rotations = self.cache.rotations();
-            rotate(&mut self.u, rotations);
+            self.u = end;
             let mut edge = [0.0; 2 * MAX_ROW_EVENTS];
             edge.copy_from_slice(&fused[N_MECH..FUSED_ROWS]);
             self.edge = Some(edge);
@@ -107,17 +108,26 @@ impl Plant {
         }
     }
 
-    /// Redoes the current step on the Taylor expansion, switching at every crossing.
+    /// Redoes the current step on the Taylor expansion, switching at every crossing;
+    /// `step_end` is the state at the step's end without a switch (e^{A h} u).
     #[inline(never)]
-    pub(super) fn advance_exactly(&mut self) -> Result<(), RigError> {
+    pub(super) fn advance_exactly(
+        &mut self,
+        step_end: [f64; Layout::MAX_LEN],
+    ) -> Result<(), RigError> {
+        let mut step_end = Some(step_end);
         let mut tau = 0.0;
         for _ in 0..SWITCH_LIMIT {
             let delta = self.step_s - tau;
             self.cache.ensure(self.mode);
             let system = self.cache.built(self.mode);
             let order = system.taylor(&self.u, delta, &mut self.taylor);
-            let mut end = [0.0; Layout::MAX_LEN];
-            system.taylor_state(&self.taylor, order, 1.0, &mut end);
+            // Until the first switch, the end is the step's own; after it, the expansion's.
+            let end = step_end.take().unwrap_or_else(|| {
+                let mut end = [0.0; Layout::MAX_LEN];
+                system.taylor_state(&self.taylor, order, 1.0, &mut end);
+                end
+            });
             match self.first_event(system, &end, order, tau, delta) {
                 None => {
                     self.u = end;
