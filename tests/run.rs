@@ -179,8 +179,9 @@ fn the_rms_survey_reads_the_tacho_and_the_meter_against_the_truth() {
         // steady. At no load the rattle is aperiodic and comes in bursts: the meter's
         // 0.2 s detector weighs the last few tenths of a second, the truth the whole last
         // second, and which bursts fall where changes with the last bit of any rounding
-        // (−25 % seen after a change of summation order), so there only to 40 %: still far from a meter that
-        // lost the mean (−100 % at load) or read the peak (+40 % on a sine).
+        // (−25 % seen after a change of summation order), so there only to 40 %: still
+        // far from a meter that lost the mean (−100 % at load) or read the peak (+40 %
+        // on a sine).
         let tolerance = if load > 0.0 { 0.03 } else { 0.40 };
         let per_nm = 3.849;
         let mean = number(t, "true_torque_mean_nm") * per_nm;
