@@ -10,7 +10,7 @@ use super::output::flank_overlap;
 use super::state::Segment;
 
 /// Most samples a run of the fast path stores before they are turned into signals.
-pub(super) const CHUNK: usize = 64;
+pub(super) const CHUNK: usize = 128;
 
 /// Stored per sample: the 12 mechanical states, then cos φ and sin φ.
 const STORED: usize = N_MECH + 2;

@@ -1,9 +1,10 @@
-//! The fast path: runs of whole output samples in which no switching function can cross.
-//! Each step is one fused product; the switch checks, the bounds and the sample are done
-//! on locals, and the run stops before the first step that needs the exact path, a
+//! The fast path: runs of output samples in one mode. Each stride or step is one fused
+//! product; the switch checks, the bounds and the samples are done on locals. A step
+//! that may switch goes to the exact path and ends the run; a run also stops before a
 //! set-point change or a re-sync of the harmonic states (the one-at-a-time path in
 //! `advance_step` takes those).
 
+use crate::error::RigError;
 use crate::layout::{Layout, N_MECH};
 use crate::propagator::{FUSED_ROWS, FusedRows, MAX_ROW_EVENTS};
 
@@ -14,14 +15,20 @@ use super::stepping::StepEnds;
 
 impl Plant {
     /// Takes up to `limit` samples on the fast path (their states stored in the chunk when
-    /// `RECORD`), advancing one output period after each; returns how many it took (maybe none).
-    pub(super) fn fast_run<const RECORD: bool>(&mut self, limit: usize) -> usize {
+    /// `RECORD`), advancing one output period after each, all in the mode it starts in: a
+    /// step that may switch is taken on the exact path and ends the run. Returns how many
+    /// samples it took (maybe none) and the exact path's error, if any (the samples
+    /// before it, and the failing step's own, are taken).
+    pub(super) fn fast_run<const RECORD: bool>(
+        &mut self,
+        limit: usize,
+    ) -> (usize, Result<(), RigError>) {
         let first = self.step_index;
         if self.substeps != 1
             || first.is_multiple_of(RESYNC_STEPS)
             || Some(first) == self.segment.end_step
         {
-            return 0;
+            return (0, Ok(()));
         }
         let mut steps_left = (first / RESYNC_STEPS + 1) * RESYNC_STEPS - first;
         if let Some(end) = self.segment.end_step {
@@ -82,11 +89,23 @@ impl Plant {
                 speed_rad_s: speed,
                 step_s: h,
             };
-            if ends.may_switch(&targets) {
-                break;
-            }
             if RECORD {
                 self.chunk.store(taken, &u);
+            }
+            if ends.may_switch(&targets) {
+                // The step's sample is taken; the exact path takes the step and the run
+                // ends there (the mode may switch).
+                let mut step_end = u;
+                step_end[..N_MECH].copy_from_slice(&end[..N_MECH]);
+                rotate(&mut step_end, rotations);
+                self.u = u;
+                self.edge = None;
+                self.step_index = step;
+                let switched = self.advance_exactly(step_end);
+                if switched.is_ok() {
+                    self.step_index += 1;
+                }
+                return (taken + 1, switched);
             }
             take_end(&mut u, &mut edge, &end, rotations);
             taken += 1;
@@ -94,7 +113,7 @@ impl Plant {
         self.u = u;
         self.edge = Some(edge);
         self.step_index = first + taken as u64;
-        taken
+        (taken, Ok(()))
     }
 }
 

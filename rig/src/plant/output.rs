@@ -2,6 +2,7 @@
 
 use crate::error::RigError;
 use crate::layout::{Layout, N_MECH, REV, V0, VF, X0, Z};
+use crate::mode::Mode;
 use crate::model::ModelConstants;
 use crate::records::Flank;
 use crate::signals::SignalBlock;
@@ -31,18 +32,19 @@ impl Plant {
     ) -> Result<(), RigError> {
         let mut done = 0;
         while done < samples {
-            let first = self.step_index;
+            let (first, mode) = (self.step_index, self.mode);
             let limit = CHUNK.min(samples - done);
-            let taken = match out.as_deref_mut() {
+            let (taken, switched) = match out.as_deref_mut() {
                 Some(block) => {
-                    let taken = self.fast_run::<true>(limit);
-                    self.frame().append(&self.chunk, taken, first, block);
-                    taken
+                    let run = self.fast_run::<true>(limit);
+                    self.frame_in(mode).append(&self.chunk, run.0, first, block);
+                    run
                 }
                 None => self.fast_run::<false>(limit),
             };
+            switched?;
             done += taken;
-            if done == samples || taken == limit {
+            if taken > 0 {
                 continue;
             }
             if !self.within_bounds() {
@@ -50,7 +52,8 @@ impl Plant {
             }
             if let Some(block) = out.as_deref_mut() {
                 self.chunk.store(0, &self.u);
-                self.frame().append(&self.chunk, 1, self.step_index, block);
+                self.frame_in(self.mode)
+                    .append(&self.chunk, 1, self.step_index, block);
             }
             for _ in 0..self.substeps {
                 self.advance_step()?;
@@ -60,11 +63,11 @@ impl Plant {
         Ok(())
     }
 
-    /// What a sample needs besides the state, for the current mode and segment.
-    pub(super) fn frame(&self) -> SampleFrame<'_> {
+    /// What a sample needs besides the state, for `mode` and the current segment.
+    pub(super) fn frame_in(&self, mode: Mode) -> SampleFrame<'_> {
         SampleFrame {
             mc: &self.mc,
-            mode: self.mode,
+            mode,
             segment: self.segment,
             step_s: self.step_s,
             tooth_pitch_rad: self.geometry.tooth_pitch_rad,
@@ -73,7 +76,7 @@ impl Plant {
     }
 
     pub(super) fn tooth_at(&self, theta2: f64) -> u32 {
-        self.frame().tooth_at(theta2)
+        self.frame_in(self.mode).tooth_at(theta2)
     }
 
     /// Whether the state is within its bounds (see [`within_bounds`]).
