@@ -59,6 +59,8 @@ pub(super) struct SampleFrame<'a> {
     pub(super) mode: Mode,
     pub(super) segment: Segment,
     pub(super) step_s: f64,
+    /// Internal steps from one sample to the next.
+    pub(super) steps_per_sample: u64,
     pub(super) tooth_pitch_rad: f64,
     pub(super) teeth: f64,
 }
@@ -71,7 +73,7 @@ impl SampleFrame<'_> {
     }
 
     /// Appends to `out` the true signals of the first `count` samples of `chunk`, taken
-    /// at the consecutive internal steps from `first_step`, all in this frame's mode.
+    /// every `steps_per_sample` internal steps from `first_step`, all in this frame's mode.
     pub(super) fn append(
         &self,
         chunk: &StateChunk,
@@ -82,11 +84,13 @@ impl SampleFrame<'_> {
         // Step counts as floats: exact (below 2⁵³), so φ and t are as `phase_rad` gives them.
         let elapsed = (first_step - self.segment.start_step) as f64;
         let step = first_step as f64;
+        let per_sample = self.steps_per_sample as f64;
         let mut phase = [0.0; CHUNK];
         let mut time = [0.0; CHUNK];
         for ((p, t), k) in phase[..count].iter_mut().zip(&mut time).zip(COUNTS) {
-            *p = self.segment.phase_after(elapsed + k, self.step_s);
-            *t = (step + k) * self.step_s;
+            let steps = k * per_sample;
+            *p = self.segment.phase_after(elapsed + steps, self.step_s);
+            *t = (step + steps) * self.step_s;
         }
         let phase = &phase[..count];
         let x = |i: usize| chunk.column(X0 + i, count);

@@ -15,26 +15,26 @@ use super::stepping::StepEnds;
 
 impl Plant {
     /// Takes up to `limit` samples on the fast path (their states stored in the chunk when
-    /// `RECORD`), advancing one output period after each, all in the mode it starts in: a
-    /// step that may switch is taken on the exact path and ends the run. Returns how many
-    /// samples it took (maybe none) and the exact path's error, if any (the samples
-    /// before it, and the failing step's own, are taken).
+    /// `RECORD`), each after `substeps` internal steps, all in the mode it starts in: a
+    /// step that may switch is taken on the exact path, the rest of its output period one
+    /// step at a time, and the run ends there. Returns how many samples it took (maybe
+    /// none) and the error of the exact path, if any (the samples before it, and that of
+    /// the failing period, are taken).
     pub(super) fn fast_run<const RECORD: bool>(
         &mut self,
         limit: usize,
     ) -> (usize, Result<(), RigError>) {
         let first = self.step_index;
-        if self.substeps != 1
-            || first.is_multiple_of(RESYNC_STEPS)
-            || Some(first) == self.segment.end_step
-        {
-            return (0, Ok(()));
-        }
+        let per_sample = self.substeps as usize;
         let mut steps_left = (first / RESYNC_STEPS + 1) * RESYNC_STEPS - first;
         if let Some(end) = self.segment.end_step {
-            steps_left = steps_left.min(end - first);
+            steps_left = steps_left.min(end.saturating_sub(first));
         }
-        let count = (limit as u64).min(steps_left) as usize;
+        if first.is_multiple_of(RESYNC_STEPS) || steps_left < per_sample as u64 {
+            return (0, Ok(()));
+        }
+        // Whole output periods only.
+        let count = (limit * per_sample).min(steps_left as usize / per_sample * per_sample);
         self.cache.ensure(self.mode);
         let system = self.cache.built(self.mode);
         let rotations = self.cache.rotations();
@@ -45,6 +45,7 @@ impl Plant {
         let (speed, h) = (self.segment.set.speed_rad_s(), self.step_s);
         let mut u = self.u;
         let mut edge = self.edge.unwrap_or_else(|| system.row_event_values(&u));
+        // Internal steps taken; samples are stored at the multiples of `per_sample`.
         let mut taken = 0;
         // After a stride that may switch, single steps up to here.
         let mut singles_until = 0;
@@ -67,11 +68,14 @@ impl Plant {
                 };
                 if !ends.may_switch(&targets) {
                     if RECORD {
-                        self.chunk.store(taken, &u);
-                        for k in 1..m {
-                            let (c, s) = rotated(&u, self.cache.rotations_by(k)[0]);
-                            self.chunk
-                                .store_parts(taken + k, &stride.sample(k, &u), c, s);
+                        for k in (0..m).filter(|k| (taken + k).is_multiple_of(per_sample)) {
+                            let slot = (taken + k) / per_sample;
+                            if k == 0 {
+                                self.chunk.store(slot, &u);
+                            } else {
+                                let (c, s) = rotated(&u, self.cache.rotations_by(k)[0]);
+                                self.chunk.store_parts(slot, &stride.sample(k, &u), c, s);
+                            }
                         }
                     }
                     take_end(&mut u, &mut edge, &end, stride_rotations);
@@ -89,23 +93,19 @@ impl Plant {
                 speed_rad_s: speed,
                 step_s: h,
             };
-            if RECORD {
-                self.chunk.store(taken, &u);
+            if RECORD && taken.is_multiple_of(per_sample) {
+                self.chunk.store(taken / per_sample, &u);
             }
             if ends.may_switch(&targets) {
-                // The step's sample is taken; the exact path takes the step and the run
-                // ends there (the mode may switch).
                 let mut step_end = u;
                 step_end[..N_MECH].copy_from_slice(&end[..N_MECH]);
                 rotate(&mut step_end, rotations);
                 self.u = u;
                 self.edge = None;
                 self.step_index = step;
-                let switched = self.advance_exactly(step_end);
-                if switched.is_ok() {
-                    self.step_index += 1;
-                }
-                return (taken + 1, switched);
+                let finished =
+                    self.finish_period_exactly(step_end, per_sample - 1 - taken % per_sample);
+                return (taken / per_sample + 1, finished);
             }
             take_end(&mut u, &mut edge, &end, rotations);
             taken += 1;
@@ -113,7 +113,22 @@ impl Plant {
         self.u = u;
         self.edge = Some(edge);
         self.step_index = first + taken as u64;
-        (taken, Ok(()))
+        (taken.div_ceil(per_sample), Ok(()))
+    }
+
+    /// Takes the current step on the exact path (`step_end` being its end without a
+    /// switch), then the `rest` steps of its output period one at a time.
+    fn finish_period_exactly(
+        &mut self,
+        step_end: [f64; Layout::MAX_LEN],
+        rest: usize,
+    ) -> Result<(), RigError> {
+        self.advance_exactly(step_end)?;
+        self.step_index += 1;
+        for _ in 0..rest {
+            self.advance_step()?;
+        }
+        Ok(())
     }
 }
 

@@ -70,6 +70,7 @@ impl Plant {
             mode,
             segment: self.segment,
             step_s: self.step_s,
+            steps_per_sample: self.substeps,
             tooth_pitch_rad: self.geometry.tooth_pitch_rad,
             teeth: f64::from(self.params.teeth),
         }
