@@ -2,7 +2,13 @@
 //!
 //! Each iteration advances one simulated second at 51.2 kHz output, streamed as 25 blocks
 //! of 2048 samples into one reused block (as a recorder consumes them), after 2 s of
-//! settling: the median time per iteration is the inverse real-time factor.
+//! settling: the median time per iteration is the inverse real-time factor. The issue's
+//! yardstick, a plain RK4 at a 10 µs step (`rig/tests/support/reference.rs`, the same
+//! equations), runs in the same process, so that the ratio of the two is free of this
+//! machine's drift in speed.
+
+#[path = "../tests/support/reference.rs"]
+mod reference;
 
 use divan::Bencher;
 use rig::{Plant, PlantConfig, Schedule, SignalBlock, preset};
@@ -56,4 +62,18 @@ fn quiet_200rpm_one_second(bencher: Bencher) {
     params.backlash_variation_c1 = 0.0;
     params.tooth_shifting = false;
     one_second(bencher, settled_plant(params, 200.0, 2.712));
+}
+
+/// The yardstick: classical RK4 at a 10 µs step on the same equations, from the same
+/// settled state at the benchmark point (no output samples taken).
+#[divan::bench(sample_count = 30)]
+fn rk4_10us_1300rpm_2712mnm_one_second(bencher: Bencher) {
+    let params = preset("basmaji-1983").expect("preset");
+    let plant = settled_plant(params.clone(), 1300.0, 2.712);
+    let start = plant.relative_state();
+    bencher.bench_local(|| {
+        let mut rk4 = reference::Reference::new(&params, 1300.0, 2.712, start);
+        rk4.run(1.0, 1e-5);
+        rk4.impacts.len()
+    });
 }
