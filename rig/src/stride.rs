@@ -77,8 +77,9 @@ impl Stride {
         product(&self.end_columns, u, self.len)
     }
 
-    /// The mechanical states `k` steps (1 ≤ k < m) into a stride from `u`.
-    #[inline]
+    /// The mechanical states `k` steps (1 ≤ k < m) into a stride from `u` (always inlined:
+    /// called per sample in the fast path's innermost loop).
+    #[inline(always)]
     pub fn sample(&self, k: usize, u: &[f64; Layout::MAX_LEN]) -> [f64; N_MECH] {
         product(&self.sample_columns[k - 1], u, self.len)
     }

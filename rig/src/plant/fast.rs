@@ -45,8 +45,9 @@ impl Plant {
         let (speed, h) = (self.segment.set.speed_rad_s(), self.step_s);
         let mut u = self.u;
         let mut edge = self.edge.unwrap_or_else(|| system.row_event_values(&u));
-        // Internal steps taken; samples are stored at the multiples of `per_sample`.
+        // Internal steps taken; samples stored so far, and the step of the next.
         let mut taken = 0;
+        let (mut samples, mut next_sample) = (0, 0);
         // After a stride that may switch, single steps up to here.
         let mut singles_until = 0;
         while taken < count {
@@ -67,17 +68,23 @@ impl Plant {
                     step_s: m as f64 * h,
                 };
                 if !ends.may_switch(&targets) {
-                    if RECORD {
-                        for k in (0..m).filter(|k| (taken + k).is_multiple_of(per_sample)) {
-                            let slot = (taken + k) / per_sample;
-                            if k == 0 {
-                                self.chunk.store(slot, &u);
-                            } else {
-                                let (c, s) = rotated(&u, self.cache.rotations_by(k)[0]);
-                                self.chunk.store_parts(slot, &stride.sample(k, &u), c, s);
-                            }
-                        }
+                    let mut k = next_sample - taken;
+                    if RECORD && k == 0 {
+                        self.chunk.store(samples, &u);
                     }
+                    if k == 0 {
+                        samples += 1;
+                        k += per_sample;
+                    }
+                    while k < m {
+                        if RECORD {
+                            let (c, s) = rotated(&u, self.cache.rotations_by(k)[0]);
+                            self.chunk.store_parts(samples, &stride.sample(k, &u), c, s);
+                        }
+                        samples += 1;
+                        k += per_sample;
+                    }
+                    next_sample = taken + k;
                     take_end(&mut u, &mut edge, &end, stride_rotations);
                     taken += m;
                     continue;
@@ -93,8 +100,12 @@ impl Plant {
                 speed_rad_s: speed,
                 step_s: h,
             };
-            if RECORD && taken.is_multiple_of(per_sample) {
-                self.chunk.store(taken / per_sample, &u);
+            if taken == next_sample {
+                if RECORD {
+                    self.chunk.store(samples, &u);
+                }
+                samples += 1;
+                next_sample += per_sample;
             }
             if ends.may_switch(&targets) {
                 let mut step_end = u;
@@ -103,9 +114,8 @@ impl Plant {
                 self.u = u;
                 self.edge = None;
                 self.step_index = step;
-                let finished =
-                    self.finish_period_exactly(step_end, per_sample - 1 - taken % per_sample);
-                return (taken / per_sample + 1, finished);
+                let finished = self.finish_period_exactly(step_end, next_sample - taken - 1);
+                return (samples, finished);
             }
             take_end(&mut u, &mut edge, &end, rotations);
             taken += 1;
@@ -113,11 +123,12 @@ impl Plant {
         self.u = u;
         self.edge = Some(edge);
         self.step_index = first + taken as u64;
-        (taken.div_ceil(per_sample), Ok(()))
+        (samples, Ok(()))
     }
 
     /// Takes the current step on the exact path (`step_end` being its end without a
     /// switch), then the `rest` steps of its output period one at a time.
+    #[inline(never)]
     fn finish_period_exactly(
         &mut self,
         step_end: [f64; Layout::MAX_LEN],
