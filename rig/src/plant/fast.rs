@@ -56,18 +56,25 @@ impl Plant {
                 break;
             }
             let phase_rad = segment.phase_after((step - segment.start_step) as f64, h);
+            // Whether a switch may fall within the `steps` from `u` that end at `end`.
+            let may_switch = |edge: &[f64; 2 * MAX_ROW_EVENTS],
+                              end: &FusedRows,
+                              u: &[f64; Layout::MAX_LEN],
+                              steps: usize| {
+                let ends = StepEnds {
+                    start: edge,
+                    end,
+                    u0: u,
+                    phase_rad,
+                    speed_rad_s: speed,
+                    step_s: steps as f64 * h,
+                };
+                ends.may_switch(&targets)
+            };
             let m = stride.steps;
             if m > 1 && taken >= singles_until && count - taken >= m {
                 let end = stride.end(&u);
-                let ends = StepEnds {
-                    start: &edge,
-                    end: &end,
-                    u0: &u,
-                    phase_rad,
-                    speed_rad_s: speed,
-                    step_s: m as f64 * h,
-                };
-                if !ends.may_switch(&targets) {
+                if !may_switch(&edge, &end, &u, m) {
                     let mut k = next_sample - taken;
                     if RECORD && k == 0 {
                         self.chunk.store(samples, &u);
@@ -92,14 +99,7 @@ impl Plant {
                 singles_until = taken + m;
             }
             let end = system.step(&u);
-            let ends = StepEnds {
-                start: &edge,
-                end: &end,
-                u0: &u,
-                phase_rad,
-                speed_rad_s: speed,
-                step_s: h,
-            };
+            let switches = may_switch(&edge, &end, &u, 1);
             if taken == next_sample {
                 if RECORD {
                     self.chunk.store(samples, &u);
@@ -107,7 +107,7 @@ impl Plant {
                 samples += 1;
                 next_sample += per_sample;
             }
-            if ends.may_switch(&targets) {
+            if switches {
                 let mut step_end = u;
                 step_end[..N_MECH].copy_from_slice(&end[..N_MECH]);
                 rotate(&mut step_end, rotations);
