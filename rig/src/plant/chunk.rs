@@ -66,12 +66,6 @@ pub(super) struct SampleFrame<'a> {
 }
 
 impl SampleFrame<'_> {
-    /// Tooth of the driving gear in mesh at its angle `theta2` (rad), 0..teeth.
-    #[inline]
-    pub(super) fn tooth_at(&self, theta2: f64) -> u32 {
-        tooth_at(theta2, self.tooth_pitch_rad, self.teeth)
-    }
-
     /// Appends to `out` the true signals of the first `count` samples of `chunk`, taken
     /// every `steps_per_sample` internal steps from `first_step`, all in this frame's mode.
     pub(super) fn append(

@@ -7,7 +7,7 @@ use crate::model::ModelConstants;
 use crate::records::Flank;
 use crate::signals::SignalBlock;
 
-use super::chunk::{CHUNK, SampleFrame};
+use super::chunk::{CHUNK, SampleFrame, tooth_at};
 use super::state::{Plant, SPEED_LIMIT_RAD_S, TWIST_LIMIT_RAD};
 
 impl Plant {
@@ -76,8 +76,13 @@ impl Plant {
         }
     }
 
+    /// Tooth of the driving gear in mesh at its angle `theta2` (rad), 0..teeth.
     pub(super) fn tooth_at(&self, theta2: f64) -> u32 {
-        self.frame_in(self.mode).tooth_at(theta2)
+        tooth_at(
+            theta2,
+            self.geometry.tooth_pitch_rad,
+            f64::from(self.params.teeth),
+        )
     }
 
     /// Whether the state is within its bounds (see [`within_bounds`]).
