@@ -132,6 +132,12 @@ impl SystemCache {
         &self.rotations[0]
     }
 
+    /// The rotation of the set rotation's own pair (cos φ, sin φ) by `steps` steps
+    /// (1..=[`MAX_STRIDE`]): the first of the pairs, as [`SystemCache::set_frequencies`] lists them.
+    pub fn phase_rotation_by(&self, steps: usize) -> (usize, f64, f64) {
+        self.rotations[steps - 1][0]
+    }
+
     /// Rotations of the harmonic pairs by `steps` steps (1..=[`MAX_STRIDE`]): (index of the
     /// cos state, cos ω·steps·h, sin ω·steps·h).
     pub fn rotations_by(&self, steps: usize) -> &[(usize, f64, f64)] {

@@ -81,7 +81,7 @@ impl Plant {
                     }
                     while k < m {
                         if RECORD {
-                            let (c, s) = rotated(&u, self.cache.rotations_by(k)[0]);
+                            let (c, s) = rotated(&u, self.cache.phase_rotation_by(k));
                             self.chunk.store_parts(samples, &stride.sample(k, &u), c, s);
                         }
                         samples += 1;
