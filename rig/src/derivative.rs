@@ -43,8 +43,9 @@ impl Derivative {
         derivative
     }
 
-    /// `out` = scale·A·u (rows without entries, and past A's size, are zero).
-    #[inline]
+    /// `out` = scale·A·u (rows without entries, and past A's size, are zero). Always
+    /// inlined: the Taylor expansion's inner loop.
+    #[inline(always)]
     pub fn scaled(&self, u: &[f64; Layout::MAX_LEN], scale: f64, out: &mut [f64; Layout::MAX_LEN]) {
         out.fill(0.0);
         for &(row, col, value) in &self.single {

@@ -25,6 +25,7 @@ pub mod energy;
 pub mod error;
 pub mod events;
 pub mod geometry;
+pub mod jump_response;
 pub mod layout;
 pub mod modal;
 pub mod mode;

@@ -3,6 +3,7 @@
 
 use crate::error::RigError;
 use crate::events::{EventFn, EventKind, first_crossing, may_cross};
+use crate::jump_response::GEAR_ANGLES;
 use crate::layout::{Layout, N_MECH, V0, X0};
 use crate::propagator::{FUSED_ROWS, FusedRows, MAX_ROW_EVENTS, ModeSystem, TAYLOR_ORDER};
 
@@ -139,7 +140,14 @@ impl Plant {
                     self.u = at;
                     tau += s * delta;
                     self.switch_count += 1;
+                    let mode = self.mode;
                     self.handle(kind, tau);
+                    if self.mode == mode
+                        && let Some(jumped) = self.end_after_jump(&at, &end, tau)
+                    {
+                        self.u = jumped;
+                        return Ok(());
+                    }
                 }
             }
         }
@@ -147,6 +155,39 @@ impl Plant {
             t_s: self.time_at(tau),
             limit: SWITCH_LIMIT,
         })
+    }
+
+    /// The step's end after a switch at `tau_s` that kept the mode and moved at most the
+    /// gear angles (a tooth pass, a revolution sample), by linearity: `end` (the step's
+    /// end from `before`, the state just ahead of the switch) plus e^{A (h − τ)} Δ, Δ the
+    /// jump to the state now. None when the switch moved anything else, or when some
+    /// switching function may cross in the rest of the step: the expansion from the new
+    /// state then decides.
+    fn end_after_jump(
+        &self,
+        before: &[f64; Layout::MAX_LEN],
+        end: &[f64; Layout::MAX_LEN],
+        tau_s: f64,
+    ) -> Option<[f64; Layout::MAX_LEN]> {
+        let moved_elsewhere = (0..Layout::MAX_LEN)
+            .filter(|i| !GEAR_ANGLES.contains(i))
+            .any(|i| self.u[i] != before[i]);
+        if moved_elsewhere {
+            return None;
+        }
+        let system = self.cache.built(self.mode);
+        let rest_s = self.step_s - tau_s;
+        let mut jumped = *end;
+        let jump = GEAR_ANGLES.map(|i| self.u[i] - before[i]);
+        let order = system.taylor_order(rest_s);
+        system
+            .jump_response
+            .add_to(jump, rest_s / self.step_s, order, &mut jumped);
+        let may_cross = system
+            .events
+            .iter()
+            .any(|event| self.event_may_cross(event, &self.u, &jumped, tau_s, rest_s));
+        (!may_cross).then_some(jumped)
     }
 
     /// The earliest crossing (fraction s of the remaining `delta_s`, kind) of any switching
