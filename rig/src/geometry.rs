@@ -1,4 +1,5 @@
-//! Gear geometry: pitch radius, backlash from the centre-distance shift, contact ratio.
+//! Gear geometry: pitch radius, backlash from the centre-distance shift (and the shift
+//! for a backlash), contact ratio.
 
 use std::f64::consts::PI;
 
@@ -50,4 +51,11 @@ impl GearGeometry {
     pub fn double_pair_fraction(&self) -> f64 {
         (self.contact_ratio - 1.0).clamp(0.0, 1.0)
     }
+}
+
+/// Centre-distance shift ΔC (m) that gives a total circular backlash of
+/// `circular_backlash_m` (m) at the pitch circle of `params`' gears: 2B₁ = 2 ΔC tan α
+/// (rig-spec §1), the inverse of [`GearGeometry::circular_backlash_m`].
+pub fn centre_distance_shift_m(params: &RigParams, circular_backlash_m: f64) -> f64 {
+    circular_backlash_m / (2.0 * params.pressure_angle_deg.to_radians().tan())
 }

@@ -1,6 +1,7 @@
 //! Named parameter sets.
 
 use crate::error::RigError;
+use crate::geometry::centre_distance_shift_m;
 use crate::options::{ContactLaw, MeshPairs};
 use crate::params::RigParams;
 
@@ -79,11 +80,10 @@ pub fn basmaji_1983() -> RigParams {
 /// changes which motion the rig settles to.
 pub fn basmaji_1983_calibrated() -> RigParams {
     let thesis = basmaji_1983();
-    let tan_pressure_angle = thesis.pressure_angle_deg.to_radians().tan();
     RigParams {
         brake_drag_nm: 0.3,
         gear_error_c2_nm: 0.5,
-        centre_distance_shift_m: EXPERIMENT_BACKLASH_M / (2.0 * tan_pressure_angle),
+        centre_distance_shift_m: centre_distance_shift_m(&thesis, EXPERIMENT_BACKLASH_M),
         ..thesis
     }
 }

@@ -1,5 +1,6 @@
 //! The rig, the schedule and the measurements of a scenario.
 
+use rig::geometry::centre_distance_shift_m;
 use rig::{RigParams, Schedule, Track};
 use toml::Spanned;
 
@@ -18,7 +19,8 @@ pub fn rig_params(src: &ScenarioSource, rig: &RigFile) -> anyhow::Result<(String
     };
     let mut params = rig::preset(&name).map_err(|e| src.error(span, "rig.preset", e))?;
     if let Some(backlash) = &rig.backlash_mm {
-        params.centre_distance_shift_m = backlash_shift_m(&params, backlash.get_ref().0);
+        params.centre_distance_shift_m =
+            centre_distance_shift_m(&params, backlash.get_ref().0 * 1e-3);
     }
     for (key, value) in &rig.set {
         let text = match value.get_ref() {
@@ -30,12 +32,6 @@ pub fn rig_params(src: &ScenarioSource, rig: &RigFile) -> anyhow::Result<(String
     }
     params.validate().map_err(|e| src.error(0..0, "rig", e))?;
     Ok((name, params))
-}
-
-/// Centre-distance shift (m) that gives a total circular backlash of `backlash_mm` at the
-/// pitch circle: 2B1 = 2 ΔC tan α (rig-spec §1).
-pub fn backlash_shift_m(params: &RigParams, backlash_mm: f64) -> f64 {
-    backlash_mm * 1e-3 / (2.0 * params.pressure_angle_deg.to_radians().tan())
 }
 
 /// The schedule and the measurements, from `[schedule]` + `[[measure]]` or from `[survey]`;

@@ -1,10 +1,11 @@
 //! A sweep file checked and expanded into its cases.
 
 use rig::RigParams;
+use rig::geometry::centre_distance_shift_m;
 
 use crate::scenario::build::stream_rate_hz;
 use crate::scenario::chain_part::{analyser_plan, chain_plan};
-use crate::scenario::rig_part::{backlash_shift_m, rig_params};
+use crate::scenario::rig_part::rig_params;
 use crate::scenario::{AnalyserPlan, ChainPlan, ScenarioSource};
 
 use super::file::SweepFile;
@@ -80,7 +81,7 @@ pub fn build_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<Swe
             grid.backlash_mm.iter().map(|b| {
                 let text = b.0.to_string();
                 (text, move |p: &mut RigParams| -> anyhow::Result<()> {
-                    p.centre_distance_shift_m = backlash_shift_m(p, b.0);
+                    p.centre_distance_shift_m = centre_distance_shift_m(p, b.0 * 1e-3);
                     Ok(())
                 })
             }),
