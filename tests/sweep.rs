@@ -5,7 +5,7 @@ mod common;
 
 use std::path::Path;
 
-use common::{folder, sets, testrig};
+use common::{csv_rows, folder, number, sets, testrig};
 use testrig::sweep::Shard;
 
 /// A small grid: two speeds, two loads, two tooth counts; short cases.
@@ -125,26 +125,23 @@ fn a_case_measures_the_half_order_line_and_the_regime_of_its_point() {
             "grid.load_nm=[2.712]",
         ],
     );
-    let mut reader = csv::Reader::from_path(dir.join("out/cases.csv")).expect("CSV");
-    let header = reader.headers().expect("header").clone();
-    let col = |name: &str| header.iter().position(|h| h == name).expect("column");
-    let rows: Vec<csv::StringRecord> = reader.records().map(|r| r.expect("row")).collect();
+    let rows = csv_rows(&dir.join("out/cases.csv"));
     assert_eq!(rows.len(), 2);
     for row in &rows {
-        let rpm: f64 = row[col("rpm")].parse().expect("rpm");
-        let present = &row[col("half_order_present")] == "true";
-        let regime = &row[col("regime")];
+        let rpm = number(row, "rpm");
+        let present = row["half_order_present"] == "true";
+        let regime = &row["regime"];
         if rpm == 1300.0 {
             // The thesis's subharmonic point: period-2 motion puts a line at half the
             // running speed, far above the floor.
             assert_eq!(regime, "period-2");
             assert!(present);
-            let db: f64 = row[col("half_order_db")].parse().expect("dB");
+            let db = number(row, "half_order_db");
             assert!(db > 30.0, "{db}");
         } else {
             assert!(!present, "600 rev/min: no half order ({regime})");
         }
-        assert_eq!(&row[col("teeth")], "30");
+        assert_eq!(row["teeth"], "30");
     }
     std::fs::remove_dir_all(&dir).ok();
 }
@@ -283,19 +280,16 @@ fn orders_beyond_the_band_are_recorded_as_missing_and_too_short_cases_are_refuse
 
 /// Issue 5: `testrig simulate` with its default durations classifies a point as the
 /// campaign's case does. Four points of the thesis's grid whose settled motion is not
-/// decided by rounding (period-4 at 550 rev/min unloaded and at 1300 rev/min with
-/// 2.712 N m, period-2 at 1300 rev/min unloaded), run as the campaign runs them.
+/// decided by rounding (550 and 1300 rev/min, unloaded and with 2.712 N m; period-2 and
+/// period-4 among them), run as the campaign runs them.
 #[test]
 fn simulate_with_its_defaults_classifies_as_the_campaign_does() {
     let dir = folder("agree");
     let out = dir.join("out");
     campaign(&out, &["grid.rpm=[550, 1300]", "grid.load_nm=[0.0, 2.712]"]);
-    let mut reader = csv::Reader::from_path(out.join("cases.csv")).expect("CSV");
-    let header = reader.headers().expect("header").clone();
-    let col = |name: &str| header.iter().position(|h| h == name).expect("column");
     let mut regimes = Vec::new();
-    for row in reader.records().map(|r| r.expect("row")) {
-        let (rpm, load, campaign) = (&row[col("rpm")], &row[col("load_nm")], &row[col("regime")]);
+    for row in csv_rows(&out.join("cases.csv")) {
+        let (rpm, load, campaign) = (&row["rpm"], &row["load_nm"], &row["regime"]);
         let simulate = testrig(&[
             "simulate",
             "--preset",
@@ -311,10 +305,10 @@ fn simulate_with_its_defaults_classifies_as_the_campaign_does() {
             serde_json::from_slice(&simulate.stdout).expect("JSON summary");
         assert_eq!(
             summary["regime"].as_str(),
-            Some(campaign),
+            Some(campaign.as_str()),
             "{rpm} rev/min, {load} N m: simulate against the campaign's case"
         );
-        regimes.push(campaign.to_string());
+        regimes.push(campaign.clone());
     }
     // The points differ in motion: the agreement is not that of four alike answers.
     for expected in ["period-2", "period-4"] {
