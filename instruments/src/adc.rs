@@ -97,6 +97,15 @@ impl Adc {
         self.step_v
     }
 
+    /// Power per displayed line (V² rms, the analyser's power scaling) of the quantisation
+    /// noise, q²/12 spread evenly over 0..fs/2, for a window of equivalent noise bandwidth
+    /// `enbw_hz` at the ADC rate `adc_rate_hz`: 2·(q²/12)·ENBW/fs (Heinzel et al. 2002).
+    /// The floor below which no line of the display can be told from the converter's own
+    /// noise.
+    pub fn quantisation_line_power(&self, enbw_hz: f64, adc_rate_hz: f64) -> f64 {
+        self.step_v * self.step_v / 6.0 * enbw_hz / adc_rate_hz
+    }
+
     /// Samples that hit full scale so far.
     pub fn overloads(&self) -> u64 {
         self.overloads

@@ -8,7 +8,9 @@
 //! ADC's Nyquist folds to
 //! |f − round(f/f_s)·f_s|; a displayed line is an alias when one folded component carries
 //! more than half of all the power that lands on it (in band plus folded), and it is named
-//! after that component. Broadband noise, whose images are all alike, names none.
+//! after that component. Broadband noise, whose images are all alike, names none. A line
+//! whose whole power (in band plus folded, per block) lies below a floor (the ADC's
+//! quantisation noise per line) is not flagged: nothing there can be seen.
 
 use crate::error::InstrumentError;
 use crate::spectrum::{Spectrum, SpectrumEstimator};
@@ -22,6 +24,7 @@ pub struct AliasTruth {
     estimator: SpectrumEstimator,
     one: Vec<f64>,
     sum: Vec<f64>,
+    blocks: usize,
 }
 
 impl AliasTruth {
@@ -50,6 +53,7 @@ impl AliasTruth {
             adc_resolution_hz: adc_rate_hz / block as f64,
             one: vec![0.0; estimator.lines()],
             sum: vec![0.0; estimator.lines()],
+            blocks: 0,
             estimator,
         })
     }
@@ -67,24 +71,33 @@ impl AliasTruth {
             .iter_mut()
             .zip(&self.one)
             .for_each(|(s, o)| *s += o);
+        self.blocks += 1;
     }
 
     /// Clears the running sum.
     pub fn restart(&mut self) {
         self.sum.iter_mut().for_each(|s| *s = 0.0);
+        self.blocks = 0;
     }
 
     /// For each of the first `lines` displayed lines, `None` if the line is a real
-    /// component, or `Some(true frequency in Hz)` of the component aliased onto it, from
-    /// the one analogue block that the ADC block came from.
-    pub fn classify(&mut self, analogue_block: &[f64], lines: usize) -> Vec<Option<f64>> {
+    /// component or lies below `floor_power` (power per line, unit² rms; 0 flags every
+    /// alias), or `Some(true frequency in Hz)` of the component aliased onto it, from the
+    /// one analogue block that the ADC block came from.
+    pub fn classify(
+        &mut self,
+        analogue_block: &[f64],
+        lines: usize,
+        floor_power: f64,
+    ) -> Vec<Option<f64>> {
         self.restart();
         self.add(analogue_block);
-        self.flags(lines)
+        self.flags(lines, floor_power)
     }
 
-    /// As [`AliasTruth::classify`], from the analogue blocks added so far (their sum).
-    pub fn flags(&self, lines: usize) -> Vec<Option<f64>> {
+    /// As [`AliasTruth::classify`], from the analogue blocks added so far (their mean).
+    pub fn flags(&self, lines: usize, floor_power: f64) -> Vec<Option<f64>> {
+        let floor_sum = floor_power * self.blocks as f64;
         let df = self.estimator.resolution_hz();
         let nyquist = self.adc_rate_hz / 2.0;
         // Per displayed line: (power folded onto it, its largest contributor, that one's frequency).
@@ -113,7 +126,7 @@ impl AliasTruth {
                     .get((k as f64 * self.adc_resolution_hz / df).round() as usize)
                     .copied()
                     .unwrap_or(0.0);
-                if largest > 0.5 * (total + in_band) {
+                if largest > 0.5 * (total + in_band) && total + in_band > floor_sum {
                     source
                 } else {
                     None

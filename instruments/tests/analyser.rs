@@ -81,14 +81,14 @@ fn a_2_2_khz_sine_sampled_at_4_khz_shows_at_1_8_khz_flagged_as_its_alias() {
     );
     let mut truth =
         AliasTruth::new(N, DECIMATION as f64, ANALOGUE_HZ, Window::Hanning).expect("valid");
-    let flags = truth.classify(&analogue, lines.len());
+    let flags = truth.classify(&analogue, lines.len(), 0.0);
     let source = flags[k].expect("the 1.8 kHz line is an alias");
     assert!((source - 2_200.0).abs() <= 16.0, "alias of {source} Hz");
     // A real line stays unflagged: 1 kHz below Fmax.
     let real = sine(1_000.0, 1.0, N * DECIMATION);
     let real_lines = analyse(&real, None);
     let (kr, _) = peak(&real_lines);
-    assert_eq!(truth.classify(&real, real_lines.len())[kr], None);
+    assert_eq!(truth.classify(&real, real_lines.len(), 0.0)[kr], None);
 }
 
 #[test]
@@ -160,4 +160,70 @@ fn overlap_takes_blocks_at_the_hop() {
         ..settings
     };
     assert!(Analyser::new(bad).is_err());
+}
+
+#[test]
+fn the_quantisation_floor_per_line_matches_the_noise_an_adc_adds() {
+    // Three incommensurate tones over most of the range make the quantisation error white
+    // (variance q²/12); lines away from the tones then hold 2·(q²/12)·ENBW/fs each.
+    let samples = N * DECIMATION * 8;
+    let analogue: Vec<f64> = (0..samples)
+        .map(|k| {
+            let t = k as f64 / ANALOGUE_HZ;
+            0.6 * (2.0 * PI * 211.7 * t).sin()
+                + 0.5 * (2.0 * PI * 737.3 * t).sin()
+                + 0.4 * (2.0 * PI * 1_313.9 * t).sin()
+        })
+        .collect();
+    let mut converter = Adc::new(AdcSettings {
+        ratio: DECIMATION as f64,
+        bits: 8,
+        range_v: 2.0,
+        dither_seed: None,
+    })
+    .expect("valid");
+    let mut digital = Vec::new();
+    converter.convert(&analogue, &mut digital);
+    let mut settings = AnalyserSettings::thesis(N, 2_000.0);
+    settings.averages = 8;
+    let mut analyser = Analyser::new(settings).expect("valid");
+    analyser.push(&digital);
+    let lines = analyser.display();
+    let df = 4_000.0 / N as f64;
+    let mut away: Vec<f64> = lines
+        .iter()
+        .filter(|l| {
+            [211.7, 737.3, 1_313.9]
+                .iter()
+                .all(|&f| ((l.frequency_hz - f) / df).abs() > 40.0)
+        })
+        .map(|l| l.value)
+        .collect();
+    away.sort_by(f64::total_cmp);
+    let median = away[away.len() / 2];
+    let floor = converter.quantisation_line_power(analyser.enbw_hz(), 4_000.0);
+    let ratio = median / floor;
+    // The median of a chi-square with 16 degrees of freedom (8 averages) is 0.96 of its mean.
+    assert!((0.7..1.4).contains(&ratio), "median/floor = {ratio}");
+}
+
+#[test]
+fn an_alias_below_the_quantisation_floor_is_not_flagged() {
+    // A 2.2 kHz tone of 1 nV folds to 1.8 kHz far below a 16-bit ADC's noise: invisible.
+    let analogue = sine(2_200.0, 1e-9, N * DECIMATION);
+    let mut truth =
+        AliasTruth::new(N, DECIMATION as f64, ANALOGUE_HZ, Window::Hanning).expect("valid");
+    let k = (1_800.0_f64 / (4_000.0 / N as f64)).round() as usize;
+    let lines = N / 2 + 1;
+    let unfloored = truth.classify(&analogue, lines, 0.0);
+    assert!(unfloored[k].is_some(), "without a floor the alias is named");
+    let floor = adc().quantisation_line_power(1.5 * 4_000.0 / N as f64, 4_000.0);
+    let floored = truth.classify(&analogue, lines, floor);
+    assert!(
+        floored.iter().all(Option::is_none),
+        "nothing below the floor is flagged"
+    );
+    // The same tone at 0.1 V stands far above the floor and is still flagged.
+    let loud = sine(2_200.0, 0.1, N * DECIMATION);
+    assert!(truth.classify(&loud, lines, floor)[k].is_some());
 }

@@ -59,7 +59,8 @@ pub fn run(args: &AnalyseArgs) -> anyhow::Result<()> {
         }
     }
     let lines = analyser.display();
-    let alias_of = truth.flags(lines.len());
+    let floor = adc.quantisation_line_power(analyser.enbw_hz(), settings.sample_rate_hz());
+    let alias_of = truth.flags(lines.len(), floor);
     std::fs::create_dir_all(&args.out)
         .with_context(|| format!("--out {}: cannot create the folder", args.out.display()))?;
     let metadata = metadata(
@@ -193,7 +194,7 @@ fn metadata(
         ),
         (
             "alias_of_hz",
-            "true frequency of a component aliased onto the line; empty for a real component"
+            "true frequency of a component aliased onto the line; empty for a real component or one below the ADC's quantisation noise per line"
                 .to_string(),
         ),
     ]

@@ -75,13 +75,30 @@ fn draw<DB: DrawingBackend>(
             db.iter().map(|&(f, v)| (f, v.max(bottom))),
             &BLUE,
         ))
-        .map_err(&err)?;
-    let aliases = db
+        .map_err(&err)?
+        .label("power spectrum")
+        .legend(|(x, y)| PathElement::new([(x, y), (x + 16, y)], BLUE));
+    let aliases: Vec<_> = db
         .iter()
         .zip(plot.alias_of)
         .filter(|(_, a)| a.is_some())
-        .map(|(&(f, v), _)| Circle::new((f, v.max(bottom)), 3, RED.filled()));
-    chart.draw_series(aliases).map_err(&err)?;
+        .map(|(&(f, v), _)| Circle::new((f, v.max(bottom)), 3, RED.filled()))
+        .collect();
+    if !aliases.is_empty() {
+        chart
+            .draw_series(aliases)
+            .map_err(&err)?
+            .label("alias (ground truth)")
+            .legend(|(x, y)| Circle::new((x + 8, y), 3, RED.filled()));
+    }
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperRight)
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .label_font(("sans-serif", 12))
+        .draw()
+        .map_err(&err)?;
     root.present().map_err(&err)?;
     Ok(())
 }
@@ -108,17 +125,24 @@ fn draw_orders<DB: DrawingBackend>(
             .map(|k| (k as f64, k.to_string())),
     );
     let grey = RGBColor(150, 150, 150);
+    let mut labelled = false;
     for (order, label) in orders {
         let f = order * running_hz;
         if f > fmax {
             continue;
         }
-        chart.draw_series(DashedLineSeries::new(
+        let series = chart.draw_series(DashedLineSeries::new(
             [(f, bottom), (f, top)],
             4,
             4,
             grey.into(),
         ))?;
+        if !labelled {
+            series
+                .label("orders of the running speed")
+                .legend(move |(x, y)| PathElement::new([(x, y), (x + 16, y)], grey));
+            labelled = true;
+        }
         chart.draw_series(std::iter::once(Text::new(
             label,
             (f, top),

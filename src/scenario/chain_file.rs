@@ -136,9 +136,10 @@ pub struct FilterFile {
     /// Order 1–12.
     #[serde(default = "default_filter_order")]
     pub order: Spanned<usize>,
-    /// Cut-off (Hz), below the stream's Nyquist frequency.
-    #[serde(default = "default_filter_cutoff")]
-    pub cutoff_hz: Spanned<Positive>,
+    /// Cut-off (Hz), below the stream's Nyquist frequency. Left out: the analyser's
+    /// Fmax (as `testrig analyse` does), or [`DEFAULT_CUTOFF_HZ`] with no analyser.
+    #[serde(default)]
+    pub cutoff_hz: Option<Spanned<Positive>>,
 }
 
 impl Default for FilterFile {
@@ -146,7 +147,7 @@ impl Default for FilterFile {
         Self {
             kind: default_filter_kind(),
             order: default_filter_order(),
-            cutoff_hz: default_filter_cutoff(),
+            cutoff_hz: None,
         }
     }
 }
@@ -159,9 +160,8 @@ fn default_filter_order() -> Spanned<usize> {
     Spanned::new(0..0, 8)
 }
 
-fn default_filter_cutoff() -> Spanned<Positive> {
-    Spanned::new(0..0, Positive(2_000.0))
-}
+/// Anti-alias cut-off when the scenario gives none and has no analyser (Hz).
+pub const DEFAULT_CUTOFF_HZ: f64 = 2_000.0;
 
 /// `[chain.meter]`: the RMS voltmeter.
 #[derive(Debug, Deserialize)]
@@ -274,8 +274,8 @@ pub struct AnalyserFile {
     pub block: Spanned<usize>,
     /// Top of the band (Hz).
     pub fmax_hz: Spanned<Positive>,
-    /// thesis (fs = 2 Fmax, N/2 lines) or 2.56.
-    #[serde(default = "default_sampling")]
+    /// thesis (fs = 2 Fmax, N/2 lines) or 2.56 (as text or as a number).
+    #[serde(default = "default_sampling", deserialize_with = "text_or_number")]
     pub sampling: Spanned<String>,
     /// uniform, hanning or flattop.
     #[serde(default = "default_window")]
@@ -299,6 +299,24 @@ pub struct AnalyserFile {
 
 fn default_analyser_block() -> Spanned<usize> {
     Spanned::new(0..0, 1024)
+}
+
+/// A choice written as text, or as a number standing for its text (`sampling = 2.56`).
+#[derive(Deserialize)]
+#[serde(untagged)]
+enum TextOrNumber {
+    Text(String),
+    Number(f64),
+}
+
+fn text_or_number<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Spanned<String>, D::Error> {
+    let value = Spanned::<TextOrNumber>::deserialize(d)?;
+    let span = value.span();
+    let text = match value.into_inner() {
+        TextOrNumber::Text(text) => text,
+        TextOrNumber::Number(number) => number.to_string(),
+    };
+    Ok(Spanned::new(span, text))
 }
 
 fn default_sampling() -> Spanned<String> {

@@ -8,6 +8,7 @@ use instruments::{
 };
 use toml::Spanned;
 
+use super::chain_file::DEFAULT_CUTOFF_HZ;
 use super::file::{AnalyserFile, ChainFile, RecordFile};
 use super::plan::{AnalyserPlan, ChainPlan, RecordPlan, WavFormat};
 use super::source::ScenarioSource;
@@ -16,12 +17,14 @@ use crate::signal_catalog;
 /// Carrier frequency when the scenario gives none and the stream allows it (Hz).
 pub const DEFAULT_CARRIER_HZ: f64 = 10_000.0;
 
-/// The chain's settings, each checked by building the instrument once.
+/// The chain's settings, each checked by building the instrument once. `band_hz` is the
+/// analyser's Fmax, the anti-alias filter's cut-off when the file gives none.
 pub fn chain_plan(
     src: &ScenarioSource,
     chain: &ChainFile,
     rate_hz: f64,
     seed: u64,
+    band_hz: Option<f64>,
 ) -> anyhow::Result<ChainPlan> {
     let g = &chain.gauges;
     let arrangement = parse_choice(
@@ -51,7 +54,7 @@ pub fn chain_plan(
         bridge,
         carrier,
         slip_rings,
-        filter: filter_spec(src, chain, rate_hz)?,
+        filter: filter_spec(src, chain, rate_hz, band_hz)?,
         meter: meter_settings(src, chain, rate_hz)?,
         dvm: (
             chain.tacho.gate_s.0,
@@ -99,6 +102,7 @@ fn filter_spec(
     src: &ScenarioSource,
     chain: &ChainFile,
     rate_hz: f64,
+    band_hz: Option<f64>,
 ) -> anyhow::Result<Option<LowPassSpec>> {
     let f = &chain.filter;
     let kind = parse_choice(
@@ -116,10 +120,13 @@ fn filter_spec(
     let Some(kind) = kind else {
         return Ok(None);
     };
-    let cutoff = f.cutoff_hz.get_ref().0;
+    let (cutoff, span) = match &f.cutoff_hz {
+        Some(c) => (c.get_ref().0, c.span()),
+        None => (band_hz.unwrap_or(DEFAULT_CUTOFF_HZ), 0..0),
+    };
     if cutoff >= rate_hz / 2.0 {
         return Err(src.error(
-            f.cutoff_hz.span(),
+            span,
             "chain.filter.cutoff_hz",
             format!(
                 "{cutoff} Hz is at or above the analogue Nyquist rate {} Hz (half of rate_hz); a cut-off below it is allowed",

@@ -58,7 +58,8 @@ pub struct Case {
 pub fn build_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<SweepPlan> {
     let rate_hz = stream_rate_hz(src, &file.rate_hz)?;
     let (preset, base) = rig_params(src, &file.rig)?;
-    let chain = chain_plan(src, &file.chain, rate_hz, file.seed)?;
+    let band_hz = Some(file.analyser.fmax_hz.get_ref().0);
+    let chain = chain_plan(src, &file.chain, rate_hz, file.seed, band_hz)?;
     let analyser = analyser_plan(src, &file.analyser, rate_hz, file.seed)?;
     let block_s = analyser.settings.block as f64 / analyser.settings.sample_rate_hz();
     if file.case.measure_s.get_ref().0 < block_s {

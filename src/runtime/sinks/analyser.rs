@@ -139,7 +139,10 @@ impl AnalyserSink {
 
     fn write_spectrum(&mut self, index: usize, count: usize) -> anyhow::Result<()> {
         let lines = self.analyser.display();
-        let alias_of = self.truth.flags(lines.len());
+        let floor = self
+            .adc
+            .quantisation_line_power(self.analyser.enbw_hz(), self.plan.settings.sample_rate_hz());
+        let alias_of = self.truth.flags(lines.len(), floor);
         let measure = &self.measures[index];
         let base = self.dir.join(format!("spectrum-{:02}", index + 1));
         let csv = base.with_extension("csv");
@@ -207,7 +210,7 @@ impl AnalyserSink {
             ("scaling", Spectrum::Power.scaling().replace("unit", "V")),
             (
                 "alias_of_hz",
-                "true frequency of a component aliased onto the line; empty for a real component"
+                "true frequency of a component aliased onto the line; empty for a real component or one below the ADC's quantisation noise per line"
                     .to_string(),
             ),
         ]
