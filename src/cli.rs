@@ -84,6 +84,10 @@ pub struct RunArgs {
     /// Base seed of every random source, instead of the scenario's.
     #[arg(long)]
     pub seed: Option<u64>,
+    /// Fail instead of warning: refuse a run whose measurements cannot complete, and exit
+    /// with status 3 when a run ends with warnings (its files and manifest are kept).
+    #[arg(long)]
+    pub strict: bool,
     /// Output folder.
     #[arg(long)]
     pub out: PathBuf,

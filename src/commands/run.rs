@@ -8,12 +8,14 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use anyhow::{Context, bail};
 use testrig::runtime::manifest::Ending;
 use testrig::runtime::{Pace, RunOptions, RunResult, run as run_plan, write_manifest};
-use testrig::scenario::{CommandLine, ScenarioSource, build};
+use testrig::scenario::{CommandLine, ScenarioSource, build, measurement_warnings};
 
 use crate::cli::RunArgs;
 
 /// Exit status of a run stopped by Ctrl-C (128 + SIGINT), its files complete.
 const INTERRUPTED: u8 = 130;
+/// Exit status of a `--strict` run that ended with warnings, its files complete.
+const WARNED: u8 = 3;
 
 pub fn run(args: &RunArgs) -> anyhow::Result<ExitCode> {
     let pace = Pace::parse(&args.pace)
@@ -31,6 +33,17 @@ pub fn run(args: &RunArgs) -> anyhow::Result<ExitCode> {
             seed: args.seed,
         },
     )?;
+    let predicted = measurement_warnings(&plan);
+    if args.strict && !predicted.is_empty() {
+        bail!(
+            "{}: --strict and measurements that cannot complete (nothing was run):\n  {}",
+            args.scenario.display(),
+            predicted.join("\n  ")
+        );
+    }
+    for warning in &predicted {
+        eprintln!("warning: {warning}");
+    }
     let stop = Arc::new(AtomicBool::new(false));
     let handler_stop = Arc::clone(&stop);
     ctrlc::set_handler(move || handler_stop.store(true, Ordering::Relaxed))
@@ -66,6 +79,25 @@ pub fn run(args: &RunArgs) -> anyhow::Result<ExitCode> {
     if ending == Ending::Interrupted {
         eprintln!("testrig: stopped by Ctrl-C; every sample up to the stop is in the files");
         return Ok(ExitCode::from(INTERRUPTED));
+    }
+    let warnings = result.warnings();
+    if predicted.is_empty() {
+        for warning in &warnings {
+            eprintln!("warning: {warning}");
+        }
+    } else if !warnings.is_empty() {
+        eprintln!(
+            "testrig: {} warnings, as foreseen above, listed in {}",
+            warnings.len(),
+            args.out.join("manifest.json").display()
+        );
+    }
+    if args.strict && !warnings.is_empty() {
+        eprintln!(
+            "testrig: --strict: {} warnings (listed in manifest.json)",
+            warnings.len()
+        );
+        return Ok(ExitCode::from(WARNED));
     }
     Ok(ExitCode::SUCCESS)
 }

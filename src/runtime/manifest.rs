@@ -85,6 +85,7 @@ pub fn write_manifest(
         "impacts_per_rev": p.steady.impacts_per_rev,
         "torque_mean_nm": p.steady.torque_mean_nm,
         "torque_ac_rms_nm": p.steady.torque_ac_rms_nm,
+        "warnings": result.warnings(),
         "files": files,
     });
     if let Value::Object(map) = &mut manifest {

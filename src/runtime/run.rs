@@ -22,7 +22,7 @@ use super::sinks::{Sink, SinkReport};
 use super::stages::{NamedStage, build_stages};
 use super::status::SharedStatus;
 use super::wiring::{channel, run_sink, run_stage};
-use crate::scenario::{Measure, Plan};
+use crate::scenario::Plan;
 
 /// How to run.
 #[derive(Clone, Debug)]
@@ -60,6 +60,15 @@ impl RunResult {
     /// Simulated time released by the plant (s).
     pub fn simulated_s(&self) -> f64 {
         self.plant.samples as f64 * self.plant.step_s
+    }
+
+    /// Every sink's warnings (spectra short of their averages, measurements not reached,
+    /// ADC overloads, scopes that did not trigger), in sink order.
+    pub fn warnings(&self) -> Vec<String> {
+        self.sinks
+            .iter()
+            .flat_map(|s| s.warnings.iter().cloned())
+            .collect()
     }
 }
 
@@ -177,19 +186,6 @@ impl Threads<'_> {
     }
 }
 
-/// The measurements the sinks work to: the scenario's, or one at the start.
-fn effective_measures(plan: &Plan) -> Vec<Measure> {
-    if !plan.measures.is_empty() {
-        return plan.measures.clone();
-    }
-    vec![Measure {
-        at_s: 0.0,
-        label: "from the start".into(),
-        speed_rpm: plan.schedule.speed_rpm.value_at(0.0),
-        load_nm: plan.schedule.load_nm.value_at(0.0),
-    }]
-}
-
 type NamedSink = (&'static str, Box<dyn Sink>);
 
 fn build_sinks(
@@ -198,7 +194,7 @@ fn build_sinks(
     names: &SignalNames,
     status: &SharedStatus,
 ) -> anyhow::Result<Vec<NamedSink>> {
-    let measures = effective_measures(plan);
+    let measures = plan.measurements();
     let index = |n: &str| {
         names
             .index(n)

@@ -3,6 +3,7 @@
 pub mod build;
 pub mod chain_file;
 pub mod chain_part;
+pub mod coverage;
 pub mod file;
 pub mod overrides;
 pub mod plan;
@@ -11,6 +12,7 @@ pub mod source;
 pub mod values;
 
 pub use build::{CommandLine, build};
+pub use coverage::measurement_warnings;
 pub use file::Overflow;
 pub use overrides::apply_override;
 pub use plan::{AnalyserPlan, ChainPlan, Measure, Plan, RecordPlan, WavFormat};

@@ -122,3 +122,19 @@ pub struct RecordPlan {
     /// Keep every M-th sample.
     pub decimate: usize,
 }
+
+impl Plan {
+    /// The measurements the analyser and the scope work to: the scenario's, or one at
+    /// the start when it lists none.
+    pub fn measurements(&self) -> Vec<Measure> {
+        if !self.measures.is_empty() {
+            return self.measures.clone();
+        }
+        vec![Measure {
+            at_s: 0.0,
+            label: "from the start".into(),
+            speed_rpm: self.schedule.speed_rpm.value_at(0.0),
+            load_nm: self.schedule.load_nm.value_at(0.0),
+        }]
+    }
+}

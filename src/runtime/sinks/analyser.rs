@@ -117,8 +117,9 @@ impl AnalyserSink {
         let count = self.analyser.average_count();
         if count < self.plan.settings.averages {
             self.incomplete.push(format!(
-                "measurement {}: {count} of {} averages",
+                "measurement {} ({}): spectrum of {count} of {} averages",
                 index + 1,
+                self.measures[index].label,
                 self.plan.settings.averages
             ));
         }
@@ -261,12 +262,24 @@ impl Sink for AnalyserSink {
     fn finish(mut self: Box<Self>) -> anyhow::Result<SinkReport> {
         self.close_measurement()?;
         self.overloads += self.adc.overloads();
+        let mut warnings = std::mem::take(&mut self.incomplete);
+        warnings.extend(self.clock.unreached().map(|index| {
+            format!(
+                "measurement {} ({}): not reached before the run ended; no spectrum",
+                index + 1,
+                self.measures[index].label
+            )
+        }));
+        if self.overloads > 0 {
+            warnings.push(format!(
+                "the ADC overloaded on {} samples (range ±{} V): raise analyser.range_v",
+                self.overloads, self.plan.adc.range_v
+            ));
+        }
         Ok(SinkReport {
             files: std::mem::take(&mut self.files),
-            facts: vec![
-                ("adc_overloads", self.overloads.into()),
-                ("spectra_incomplete", self.incomplete.clone().into()),
-            ],
+            facts: vec![("adc_overloads", self.overloads.into())],
+            warnings,
         })
     }
 }

@@ -30,4 +30,9 @@ impl MeasureClock {
         self.next += 1;
         Some((mark.saturating_sub(start) as usize, index))
     }
+
+    /// Indices of the measurements the stream has not reached (yet).
+    pub fn unreached(&self) -> std::ops::Range<usize> {
+        self.next..self.marks.len()
+    }
 }

@@ -25,4 +25,7 @@ pub struct SinkReport {
     pub files: Vec<PathBuf>,
     /// Facts for the manifest, by key.
     pub facts: Vec<(&'static str, serde_json::Value)>,
+    /// What the sink could not do (a spectrum short of its averages, a measurement never
+    /// reached), for the console and the manifest's `warnings`.
+    pub warnings: Vec<String>,
 }

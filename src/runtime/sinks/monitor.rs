@@ -211,6 +211,7 @@ impl Sink for MonitorSink {
         Ok(SinkReport {
             files,
             facts: vec![("readings", self.points.len().into())],
+            warnings: Vec::new(),
         })
     }
 }

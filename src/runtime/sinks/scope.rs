@@ -135,12 +135,31 @@ impl Sink for ScopeSink {
         if let Some((index, _)) = self.armed.take() {
             self.untriggered.push(index + 1);
         }
+        let label = |index: usize| &self.measures[index].label;
+        let mut warnings: Vec<String> = self
+            .untriggered
+            .iter()
+            .map(|n| {
+                format!(
+                    "measurement {n} ({}): the scope did not trigger; no trace",
+                    label(n - 1)
+                )
+            })
+            .collect();
+        warnings.extend(self.clock.unreached().map(|index| {
+            format!(
+                "measurement {} ({}): not reached before the run ended; no trace",
+                index + 1,
+                label(index)
+            )
+        }));
         Ok(SinkReport {
             files: std::mem::take(&mut self.files),
             facts: vec![(
                 "scope_untriggered_measurements",
                 self.untriggered.clone().into(),
             )],
+            warnings,
         })
     }
 }
