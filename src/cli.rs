@@ -162,9 +162,16 @@ pub struct ParamsArgs {
 pub struct AnalyseArgs {
     /// The WAV file (ours or a real recording), taken as the analogue signal at its own rate.
     pub file: PathBuf,
-    /// Channel of the file (0 = first).
-    #[arg(long, default_value_t = 0)]
-    pub channel: usize,
+    /// Channel of the file: a number (0 = first) or a signal name from the sidecar
+    /// (`FILE.json`, as `testrig run` writes beside recording.wav).
+    #[arg(long, default_value = "0")]
+    pub channel: String,
+    /// Start of the analysed section (s from the start of the file).
+    #[arg(long, default_value_t = 0.0)]
+    pub start: f64,
+    /// Length of the analysed section (s); default to the end of the file.
+    #[arg(long)]
+    pub length: Option<f64>,
     /// Top of the displayed band (Hz).
     #[arg(long, default_value_t = 2_000.0)]
     pub fmax: f64,
@@ -192,9 +199,15 @@ pub struct AnalyseArgs {
     /// ADC resolution (bits).
     #[arg(long, default_value_t = 12)]
     pub bits: u32,
-    /// ADC full scale ±range in the file's unit (integer WAVs read as ±1 full scale).
-    #[arg(long, default_value_t = 1.0)]
-    pub range: f64,
+    /// ADC full scale ±range in the signal's unit. Default: the recording's full scale
+    /// (from the sidecar, or ±1 for an integer WAV without one), else the 1-2-5 step
+    /// above the section's peak.
+    #[arg(long)]
+    pub range: Option<f64>,
+    /// Run an HP 5451C keyboard program (e.g. scenarios/appendix-e.prg) on the ADC samples
+    /// instead of the analyser's averaging: each DISPLAY is written as display-NN.csv.
+    #[arg(long)]
+    pub program: Option<PathBuf>,
     /// Folder for spectrum.csv and spectrum.png.
     #[arg(long)]
     pub out: PathBuf,

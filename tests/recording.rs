@@ -19,11 +19,13 @@ fn a_wav_recording_holds_scaled_frames_and_its_sidecar_says_how() {
             name: "torque_intermediate_shaft".into(),
             unit: "N m".into(),
             scale: 100.0,
+            full_scale: 100.0,
         },
         ChannelInfo {
             name: "speed1".into(),
             unit: "rad/s".into(),
             scale: 500.0,
+            full_scale: 500.0,
         },
     ];
     let mut recorder =

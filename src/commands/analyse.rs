@@ -4,17 +4,17 @@
 use anyhow::{Context, bail};
 use instruments::{
     Adc, AdcSettings, AliasTruth, Analyser, AnalyserSettings, AntiAliasFilter, Averaging, Block,
-    FilterKind, LowPassSpec, Sampling, Spectrum, Window,
+    FilterKind, KeyboardProgram, LowPassSpec, Sampling, Spectrum, Window,
 };
 
 use crate::cli::AnalyseArgs;
-use crate::wav_input::read_channel;
+use crate::wav_input::{WavSignal, read_signal};
 use testrig::plots::{SpectrumPlot, write_spectrum_plots};
-use testrig::recording::{Metadata, write_spectrum_csv};
+use testrig::recording::{ALIAS_COLUMN, Metadata, write_spectrum_csv};
 
 pub fn run(args: &AnalyseArgs) -> anyhow::Result<()> {
     let settings = analyser_settings(args)?;
-    let wav = read_channel(&args.file, args.channel)?;
+    let wav = read_signal(&args.file, &args.channel, args.start, args.length)?;
     let ratio = wav.rate_hz / settings.sample_rate_hz();
     if ratio < 1.0 {
         bail!(
@@ -28,17 +28,39 @@ pub fn run(args: &AnalyseArgs) -> anyhow::Result<()> {
     let mut filter = AntiAliasFilter::new(filter_spec, wav.rate_hz).context("--filter/--cutoff")?;
     let mut analogue = vec![0.0; wav.samples.len()];
     filter.process(&wav.samples, &mut analogue);
+    let range = adc_range(args.range, &wav)?;
     let mut adc = Adc::new(AdcSettings {
         ratio,
         bits: args.bits,
-        range_v: args.range,
+        range_v: range.value,
         dither_seed: None,
     })
     .context("--bits/--range")?;
     let mut samples = Vec::with_capacity((analogue.len() as f64 / ratio) as usize + 1);
     adc.convert(&analogue, &mut samples);
-    let mut analyser = Analyser::new(settings).context("--block/--fmax/--averages/--overlap")?;
-    analyser.push(&samples);
+    std::fs::create_dir_all(&args.out)
+        .with_context(|| format!("--out {}: cannot create the folder", args.out.display()))?;
+    let done = match &args.program {
+        Some(program) => run_program(args, program, &settings, &samples),
+        None => run_analyser(args, &settings, &wav, &analogue, &samples, &adc, &range),
+    };
+    warn_of_overloads(&adc, &range, &wav.unit);
+    done
+}
+
+/// The averaged spectrum of the ADC samples with the alias truth: spectrum.csv and plots.
+fn run_analyser(
+    args: &AnalyseArgs,
+    settings: &AnalyserSettings,
+    wav: &WavSignal,
+    analogue: &[f64],
+    samples: &[f64],
+    adc: &Adc,
+    range: &AdcRange,
+) -> anyhow::Result<()> {
+    let ratio = wav.rate_hz / settings.sample_rate_hz();
+    let mut analyser = Analyser::new(*settings).context("--block/--fmax/--averages/--overlap")?;
+    analyser.push(samples);
     let count = analyser.average_count();
     if count == 0 {
         bail!(
@@ -61,22 +83,26 @@ pub fn run(args: &AnalyseArgs) -> anyhow::Result<()> {
     let lines = analyser.display();
     let floor = adc.quantisation_line_power(analyser.enbw_hz(), settings.sample_rate_hz());
     let alias_of = truth.flags(lines.len(), floor);
-    std::fs::create_dir_all(&args.out)
-        .with_context(|| format!("--out {}: cannot create the folder", args.out.display()))?;
     let metadata = metadata(
         args,
-        &settings,
+        settings,
         &analyser,
-        wav.rate_hz,
+        wav,
         count,
         adc.overloads(),
+        range,
     );
     write_spectrum_csv(&args.out.join("spectrum.csv"), &metadata, &lines, &alias_of)?;
+    let overload = match adc.overloads() {
+        0 => String::new(),
+        n => format!(" (ADC OVERLOADED on {n} samples)"),
+    };
     let title = format!(
-        "{}: {} averages, {} window, N = {}",
+        "{}{}: {} averages, {} window, N = {}{overload}",
         args.file
             .file_name()
             .map_or_else(|| "input".into(), |n| n.to_string_lossy()),
+        wav.name.as_ref().map_or(String::new(), |n| format!(" {n}")),
         count,
         settings.window.name(),
         args.block
@@ -85,21 +111,113 @@ pub fn run(args: &AnalyseArgs) -> anyhow::Result<()> {
         &args.out.join("spectrum"),
         &SpectrumPlot {
             title: &title,
-            unit: "WAV unit",
+            unit: &wav.unit,
             lines: &lines,
             alias_of: &alias_of,
             running_hz: None,
         },
     )?;
     println!(
-        "{} lines to {}; {} of {} averages; {} ADC overloads",
+        "{} lines to {}; {} of {} averages; ADC range ±{} {} ({}), {} overloads",
         lines.len(),
         args.out.display(),
         count,
         args.averages,
+        range.value,
+        wav.unit,
+        range.source,
         adc.overloads()
     );
     Ok(())
+}
+
+/// An HP 5451C keyboard program on the ADC samples: each DISPLAY as display-NN.csv.
+fn run_program(
+    args: &AnalyseArgs,
+    path: &std::path::Path,
+    settings: &AnalyserSettings,
+    samples: &[f64],
+) -> anyhow::Result<()> {
+    let text = std::fs::read_to_string(path)
+        .with_context(|| format!("--program {}: cannot read", path.display()))?;
+    let program =
+        KeyboardProgram::parse(&text).with_context(|| format!("--program {}", path.display()))?;
+    let displays = program
+        .run(settings, samples)
+        .with_context(|| format!("--program {}", path.display()))?;
+    for (k, display) in displays.iter().enumerate() {
+        let out = args.out.join(format!("display-{:02}.csv", k + 1));
+        let mut csv = csv::Writer::from_path(&out)
+            .with_context(|| format!("cannot write {}", out.display()))?;
+        csv.write_record(["frequency_hz", "value"])?;
+        for line in display {
+            csv.write_record([line.frequency_hz.to_string(), format!("{:e}", line.value)])?;
+        }
+        csv.flush()?;
+    }
+    println!(
+        "{}: {} displays to {} (display-NN.csv: the block as shown, in dB after LOG)",
+        path.display(),
+        displays.len(),
+        args.out.display()
+    );
+    Ok(())
+}
+
+/// The ADC's ±range and where it came from.
+struct AdcRange {
+    /// ±range in the signal's unit.
+    value: f64,
+    /// Why this range: the flag, the recording's full scale, or the signal's peak.
+    source: &'static str,
+}
+
+/// `--range`, else the recording's full scale, else the 1-2-5 step above the peak.
+fn adc_range(given: Option<f64>, wav: &WavSignal) -> anyhow::Result<AdcRange> {
+    if let Some(value) = given {
+        if !(value.is_finite() && value > 0.0) {
+            bail!("--range {value}: a full scale > 0 in the signal's unit");
+        }
+        return Ok(AdcRange {
+            value,
+            source: "--range",
+        });
+    }
+    if let Some(value) = wav.full_scale {
+        return Ok(AdcRange {
+            value,
+            source: "the recording's full scale",
+        });
+    }
+    let peak = wav.samples.iter().fold(0.0_f64, |m, s| m.max(s.abs()));
+    Ok(AdcRange {
+        value: one_two_five_above(peak),
+        source: "the 1-2-5 step above the section's peak",
+    })
+}
+
+/// The smallest of 1, 2, 5 × 10^k above `peak` (1 for a silent or non-finite signal).
+fn one_two_five_above(peak: f64) -> f64 {
+    if !(peak.is_finite() && peak > 0.0) {
+        return 1.0;
+    }
+    let decade = 10f64.powf(peak.log10().floor());
+    [1.0, 2.0, 5.0, 10.0, 20.0]
+        .iter()
+        .map(|m| m * decade)
+        .find(|&v| v > peak)
+        .unwrap_or(20.0 * decade)
+}
+
+fn warn_of_overloads(adc: &Adc, range: &AdcRange, unit: &str) {
+    if adc.overloads() > 0 {
+        eprintln!(
+            "warning: the ADC overloaded on {} samples at ±{} {unit} ({}): raise --range",
+            adc.overloads(),
+            range.value,
+            range.source
+        );
+    }
 }
 
 fn analyser_settings(args: &AnalyseArgs) -> anyhow::Result<AnalyserSettings> {
@@ -151,14 +269,26 @@ fn metadata(
     args: &AnalyseArgs,
     settings: &AnalyserSettings,
     analyser: &Analyser,
-    file_rate_hz: f64,
+    wav: &WavSignal,
     count: usize,
     overloads: u64,
+    range: &AdcRange,
 ) -> Metadata {
+    let section_s = wav.samples.len() as f64 / wav.rate_hz;
     vec![
         ("file", args.file.display().to_string()),
-        ("channel", args.channel.to_string()),
-        ("file_rate_hz", file_rate_hz.to_string()),
+        (
+            "channel",
+            match &wav.name {
+                Some(name) => format!("{} ({name}, {})", wav.channel, wav.unit),
+                None => wav.channel.to_string(),
+            },
+        ),
+        (
+            "section_s",
+            format!("{} to {}", args.start, args.start + section_s),
+        ),
+        ("file_rate_hz", wav.rate_hz.to_string()),
         ("fs_hz", settings.sample_rate_hz().to_string()),
         ("n", settings.block.to_string()),
         ("fmax_hz", settings.fmax_hz.to_string()),
@@ -184,18 +314,14 @@ fn metadata(
         (
             "adc",
             format!(
-                "{} bits over +-{} , {overloads} overloads",
-                args.bits, args.range
+                "{} bits over +-{} {} ({}), {overloads} overloads",
+                args.bits, range.value, wav.unit, range.source
             ),
         ),
         (
             "scaling",
-            Spectrum::Power.scaling().replace("unit", "WAV unit"),
+            Spectrum::Power.scaling().replace("unit", &wav.unit),
         ),
-        (
-            "alias_of_hz",
-            "true frequency of a component aliased onto the line; empty for a real component or one below the ADC's quantisation noise per line"
-                .to_string(),
-        ),
+        ("alias_of_hz", ALIAS_COLUMN.to_string()),
     ]
 }

@@ -10,7 +10,7 @@ pub mod wav;
 
 pub use csv_stream::CsvRecorder;
 pub use partial::PartialFile;
-pub use spectrum_csv::{Metadata, write_spectrum_csv};
+pub use spectrum_csv::{ALIAS_COLUMN, Metadata, write_spectrum_csv};
 pub use uff58::{
     Uff58Abscissa, Uff58Record, write_uff58, write_uff58_header, write_uff58_trailer,
     write_uff58_values,

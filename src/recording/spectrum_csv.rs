@@ -9,6 +9,9 @@ use instruments::Line;
 
 use super::partial::PartialFile;
 
+/// What the `alias_of_hz` column holds, for the metadata of every spectrum CSV.
+pub const ALIAS_COLUMN: &str = "true frequency of a component aliased onto the line; empty for a real component or one below the ADC's quantisation noise per line";
+
 /// Metadata lines written as `# key: value` before the header.
 pub type Metadata = Vec<(&'static str, String)>;
 

@@ -18,8 +18,12 @@ pub struct ChannelInfo {
     pub name: String,
     /// Unit of the physical value.
     pub unit: String,
-    /// Physical value at full scale (WAV sample 1.0), in `unit`.
+    /// Physical value of WAV sample 1.0, in `unit` (the full scale for integer files,
+    /// 1 for float files, whose samples are the physical values).
     pub scale: f64,
+    /// The recording's full scale in `unit` (what `testrig analyse` takes as the ADC's
+    /// range by default).
+    pub full_scale: f64,
 }
 
 /// How samples are stored.

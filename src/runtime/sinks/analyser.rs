@@ -11,7 +11,8 @@ use super::measure_clock::MeasureClock;
 use super::{Sink, SinkReport};
 use crate::plots::{SpectrumPlot, write_spectrum_plots};
 use crate::recording::{
-    Metadata, PartialFile, Uff58Abscissa, Uff58Record, write_spectrum_csv, write_uff58,
+    ALIAS_COLUMN, Metadata, PartialFile, Uff58Abscissa, Uff58Record, write_spectrum_csv,
+    write_uff58,
 };
 use crate::runtime::frame::Frame;
 use crate::runtime::status::SharedStatus;
@@ -209,11 +210,7 @@ impl AnalyserSink {
                 ),
             ),
             ("scaling", Spectrum::Power.scaling().replace("unit", "V")),
-            (
-                "alias_of_hz",
-                "true frequency of a component aliased onto the line; empty for a real component or one below the ADC's quantisation noise per line"
-                    .to_string(),
-            ),
+            ("alias_of_hz", ALIAS_COLUMN.to_string()),
         ]
     }
 }

@@ -73,6 +73,7 @@ impl RecorderSink {
                     } else {
                         scale
                     },
+                    full_scale: scale,
                 })
                 .collect();
             let samples = match format {

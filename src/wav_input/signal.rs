@@ -1,0 +1,161 @@
+//! One channel of a WAV file, picked by number or by name, over a chosen span of time, in
+//! physical units when the sidecar gives them.
+
+use std::path::Path;
+
+use anyhow::{Context, bail};
+
+use super::float64::read_float64;
+use super::sidecar::{SidecarChannel, read_sidecar, sidecar_path};
+
+/// One channel of a WAV file as an analogue signal.
+#[derive(Clone, Debug)]
+pub struct WavSignal {
+    /// Samples in `unit`: the sidecar's scale applied; without a sidecar float files as
+    /// stored and integer files scaled to ±1 at full scale.
+    pub samples: Vec<f64>,
+    /// Sample rate (Hz).
+    pub rate_hz: f64,
+    /// Channel index (from 0).
+    pub channel: usize,
+    /// Signal name from the sidecar.
+    pub name: Option<String>,
+    /// Unit of `samples` (`WAV unit` without a sidecar).
+    pub unit: String,
+    /// Full scale of the recording in `unit`, where the file or its sidecar tells it.
+    pub full_scale: Option<f64>,
+}
+
+/// What the sample formats this reader takes are, for error messages.
+const FORMATS: &str = "8-, 16-, 24- and 32-bit integer PCM and 32- and 64-bit IEEE float";
+
+/// Reads channel `channel` (a number from 0, or a signal name from the sidecar) of `path`,
+/// from `start_s` for `length_s` seconds (to the end when `None`).
+pub fn read_signal(
+    path: &Path,
+    channel: &str,
+    start_s: f64,
+    length_s: Option<f64>,
+) -> anyhow::Result<WavSignal> {
+    let (interleaved, channels, rate_hz, integer) = read_interleaved(path)?;
+    let sidecar = read_sidecar(path)?;
+    let index = channel_index(path, channel, channels, sidecar.as_deref())?;
+    let described: Option<&SidecarChannel> = sidecar.as_deref().and_then(|c| c.get(index));
+    let scale = described.map_or(1.0, |c| c.scale);
+    let full_scale = described
+        .and_then(|c| c.full_scale)
+        .or_else(|| integer.then_some(scale));
+    let frames = interleaved.len() / channels;
+    let (first, count) = span(path, frames, rate_hz, start_s, length_s)?;
+    let samples = interleaved
+        .iter()
+        .skip(index + first * channels)
+        .step_by(channels)
+        .take(count)
+        .map(|s| s * scale)
+        .collect();
+    Ok(WavSignal {
+        samples,
+        rate_hz,
+        channel: index,
+        name: described.map(|c| c.name.clone()),
+        unit: described.map_or_else(|| "WAV unit".into(), |c| c.unit.clone()),
+        full_scale,
+    })
+}
+
+/// Interleaved samples, channels, rate (Hz) and whether the samples were integers.
+fn read_interleaved(path: &Path) -> anyhow::Result<(Vec<f64>, usize, f64, bool)> {
+    let mut reader = match hound::WavReader::open(path) {
+        Ok(reader) => reader,
+        Err(error) => {
+            return match read_float64(path) {
+                Ok(Some(wav)) => Ok((wav.samples, wav.channels, wav.rate_hz, false)),
+                Ok(None) => bail!("{}: {error}; this reader takes {FORMATS}", path.display()),
+                Err(e) => Err(e.context(format!("this reader takes WAV files of {FORMATS}"))),
+            };
+        }
+    };
+    let spec = reader.spec();
+    let samples: Vec<f64> = match spec.sample_format {
+        hound::SampleFormat::Float => reader
+            .samples::<f32>()
+            .map(|s| s.map(f64::from))
+            .collect::<Result<_, _>>(),
+        hound::SampleFormat::Int => {
+            let full_scale = f64::from(1u32 << (spec.bits_per_sample - 1));
+            reader
+                .samples::<i32>()
+                .map(|s| s.map(|v| f64::from(v) / full_scale))
+                .collect::<Result<_, _>>()
+        }
+    }
+    .with_context(|| format!("{}: damaged sample data", path.display()))?;
+    Ok((
+        samples,
+        usize::from(spec.channels),
+        f64::from(spec.sample_rate),
+        spec.sample_format == hound::SampleFormat::Int,
+    ))
+}
+
+/// The index `channel` names: a number, or a name the sidecar lists.
+fn channel_index(
+    path: &Path,
+    channel: &str,
+    channels: usize,
+    sidecar: Option<&[SidecarChannel]>,
+) -> anyhow::Result<usize> {
+    if let Ok(index) = channel.parse::<usize>() {
+        if index >= channels {
+            bail!(
+                "--channel {channel}: {} has {channels} channel(s), numbered from 0",
+                path.display()
+            );
+        }
+        return Ok(index);
+    }
+    let Some(described) = sidecar else {
+        bail!(
+            "--channel {channel}: a channel by name needs the sidecar {}, which is not there; give a number from 0 to {}",
+            sidecar_path(path).display(),
+            channels - 1
+        );
+    };
+    described
+        .iter()
+        .position(|c| c.name == channel)
+        .filter(|&i| i < channels)
+        .with_context(|| {
+            let names: Vec<&str> = described.iter().map(|c| c.name.as_str()).collect();
+            format!(
+                "--channel {channel}: {} holds {}",
+                path.display(),
+                names.join(", ")
+            )
+        })
+}
+
+/// First frame and frame count of `[start_s, start_s + length_s)` in a file of `frames`.
+fn span(
+    path: &Path,
+    frames: usize,
+    rate_hz: f64,
+    start_s: f64,
+    length_s: Option<f64>,
+) -> anyhow::Result<(usize, usize)> {
+    let file_s = frames as f64 / rate_hz;
+    if !(start_s.is_finite() && start_s >= 0.0 && start_s < file_s) {
+        bail!(
+            "--start {start_s}: a time in [0, {file_s}) s, the length of {}",
+            path.display()
+        );
+    }
+    let first = (start_s * rate_hz).round() as usize;
+    let count = match length_s {
+        None => frames - first,
+        Some(l) if l.is_finite() && l > 0.0 => ((l * rate_hz).round() as usize).min(frames - first),
+        Some(l) => bail!("--length {l}: a duration > 0 s"),
+    };
+    Ok((first, count))
+}
