@@ -160,3 +160,26 @@ fn params_lists_every_parameter() {
             .all(|p| p["unit"].is_string() && p["meaning"].is_string())
     );
 }
+
+#[test]
+fn a_closed_pipe_ends_the_output_quietly_without_a_panic() {
+    use std::os::unix::process::ExitStatusExt;
+    for command in [&["modes"][..], &["params"], &["modes", "--json"]] {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_testrig"))
+            .args(command)
+            .stdout(std::process::Stdio::piped())
+            .stderr(std::process::Stdio::piped())
+            .spawn()
+            .expect("starts");
+        // Close the reading end at once, as `| head -0` would: every write hits EPIPE.
+        drop(child.stdout.take());
+        let output = child.wait_with_output().expect("ends");
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert!(!stderr.contains("panicked"), "{command:?}: {stderr}");
+        assert!(
+            output.status.success() || output.status.signal() == Some(libc::SIGPIPE),
+            "{command:?}: {:?}",
+            output.status
+        );
+    }
+}
