@@ -183,3 +183,27 @@ fn a_closed_pipe_ends_the_output_quietly_without_a_panic() {
         );
     }
 }
+
+#[test]
+fn a_file_given_to_the_wrong_command_is_sent_to_the_right_one() {
+    let dir = env!("CARGO_MANIFEST_DIR");
+    let campaign = format!("{dir}/scenarios/thesis-campaign.toml");
+    let out = std::env::temp_dir().join(format!("testrig-wrong-command-{}", std::process::id()));
+    let out = out.to_str().expect("utf-8");
+    let run = testrig(&["run", &campaign, "--out", out]);
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert!(!run.status.success());
+    assert!(
+        stderr.contains("this is a sweep file") && stderr.contains("testrig sweep"),
+        "{stderr}"
+    );
+    let scenario = format!("{dir}/scenarios/subharmonic-2712nm.toml");
+    let sweep = testrig(&["sweep", &scenario, "--out", out]);
+    let stderr = String::from_utf8_lossy(&sweep.stderr);
+    assert!(!sweep.status.success());
+    assert!(
+        stderr.contains("this is a scenario file") && stderr.contains("testrig run"),
+        "{stderr}"
+    );
+    assert!(!std::path::Path::new(out).join("manifest.json").exists());
+}

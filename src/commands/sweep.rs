@@ -16,7 +16,7 @@ pub fn run(args: &SweepArgs) -> anyhow::Result<()> {
     }
     let shard = Shard::choose(args.shard.as_deref(), |k| std::env::var(k).ok())?;
     let source = ScenarioSource::read_with(&args.sweep, &args.overrides)?;
-    let file: SweepFile = source.parse_as()?;
+    let file: SweepFile = source.parse_sweep()?;
     let plan = build_sweep(&source, &file)?;
     let base = plan.cases.first().map(|c| c.params.clone());
     let natural_hz = base

@@ -39,13 +39,38 @@ impl ScenarioSource {
     }
 
     /// Parses the text as a scenario; unknown keys and out-of-range values are errors at
-    /// their place.
+    /// their place. A sweep file is refused with the command that runs it.
     pub fn parse(&self) -> anyhow::Result<ScenarioFile> {
+        if self.has_table("grid") {
+            return Err(anyhow!(
+                "{}: this is a sweep file (it has a [grid]): run it with `testrig sweep {} --out DIR`",
+                self.path.display(),
+                self.path.display()
+            ));
+        }
         self.parse_as()
     }
 
+    /// Parses the text as a sweep file. A scenario is refused with the command that runs it.
+    pub fn parse_sweep<T: serde::de::DeserializeOwned>(&self) -> anyhow::Result<T> {
+        if !self.has_table("grid") && ["schedule", "survey"].iter().any(|t| self.has_table(t)) {
+            return Err(anyhow!(
+                "{}: this is a scenario file (it has a [schedule] or [survey], no [grid]): run it with `testrig run {} --out DIR`",
+                self.path.display(),
+                self.path.display()
+            ));
+        }
+        self.parse_as()
+    }
+
+    /// Whether the text, read as TOML, has the top-level table `name`.
+    fn has_table(&self, name: &str) -> bool {
+        toml::from_str::<toml::Table>(&self.text)
+            .is_ok_and(|table| table.get(name).is_some_and(toml::Value::is_table))
+    }
+
     /// Parses the text as any file of this TOML family (a scenario, a sweep).
-    pub fn parse_as<T: serde::de::DeserializeOwned>(&self) -> anyhow::Result<T> {
+    fn parse_as<T: serde::de::DeserializeOwned>(&self) -> anyhow::Result<T> {
         toml::from_str(&self.text).map_err(|e| {
             let span = e.span().unwrap_or(0..0);
             let message = e.message().trim().to_string();
