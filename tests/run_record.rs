@@ -198,38 +198,44 @@ fn a_dropping_queue_counts_every_overrun_and_the_recording_shows_the_gaps() {
 }
 
 #[test]
-fn ctrl_c_closes_every_file_with_the_samples_up_to_the_stop() {
-    let out = folder("ctrl-c");
-    let mut child = Command::new(env!("CARGO_BIN_EXE_testrig"))
-        .args([
-            "run",
-            &scenario("aliasing-windowing"),
-            "--pace",
-            "1",
-            "--duration",
-            "60",
-        ])
-        .args(["--out", out.to_str().expect("utf-8")])
-        .spawn()
-        .expect("started");
-    std::thread::sleep(std::time::Duration::from_millis(2500));
-    let killed = Command::new("kill")
-        .args(["-INT", &child.id().to_string()])
-        .status()
-        .expect("kill runs");
-    assert!(killed.success());
-    let status = child.wait().expect("exits");
-    assert_eq!(status.code(), Some(130));
-    let manifest = read_manifest(&out);
-    assert_eq!(manifest["ending"], "interrupted");
-    check_files(&out, &manifest);
-    let simulated = manifest["simulated_s"].as_f64().expect("simulated");
-    assert!(simulated > 1.0 && simulated < 10.0, "{simulated}");
-    let reader = hound::WavReader::open(out.join("recording.wav")).expect("a complete WAV");
-    let frames = u64::from(reader.duration());
-    assert_eq!(frames, (simulated * 51_200.0).round() as u64);
-    assert_eq!(manifest["wav_frames"].as_u64(), Some(frames));
-    std::fs::remove_dir_all(&out).ok();
+fn ctrl_c_and_sigterm_close_every_file_with_the_samples_up_to_the_stop() {
+    for (signal, status_code) in [("INT", 130), ("TERM", 143)] {
+        let out = folder(&format!("signal-{signal}"));
+        let mut child = Command::new(env!("CARGO_BIN_EXE_testrig"))
+            .args([
+                "run",
+                &scenario("aliasing-windowing"),
+                "--pace",
+                "1",
+                "--duration",
+                "60",
+            ])
+            .args(["--out", out.to_str().expect("utf-8")])
+            .stderr(std::process::Stdio::piped())
+            .spawn()
+            .expect("started");
+        std::thread::sleep(std::time::Duration::from_millis(2500));
+        let killed = Command::new("kill")
+            .args([&format!("-{signal}"), &child.id().to_string()])
+            .status()
+            .expect("kill runs");
+        assert!(killed.success());
+        let output = child.wait_with_output().expect("exits");
+        assert_eq!(output.status.code(), Some(status_code), "SIG{signal}");
+        assert!(
+            String::from_utf8_lossy(&output.stderr).contains(&format!("stopped by SIG{signal}"))
+        );
+        let manifest = read_manifest(&out);
+        assert_eq!(manifest["ending"], "interrupted");
+        check_files(&out, &manifest);
+        let simulated = manifest["simulated_s"].as_f64().expect("simulated");
+        assert!(simulated > 1.0 && simulated < 10.0, "{simulated}");
+        let reader = hound::WavReader::open(out.join("recording.wav")).expect("a complete WAV");
+        let frames = u64::from(reader.duration());
+        assert_eq!(frames, (simulated * 51_200.0).round() as u64);
+        assert_eq!(manifest["wav_frames"].as_u64(), Some(frames));
+        std::fs::remove_dir_all(&out).ok();
+    }
 }
 
 #[test]
@@ -280,5 +286,55 @@ fn a_run_records_uff58_that_pyuff_reads_and_24_bit_wav_at_its_full_scale() {
         torque_uff.abs() > 1e-3,
         "a torque, not an empty channel: {torque_uff}"
     );
+    std::fs::remove_dir_all(&out).ok();
+}
+
+#[test]
+fn a_rerun_into_a_used_folder_removes_the_earlier_runs_files_and_no_other() {
+    let out = folder("rerun");
+    let survey = |speeds: &'static str| {
+        vec![
+            "--set",
+            speeds,
+            "--set",
+            "survey.settle_s=2",
+            "--set",
+            "survey.measure_s=4",
+            "--set",
+            "analyser.averages=2",
+        ]
+    };
+    let run = |args: &[&str]| {
+        let output = Command::new(env!("CARGO_BIN_EXE_testrig"))
+            .args(["run", &scenario("subharmonic-2712nm"), "--pace", "max"])
+            .args(args)
+            .args(["--out", out.to_str().expect("utf-8")])
+            .output()
+            .expect("runs");
+        assert!(
+            output.status.success(),
+            "{}",
+            String::from_utf8_lossy(&output.stderr)
+        );
+        String::from_utf8_lossy(&output.stderr).into_owned()
+    };
+    run(&survey("survey.speeds_rpm=[1300, 1500]"));
+    assert!(out.join("spectrum-02.csv").exists());
+    std::fs::write(out.join("notes.txt"), "the user's own").expect("written");
+    std::fs::write(out.join("recording.wav.partial"), "left by a killed run").expect("written");
+    let said = run(&survey("survey.speeds_rpm=[1300]"));
+    assert!(
+        said.contains("removed") && said.contains("files of the earlier run"),
+        "{said}"
+    );
+    let manifest = read_manifest(&out);
+    check_files(&out, &manifest);
+    assert!(out.join("spectrum-01.csv").exists());
+    assert!(
+        !out.join("spectrum-02.csv").exists(),
+        "an old spectrum beside the new"
+    );
+    assert!(!out.join("scope-02.csv").exists());
+    assert!(out.join("notes.txt").exists(), "a file no run wrote stays");
     std::fs::remove_dir_all(&out).ok();
 }

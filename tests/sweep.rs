@@ -102,6 +102,22 @@ fn shards_merged_equal_the_unsharded_sweep_and_resume_skips_finished_cases() {
     assert!(merged.join("regime-map-30.svg").exists() && merged.join("regime-map-31.svg").exists());
     // A shard's own table has its cases only.
     assert_eq!(table(&dir.join("shard1")).lines().count(), 1 + 3);
+    // Merging without shard 1 warns of its cases (1, 4 and 7 of the grid).
+    let partial = dir.join("partial");
+    let output = testrig(&[
+        "merge",
+        &shards[0],
+        &shards[2],
+        "--out",
+        partial.to_str().expect("utf-8"),
+    ]);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(output.status.success(), "{stderr}");
+    assert!(
+        stderr.contains("warning: 3 cases of the grid are in none of the folders")
+            && stderr.contains(": 1, 4, 7"),
+        "{stderr}"
+    );
     // Resuming shard 1's folder runs only the other cases and ends with the whole table.
     let said = sweep(&dir, "shard1", &["--resume"]);
     assert!(
@@ -314,5 +330,32 @@ fn simulate_with_its_defaults_classifies_as_the_campaign_does() {
     for expected in ["period-2", "period-4"] {
         assert!(regimes.iter().any(|r| r == expected), "{regimes:?}");
     }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn a_sweep_into_the_folder_of_another_sweep_replaces_its_cases() {
+    let dir = folder("other-sweep");
+    sweep(&dir, "out", &[]);
+    assert_eq!(table(&dir.join("out")).lines().count(), 1 + 8);
+    // The same folder, a smaller grid: the old grid's cases are not assembled with it.
+    sweep(&dir, "out", &["--set", "grid.rpm=[600]"]);
+    assert_eq!(table(&dir.join("out")).lines().count(), 1 + 4);
+    // Resuming another sweep's folder is refused, naming it.
+    let file = dir.join("small.toml");
+    let out = dir.join("out");
+    let output = testrig(&[
+        "sweep",
+        file.to_str().expect("utf-8"),
+        "--resume",
+        "--out",
+        out.to_str().expect("utf-8"),
+    ]);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(!output.status.success());
+    assert!(
+        stderr.contains("holds the cases of another sweep"),
+        "{stderr}"
+    );
     std::fs::remove_dir_all(&dir).ok();
 }

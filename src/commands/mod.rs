@@ -12,7 +12,8 @@ use std::process::ExitCode;
 
 use crate::cli::Command;
 
-/// Runs one command; the exit status on success (130 for a run stopped by Ctrl-C).
+/// Runs one command; the exit status on success (128 + the signal's number for a run
+/// stopped by SIGINT, SIGTERM or SIGHUP; 3 for a `--strict` run that ended with warnings).
 pub fn run(command: Command) -> anyhow::Result<ExitCode> {
     let done = match command {
         Command::Modes(args) => modes::run(&args),

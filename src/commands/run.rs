@@ -2,18 +2,15 @@
 
 use std::io::IsTerminal;
 use std::process::ExitCode;
-use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, Ordering};
 
 use anyhow::{Context, bail};
 use testrig::runtime::manifest::Ending;
-use testrig::runtime::{Pace, RunOptions, RunResult, run as run_plan, write_manifest};
+use testrig::runtime::previous_run::clear_previous_run;
+use testrig::runtime::{Pace, RunOptions, RunResult, StopSignals, run as run_plan, write_manifest};
 use testrig::scenario::{CommandLine, ScenarioSource, build, measurement_warnings};
 
 use crate::cli::RunArgs;
 
-/// Exit status of a run stopped by Ctrl-C (128 + SIGINT), its files complete.
-const INTERRUPTED: u8 = 130;
 /// Exit status of a `--strict` run that ended with warnings, its files complete.
 const WARNED: u8 = 3;
 
@@ -44,14 +41,18 @@ pub fn run(args: &RunArgs) -> anyhow::Result<ExitCode> {
     for warning in &predicted {
         eprintln!("warning: {warning}");
     }
-    let stop = Arc::new(AtomicBool::new(false));
-    let handler_stop = Arc::clone(&stop);
-    ctrlc::set_handler(move || handler_stop.store(true, Ordering::Relaxed))
-        .context("cannot install the Ctrl-C handler")?;
+    let removed = clear_previous_run(&args.out)?;
+    if removed > 0 {
+        eprintln!(
+            "testrig: removed {removed} files of the earlier run in {}",
+            args.out.display()
+        );
+    }
+    let signals = StopSignals::install().context("cannot install the signal handlers")?;
     let options = RunOptions {
         pace,
         out: args.out.clone(),
-        stop: Arc::clone(&stop),
+        stop: signals.flag(),
         console: std::io::stderr().is_terminal(),
     };
     let result = run_plan(&plan, &options)?;
@@ -77,8 +78,11 @@ pub fn run(args: &RunArgs) -> anyhow::Result<ExitCode> {
         );
     }
     if ending == Ending::Interrupted {
-        eprintln!("testrig: stopped by Ctrl-C; every sample up to the stop is in the files");
-        return Ok(ExitCode::from(INTERRUPTED));
+        let (number, name) = signals
+            .received()
+            .unwrap_or((signal_hook::consts::SIGINT, "a signal"));
+        eprintln!("testrig: stopped by {name}; every sample up to the stop is in the files");
+        return Ok(ExitCode::from(128 + number as u8));
     }
     let warnings = result.warnings();
     if predicted.is_empty() {

@@ -6,13 +6,16 @@ pub mod frame;
 pub mod manifest;
 pub mod pacing;
 pub mod plant_source;
+pub mod previous_run;
 pub mod process_usage;
 pub mod run;
 pub mod sinks;
 pub mod stages;
 pub mod status;
+pub mod stop_signals;
 pub mod wiring;
 
 pub use manifest::write_manifest;
 pub use pacing::Pace;
 pub use run::{RunOptions, RunResult, run};
+pub use stop_signals::StopSignals;

@@ -12,5 +12,5 @@ pub mod table;
 
 pub use case::{CaseResult, run_case};
 pub use plan::{Case, SweepPlan, build_sweep};
-pub use run::{SweepMeta, SweepOptions, SweepOutcome, assemble, read_meta, run_sweep};
+pub use run::{Assembled, SweepMeta, SweepOptions, SweepOutcome, assemble, read_meta, run_sweep};
 pub use shard::Shard;

@@ -74,6 +74,7 @@ pub fn run_sweep(
     let dir = &options.out;
     std::fs::create_dir_all(dir.join(CASES_DIR))
         .with_context(|| format!("--out {}: cannot create the output folder", dir.display()))?;
+    clear_other_sweep(dir, meta, options.resume)?;
     write_meta(dir, meta)?;
     let mine: Vec<_> = plan
         .cases
@@ -102,7 +103,7 @@ pub fn run_sweep(
     });
     bar.finish_and_clear();
     let wall_s = started.elapsed().as_secs_f64();
-    let files = assemble(std::slice::from_ref(dir), dir)?;
+    let files = assemble(std::slice::from_ref(dir), dir)?.files;
     Ok(SweepOutcome {
         ran: todo.len(),
         skipped: mine.len() - todo.len(),
@@ -110,6 +111,34 @@ pub fn run_sweep(
         wall_s,
         files,
     })
+}
+
+/// A folder holding the cases of another sweep (its `sweep.json` differs) has them removed,
+/// so that they are not assembled with this one's; with `--resume` that is an error.
+/// Cases of this same sweep (other shards writing to one folder) stay.
+fn clear_other_sweep(dir: &Path, meta: &SweepMeta, resume: bool) -> anyhow::Result<()> {
+    let Ok(earlier) = read_meta(dir) else {
+        return Ok(());
+    };
+    if earlier == *meta {
+        return Ok(());
+    }
+    if resume {
+        anyhow::bail!(
+            "--resume: {} holds the cases of another sweep (`{}`, {} cases); resume into the folder of this sweep, or run without --resume to replace them",
+            dir.display(),
+            earlier.name,
+            earlier.cases
+        );
+    }
+    for entry in std::fs::read_dir(dir.join(CASES_DIR))? {
+        let path = entry?.path();
+        if path.extension().is_some_and(|e| e == "json") {
+            std::fs::remove_file(&path)
+                .with_context(|| format!("cannot remove {}", path.display()))?;
+        }
+    }
+    Ok(())
 }
 
 fn progress_bar(len: u64, visible: bool) -> ProgressBar {
@@ -144,11 +173,34 @@ pub fn read_meta(dir: &Path) -> anyhow::Result<SweepMeta> {
         .with_context(|| format!("{}: not a sweep description", path.display()))
 }
 
+/// What [`assemble`] wrote, and which cases of the grid it did not find.
+#[derive(Debug)]
+pub struct Assembled {
+    /// Files written.
+    pub files: Vec<PathBuf>,
+    /// Indices of the grid's cases finished in none of the folders.
+    pub missing: Vec<usize>,
+}
+
 /// Writes into `out` the table and the plots of every case finished in `dirs` (and the
-/// cases themselves when `out` is not among `dirs`).
-pub fn assemble(dirs: &[PathBuf], out: &Path) -> anyhow::Result<Vec<PathBuf>> {
-    let meta = read_meta(dirs.first().context("no sweep folder given")?)?;
+/// cases themselves when `out` is not among `dirs`). The folders must hold shards of one
+/// sweep (the same `sweep.json`).
+pub fn assemble(dirs: &[PathBuf], out: &Path) -> anyhow::Result<Assembled> {
+    let first = dirs.first().context("no sweep folder given")?;
+    let meta = read_meta(first)?;
+    for dir in &dirs[1..] {
+        let other = read_meta(dir)?;
+        if other != meta {
+            anyhow::bail!(
+                "{} and {} hold different sweeps (their sweep.json differ): merge shards of one sweep",
+                first.display(),
+                dir.display()
+            );
+        }
+    }
     let cases = read_cases(dirs)?;
+    let found: std::collections::BTreeSet<usize> = cases.iter().map(|c| c.index).collect();
+    let missing = (0..meta.cases).filter(|i| !found.contains(i)).collect();
     std::fs::create_dir_all(out.join(CASES_DIR))
         .with_context(|| format!("{}: cannot create the folder", out.display()))?;
     if !dirs.iter().any(|d| d == out) {
@@ -161,7 +213,7 @@ pub fn assemble(dirs: &[PathBuf], out: &Path) -> anyhow::Result<Vec<PathBuf>> {
     files.extend(plots(out, &meta, &cases)?);
     let report = write_report(out, &meta, &cases, &files)?;
     files.push(report);
-    Ok(files)
+    Ok(Assembled { files, missing })
 }
 
 /// One group per swept-parameter variant and load: its label and cases in speed order.
