@@ -13,7 +13,10 @@ fn parse(text: &str) -> toml::Table {
 fn set_replaces_a_key_in_place_keeping_every_line_where_it_was() {
     let edited = apply_override(TEXT, "schedule.speed_rpm=1300").expect("applies");
     assert_eq!(edited.lines().count(), TEXT.lines().count());
-    assert_eq!(edited.lines().nth(4), Some("speed_rpm = 1300 # --set"));
+    assert_eq!(
+        edited.lines().nth(4),
+        Some("speed_rpm = 1300 # --set schedule.speed_rpm=1300")
+    );
     assert_eq!(
         parse(&edited)["schedule"]["speed_rpm"].as_integer(),
         Some(1300)
@@ -72,4 +75,20 @@ fn lateness_quantiles_come_from_the_histogram_to_its_10_us_bins() {
     assert_eq!(h.max_s(), 0.5);
     assert_eq!(h.quantile_s(1.0), 0.5);
     assert_eq!(LatenessHistogram::default().quantile_s(0.99), 0.0);
+}
+
+#[test]
+fn set_takes_a_bare_rig_parameter_or_backlash_as_simulate_does() {
+    let edited = apply_override(TEXT, "teeth=31").expect("applies");
+    assert_eq!(parse(&edited)["rig"]["set"]["teeth"].as_integer(), Some(31));
+    let edited = apply_override(TEXT, "backlash_mm=1.46").expect("applies");
+    assert_eq!(parse(&edited)["rig"]["backlash_mm"].as_float(), Some(1.46));
+    let edited = apply_override(TEXT, "preset=basmaji-1983-calibrated").expect("applies");
+    assert_eq!(
+        parse(&edited)["rig"]["preset"].as_str(),
+        Some("basmaji-1983-calibrated")
+    );
+    // Top-level scenario keys stay where they are.
+    let edited = apply_override(TEXT, "duration_s=3").expect("applies");
+    assert_eq!(parse(&edited)["duration_s"].as_integer(), Some(3));
 }

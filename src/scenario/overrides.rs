@@ -3,15 +3,22 @@
 
 use anyhow::{Context, bail};
 
+/// Marks a line written by `--set`; the item follows, so errors can name it.
+pub const SET_MARK: &str = "# --set ";
+
 /// Applies one `KEY=VALUE` (KEY a dotted path such as `schedule.speed_rpm` or
-/// `rig.set.teeth`) to `text`. VALUE is taken as TOML (a number, `true`, `"text"`), or as
-/// a string when it is not valid TOML. The key's value must sit on one line of the file.
+/// `rig.set.teeth`, or a bare rig parameter name as `simulate` takes it: `teeth`,
+/// `backlash_mm`, `preset`) to `text`. VALUE is taken as TOML (a number, `true`, `"text"`),
+/// or as a string when it is not valid TOML. The key's value must sit on one line of the
+/// file. The written line ends with [`SET_MARK`] and the item.
 pub fn apply_override(text: &str, item: &str) -> anyhow::Result<String> {
     let (key, value) = item.split_once('=').with_context(|| {
         format!("--set {item}: expected KEY=VALUE, e.g. schedule.speed_rpm=1500")
     })?;
-    let (key, value) = (key.trim(), value.trim());
+    let (key, value) = (scenario_key(key.trim()), value.trim());
+    let key = key.as_str();
     let value = toml_value(value);
+    let mark = format!("{SET_MARK}{}", item.trim());
     let (table, leaf) = match key.rsplit_once('.') {
         Some((table, leaf)) => (table, leaf),
         None => ("", key),
@@ -43,7 +50,7 @@ pub fn apply_override(text: &str, item: &str) -> anyhow::Result<String> {
             && let Some((k, _)) = trimmed.split_once('=')
             && k.trim() == leaf
         {
-            *line = format!("{leaf} = {value} # --set");
+            *line = format!("{leaf} = {value} {mark}");
             return Ok(lines.join("\n") + "\n");
         }
     }
@@ -54,14 +61,25 @@ pub fn apply_override(text: &str, item: &str) -> anyhow::Result<String> {
             } else {
                 at
             };
-            lines.insert(at, format!("{leaf} = {value} # --set"));
+            lines.insert(at, format!("{leaf} = {value} {mark}"));
         }
         None => {
             lines.push(format!("[{table}]"));
-            lines.push(format!("{leaf} = {value} # --set"));
+            lines.push(format!("{leaf} = {value} {mark}"));
         }
     }
     Ok(lines.join("\n") + "\n")
+}
+
+/// The scenario key of a bare name: a rig parameter (`teeth` → `rig.set.teeth`), the
+/// backlash (`backlash_mm` → `rig.backlash_mm`) or the preset (`preset` → `rig.preset`);
+/// any other key as given.
+fn scenario_key(key: &str) -> String {
+    match key {
+        "backlash_mm" | "preset" => format!("rig.{key}"),
+        _ if !key.contains('.') && rig::param_spec(key).is_ok() => format!("rig.set.{key}"),
+        _ => key.to_string(),
+    }
 }
 
 fn first_table_line(lines: &[String]) -> usize {

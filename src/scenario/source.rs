@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use anyhow::anyhow;
 
 use super::file::ScenarioFile;
-use super::overrides::apply_override;
+use super::overrides::{SET_MARK, apply_override};
 
 /// A scenario file as read from disk.
 #[derive(Clone, Debug)]
@@ -80,9 +80,16 @@ impl ScenarioSource {
 
     /// An error at `span` of the text about `field`: `FILE:LINE:COLUMN: field: message`.
     /// A span of 0..0 (a value the file left out, or a table as a whole) names no line.
+    /// An error on a line written by `--set` names the `--set` instead of the line.
     pub fn error(&self, span: Range<usize>, field: &str, message: impl Display) -> anyhow::Error {
         if span == (0..0) {
             return anyhow!("{}: {field}: {message}", self.path.display());
+        }
+        if let Some(item) = self.set_item_at(span.start) {
+            return anyhow!(
+                "--set {item} (on {}): {field}: {message}",
+                self.path.display()
+            );
         }
         let (line, column) = self.line_column(span.start);
         anyhow!(
@@ -97,6 +104,15 @@ impl ScenarioSource {
         let line = before.matches('\n').count() + 1;
         let column = before.rsplit('\n').next().map_or(0, |s| s.chars().count()) + 1;
         (line, column)
+    }
+
+    /// The `--set` item that wrote the line holding byte `offset`, if one did.
+    fn set_item_at(&self, offset: usize) -> Option<&str> {
+        let start = self.text[..offset.min(self.text.len())]
+            .rfind('\n')
+            .map_or(0, |i| i + 1);
+        let line = self.text[start..].lines().next()?;
+        line.rsplit_once(SET_MARK).map(|(_, item)| item)
     }
 
     /// The key written on the line of `span` (for parse errors, which carry no field name).
