@@ -62,7 +62,12 @@ load_nm = 2.712
 #[test]
 fn bad_input_is_named_by_file_line_and_field_without_a_panic() {
     let dir = folder("bad");
-    let cases: [(&str, String, &[&str]); 8] = [
+    let cases: [(&str, String, &[&str]); 9] = [
+        (
+            "no-name.toml",
+            MINIMAL.replace("name = \"minimal\"\n", ""),
+            &[":1:1:", "top level", "missing field `name`"],
+        ),
         (
             "decimate.toml",
             format!(

@@ -39,12 +39,12 @@ pub fn build(src: &ScenarioSource, command_line: CommandLine) -> anyhow::Result<
             return Err(src.error(0..0, "duration_s", "missing: the simulated run length (s)"));
         }
     };
-    let band_hz = file.analyser.as_ref().map(|a| a.fmax_hz.get_ref().0);
-    let chain = chain_plan(src, &file.chain, rate_hz, seed, band_hz)?;
     let analyser = match &file.analyser {
         Some(a) => Some(analyser_plan(src, a, rate_hz, seed)?),
         None => None,
     };
+    let band_hz = analyser.map(|a| a.settings.fmax_hz);
+    let chain = chain_plan(src, &file.chain, rate_hz, seed, band_hz)?;
     let record = match &file.record {
         Some(r) => Some(record_plan(src, r, chain.slip_rings.is_some())?),
         None => None,

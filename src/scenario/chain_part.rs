@@ -120,16 +120,19 @@ fn filter_spec(
     let Some(kind) = kind else {
         return Ok(None);
     };
-    let (cutoff, span) = match &f.cutoff_hz {
-        Some(c) => (c.get_ref().0, c.span()),
-        None => (band_hz.unwrap_or(DEFAULT_CUTOFF_HZ), 0..0),
+    let (cutoff, span, origin) = match &f.cutoff_hz {
+        Some(c) => (c.get_ref().0, c.span(), ""),
+        None => match band_hz {
+            Some(band) => (band, 0..0, " (left out: the analyser's fmax_hz)"),
+            None => (DEFAULT_CUTOFF_HZ, 0..0, " (left out: the default)"),
+        },
     };
     if cutoff >= rate_hz / 2.0 {
         return Err(src.error(
             span,
             "chain.filter.cutoff_hz",
             format!(
-                "{cutoff} Hz is at or above the analogue Nyquist rate {} Hz (half of rate_hz); a cut-off below it is allowed",
+                "{cutoff} Hz{origin} is at or above the analogue Nyquist rate {} Hz (half of rate_hz); a cut-off below it is allowed",
                 rate_hz / 2.0
             ),
         ));

@@ -74,6 +74,13 @@ impl ScenarioSource {
         toml::from_str(&self.text).map_err(|e| {
             let span = e.span().unwrap_or(0..0);
             let message = e.message().trim().to_string();
+            if message.starts_with("missing field") && span.start == 0 && !self.text.is_empty() {
+                // The whole document: a top-level key is missing, not one of the first line.
+                return anyhow!(
+                    "{}:1:1: top level: {message} (a key before the first [table])",
+                    self.path.display()
+                );
+            }
             self.error(span, &self.key_at(e.span()), message)
         })
     }

@@ -58,9 +58,9 @@ pub struct Case {
 pub fn build_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<SweepPlan> {
     let rate_hz = stream_rate_hz(src, &file.rate_hz)?;
     let (preset, base) = rig_params(src, &file.rig)?;
-    let band_hz = Some(file.analyser.fmax_hz.get_ref().0);
-    let chain = chain_plan(src, &file.chain, rate_hz, file.seed, band_hz)?;
     let analyser = analyser_plan(src, &file.analyser, rate_hz, file.seed)?;
+    let band_hz = Some(analyser.settings.fmax_hz);
+    let chain = chain_plan(src, &file.chain, rate_hz, file.seed, band_hz)?;
     let block_s = analyser.settings.block as f64 / analyser.settings.sample_rate_hz();
     if file.case.measure_s.get_ref().0 < block_s {
         return Err(src.error(
