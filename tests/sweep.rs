@@ -231,9 +231,31 @@ fn the_shipped_campaign_runs_shortened_and_reports_against_the_thesis() {
     );
     let report = std::fs::read_to_string(out.join("report.md")).expect("report.md");
     assert!(
-        report.contains("4 points") && report.contains("Score against the thesis"),
+        report.contains("4 points") && report.contains("Score of the points against the thesis"),
         "{report}"
     );
+    // The thesis itself is cited, not a file the user does not have.
+    assert!(
+        report.contains("Basmaji") && !report.contains("rig-spec"),
+        "{report}"
+    );
+    // Two speeds cover findings 1 and 2 only: 3 (5.424 N m from 1900 rev/min), 4 (1100
+    // rev/min) and 5 (the resonance near 780 rev/min) are not covered, not scored.
+    for finding in ["3. ", "4. ", "5. "] {
+        let line = report
+            .lines()
+            .find(|l| l.starts_with(finding))
+            .expect("finding");
+        assert!(line.contains("not covered by this grid"), "{line}");
+        assert!(!line.contains(" reproduced"), "{line}");
+    }
+    for finding in ["1. ", "2. "] {
+        let line = report
+            .lines()
+            .find(|l| l.starts_with(finding))
+            .expect("finding");
+        assert!(!line.contains("not covered"), "{line}");
+    }
     for name in [
         "cases.csv",
         "regime-map.png",
