@@ -221,11 +221,21 @@ fn the_load_series_stores_one_scope_sweep_per_load() {
     let trace = csv_rows(&out.join("scope-01.csv"));
     // Ten divisions of 30 ms at 51.2 kHz: 300 ms, one revolution at 200 rev/min.
     assert_eq!(trace.len(), 15_360);
-    assert!(
-        trace
-            .iter()
-            .all(|r| number(r, "amplifier_v").abs() <= 4.0 * 0.2 + 1e-12)
-    );
+    // At the scenario's V/div the trace stays on the screen's ±4 divisions and is not a
+    // flat line: the once-per-revolution wave and the ripple stand out (rms above half a
+    // division).
+    let text = std::fs::read_to_string(scenario("load-series-200rpm")).expect("scenario");
+    let table: toml::Table = toml::from_str(&text).expect("TOML");
+    let per_div = table["chain"]["scope"]["volts_per_div"]
+        .as_float()
+        .expect("volts_per_div");
+    let volts: Vec<f64> = trace.iter().map(|r| number(r, "amplifier_v")).collect();
+    assert!(volts.iter().all(|v| v.abs() <= 4.0 * per_div + 1e-12));
+    let mean = volts.iter().sum::<f64>() / volts.len() as f64;
+    let rms_div = (volts.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / volts.len() as f64)
+        .sqrt()
+        / per_div;
+    assert!(rms_div > 0.5, "a flat trace: {rms_div} div rms");
     std::fs::remove_dir_all(&out).ok();
 }
 

@@ -50,6 +50,8 @@ pub fn axes<'a, DB: DrawingBackend>(
     ChartBuilder::on(root)
         .caption(title, ("sans-serif", 20))
         .margin(12)
+        // Room for the last x label and for labels drawn at the right edge.
+        .margin_right(36)
         .x_label_area_size(44)
         .y_label_area_size(70)
         .build_cartesian_2d(x, y)
@@ -71,10 +73,20 @@ pub fn mesh<DB: DrawingBackend>(
     mesh.draw().map_err(draw_error("grid"))
 }
 
-/// Draws the legend of the labelled series.
-pub fn legend<'a, DB: DrawingBackend + 'a>(chart: &mut Axes<'a, DB>) -> anyhow::Result<()> {
+/// Share of a plot's height a legend of `entries` lines takes (13-pt lines on ~560 px),
+/// for the headroom that keeps it off the curves.
+pub fn legend_share(entries: usize) -> f64 {
+    ((entries as f64 * 18.0 + 20.0) / 560.0).min(0.6)
+}
+
+/// Draws the legend of the labelled series at `position` (a corner the curves leave free).
+pub fn legend<'a, DB: DrawingBackend + 'a>(
+    chart: &mut Axes<'a, DB>,
+    position: SeriesLabelPosition,
+) -> anyhow::Result<()> {
     chart
         .configure_series_labels()
+        .position(position)
         .background_style(WHITE.mix(0.85))
         .border_style(BLACK)
         .label_font(("sans-serif", 13))

@@ -33,6 +33,31 @@ pub fn write_frequency_map(
     )
 }
 
+/// A label's height as a share of the plot's frequency range (12-pt text on ~560 px).
+const LABEL_HEIGHT_SHARE: f64 = 0.03;
+
+/// Labels for the natural frequencies `hz` (ascending or not): those closer than `gap_hz`
+/// to the group's first share one label, e.g. `86.3 / 88.7 / 91.9 Hz`, placed at the
+/// group's top line.
+fn natural_labels(hz: &[f64], gap_hz: f64) -> Vec<(f64, String)> {
+    let mut sorted = hz.to_vec();
+    sorted.sort_by(f64::total_cmp);
+    let mut groups: Vec<Vec<f64>> = Vec::new();
+    for f in sorted {
+        match groups.last_mut() {
+            Some(group) if f - group[0] < gap_hz => group.push(f),
+            _ => groups.push(vec![f]),
+        }
+    }
+    groups
+        .into_iter()
+        .map(|group| {
+            let text: Vec<String> = group.iter().map(|f| format!("{f:.1}")).collect();
+            (group[group.len() - 1], format!("{} Hz", text.join(" / ")))
+        })
+        .collect()
+}
+
 fn draw<DB: DrawingBackend>(
     root: DrawingArea<DB, Shift>,
     title: &str,
@@ -52,7 +77,12 @@ fn draw<DB: DrawingBackend>(
         |_| {},
     )?;
     let grey = RGBColor(160, 160, 160);
-    for &f in natural_hz.iter().filter(|f| **f < fmax_hz) {
+    let shown: Vec<f64> = natural_hz
+        .iter()
+        .copied()
+        .filter(|f| *f < fmax_hz)
+        .collect();
+    for &f in &shown {
         chart
             .draw_series(DashedLineSeries::new(
                 [(0.0, f), (xmax, f)],
@@ -61,10 +91,13 @@ fn draw<DB: DrawingBackend>(
                 grey.stroke_width(1),
             ))
             .map_err(&err)?;
+    }
+    // Lines closer than a label's height share one label.
+    for (f, label) in natural_labels(&shown, fmax_hz * LABEL_HEIGHT_SHARE) {
         chart
             .draw_series(std::iter::once(Text::new(
-                format!("{f:.1} Hz"),
-                (xmax * 0.9, f),
+                label,
+                (xmax * 0.8, f),
                 ("sans-serif", 12).into_font().color(&grey),
             )))
             .map_err(&err)?;

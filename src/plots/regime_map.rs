@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::canvas::{axes, draw_error, legend, mesh, png_and_svg};
+use super::canvas::{axes, draw_error, legend, legend_share, mesh, png_and_svg};
 
 /// One cell: (rpm, load N m, period; 0 for aperiodic).
 pub type RegimeCell = (f64, f64, usize);
@@ -31,7 +31,11 @@ fn colour(period: usize) -> RGBColor {
         2 => RGBColor(220, 40, 40),
         3 => RGBColor(240, 150, 20),
         4 => RGBColor(140, 60, 180),
-        _ => RGBColor(40, 90, 220),
+        5 => RGBColor(40, 90, 220),
+        6 => RGBColor(0, 170, 190),
+        7 => RGBColor(150, 100, 50),
+        8 => RGBColor(230, 110, 180),
+        _ => RGBColor(120, 120, 120),
     }
 }
 
@@ -62,16 +66,14 @@ fn draw<DB: DrawingBackend>(
     let half_r = 0.45 * smallest_step(cells.iter().map(|c| c.0)).unwrap_or(100.0);
     let half_l = 0.45 * smallest_step(cells.iter().map(|c| c.1)).unwrap_or(1.0);
     let (pad_r, pad_l) = (2.0 * half_r, 2.0 * half_l);
-    let mut chart = axes(
-        &root,
-        title,
-        (r0 - pad_r)..(r1 + pad_r),
-        (l0 - pad_l)..(l1 + pad_l),
-    )?;
-    mesh(&mut chart, ("speed (rev/min)", "load (N m)"), |_| {})?;
     let mut periods: Vec<usize> = cells.iter().map(|c| c.2).collect();
     periods.sort_unstable();
     periods.dedup();
+    // Headroom above the top row of cells for the legend.
+    let span_l = (l1 + pad_l) - (l0 - pad_l);
+    let top = (l0 - pad_l) + span_l / (1.0 - legend_share(periods.len()));
+    let mut chart = axes(&root, title, (r0 - pad_r)..(r1 + pad_r), (l0 - pad_l)..top)?;
+    mesh(&mut chart, ("speed (rev/min)", "load (N m)"), |_| {})?;
     for period in periods {
         let c = colour(period);
         let label = if period == 0 {
@@ -98,7 +100,7 @@ fn draw<DB: DrawingBackend>(
             .label(label)
             .legend(move |(x, y)| Rectangle::new([(x, y - 5), (x + 12, y + 5)], c.filled()));
     }
-    legend(&mut chart)?;
+    legend(&mut chart, SeriesLabelPosition::UpperRight)?;
     root.present().map_err(&err)?;
     Ok(())
 }

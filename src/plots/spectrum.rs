@@ -7,7 +7,7 @@ use instruments::Line;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::canvas::{axes, draw_error, mesh, png_and_svg};
+use super::canvas::{axes, draw_error, legend, mesh, png_and_svg};
 
 /// A spectrum to draw.
 #[derive(Clone, Copy, Debug)]
@@ -91,14 +91,7 @@ fn draw<DB: DrawingBackend>(
             .label("alias (ground truth)")
             .legend(|(x, y)| Circle::new((x + 8, y), 3, RED.filled()));
     }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperRight)
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .label_font(("sans-serif", 12))
-        .draw()
-        .map_err(&err)?;
+    legend(&mut chart, SeriesLabelPosition::UpperRight)?;
     root.present().map_err(&err)?;
     Ok(())
 }

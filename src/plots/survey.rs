@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::canvas::{axes, draw_error, legend, mesh, png_and_svg};
+use super::canvas::{axes, draw_error, legend, legend_share, mesh, png_and_svg};
 
 /// One reading of the survey.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -45,15 +45,17 @@ fn draw<DB: DrawingBackend>(
         loads.clone().fold(0.0, f64::min),
         loads.fold(0.0, f64::max).max(1e-3),
     );
+    let mut speeds: Vec<f64> = points.iter().map(|p| p.speed_rpm).collect();
+    speeds.sort_by(f64::total_cmp);
+    speeds.dedup();
+    // Headroom above the highest curve for the legend (one line per speed and the static).
     let top = points
         .iter()
         .map(|p| p.rms_microstrain)
         .chain([high * per_nm, low.abs() * per_nm])
         .fold(1e-3, f64::max)
-        * 1.1;
-    let mut speeds: Vec<f64> = points.iter().map(|p| p.speed_rpm).collect();
-    speeds.sort_by(f64::total_cmp);
-    speeds.dedup();
+        * 1.05
+        / (1.0 - legend_share(speeds.len() + 1));
     let mut chart = axes(&root, title, low..high, 0.0..top)?;
     mesh(&mut chart, ("load (N m)", "RMS strain (µε)"), |_| {})?;
     chart
@@ -83,7 +85,7 @@ fn draw<DB: DrawingBackend>(
             .draw_series(curve.iter().map(|&p| Circle::new(p, 3, colour.filled())))
             .map_err(&err)?;
     }
-    legend(&mut chart)?;
+    legend(&mut chart, SeriesLabelPosition::UpperLeft)?;
     root.present().map_err(&err)?;
     Ok(())
 }
