@@ -206,7 +206,7 @@ fn a_dropping_queue_counts_every_overrun_and_the_recording_shows_the_gaps() {
 fn ctrl_c_and_sigterm_close_every_file_with_the_samples_up_to_the_stop() {
     for (signal, status_code) in [("INT", 130), ("TERM", 143)] {
         let out = folder(&format!("signal-{signal}"));
-        let mut child = Command::new(env!("CARGO_BIN_EXE_testrig"))
+        let child = Command::new(env!("CARGO_BIN_EXE_testrig"))
             .args([
                 "run",
                 &scenario("aliasing-windowing"),
