@@ -5,6 +5,15 @@ mod common;
 
 use common::{folder, read_manifest, scenario, testrig};
 
+/// `testrig run` of the shipped scenario `name` unpaced into `out`, with `extra` arguments.
+fn run(name: &str, out: &std::path::Path, extra: &[&str]) -> std::process::Output {
+    let scenario = scenario(name);
+    let mut args = vec!["run", &scenario, "--pace", "max"];
+    args.extend(extra);
+    args.extend(["--out", out.to_str().expect("utf-8")]);
+    testrig(&args)
+}
+
 fn warnings(manifest: &serde_json::Value) -> Vec<String> {
     manifest["warnings"]
         .as_array()
@@ -17,16 +26,7 @@ fn warnings(manifest: &serde_json::Value) -> Vec<String> {
 #[test]
 fn a_shortened_run_warns_of_every_spectrum_it_loses() {
     let out = folder("short-run");
-    let output = testrig(&[
-        "run",
-        &scenario("subharmonic-2712nm"),
-        "--pace",
-        "max",
-        "--duration",
-        "30",
-        "--out",
-        out.to_str().expect("utf-8"),
-    ]);
+    let output = run("subharmonic-2712nm", &out, &["--duration", "30"]);
     assert!(output.status.success(), "a warning is not a failure");
     let stderr = String::from_utf8_lossy(&output.stderr);
     // Measurement 2 starts at 29 s: one second left for 10 averages of 1.28 s.
@@ -51,17 +51,11 @@ fn a_shortened_run_warns_of_every_spectrum_it_loses() {
 #[test]
 fn strict_refuses_a_run_whose_measurements_cannot_complete() {
     let out = folder("strict-refused");
-    let output = testrig(&[
-        "run",
-        &scenario("subharmonic-2712nm"),
-        "--pace",
-        "max",
-        "--duration",
-        "30",
-        "--strict",
-        "--out",
-        out.to_str().expect("utf-8"),
-    ]);
+    let output = run(
+        "subharmonic-2712nm",
+        &out,
+        &["--duration", "30", "--strict"],
+    );
     assert!(!output.status.success());
     let stderr = String::from_utf8_lossy(&output.stderr);
     assert!(
@@ -76,17 +70,11 @@ fn strict_refuses_a_run_whose_measurements_cannot_complete() {
 fn strict_fails_a_run_that_ends_with_warnings_and_keeps_its_files() {
     // A ±1 mV range overloads the ADC on every sample: a run-time warning.
     let out = folder("strict-overload");
-    let output = testrig(&[
-        "run",
-        &scenario("aliasing-windowing"),
-        "--pace",
-        "max",
-        "--set",
-        "analyser.range_v=0.001",
-        "--strict",
-        "--out",
-        out.to_str().expect("utf-8"),
-    ]);
+    let output = run(
+        "aliasing-windowing",
+        &out,
+        &["--set", "analyser.range_v=0.001", "--strict"],
+    );
     assert_eq!(output.status.code(), Some(3));
     let manifest = read_manifest(&out);
     assert_eq!(manifest["ending"], "completed");
