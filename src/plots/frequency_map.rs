@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::canvas::{axes, draw_error, mesh, png_and_svg};
+use super::canvas::{axes, draw_error, legend, mesh, png_and_svg};
 
 /// The lines of one speed.
 #[derive(Clone, Debug, PartialEq)]
@@ -82,8 +82,8 @@ fn draw<DB: DrawingBackend>(
         .copied()
         .filter(|f| *f < fmax_hz)
         .collect();
-    for &f in &shown {
-        chart
+    for (i, &f) in shown.iter().enumerate() {
+        let series = chart
             .draw_series(DashedLineSeries::new(
                 [(0.0, f), (xmax, f)],
                 6,
@@ -91,6 +91,11 @@ fn draw<DB: DrawingBackend>(
                 grey.stroke_width(1),
             ))
             .map_err(&err)?;
+        if i == 0 {
+            series
+                .label("natural frequency (linear model)")
+                .legend(move |(x, y)| PathElement::new([(x, y), (x + 16, y)], grey));
+        }
     }
     // Lines closer than a label's height share one label.
     for (f, label) in natural_labels(&shown, fmax_hz * LABEL_HEIGHT_SHARE) {
@@ -105,12 +110,17 @@ fn draw<DB: DrawingBackend>(
     let orders = [0.5, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 8.0, 10.0];
     for &k in &orders {
         let end = (xmax * k).min(fmax_hz);
-        chart
+        let series = chart
             .draw_series(LineSeries::new(
                 [(0.0, 0.0), (end / k, end)],
                 grey.stroke_width(1),
             ))
             .map_err(&err)?;
+        if k == orders[0] {
+            series
+                .label("order of the running speed")
+                .legend(move |(x, y)| PathElement::new([(x, y + 4), (x + 16, y - 4)], grey));
+        }
         let label = if k == 0.5 {
             "½".to_string()
         } else {
@@ -145,6 +155,12 @@ fn draw<DB: DrawingBackend>(
             });
         chart.draw_series(points).map_err(&err)?;
     }
+    chart
+        .draw_series(std::iter::empty::<Circle<(f64, f64), i32>>())
+        .map_err(&err)?
+        .label("spectral line: larger, darker = stronger (60 dB)")
+        .legend(|(x, y)| Circle::new((x + 8, y), 4, RGBColor(0, 0, 255).filled()));
+    legend(&mut chart, SeriesLabelPosition::UpperLeft)?;
     root.present().map_err(&err)?;
     Ok(())
 }
