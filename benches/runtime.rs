@@ -8,8 +8,13 @@
 //! - campaign: `testrig sweep scenarios/thesis-campaign.toml` (78 points, each 10 s
 //!   settling + 30 s measured, ten-average spectra) on every core: wall time, median of 3.
 //!
+//! - soak (only when asked, `TESTRIG_BENCH=soak`): the same chain at pace 1 for 30 minutes
+//!   (`TESTRIG_SOAK_S` to change) recording a WAV: overruns, lateness, the process's
+//!   resident memory sampled every 10 s (flat: the last minute's against the fifth
+//!   minute's), and every file complete (the WAV holds every sample of the run).
+//!
 //! The first two read the figures from the run's manifest.json. `TESTRIG_BENCH=memory`,
-//! `pacing` or `campaign` runs one of them only.
+//! `pacing`, `campaign` or `soak` runs one of them only.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -45,9 +50,14 @@ signals = ["filter_v", "torque_intermediate_shaft_nm"]
 formats = ["wav"]
 "#;
 
-fn run(dir: &Path, pace: &str, duration_s: f64) -> serde_json::Value {
+fn write_scenario(dir: &Path) -> PathBuf {
     let scenario = dir.join("bench.toml");
     std::fs::write(&scenario, SCENARIO).expect("scenario written");
+    scenario
+}
+
+fn run(dir: &Path, pace: &str, duration_s: f64) -> serde_json::Value {
+    let scenario = write_scenario(dir);
     let out = dir.join(format!("out-{pace}-{duration_s}"));
     let status = Command::new(env!("CARGO_BIN_EXE_testrig"))
         .args(["run", scenario.to_str().expect("utf-8"), "--pace", pace])
@@ -116,6 +126,72 @@ fn campaign(dir: &Path) {
     );
 }
 
+/// Resident memory of process `pid` (MiB), from /proc.
+fn rss_mib(pid: u32) -> Option<f64> {
+    let status = std::fs::read_to_string(format!("/proc/{pid}/status")).ok()?;
+    let line = status.lines().find(|l| l.starts_with("VmRSS:"))?;
+    let kib: f64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kib / 1024.0)
+}
+
+fn soak(dir: &Path) {
+    let duration_s: f64 = std::env::var("TESTRIG_SOAK_S")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(1800.0);
+    let scenario = write_scenario(dir);
+    let out = dir.join("soak");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_testrig"))
+        .args(["run", scenario.to_str().expect("utf-8"), "--pace", "1"])
+        .args(["--duration", &duration_s.to_string()])
+        .args(["--out", out.to_str().expect("utf-8")])
+        .stdout(std::process::Stdio::null())
+        .spawn()
+        .expect("testrig runs");
+    let mut samples: Vec<(f64, f64)> = Vec::new();
+    let started = std::time::Instant::now();
+    while child.try_wait().expect("waits").is_none() {
+        if let Some(rss) = rss_mib(child.id()) {
+            samples.push((started.elapsed().as_secs_f64(), rss));
+        }
+        std::thread::sleep(std::time::Duration::from_secs(10));
+    }
+    let text = std::fs::read_to_string(out.join("manifest.json")).expect("manifest");
+    let m: serde_json::Value = serde_json::from_str(&text).expect("JSON");
+    let complete = m["files"].as_array().expect("files").iter().all(|f| {
+        std::fs::metadata(out.join(f.as_str().unwrap_or(""))).is_ok_and(|meta| meta.len() > 0)
+    });
+    let frames = hound::WavReader::open(out.join("recording.wav"))
+        .map(|r| u64::from(r.duration()))
+        .unwrap_or(0);
+    let expected = (duration_s * 51_200.0).round() as u64;
+    let mean_over = |from: f64, to: f64| {
+        let v: Vec<f64> = samples
+            .iter()
+            .filter(|(t, _)| (from..to).contains(t))
+            .map(|s| s.1)
+            .collect();
+        v.iter().sum::<f64>() / v.len().max(1) as f64
+    };
+    let end = samples.last().map_or(0.0, |s| s.0);
+    let (fifth, last) = (mean_over(240.0, 300.0), mean_over(end - 60.0, end + 1.0));
+    let peak = samples.iter().map(|s| s.1).fold(0.0, f64::max);
+    let l = &m["lateness_ms"];
+    println!(
+        "soak: pace 1 for {duration_s} s: ending {}, {} overruns, lateness p50 {:.3} ms, p99 {:.3} ms, max {:.3} ms over {} releases, CPU {:.1} % of one core; RSS fifth minute {fifth:.1} MiB, last minute {last:.1} MiB (ratio {:.3}), peak {peak:.1} MiB over {} samples; files complete: {complete}; WAV frames {frames} of {expected}",
+        m["ending"],
+        m["overruns"],
+        l["p50"].as_f64().unwrap_or(f64::NAN),
+        l["p99"].as_f64().unwrap_or(f64::NAN),
+        l["max"].as_f64().unwrap_or(f64::NAN),
+        l["releases"],
+        100.0 * m["cpu_share_of_one_core"].as_f64().unwrap_or(f64::NAN),
+        last / fifth,
+        samples.len()
+    );
+    std::fs::remove_dir_all(&out).ok();
+}
+
 fn main() {
     let dir: PathBuf = std::env::temp_dir().join(format!("testrig-bench-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("temp folder");
@@ -128,6 +204,9 @@ fn main() {
     }
     if which.is_empty() || which == "campaign" {
         campaign(&dir);
+    }
+    if which == "soak" {
+        soak(&dir);
     }
     std::fs::remove_dir_all(&dir).ok();
 }
