@@ -121,7 +121,7 @@ pub struct SimulateArgs {
     /// Motor speed set point (rev/min).
     #[arg(long, allow_negative_numbers = true)]
     pub rpm: f64,
-    /// Brake load (N m); negative drives the rig from the brake side.
+    /// Brake load (N m), ≥ 0: an eddy-current brake resists the rotation.
     #[arg(long, allow_negative_numbers = true)]
     pub load: f64,
     /// Parameters.

@@ -31,3 +31,4 @@ pub mod runtime;
 pub mod scenario;
 pub mod signal_catalog;
 pub mod sweep;
+pub mod wav_input;

@@ -3,7 +3,6 @@
 mod cli;
 mod commands;
 mod rig_setup;
-mod wav_input;
 
 use clap::Parser;
 

@@ -53,20 +53,29 @@ pub struct Scope {
     stored: Option<Vec<f64>>,
 }
 
+/// Slowest time base (s/div): the Tektronix 2B67's 5 s/div.
+pub const SLOWEST_S_PER_DIV: f64 = 5.0;
+
+/// Most samples one stored sweep may hold (16 Mi samples, 128 MiB).
+pub const MAX_SWEEP_SAMPLES: f64 = 16_777_216.0;
+
 impl Scope {
-    /// A scope on a stream at `rate_hz`.
+    /// A scope on a stream at `rate_hz`: V/div finite and > 0, s/div in (0, 5] (the
+    /// 2B67's slowest), a sweep of 2 to 16 Mi samples.
     pub fn new(settings: ScopeSettings, rate_hz: f64) -> Result<Self, InstrumentError> {
-        let valid = settings.volts_per_div > 0.0
+        let valid = settings.volts_per_div.is_finite()
+            && settings.volts_per_div > 0.0
             && settings.seconds_per_div > 0.0
+            && settings.seconds_per_div <= SLOWEST_S_PER_DIV
             && rate_hz > 0.0
             && settings.trigger_v.is_finite();
         let sweep = (10.0 * settings.seconds_per_div * rate_hz).round();
-        if !(valid && sweep.is_finite() && sweep >= 2.0) {
+        if !(valid && sweep.is_finite() && (2.0..=MAX_SWEEP_SAMPLES).contains(&sweep)) {
             return Err(InstrumentError::setting(
                 "oscilloscope",
                 "scales",
                 format!("{settings:?} at {rate_hz} Hz"),
-                "V/div and s/div > 0, a sweep of at least two samples",
+                "V/div > 0, s/div in (0, 5], a sweep of 2 to 16 Mi samples",
             ));
         }
         Ok(Self {

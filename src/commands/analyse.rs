@@ -8,9 +8,9 @@ use instruments::{
 };
 
 use crate::cli::AnalyseArgs;
-use crate::wav_input::{WavSignal, read_signal};
 use testrig::plots::{SpectrumPlot, write_spectrum_plots};
 use testrig::recording::{ALIAS_COLUMN, Metadata, write_spectrum_csv};
+use testrig::wav_input::{WavSignal, read_signal};
 
 pub fn run(args: &AnalyseArgs) -> anyhow::Result<()> {
     let settings = analyser_settings(args)?;
@@ -64,8 +64,11 @@ fn run_analyser(
     let count = analyser.average_count();
     if count == 0 {
         bail!(
-            "{}: {} samples at {} Hz are fewer than one block of {} ADC samples ({:.3} s)",
+            "{} (--start {} s, --length {}): {} samples at {} Hz are fewer than one block of {} ADC samples ({:.3} s)",
             args.file.display(),
+            args.start,
+            args.length
+                .map_or("to the end".into(), |l| format!("{l} s")),
             wav.samples.len(),
             wav.rate_hz,
             args.block,
@@ -228,6 +231,17 @@ fn analyser_settings(args: &AnalyseArgs) -> anyhow::Result<AnalyserSettings> {
         "2.56" | "modern" => Sampling::Modern,
         other => bail!("--sampling {other}: thesis (fs = 2 Fmax) or 2.56 (fs = 2.56 Fmax)"),
     };
+    if !(args.fmax.is_finite() && args.fmax > 0.0) {
+        bail!(
+            "--fmax {}: the top of the band, a frequency > 0 Hz",
+            args.fmax
+        );
+    }
+    if let Some(cutoff) = args.cutoff
+        && !(cutoff.is_finite() && cutoff > 0.0)
+    {
+        bail!("--cutoff {cutoff}: a frequency > 0 Hz");
+    }
     if !(0.0..100.0).contains(&args.overlap) {
         bail!("--overlap {}: a percentage in [0, 100)", args.overlap);
     }

@@ -7,6 +7,7 @@ use anyhow::{Context, bail};
 use testrig::runtime::manifest::Ending;
 use testrig::runtime::previous_run::clear_previous_run;
 use testrig::runtime::{Pace, RunOptions, RunResult, StopSignals, run as run_plan, write_manifest};
+use testrig::scenario::values::check_simulated_s;
 use testrig::scenario::{CommandLine, ScenarioSource, build, measurement_warnings};
 
 use crate::cli::RunArgs;
@@ -15,12 +16,14 @@ use crate::cli::RunArgs;
 const WARNED: u8 = 3;
 
 pub fn run(args: &RunArgs) -> anyhow::Result<ExitCode> {
-    let pace = Pace::parse(&args.pace)
-        .with_context(|| format!("--pace {}: 1 (real time), a factor > 0, or max", args.pace))?;
-    if let Some(d) = args.duration
-        && !(d.is_finite() && d > 0.0)
-    {
-        bail!("--duration {d}: a simulated length > 0 s");
+    let pace = Pace::parse(&args.pace).with_context(|| {
+        format!(
+            "--pace {}: 1 (real time), a factor from 0.001 to 1e6, or max",
+            args.pace
+        )
+    })?;
+    if let Some(d) = args.duration {
+        check_simulated_s(d, false).map_err(|e| anyhow::anyhow!("--duration {d}: {e}"))?;
     }
     let source = ScenarioSource::read_with(&args.scenario, &args.overrides)?;
     let plan = build(

@@ -14,6 +14,9 @@ use serde::Serialize;
 
 use crate::cli::SimulateArgs;
 use crate::rig_setup::params_from;
+use testrig::scenario::values::{
+    check_load_nm, check_load_within_motor, check_simulated_s, check_speed_rpm,
+};
 
 /// The JSON summary of one run.
 #[derive(Serialize)]
@@ -30,8 +33,10 @@ struct Report<'a> {
 }
 
 pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
-    check_durations(args)?;
+    check_inputs(args)?;
     let params = params_from(&args.rig)?;
+    check_load_within_motor(args.load, &params)
+        .map_err(|e| anyhow::anyhow!("--load {}: {e}", args.load))?;
     let config = PlantConfig {
         output_rate_hz: args.rate,
         ..PlantConfig::default()
@@ -82,15 +87,17 @@ pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
     Ok(())
 }
 
-fn check_durations(args: &SimulateArgs) -> anyhow::Result<()> {
-    for (name, value) in [("--duration", args.duration), ("--settle", args.settle)] {
-        if !(value.is_finite() && value >= 0.0) {
-            bail!("{name} {value}: must be a finite time ≥ 0 s");
-        }
+/// The set points, times and rate as given, each refused with its flag named.
+fn check_inputs(args: &SimulateArgs) -> anyhow::Result<()> {
+    check_speed_rpm(args.rpm).map_err(|e| anyhow::anyhow!("--rpm {}: {e}", args.rpm))?;
+    check_load_nm(args.load).map_err(|e| anyhow::anyhow!("--load {}: {e}", args.load))?;
+    if !(args.rate.is_finite() && args.rate > 0.0) {
+        bail!("--rate {}: a sample rate > 0 Hz", args.rate);
     }
-    if args.duration <= 0.0 {
-        bail!("--duration {}: must be > 0 s", args.duration);
-    }
+    check_simulated_s(args.duration, false)
+        .map_err(|e| anyhow::anyhow!("--duration {}: {e}", args.duration))?;
+    check_simulated_s(args.settle, true)
+        .map_err(|e| anyhow::anyhow!("--settle {}: {e}", args.settle))?;
     Ok(())
 }
 

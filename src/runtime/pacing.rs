@@ -12,15 +12,20 @@ pub enum Pace {
     Max,
 }
 
+/// Slowest pace accepted: a thousand times slower than real time.
+pub const SLOWEST_PACE: f64 = 1.0e-3;
+/// Fastest pace factor accepted (beyond it, use `max`).
+pub const FASTEST_PACE: f64 = 1.0e6;
+
 impl Pace {
-    /// Parses `1`, `20`, `0.5` or `max`.
+    /// Parses `1`, `20`, `0.5` (a factor in [0.001, 10⁶]) or `max`.
     pub fn parse(text: &str) -> Option<Self> {
         if text == "max" {
             return Some(Self::Max);
         }
         text.parse::<f64>()
             .ok()
-            .filter(|f| f.is_finite() && *f > 0.0)
+            .filter(|f| (SLOWEST_PACE..=FASTEST_PACE).contains(f))
             .map(Self::Factor)
     }
 

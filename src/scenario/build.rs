@@ -5,7 +5,7 @@ use super::file::ScenarioFile;
 use super::plan::{Plan, RecordPlan, WavFormat};
 use super::rig_part::{rig_params, schedule_and_measures};
 use super::source::ScenarioSource;
-use super::values::Positive;
+use super::values::{Positive, check_load_within_motor, check_simulated_s};
 
 /// Run-time choices from the command line that override the file.
 #[derive(Clone, Copy, Debug, Default)]
@@ -20,17 +20,19 @@ pub struct CommandLine {
 pub fn build(src: &ScenarioSource, command_line: CommandLine) -> anyhow::Result<Plan> {
     let file: ScenarioFile = src.parse()?;
     let rate_hz = stream_rate_hz(src, &file.rate_hz)?;
-    for (value, field) in [
-        (&file.block_samples, "block_samples"),
-        (&file.queue_blocks, "queue_blocks"),
+    for (value, field, most) in [
+        (&file.block_samples, "block_samples", MAX_BLOCK_SAMPLES),
+        (&file.queue_blocks, "queue_blocks", MAX_QUEUE_BLOCKS),
     ] {
-        if *value.get_ref() == 0 {
-            return Err(src.error(value.span(), field, "must be ≥ 1"));
+        if !(1..=most).contains(value.get_ref()) {
+            return Err(src.error(value.span(), field, format!("must lie in 1..={most}")));
         }
     }
     let seed = command_line.seed.unwrap_or(file.seed);
     let (preset, params) = rig_params(src, &file.rig)?;
     let (schedule, measures, survey_s) = schedule_and_measures(src, &file)?;
+    check_load_within_motor(schedule.load_nm.range().1, &params)
+        .map_err(|message| src.error(0..0, "load_nm", message))?;
     let duration_s = match (command_line.duration_s, &file.duration_s, survey_s) {
         (Some(d), _, _) => d,
         (None, Some(d), _) => d.get_ref().0,
@@ -39,6 +41,13 @@ pub fn build(src: &ScenarioSource, command_line: CommandLine) -> anyhow::Result<
             return Err(src.error(0..0, "duration_s", "missing: the simulated run length (s)"));
         }
     };
+    if let Err(message) = check_simulated_s(duration_s, false) {
+        let span = match (&command_line.duration_s, &file.duration_s) {
+            (None, Some(d)) => d.span(),
+            _ => 0..0,
+        };
+        return Err(src.error(span, "duration_s", message));
+    }
     let analyser = match &file.analyser {
         Some(a) => Some(analyser_plan(src, a, rate_hz, seed)?),
         None => None,
@@ -86,6 +95,11 @@ pub fn build(src: &ScenarioSource, command_line: CommandLine) -> anyhow::Result<
         record,
     })
 }
+
+/// Most samples in one block between threads (each channel of a frame holds this many).
+pub const MAX_BLOCK_SAMPLES: usize = 1 << 20;
+/// Most blocks a queue between threads holds.
+pub const MAX_QUEUE_BLOCKS: usize = 1024;
 
 /// Slowest stream rate a scenario accepts (Hz): the plant's own lower bound.
 pub const MIN_RATE_HZ: f64 = 100.0;

@@ -7,7 +7,7 @@ use serde::Deserialize;
 use toml::Spanned;
 
 pub use super::chain_file::{AnalyserFile, ChainFile};
-use super::values::{Finite, NonNegative, Positive, SpeedRpm};
+use super::values::{LoadNm, NonNegative, Positive, SpeedRpm};
 
 /// The whole file.
 #[derive(Debug, Deserialize)]
@@ -98,8 +98,8 @@ pub struct RigFile {
 pub struct ScheduleFile {
     /// Motor speed set point at the start (rev/min).
     pub speed_rpm: SpeedRpm,
-    /// Brake load at the start (N m); negative drives from the brake side.
-    pub load_nm: Finite,
+    /// Brake load at the start (N m), ≥ 0.
+    pub load_nm: LoadNm,
     /// Changes in time order.
     #[serde(default)]
     pub change: Vec<Spanned<ChangeFile>>,
@@ -118,8 +118,8 @@ pub struct ChangeFile {
     pub ramp_s: Option<NonNegative>,
     /// New speed set point (rev/min).
     pub speed_rpm: Option<SpeedRpm>,
-    /// New brake load (N m).
-    pub load_nm: Option<Finite>,
+    /// New brake load (N m), ≥ 0.
+    pub load_nm: Option<LoadNm>,
 }
 
 /// `[schedule.function_generator]`: an AC current added to the brake's DC coil current.
@@ -153,7 +153,7 @@ pub struct SurveyFile {
     /// Speeds (rev/min), outer loop.
     pub speeds_rpm: Vec<SpeedRpm>,
     /// Loads (N m), inner loop.
-    pub loads_nm: Vec<Finite>,
+    pub loads_nm: Vec<LoadNm>,
     /// Time from setting a point to reading it (s).
     pub settle_s: Positive,
     /// Time the point is then held while the instruments measure (s).

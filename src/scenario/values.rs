@@ -21,6 +21,30 @@ pub struct NonNegative(pub f64);
 #[serde(try_from = "f64")]
 pub struct Positive(pub f64);
 
+/// Longest simulated time a run, a simulation or a sweep case accepts (s): 10⁶ s, about
+/// 11.6 days (half an hour unpaced); beyond it the sample count loses meaning.
+pub const MAX_SIMULATED_S: f64 = 1.0e6;
+
+/// A simulated length (s) as an input accepts it: finite, > 0 (or ≥ 0 where `zero_ok`),
+/// at most [`MAX_SIMULATED_S`].
+pub fn check_simulated_s(value: f64, zero_ok: bool) -> Result<f64, String> {
+    let low_ok = if zero_ok { value >= 0.0 } else { value > 0.0 };
+    if value.is_finite() && low_ok && value <= MAX_SIMULATED_S {
+        Ok(value)
+    } else {
+        let low = if zero_ok { "≥ 0" } else { "> 0" };
+        Err(format!(
+            "{value} s is not allowed: a simulated time {low} and at most {MAX_SIMULATED_S} s"
+        ))
+    }
+}
+
+/// A brake load set point (N m): finite and ≥ 0, since an eddy-current brake only
+/// resists the rotation (it cannot drive the rig).
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq, PartialOrd)]
+#[serde(try_from = "f64")]
+pub struct LoadNm(pub f64);
+
 /// A motor speed set point in [0, 10 000] rev/min.
 #[derive(Clone, Copy, Debug, Deserialize, PartialEq, PartialOrd)]
 #[serde(try_from = "f64")]
@@ -57,6 +81,45 @@ impl TryFrom<f64> for Positive {
             Err(format!("{value} is not allowed: a finite number > 0 is"))
         }
     }
+}
+
+impl TryFrom<f64> for LoadNm {
+    type Error = String;
+    fn try_from(value: f64) -> Result<Self, String> {
+        check_load_nm(value).map(Self)
+    }
+}
+
+/// A brake load (N m) as an input accepts it: finite and ≥ 0 (an eddy-current brake only
+/// resists the rotation); the error says why not.
+pub fn check_load_nm(value: f64) -> Result<f64, String> {
+    if value.is_finite() && value >= 0.0 {
+        Ok(value)
+    } else {
+        Err(format!(
+            "{value} N m is not allowed: an eddy-current brake's load is a finite torque ≥ 0 (it resists the rotation, it cannot drive it)"
+        ))
+    }
+}
+
+/// A brake load (N m) the rig of `params` can run against: at most the motor's torque
+/// limit. Beyond it the 2 hp motor cannot hold any speed, and the model's constant-torque
+/// brake would then drive the rig backwards, which an eddy-current brake cannot (its
+/// torque falls to zero with the speed).
+pub fn check_load_within_motor(load_nm: f64, params: &rig::RigParams) -> Result<(), String> {
+    let limit = params.motor_torque_limit_nm;
+    if load_nm <= limit {
+        Ok(())
+    } else {
+        Err(format!(
+            "{load_nm} N m is more than the motor can hold (motor_torque_limit_nm = {limit:.3} N m): the rig would stop, and an eddy-current brake cannot drive it backwards"
+        ))
+    }
+}
+
+/// A motor speed set point (rev/min) as an input accepts it: finite, in [0, 10 000].
+pub fn check_speed_rpm(value: f64) -> Result<f64, String> {
+    SpeedRpm::try_from(value).map(|s| s.0)
 }
 
 impl TryFrom<f64> for SpeedRpm {

@@ -7,7 +7,7 @@ use serde::Deserialize;
 use toml::Spanned;
 
 use crate::scenario::file::{AnalyserFile, ChainFile, RigFile};
-use crate::scenario::values::{Finite, Positive, SpeedRpm};
+use crate::scenario::values::{LoadNm, Positive, SpeedRpm};
 
 /// The whole file.
 #[derive(Debug, Deserialize)]
@@ -52,7 +52,7 @@ pub struct GridFile {
     /// Motor speed set points (rev/min).
     pub rpm: Vec<SpeedRpm>,
     /// Brake loads (N m).
-    pub load_nm: Vec<Finite>,
+    pub load_nm: Vec<LoadNm>,
     /// Backlash settings (mm), set through the centre distance.
     #[serde(default)]
     pub backlash_mm: Vec<Positive>,

@@ -6,6 +6,7 @@ use rig::geometry::centre_distance_shift_m;
 use crate::scenario::build::stream_rate_hz;
 use crate::scenario::chain_part::{analyser_plan, chain_plan};
 use crate::scenario::rig_part::rig_params;
+use crate::scenario::values::{check_load_within_motor, check_simulated_s};
 use crate::scenario::{AnalyserPlan, ChainPlan, ScenarioSource};
 
 use super::file::SweepFile;
@@ -62,6 +63,13 @@ pub fn build_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<Swe
     let band_hz = Some(analyser.settings.fmax_hz);
     let chain = chain_plan(src, &file.chain, rate_hz, file.seed, band_hz)?;
     let block_s = analyser.settings.block as f64 / analyser.settings.sample_rate_hz();
+    for (value, field) in [
+        (&file.case.settle_s, "case.settle_s"),
+        (&file.case.measure_s, "case.measure_s"),
+    ] {
+        check_simulated_s(value.get_ref().0, false)
+            .map_err(|message| src.error(value.span(), field, message))?;
+    }
     if file.case.measure_s.get_ref().0 < block_s {
         return Err(src.error(
             file.case.measure_s.span(),
@@ -114,6 +122,8 @@ pub fn build_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<Swe
     for (values, params) in &variants {
         for rpm in &grid.rpm {
             for load in &grid.load_nm {
+                check_load_within_motor(load.0, params)
+                    .map_err(|message| src.error(0..0, "grid.load_nm", message))?;
                 let index = cases.len();
                 cases.push(Case {
                     index,

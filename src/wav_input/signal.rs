@@ -154,7 +154,12 @@ fn span(
     let first = (start_s * rate_hz).round() as usize;
     let count = match length_s {
         None => frames - first,
-        Some(l) if l.is_finite() && l > 0.0 => ((l * rate_hz).round() as usize).min(frames - first),
+        Some(l) if l.is_finite() && l * rate_hz >= 1.0 => {
+            ((l * rate_hz).round() as usize).min(frames - first)
+        }
+        Some(l) if l.is_finite() && l > 0.0 => {
+            bail!("--length {l}: shorter than one sample at {rate_hz} Hz")
+        }
         Some(l) => bail!("--length {l}: a duration > 0 s"),
     };
     Ok((first, count))
