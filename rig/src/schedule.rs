@@ -127,10 +127,11 @@ impl Schedule {
         }
     }
 
-    /// Checks the ranges: speed in [0, 10000] rev/min, oscillating amplitude and frequency ≥ 0.
+    /// Checks the ranges: speed in [0, 10000] rev/min (0 or a normal number: a subnormal
+    /// speed overflows the plant's phase arithmetic), oscillating amplitude and frequency ≥ 0.
     pub fn validate(&self) -> Result<(), RigError> {
         let (low, high) = self.speed_rpm.range();
-        if low < 0.0 || high > MAX_SPEED_RPM {
+        if low < 0.0 || high > MAX_SPEED_RPM || low.is_subnormal() {
             return Err(RigError::Schedule(format!(
                 "speed set point must lie in [0, {MAX_SPEED_RPM}] rev/min, got {low}..{high}"
             )));

@@ -125,11 +125,11 @@ pub fn check_speed_rpm(value: f64) -> Result<f64, String> {
 impl TryFrom<f64> for SpeedRpm {
     type Error = String;
     fn try_from(value: f64) -> Result<Self, String> {
-        if value.is_finite() && (0.0..=MAX_SPEED_RPM).contains(&value) {
+        if value.is_finite() && (0.0..=MAX_SPEED_RPM).contains(&value) && !value.is_subnormal() {
             Ok(Self(value))
         } else {
             Err(format!(
-                "{value} rev/min is not allowed: a speed set point lies in [0, {MAX_SPEED_RPM}] rev/min"
+                "{value} rev/min is not allowed: a speed set point lies in [0, {MAX_SPEED_RPM}] rev/min (and is 0 or a normal number, ≥ 2.2e-308)"
             ))
         }
     }
