@@ -62,7 +62,12 @@ load_nm = 2.712
 #[test]
 fn bad_input_is_named_by_file_line_and_field_without_a_panic() {
     let dir = folder("bad");
-    let cases: [(&str, String, &[&str]); 9] = [
+    let cases: [(&str, String, &[&str]); 10] = [
+        (
+            "gate.toml",
+            format!("{MINIMAL}\n[chain.tacho]\ngate_s = 1e-9\n"),
+            &[":9:", "chain.tacho", "gate"],
+        ),
         (
             "no-name.toml",
             MINIMAL.replace("name = \"minimal\"\n", ""),

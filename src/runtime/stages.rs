@@ -3,13 +3,10 @@
 //! (amplifier output) → anti-alias filter; amplifier output → RMS meter; motor speed →
 //! tacho → DVM. Each stage reads channels of the frame and adds its own.
 
-use instruments::{
-    AntiAliasFilter, Block, CarrierDemodulator, CarrierModulator, DigitalVoltmeter, SlipRing, Tacho,
-};
+use instruments::{AntiAliasFilter, Block, CarrierDemodulator, CarrierModulator, SlipRing, Tacho};
 
 use super::frame::{Frame, SignalNames};
 use crate::scenario::ChainPlan;
-use crate::scenario::chain_part::build_meter;
 
 /// One instrument working on frames.
 pub trait Stage: Send {
@@ -104,7 +101,7 @@ pub fn build_stages(
     add(
         names,
         "meter_v",
-        block(build_meter(plan.meter, rate_hz)?, amplifier),
+        block(plan.meter.build(rate_hz)?, amplifier),
     );
     let motor_speed = index(names, "speed1_rad_s")?;
     add(
@@ -113,9 +110,7 @@ pub fn build_stages(
         block(Tacho::crompton_parkinson(rate_hz)?, motor_speed),
     );
     let tacho = index(names, "tacho_v")?;
-    let (gate_s, dvm_tau_s, resolution_v) = plan.dvm;
-    let dvm = DigitalVoltmeter::new(rate_hz, gate_s, dvm_tau_s, resolution_v)?;
-    add(names, "dvm_v", block(dvm, tacho));
+    add(names, "dvm_v", block(plan.dvm.build(rate_hz)?, tacho));
     Ok(stages)
 }
 

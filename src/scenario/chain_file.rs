@@ -207,7 +207,7 @@ fn default_meter_tau() -> Positive {
 pub struct TachoFile {
     /// Gate (s).
     #[serde(default = "default_gate")]
-    pub gate_s: Positive,
+    pub gate_s: Spanned<Positive>,
     /// RMS converter time constant (s).
     #[serde(default = "default_dvm_tau")]
     pub tau_s: Positive,
@@ -226,8 +226,8 @@ impl Default for TachoFile {
     }
 }
 
-fn default_gate() -> Positive {
-    Positive(1.0)
+fn default_gate() -> Spanned<Positive> {
+    Spanned::new(0..0, Positive(1.0))
 }
 
 fn default_dvm_tau() -> Positive {

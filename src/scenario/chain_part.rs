@@ -4,13 +4,13 @@ use instruments::{
     AcCoupling, Adc, AdcSettings, Analyser, AnalyserSettings, AntiAliasFilter, Averaging,
     BridgeArrangement, CarrierDemodulator, CarrierSettings, Detector, FilterKind, LowPassSpec,
     Sampling, Scope, ScopeSettings, ShaftStrain, SlipRingSettings, Slope, Spectrum, StrainBridge,
-    SweepMode, Voltmeter, Window,
+    SweepMode, Window,
 };
 use toml::Spanned;
 
 use super::chain_file::DEFAULT_CUTOFF_HZ;
 use super::file::{AnalyserFile, ChainFile, RecordFile};
-use super::plan::{AnalyserPlan, ChainPlan, RecordPlan, WavFormat};
+use super::plan::{AnalyserPlan, ChainPlan, DvmSettings, MeterSettings, RecordPlan, WavFormat};
 use super::source::ScenarioSource;
 use crate::signal_catalog;
 
@@ -56,11 +56,7 @@ pub fn chain_plan(
         slip_rings,
         filter: filter_spec(src, chain, rate_hz, band_hz)?,
         meter: meter_settings(src, chain, rate_hz)?,
-        dvm: (
-            chain.tacho.gate_s.0,
-            chain.tacho.tau_s.0,
-            chain.tacho.resolution_v.0,
-        ),
+        dvm: dvm_settings(src, chain, rate_hz)?,
         scope: scope_settings(src, chain, rate_hz)?,
     })
 }
@@ -151,28 +147,35 @@ fn meter_settings(
     src: &ScenarioSource,
     chain: &ChainFile,
     rate_hz: f64,
-) -> anyhow::Result<(Detector, f64, f64)> {
-    let settings = (
-        detector(src, chain)?,
-        chain.meter.tau_s.0,
-        chain.meter.ac_coupling_hz.get_ref().0,
-    );
-    build_meter(settings, rate_hz)
+) -> anyhow::Result<MeterSettings> {
+    let settings = MeterSettings {
+        detector: detector(src, chain)?,
+        tau_s: chain.meter.tau_s.0,
+        ac_coupling_hz: chain.meter.ac_coupling_hz.get_ref().0,
+    };
+    settings
+        .build(rate_hz)
         .map_err(|e| src.error(chain.meter.ac_coupling_hz.span(), "chain.meter", e))?;
     Ok(settings)
 }
 
-/// The RMS meter of `(detector, tau_s, ac_coupling_hz)` on a stream at `rate_hz`.
-pub fn build_meter(
-    (detector, tau_s, coupling_hz): (Detector, f64, f64),
+/// The tacho's DVM, checked by building it (a gate shorter than one sample fails here,
+/// at its line, not at run time).
+fn dvm_settings(
+    src: &ScenarioSource,
+    chain: &ChainFile,
     rate_hz: f64,
-) -> Result<Voltmeter, instruments::InstrumentError> {
-    let meter = Voltmeter::new(detector, rate_hz, tau_s)?;
-    if coupling_hz > 0.0 {
-        meter.ac_coupled(coupling_hz, rate_hz)
-    } else {
-        Ok(meter)
-    }
+) -> anyhow::Result<DvmSettings> {
+    let t = &chain.tacho;
+    let settings = DvmSettings {
+        gate_s: t.gate_s.get_ref().0,
+        tau_s: t.tau_s.0,
+        resolution_v: t.resolution_v.0,
+    };
+    settings
+        .build(rate_hz)
+        .map_err(|e| src.error(t.gate_s.span(), "chain.tacho", e))?;
+    Ok(settings)
 }
 
 fn detector(src: &ScenarioSource, chain: &ChainFile) -> anyhow::Result<Detector> {

@@ -1,8 +1,8 @@
 //! A scenario checked and turned into settings the runtime uses directly.
 
 use instruments::{
-    AdcSettings, AnalyserSettings, CarrierSettings, Detector, LowPassSpec, ScopeSettings,
-    ShaftStrain, SlipRingSettings, StrainBridge,
+    AdcSettings, AnalyserSettings, CarrierSettings, Detector, DigitalVoltmeter, InstrumentError,
+    LowPassSpec, ScopeSettings, ShaftStrain, SlipRingSettings, StrainBridge, Voltmeter,
 };
 use rig::{RigParams, Schedule};
 
@@ -74,9 +74,9 @@ pub struct ChainPlan {
     /// Anti-alias filter (`None`: bypassed).
     pub filter: Option<LowPassSpec>,
     /// RMS meter detector, time constant (s) and AC-coupling corner (Hz; 0 for DC).
-    pub meter: (Detector, f64, f64),
+    pub meter: MeterSettings,
     /// Tacho DVM gate (s), time constant (s), resolution (V).
-    pub dvm: (f64, f64, f64),
+    pub dvm: DvmSettings,
     /// Scope, if wired, and its AC-coupling corner (Hz; 0 for DC).
     pub scope: Option<(ScopeSettings, f64)>,
 }
@@ -136,5 +136,46 @@ impl Plan {
             speed_rpm: self.schedule.speed_rpm.value_at(0.0),
             load_nm: self.schedule.load_nm.value_at(0.0),
         }]
+    }
+}
+
+/// The RMS voltmeter on the amplifier output (the HP 400E or a true-RMS meter).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MeterSettings {
+    /// Average-responding (400E) or true RMS.
+    pub detector: Detector,
+    /// Detector time constant (s).
+    pub tau_s: f64,
+    /// Corner of the AC coupling (Hz); 0 couples DC.
+    pub ac_coupling_hz: f64,
+}
+
+impl MeterSettings {
+    /// The meter on a stream at `rate_hz`.
+    pub fn build(&self, rate_hz: f64) -> Result<Voltmeter, InstrumentError> {
+        let meter = Voltmeter::new(self.detector, rate_hz, self.tau_s)?;
+        if self.ac_coupling_hz > 0.0 {
+            meter.ac_coupled(self.ac_coupling_hz, rate_hz)
+        } else {
+            Ok(meter)
+        }
+    }
+}
+
+/// The digital voltmeter reading the tacho.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DvmSettings {
+    /// Gate time (s).
+    pub gate_s: f64,
+    /// RMS converter time constant (s).
+    pub tau_s: f64,
+    /// Display resolution (V).
+    pub resolution_v: f64,
+}
+
+impl DvmSettings {
+    /// The DVM on a stream at `rate_hz`.
+    pub fn build(&self, rate_hz: f64) -> Result<DigitalVoltmeter, InstrumentError> {
+        DigitalVoltmeter::new(rate_hz, self.gate_s, self.tau_s, self.resolution_v)
     }
 }
