@@ -239,53 +239,49 @@ fn clear(message: &str, path: &Path) -> bool {
     (message.starts_with(&file) || message.starts_with("--set ")) && message.len() > file.len() + 5
 }
 
-#[test]
-fn mutated_scenarios_are_built_or_refused_with_the_place_named() {
-    let files = shipped("scenario");
+/// Counts `result` in `tally`; an error must name its place (see [`clear`]).
+fn judge<T>(tally: &Tally, result: anyhow::Result<T>, path: &Path) -> Result<(), TestCaseError> {
+    tally.count(result.is_ok());
+    if let Err(e) = result {
+        let message = format!("{e:#}");
+        if std::env::var("FUZZ_SHOW").is_ok() {
+            println!("{message}");
+        }
+        prop_assert!(clear(&message, path), "unclear: {message}");
+    }
+    Ok(())
+}
+
+/// `cases` mutations of the shipped files of `kind`, each handed to `build`.
+fn fuzz_mutated<T>(kind: &str, cases: u32, build: impl Fn(&ScenarioSource) -> anyhow::Result<T>) {
+    let files = shipped(kind);
     let strategy = (0..files.len(), prop::collection::vec(mutation(), 1..4));
     let tally = Tally::default();
-    fuzz(4_000, strategy, |(index, mutations)| {
+    fuzz(cases, strategy, |(index, mutations)| {
         let (path, text) = &files[index];
         let source = ScenarioSource {
             path: path.clone(),
             text: mutate(text, &mutations),
         };
-        let built = build(&source, CommandLine::default());
-        tally.count(built.is_ok());
-        if let Err(e) = built {
-            let message = format!("{e:#}");
-            if std::env::var("FUZZ_SHOW").is_ok() {
-                println!("{message}");
-            }
-            prop_assert!(clear(&message, path), "unclear: {message}");
-        }
-        Ok(())
+        judge(&tally, build(&source), path)
     });
-    tally.check("scenarios", 4_000);
+    tally.check(kind, cases as usize);
+}
+
+#[test]
+fn mutated_scenarios_are_built_or_refused_with_the_place_named() {
+    fuzz_mutated("scenario", 4_000, |source| {
+        build(source, CommandLine::default())
+    });
 }
 
 #[test]
 fn mutated_sweeps_are_built_or_refused_with_the_place_named() {
-    let files = shipped("sweep");
-    let strategy = (0..files.len(), prop::collection::vec(mutation(), 1..4));
-    let tally = Tally::default();
-    fuzz(2_000, strategy, |(index, mutations)| {
-        let (path, text) = &files[index];
-        let source = ScenarioSource {
-            path: path.clone(),
-            text: mutate(text, &mutations),
-        };
-        let built: anyhow::Result<SweepPlan> = source
+    fuzz_mutated("sweep", 2_000, |source| -> anyhow::Result<SweepPlan> {
+        source
             .parse_sweep()
-            .and_then(|file| build_sweep(&source, &file));
-        tally.count(built.is_ok());
-        if let Err(e) = built {
-            let message = format!("{e:#}");
-            prop_assert!(clear(&message, path), "unclear: {message}");
-        }
-        Ok(())
+            .and_then(|file| build_sweep(source, &file))
     });
-    tally.check("sweeps", 2_000);
 }
 
 #[test]
@@ -339,13 +335,7 @@ fn set_items_are_applied_or_refused_naming_the_set() {
             path: path.clone(),
             text: edited,
         };
-        let built = build(&source, CommandLine::default());
-        tally.count(built.is_ok());
-        if let Err(e) = built {
-            let message = format!("{e:#}");
-            prop_assert!(clear(&message, path), "unclear: {message}");
-        }
-        Ok(())
+        judge(&tally, build(&source, CommandLine::default()), path)
     });
     tally.check("--set items", 2_000);
 }
