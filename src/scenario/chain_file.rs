@@ -4,6 +4,9 @@
 use serde::Deserialize;
 use toml::Spanned;
 
+use super::choices::{
+    ArrangementChoice, DetectorChoice, FilterChoice, SamplingChoice, SlopeChoice, WindowChoice,
+};
 use super::values::{Finite, NonNegative, Positive};
 
 /// `[chain]`: the measuring chain. Stages left out take their defaults; slip rings and the
@@ -37,8 +40,8 @@ pub struct ChainFile {
 #[serde(deny_unknown_fields)]
 pub struct GaugesFile {
     /// full, half or quarter.
-    #[serde(default = "default_arrangement")]
-    pub arrangement: Spanned<String>,
+    #[serde(default)]
+    pub arrangement: ArrangementChoice,
     /// Nominal gauge factor.
     #[serde(default = "default_gauge_factor")]
     pub gauge_factor: Positive,
@@ -53,16 +56,12 @@ pub struct GaugesFile {
 impl Default for GaugesFile {
     fn default() -> Self {
         Self {
-            arrangement: default_arrangement(),
+            arrangement: ArrangementChoice::default(),
             gauge_factor: default_gauge_factor(),
             gauge_factor_error: default_zero(),
             excitation_v: default_excitation(),
         }
     }
-}
-
-fn default_arrangement() -> Spanned<String> {
-    Spanned::new(0..0, "full".into())
 }
 
 fn default_gauge_factor() -> Positive {
@@ -131,8 +130,8 @@ pub struct SlipRingsFile {
 #[serde(deny_unknown_fields)]
 pub struct FilterFile {
     /// none, butterworth or bessel.
-    #[serde(default = "default_filter_kind")]
-    pub kind: Spanned<String>,
+    #[serde(default)]
+    pub kind: FilterChoice,
     /// Order 1–12.
     #[serde(default = "default_filter_order")]
     pub order: Spanned<usize>,
@@ -145,15 +144,11 @@ pub struct FilterFile {
 impl Default for FilterFile {
     fn default() -> Self {
         Self {
-            kind: default_filter_kind(),
+            kind: FilterChoice::default(),
             order: default_filter_order(),
             cutoff_hz: None,
         }
     }
-}
-
-fn default_filter_kind() -> Spanned<String> {
-    Spanned::new(0..0, "butterworth".into())
 }
 
 fn default_filter_order() -> Spanned<usize> {
@@ -168,8 +163,8 @@ pub const DEFAULT_CUTOFF_HZ: f64 = 2_000.0;
 #[serde(deny_unknown_fields)]
 pub struct MeterFile {
     /// average (the HP 400E, RMS-calibrated for sines) or true-rms.
-    #[serde(default = "default_detector")]
-    pub detector: Spanned<String>,
+    #[serde(default)]
+    pub detector: DetectorChoice,
     /// Detector time constant (s).
     #[serde(default = "default_meter_tau")]
     pub tau_s: Positive,
@@ -182,7 +177,7 @@ pub struct MeterFile {
 impl Default for MeterFile {
     fn default() -> Self {
         Self {
-            detector: default_detector(),
+            detector: DetectorChoice::default(),
             tau_s: default_meter_tau(),
             ac_coupling_hz: default_coupling(),
         }
@@ -191,10 +186,6 @@ impl Default for MeterFile {
 
 fn default_coupling() -> Spanned<NonNegative> {
     Spanned::new(0..0, NonNegative(1.0))
-}
-
-fn default_detector() -> Spanned<String> {
-    Spanned::new(0..0, "average".into())
 }
 
 fn default_meter_tau() -> Positive {
@@ -250,8 +241,8 @@ pub struct ScopeFile {
     #[serde(default = "default_zero")]
     pub trigger_v: Finite,
     /// rising or falling.
-    #[serde(default = "default_slope")]
-    pub slope: Spanned<String>,
+    #[serde(default)]
+    pub slope: SlopeChoice,
     /// Corner (Hz) of the AC input coupling (a Tektronix AC input: about 1.6 Hz); 0 for DC.
     #[serde(default = "default_scope_coupling")]
     pub ac_coupling_hz: Spanned<NonNegative>,
@@ -259,10 +250,6 @@ pub struct ScopeFile {
 
 fn default_scope_coupling() -> Spanned<NonNegative> {
     Spanned::new(0..0, NonNegative(1.6))
-}
-
-fn default_slope() -> Spanned<String> {
-    Spanned::new(0..0, "rising".into())
 }
 
 /// `[analyser]`: the HP 5451C with its ADC, started at each measurement.
@@ -275,11 +262,11 @@ pub struct AnalyserFile {
     /// Top of the band (Hz).
     pub fmax_hz: Spanned<Positive>,
     /// thesis (fs = 2 Fmax, N/2 lines) or 2.56 (as text or as a number).
-    #[serde(default = "default_sampling", deserialize_with = "text_or_number")]
-    pub sampling: Spanned<String>,
+    #[serde(default)]
+    pub sampling: SamplingChoice,
     /// uniform, hanning or flattop.
-    #[serde(default = "default_window")]
-    pub window: Spanned<String>,
+    #[serde(default)]
+    pub window: WindowChoice,
     /// Spectra averaged (linear: sum, then divide).
     #[serde(default = "default_averages")]
     pub averages: Spanned<usize>,
@@ -299,32 +286,6 @@ pub struct AnalyserFile {
 
 fn default_analyser_block() -> Spanned<usize> {
     Spanned::new(0..0, 1024)
-}
-
-/// A choice written as text, or as a number standing for its text (`sampling = 2.56`).
-#[derive(Deserialize)]
-#[serde(untagged)]
-enum TextOrNumber {
-    Text(String),
-    Number(f64),
-}
-
-fn text_or_number<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Spanned<String>, D::Error> {
-    let value = Spanned::<TextOrNumber>::deserialize(d)?;
-    let span = value.span();
-    let text = match value.into_inner() {
-        TextOrNumber::Text(text) => text,
-        TextOrNumber::Number(number) => number.to_string(),
-    };
-    Ok(Spanned::new(span, text))
-}
-
-fn default_sampling() -> Spanned<String> {
-    Spanned::new(0..0, "thesis".into())
-}
-
-fn default_window() -> Spanned<String> {
-    Spanned::new(0..0, "hanning".into())
 }
 
 fn default_averages() -> Spanned<usize> {

@@ -2,9 +2,8 @@
 
 use instruments::{
     AcCoupling, Adc, AdcSettings, Analyser, AnalyserSettings, AntiAliasFilter, Averaging,
-    BridgeArrangement, CarrierDemodulator, CarrierSettings, Detector, FilterKind, LowPassSpec,
-    Sampling, Scope, ScopeSettings, ShaftStrain, SlipRingSettings, Slope, Spectrum, StrainBridge,
-    SweepMode, Window,
+    BridgeArrangement, CarrierDemodulator, CarrierSettings, LowPassSpec, Sampling, Scope,
+    ScopeSettings, ShaftStrain, SlipRingSettings, Slope, Spectrum, StrainBridge, SweepMode, Window,
 };
 use toml::Spanned;
 
@@ -27,18 +26,7 @@ pub fn chain_plan(
     band_hz: Option<f64>,
 ) -> anyhow::Result<ChainPlan> {
     let g = &chain.gauges;
-    let arrangement = parse_choice(
-        src,
-        &g.arrangement,
-        "chain.gauges.arrangement",
-        "full, half, quarter",
-        |t| match t {
-            "full" => Some(BridgeArrangement::Full),
-            "half" => Some(BridgeArrangement::Half),
-            "quarter" => Some(BridgeArrangement::Quarter),
-            _ => None,
-        },
-    )?;
+    let arrangement = BridgeArrangement::from(g.arrangement);
     let mut bridge = StrainBridge::new(arrangement, g.gauge_factor.0, g.excitation_v.0)
         .map_err(|e| src.error(0..0, "chain.gauges", e))?;
     bridge.gauge_factor_error = g.gauge_factor_error.0;
@@ -101,18 +89,7 @@ fn filter_spec(
     band_hz: Option<f64>,
 ) -> anyhow::Result<Option<LowPassSpec>> {
     let f = &chain.filter;
-    let kind = parse_choice(
-        src,
-        &f.kind,
-        "chain.filter.kind",
-        "none, butterworth, bessel",
-        |t| match t {
-            "none" => Some(None),
-            "butterworth" => Some(Some(FilterKind::Butterworth)),
-            "bessel" => Some(Some(FilterKind::Bessel)),
-            _ => None,
-        },
-    )?;
+    let kind = f.kind.kind();
     let Some(kind) = kind else {
         return Ok(None);
     };
@@ -149,7 +126,7 @@ fn meter_settings(
     rate_hz: f64,
 ) -> anyhow::Result<MeterSettings> {
     let settings = MeterSettings {
-        detector: detector(src, chain)?,
+        detector: chain.meter.detector.into(),
         tau_s: chain.meter.tau_s.0,
         ac_coupling_hz: chain.meter.ac_coupling_hz.get_ref().0,
     };
@@ -178,20 +155,6 @@ fn dvm_settings(
     Ok(settings)
 }
 
-fn detector(src: &ScenarioSource, chain: &ChainFile) -> anyhow::Result<Detector> {
-    parse_choice(
-        src,
-        &chain.meter.detector,
-        "chain.meter.detector",
-        "average (HP 400E), true-rms",
-        |t| match t {
-            "average" => Some(Detector::AverageRmsCalibrated),
-            "true-rms" => Some(Detector::TrueRms),
-            _ => None,
-        },
-    )
-}
-
 fn scope_settings(
     src: &ScenarioSource,
     chain: &ChainFile,
@@ -200,17 +163,7 @@ fn scope_settings(
     let Some(s) = &chain.scope else {
         return Ok(None);
     };
-    let slope = parse_choice(
-        src,
-        &s.slope,
-        "chain.scope.slope",
-        "rising, falling",
-        |t| match t {
-            "rising" => Some(Slope::Rising),
-            "falling" => Some(Slope::Falling),
-            _ => None,
-        },
-    )?;
+    let slope = Slope::from(s.slope);
     let settings = ScopeSettings {
         volts_per_div: s.volts_per_div.0,
         seconds_per_div: s.seconds_per_div.get_ref().0,
@@ -235,20 +188,8 @@ pub fn analyser_plan(
     rate_hz: f64,
     seed: u64,
 ) -> anyhow::Result<AnalyserPlan> {
-    let window = parse_choice(src, &file.window, "analyser.window", Window::NAMES, |t| {
-        Window::parse(t)
-    })?;
-    let sampling = parse_choice(
-        src,
-        &file.sampling,
-        "analyser.sampling",
-        "thesis, 2.56",
-        |t| match t {
-            "thesis" => Some(Sampling::Thesis),
-            "2.56" | "modern" => Some(Sampling::Modern),
-            _ => None,
-        },
-    )?;
+    let window = Window::from(file.window);
+    let sampling = Sampling::from(file.sampling);
     let overlap = file.overlap_pct.as_ref().map_or(0.0, |o| o.get_ref().0);
     if overlap >= 100.0 {
         let span = file.overlap_pct.as_ref().map_or(0..0, Spanned::span);
@@ -284,22 +225,6 @@ pub fn analyser_plan(
     };
     Adc::new(adc).map_err(|e| src.error(file.bits.span(), "analyser.bits", e))?;
     Ok(AnalyserPlan { settings, adc })
-}
-
-fn parse_choice<T>(
-    src: &ScenarioSource,
-    value: &Spanned<String>,
-    field: &str,
-    allowed: &str,
-    parse: impl Fn(&str) -> Option<T>,
-) -> anyhow::Result<T> {
-    parse(value.get_ref()).ok_or_else(|| {
-        src.error(
-            value.span(),
-            field,
-            format!("`{}` is not one of {allowed}", value.get_ref()),
-        )
-    })
 }
 
 /// What to record, with each name checked.
@@ -352,17 +277,7 @@ pub fn record_plan(
     if *file.decimate.get_ref() == 0 {
         return Err(src.error(file.decimate.span(), "record.decimate", "must be ≥ 1"));
     }
-    let wav_format = parse_choice(
-        src,
-        &file.wav_format,
-        "record.wav_format",
-        "float32, int24",
-        |t| match t {
-            "float32" => Some(WavFormat::Float32),
-            "int24" => Some(WavFormat::Int24),
-            _ => None,
-        },
-    )?;
+    let wav_format = WavFormat::from(file.wav_format);
     for format in &file.formats {
         match format.get_ref().as_str() {
             "wav" => plan.wav = Some(wav_format),

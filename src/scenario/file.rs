@@ -7,6 +7,7 @@ use serde::Deserialize;
 use toml::Spanned;
 
 pub use super::chain_file::{AnalyserFile, ChainFile};
+use super::choices::WavFormatChoice;
 use super::values::{LoadNm, NonNegative, Positive, SpeedRpm};
 
 /// The whole file.
@@ -180,18 +181,14 @@ pub struct RecordFile {
     /// Any of wav, csv, uff58.
     pub formats: Vec<Spanned<String>>,
     /// WAV sample format: float32 or int24.
-    #[serde(default = "default_wav_format")]
-    pub wav_format: Spanned<String>,
+    #[serde(default)]
+    pub wav_format: WavFormatChoice,
     /// Keep every M-th sample (no filtering: what is above the new Nyquist aliases).
     #[serde(default = "default_decimate")]
     pub decimate: Spanned<usize>,
     /// Full scale of a signal in its unit for int24 WAV (defaults by unit).
     #[serde(default)]
     pub full_scale: BTreeMap<String, Spanned<Positive>>,
-}
-
-fn default_wav_format() -> Spanned<String> {
-    Spanned::new(0..0, "float32".into())
 }
 
 fn default_decimate() -> Spanned<usize> {

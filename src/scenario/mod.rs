@@ -3,6 +3,7 @@
 pub mod build;
 pub mod chain_file;
 pub mod chain_part;
+pub mod choices;
 pub mod coverage;
 pub mod file;
 pub mod overrides;

@@ -1,0 +1,186 @@
+//! The named choices a scenario or sweep file makes (bridge arrangement, filter, meter
+//! detector, scope slope, analyser window and sampling, WAV format) as typed enums: serde
+//! refuses anything else at the value's line with the allowed names, and each maps onto
+//! the instrument's own type.
+
+use instruments::{BridgeArrangement, Detector, FilterKind, Sampling, Slope, Window};
+use serde::Deserialize;
+
+use super::plan::WavFormat;
+
+/// `chain.gauges.arrangement`.
+#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub enum ArrangementChoice {
+    /// Four active gauges (the thesis's).
+    #[default]
+    Full,
+    /// Two active gauges.
+    Half,
+    /// One active gauge.
+    Quarter,
+}
+
+impl From<ArrangementChoice> for BridgeArrangement {
+    fn from(choice: ArrangementChoice) -> Self {
+        match choice {
+            ArrangementChoice::Full => Self::Full,
+            ArrangementChoice::Half => Self::Half,
+            ArrangementChoice::Quarter => Self::Quarter,
+        }
+    }
+}
+
+/// `chain.filter.kind`.
+#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub enum FilterChoice {
+    /// No anti-alias filter.
+    None,
+    /// Butterworth (the default).
+    #[default]
+    Butterworth,
+    /// Bessel.
+    Bessel,
+}
+
+impl FilterChoice {
+    /// The filter's kind; `None` for no filter.
+    pub fn kind(self) -> Option<FilterKind> {
+        match self {
+            Self::None => None,
+            Self::Butterworth => Some(FilterKind::Butterworth),
+            Self::Bessel => Some(FilterKind::Bessel),
+        }
+    }
+}
+
+/// `chain.meter.detector`.
+#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub enum DetectorChoice {
+    /// Average-responding, RMS-calibrated for sines (the HP 400E).
+    #[default]
+    Average,
+    /// True RMS.
+    TrueRms,
+}
+
+impl From<DetectorChoice> for Detector {
+    fn from(choice: DetectorChoice) -> Self {
+        match choice {
+            DetectorChoice::Average => Self::AverageRmsCalibrated,
+            DetectorChoice::TrueRms => Self::TrueRms,
+        }
+    }
+}
+
+/// `chain.scope.slope`.
+#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub enum SlopeChoice {
+    /// Trigger on a rising edge.
+    #[default]
+    Rising,
+    /// Trigger on a falling edge.
+    Falling,
+}
+
+impl From<SlopeChoice> for Slope {
+    fn from(choice: SlopeChoice) -> Self {
+        match choice {
+            SlopeChoice::Rising => Self::Rising,
+            SlopeChoice::Falling => Self::Falling,
+        }
+    }
+}
+
+/// `analyser.window`.
+#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub enum WindowChoice {
+    /// No window.
+    #[serde(alias = "rectangular")]
+    Uniform,
+    /// Hanning (the thesis's).
+    #[default]
+    #[serde(alias = "hann")]
+    Hanning,
+    /// HP flat-top.
+    #[serde(alias = "flat-top")]
+    Flattop,
+}
+
+impl From<WindowChoice> for Window {
+    fn from(choice: WindowChoice) -> Self {
+        match choice {
+            WindowChoice::Uniform => Self::Uniform,
+            WindowChoice::Hanning => Self::Hanning,
+            WindowChoice::Flattop => Self::FlatTop,
+        }
+    }
+}
+
+/// `analyser.sampling`: `thesis` (fs = 2 Fmax) or `2.56` (fs = 2.56 Fmax), the latter
+/// also written as a number or as `modern`.
+#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
+#[serde(try_from = "TextOrNumber")]
+pub enum SamplingChoice {
+    /// fs = 2 Fmax, N/2 lines.
+    #[default]
+    Thesis,
+    /// fs = 2.56 Fmax, N/2.56 + 1 lines.
+    Modern,
+}
+
+/// A choice written as text, or as a number standing for its text (`sampling = 2.56`).
+#[derive(Deserialize)]
+#[serde(untagged)]
+enum TextOrNumber {
+    Text(String),
+    Number(f64),
+}
+
+impl TryFrom<TextOrNumber> for SamplingChoice {
+    type Error = String;
+    fn try_from(value: TextOrNumber) -> Result<Self, String> {
+        let text = match value {
+            TextOrNumber::Text(text) => text,
+            TextOrNumber::Number(number) => number.to_string(),
+        };
+        match text.as_str() {
+            "thesis" => Ok(Self::Thesis),
+            "2.56" | "modern" => Ok(Self::Modern),
+            other => Err(format!("`{other}` is not one of thesis, 2.56")),
+        }
+    }
+}
+
+impl From<SamplingChoice> for Sampling {
+    fn from(choice: SamplingChoice) -> Self {
+        match choice {
+            SamplingChoice::Thesis => Self::Thesis,
+            SamplingChoice::Modern => Self::Modern,
+        }
+    }
+}
+
+/// `record.wav_format`.
+#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub enum WavFormatChoice {
+    /// 32-bit float, the physical value itself.
+    #[default]
+    Float32,
+    /// 24-bit integer at a full scale per signal.
+    Int24,
+}
+
+impl From<WavFormatChoice> for WavFormat {
+    fn from(choice: WavFormatChoice) -> Self {
+        match choice {
+            WavFormatChoice::Float32 => Self::Float32,
+            WavFormatChoice::Int24 => Self::Int24,
+        }
+    }
+}
