@@ -18,13 +18,28 @@ if ! command -v slurmctld >/dev/null || ! command -v munged >/dev/null; then
     DEBIAN_FRONTEND=noninteractive apt-get install -y -qq slurmctld slurmd slurm-client munge >/dev/null
 fi
 
-cleanup() {
+running() { # whether a live (not zombie) process of that name exists
+    ps -C "$1" -o stat= 2>/dev/null | grep -qv '^Z'
+}
+
+passed=0
+cleanup() { # the daemons stopped, then (after a pass) the work folder removed
     scancel --user=root >/dev/null 2>&1 || true
-    [ -f "$work/slurmd.pid" ] && kill "$(cat "$work/slurmd.pid")" 2>/dev/null || true
-    [ -f "$work/slurmctld.pid" ] && kill "$(cat "$work/slurmctld.pid")" 2>/dev/null || true
-    [ -f "$work/munged.pid" ] && kill "$(cat "$work/munged.pid")" 2>/dev/null || true
+    for daemon in slurmd slurmctld munged; do
+        [ -f "$work/$daemon.pid" ] && kill "$(cat "$work/$daemon.pid")" 2>/dev/null || true
+    done
+    for _ in $(seq 50); do
+        running slurmctld || running slurmd || break
+        sleep 0.1
+    done
+    if [ "$passed" = 1 ]; then rm -rf "$work"; else echo "logs kept in $work"; fi
 }
 trap cleanup EXIT
+
+if running slurmctld || running slurmd; then
+    say "a slurmctld or slurmd is already running on this machine: stop it first"
+    exit 1
+fi
 
 say "munge"
 mkdir -p "$work/munge" /run/munge
@@ -124,4 +139,4 @@ cat "$work"/slurm-"$job"_1.out
 cmp "$work/long-reference/cases.csv" "$work/cancel/shard-1/cases.csv"
 say "the resumed shard equals the uninterrupted one (byte for byte)"
 say "passed"
-rm -rf "$work"
+passed=1
