@@ -10,6 +10,7 @@ use instruments::{
 use crate::cli::AnalyseArgs;
 use testrig::plots::{SpectrumPlot, write_spectrum_plots};
 use testrig::recording::{ALIAS_COLUMN, Metadata, write_spectrum_csv};
+use testrig::scenario::choices::SamplingChoice;
 use testrig::wav_input::{WavSignal, read_signal};
 
 pub fn run(args: &AnalyseArgs) -> anyhow::Result<()> {
@@ -226,11 +227,14 @@ fn warn_of_overloads(adc: &Adc, range: &AdcRange, unit: &str) {
 fn analyser_settings(args: &AnalyseArgs) -> anyhow::Result<AnalyserSettings> {
     let window = Window::parse(&args.window)
         .with_context(|| format!("--window {}: one of {}", args.window, Window::NAMES))?;
-    let sampling = match args.sampling.as_str() {
-        "thesis" => Sampling::Thesis,
-        "2.56" | "modern" => Sampling::Modern,
-        other => bail!("--sampling {other}: thesis (fs = 2 Fmax) or 2.56 (fs = 2.56 Fmax)"),
-    };
+    let sampling = SamplingChoice::parse(&args.sampling)
+        .map(Sampling::from)
+        .with_context(|| {
+            format!(
+                "--sampling {}: thesis (fs = 2 Fmax) or 2.56 (fs = 2.56 Fmax)",
+                args.sampling
+            )
+        })?;
     if !(args.fmax.is_finite() && args.fmax > 0.0) {
         bail!(
             "--fmax {}: the top of the band, a frequency > 0 Hz",

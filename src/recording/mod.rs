@@ -1,6 +1,7 @@
 //! Recorders: streams of samples to files that other tools read, each written under a
 //! `.partial` name until complete.
 
+pub mod cleanup;
 pub mod csv_stream;
 pub mod partial;
 pub mod spectrum_csv;
@@ -8,6 +9,7 @@ pub mod uff58;
 pub mod uff58_stream;
 pub mod wav;
 
+pub use cleanup::remove_files_with_extension;
 pub use csv_stream::CsvRecorder;
 pub use partial::PartialFile;
 pub use spectrum_csv::{ALIAS_COLUMN, Metadata, write_spectrum_csv};

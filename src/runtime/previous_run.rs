@@ -7,6 +7,8 @@ use std::path::Path;
 
 use anyhow::Context;
 
+use crate::recording::remove_files_with_extension;
+
 /// Removes the files of the run recorded in `dir/manifest.json`; returns how many.
 /// A folder that does not exist yet holds nothing to remove.
 pub fn clear_previous_run(dir: &Path) -> anyhow::Result<usize> {
@@ -32,13 +34,5 @@ pub fn clear_previous_run(dir: &Path) -> anyhow::Result<usize> {
             }
         }
     }
-    for entry in std::fs::read_dir(dir).with_context(|| format!("cannot read {}", dir.display()))? {
-        let path = entry?.path();
-        if path.extension().is_some_and(|e| e == "partial") && path.is_file() {
-            std::fs::remove_file(&path)
-                .with_context(|| format!("cannot remove {}", path.display()))?;
-            removed += 1;
-        }
-    }
-    Ok(removed)
+    Ok(removed + remove_files_with_extension(dir, "partial")?)
 }

@@ -3,7 +3,7 @@
 use instruments::{
     AcCoupling, Adc, AdcSettings, Analyser, AnalyserSettings, AntiAliasFilter, Averaging,
     BridgeArrangement, CarrierDemodulator, CarrierSettings, LowPassSpec, Sampling, Scope,
-    ScopeSettings, ShaftStrain, SlipRingSettings, Slope, Spectrum, StrainBridge, SweepMode, Window,
+    ScopeSettings, ShaftStrain, SlipRingSettings, Slope, Spectrum, StrainBridge, SweepMode,
 };
 use toml::Spanned;
 
@@ -188,7 +188,7 @@ pub fn analyser_plan(
     rate_hz: f64,
     seed: u64,
 ) -> anyhow::Result<AnalyserPlan> {
-    let window = Window::from(file.window);
+    let window = file.window.0;
     let sampling = Sampling::from(file.sampling);
     let overlap = file.overlap_pct.as_ref().map_or(0.0, |o| o.get_ref().0);
     if overlap >= 100.0 {

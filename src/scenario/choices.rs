@@ -95,29 +95,24 @@ impl From<SlopeChoice> for Slope {
     }
 }
 
-/// `analyser.window`.
-#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
-#[serde(rename_all = "kebab-case")]
-pub enum WindowChoice {
-    /// No window.
-    #[serde(alias = "rectangular")]
-    Uniform,
-    /// Hanning (the thesis's).
-    #[default]
-    #[serde(alias = "hann")]
-    Hanning,
-    /// HP flat-top.
-    #[serde(alias = "flat-top")]
-    Flattop,
+/// `analyser.window`: any name [`Window::parse`] takes (`uniform`, `hanning`, `flattop`
+/// and their aliases), so the file and `testrig analyse --window` share one list.
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq, Eq)]
+#[serde(try_from = "String")]
+pub struct WindowChoice(pub Window);
+
+impl Default for WindowChoice {
+    fn default() -> Self {
+        Self(Window::Hanning)
+    }
 }
 
-impl From<WindowChoice> for Window {
-    fn from(choice: WindowChoice) -> Self {
-        match choice {
-            WindowChoice::Uniform => Self::Uniform,
-            WindowChoice::Hanning => Self::Hanning,
-            WindowChoice::Flattop => Self::FlatTop,
-        }
+impl TryFrom<String> for WindowChoice {
+    type Error = String;
+    fn try_from(text: String) -> Result<Self, String> {
+        Window::parse(&text)
+            .map(Self)
+            .ok_or_else(|| format!("`{text}` is not one of {}", Window::NAMES))
     }
 }
 
@@ -148,10 +143,17 @@ impl TryFrom<TextOrNumber> for SamplingChoice {
             TextOrNumber::Text(text) => text,
             TextOrNumber::Number(number) => number.to_string(),
         };
-        match text.as_str() {
-            "thesis" => Ok(Self::Thesis),
-            "2.56" | "modern" => Ok(Self::Modern),
-            other => Err(format!("`{other}` is not one of thesis, 2.56")),
+        Self::parse(&text).ok_or_else(|| format!("`{text}` is not one of thesis, 2.56"))
+    }
+}
+
+impl SamplingChoice {
+    /// `thesis`, `2.56` or `modern`, as the file and `testrig analyse --sampling` take them.
+    pub fn parse(text: &str) -> Option<Self> {
+        match text {
+            "thesis" => Some(Self::Thesis),
+            "2.56" | "modern" => Some(Self::Modern),
+            _ => None,
         }
     }
 }

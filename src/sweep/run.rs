@@ -17,7 +17,7 @@ use super::table::{CASES_DIR, case_path, read_cases, write_case, write_table};
 use crate::plots::{
     RegimeCell, SpeedLines, WaterfallTrace, write_frequency_map, write_regime_map, write_waterfall,
 };
-use crate::recording::PartialFile;
+use crate::recording::{PartialFile, remove_files_with_extension};
 
 /// How to run.
 #[derive(Clone, Debug)]
@@ -131,13 +131,7 @@ fn clear_other_sweep(dir: &Path, meta: &SweepMeta, resume: bool) -> anyhow::Resu
             earlier.cases
         );
     }
-    for entry in std::fs::read_dir(dir.join(CASES_DIR))? {
-        let path = entry?.path();
-        if path.extension().is_some_and(|e| e == "json") {
-            std::fs::remove_file(&path)
-                .with_context(|| format!("cannot remove {}", path.display()))?;
-        }
-    }
+    remove_files_with_extension(&dir.join(CASES_DIR), "json")?;
     Ok(())
 }
 

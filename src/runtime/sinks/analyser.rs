@@ -260,13 +260,7 @@ impl Sink for AnalyserSink {
         self.close_measurement()?;
         self.overloads += self.adc.overloads();
         let mut warnings = std::mem::take(&mut self.incomplete);
-        warnings.extend(self.clock.unreached().map(|index| {
-            format!(
-                "measurement {} ({}): not reached before the run ended; no spectrum",
-                index + 1,
-                self.measures[index].label
-            )
-        }));
+        warnings.extend(self.clock.unreached_warnings(&self.measures, "no spectrum"));
         if self.overloads > 0 {
             warnings.push(format!(
                 "the ADC overloaded on {} samples (range ±{} V): raise analyser.range_v",

@@ -1,5 +1,7 @@
 //! Where the scenario's measurement instants fall within the stream of blocks.
 
+use crate::scenario::Measure;
+
 /// Sample indices of the measurements, consumed in order.
 #[derive(Clone, Debug)]
 pub struct MeasureClock {
@@ -32,7 +34,23 @@ impl MeasureClock {
     }
 
     /// Indices of the measurements the stream has not reached (yet).
-    pub fn unreached(&self) -> std::ops::Range<usize> {
+    fn unreached(&self) -> std::ops::Range<usize> {
         self.next..self.marks.len()
+    }
+
+    /// A warning for each measurement of `measures` not reached, saying what `lost` (e.g.
+    /// "no spectrum").
+    pub fn unreached_warnings<'a>(
+        &'a self,
+        measures: &'a [Measure],
+        lost: &'a str,
+    ) -> impl Iterator<Item = String> + 'a {
+        self.unreached().map(move |index| {
+            format!(
+                "measurement {} ({}): not reached before the run ended; {lost}",
+                index + 1,
+                measures[index].label
+            )
+        })
     }
 }

@@ -146,13 +146,7 @@ impl Sink for ScopeSink {
                 )
             })
             .collect();
-        warnings.extend(self.clock.unreached().map(|index| {
-            format!(
-                "measurement {} ({}): not reached before the run ended; no trace",
-                index + 1,
-                label(index)
-            )
-        }));
+        warnings.extend(self.clock.unreached_warnings(&self.measures, "no trace"));
         Ok(SinkReport {
             files: std::mem::take(&mut self.files),
             facts: vec![(
