@@ -208,67 +208,60 @@ fn a_file_given_to_the_wrong_command_is_sent_to_the_right_one() {
     assert!(!std::path::Path::new(out).join("manifest.json").exists());
 }
 
+/// The `value` of the entry named `name` in the list `list` of `testrig params --json`.
+fn listed(params: &serde_json::Value, list: &str, name: &str) -> serde_json::Value {
+    params[list]
+        .as_array()
+        .expect("a list")
+        .iter()
+        .find(|entry| entry["name"] == name)
+        .unwrap_or_else(|| panic!("{name} in {list}"))["value"]
+        .clone()
+}
+
 #[test]
 fn one_parameter_vocabulary_across_params_simulate_and_run() {
     // backlash_mm (a scenario's [rig] key) works in params (and simulate, which shares it),
     // in both its bare and its scenario form.
     for item in ["backlash_mm=1.46", "rig.backlash_mm=1.46"] {
         let out = json(&testrig(&["params", "--set", item, "--json"]));
-        let backlash = out["derived"]
-            .as_array()
-            .expect("derived")
-            .iter()
-            .find(|d| d["name"] == "circular_backlash_m")
-            .expect("backlash")["value"]
+        let backlash = listed(&out, "derived", "circular_backlash_m")
             .as_f64()
             .expect("number");
         assert!((backlash - 1.46e-3).abs() < 1e-12, "{item}: {backlash}");
     }
     let out = json(&testrig(&["params", "--set", "rig.set.teeth=31", "--json"]));
-    let teeth = out["parameters"]
-        .as_array()
-        .expect("parameters")
-        .iter()
-        .find(|p| p["name"] == "teeth")
-        .expect("teeth")["value"]
-        .clone();
-    assert_eq!(teeth, "31");
+    assert_eq!(listed(&out, "parameters", "teeth"), "31");
     // run takes the bare name too; a bad value is blamed on the --set, not on a line.
     let scenario = format!(
         "{}/scenarios/aliasing-windowing.toml",
         env!("CARGO_MANIFEST_DIR")
     );
     let out = std::env::temp_dir().join(format!("testrig-vocabulary-{}", std::process::id()));
-    let bad = testrig(&[
-        "run",
-        &scenario,
-        "--set",
-        "teeth=0",
-        "--out",
-        out.to_str().expect("utf-8"),
-    ]);
+    let run = |extra: &[&str]| {
+        let mut args = vec![
+            "run",
+            scenario.as_str(),
+            "--out",
+            out.to_str().expect("utf-8"),
+        ];
+        args.extend(extra);
+        testrig(&args)
+    };
+    let bad = run(&["--set", "teeth=0"]);
     let stderr = String::from_utf8_lossy(&bad.stderr);
     assert!(!bad.status.success());
     assert!(
         stderr.contains("--set teeth=0 (on ") && stderr.contains("rig.set.teeth"),
         "{stderr}"
     );
-    let unknown = testrig(&[
-        "run",
-        &scenario,
-        "--set",
-        "analyser.windw=hanning",
-        "--out",
-        out.to_str().expect("utf-8"),
-    ]);
+    let unknown = run(&["--set", "analyser.windw=hanning"]);
     let stderr = String::from_utf8_lossy(&unknown.stderr);
     assert!(
         stderr.contains("--set analyser.windw=hanning (on ") && stderr.contains("windw"),
         "{stderr}"
     );
-    let good = testrig(&[
-        "run",
-        &scenario,
+    let good = run(&[
         "--pace",
         "max",
         "--duration",
@@ -277,8 +270,6 @@ fn one_parameter_vocabulary_across_params_simulate_and_run() {
         "teeth=31",
         "--set",
         "backlash_mm=1.46",
-        "--out",
-        out.to_str().expect("utf-8"),
     ]);
     assert!(
         good.status.success(),
