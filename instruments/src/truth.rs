@@ -19,6 +19,7 @@ use crate::window::Window;
 /// Classifies displayed lines as real or aliased from the analogue signal.
 pub struct AliasTruth {
     span: usize,
+    ratio: f64,
     adc_rate_hz: f64,
     adc_resolution_hz: f64,
     estimator: SpectrumEstimator,
@@ -49,6 +50,7 @@ impl AliasTruth {
         let adc_rate_hz = analogue_rate_hz / ratio;
         Ok(Self {
             span,
+            ratio,
             adc_rate_hz,
             adc_resolution_hz: adc_rate_hz / block as f64,
             one: vec![0.0; estimator.lines()],
@@ -72,6 +74,19 @@ impl AliasTruth {
             .zip(&self.one)
             .for_each(|(s, o)| *s += o);
         self.blocks += 1;
+    }
+
+    /// Adds the analogue blocks behind `count` analyser blocks taken every `hop` ADC
+    /// samples from the start of `analogue` (the stream since the average began); a block
+    /// that would run past its end is left out.
+    pub fn add_blocks(&mut self, analogue: &[f64], count: usize, hop: usize) {
+        let hop_samples = hop as f64 * self.ratio;
+        for b in 0..count {
+            let start = (b as f64 * hop_samples).round() as usize;
+            if let Some(block) = analogue.get(start..start + self.span) {
+                self.add(block);
+            }
+        }
     }
 
     /// Clears the running sum.

@@ -77,13 +77,7 @@ fn run_analyser(
         );
     }
     let mut truth = AliasTruth::new(args.block, ratio, wav.rate_hz, settings.window)?;
-    let span = truth.span();
-    for b in 0..count {
-        let start = (b as f64 * settings.hop() as f64 * ratio).round() as usize;
-        if let Some(block) = analogue.get(start..start + span) {
-            truth.add(block);
-        }
-    }
+    truth.add_blocks(analogue, count, settings.hop());
     let lines = analyser.display();
     let floor = adc.quantisation_line_power(analyser.enbw_hz(), settings.sample_rate_hz());
     let alias_of = truth.flags(lines.len(), floor);

@@ -128,14 +128,8 @@ impl AnalyserSink {
             return Ok(());
         }
         self.truth.restart();
-        let span = self.truth.span();
-        let hop = self.plan.settings.hop() as f64 * self.plan.adc.ratio;
-        for b in 0..count {
-            let start = (b as f64 * hop).round() as usize;
-            if let Some(block) = self.analogue.get(start..start + span) {
-                self.truth.add(block);
-            }
-        }
+        self.truth
+            .add_blocks(&self.analogue, count, self.plan.settings.hop());
         self.write_spectrum(index, count)
     }
 
