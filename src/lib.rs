@@ -25,6 +25,7 @@
 //! # Ok::<(), std::io::Error>(())
 //! ```
 
+pub mod chain;
 pub mod plots;
 pub mod recording;
 pub mod runtime;

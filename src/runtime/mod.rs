@@ -10,7 +10,6 @@ pub mod previous_run;
 pub mod process_usage;
 pub mod run;
 pub mod sinks;
-pub mod stages;
 pub mod status;
 pub mod stop_signals;
 pub mod wiring;

@@ -14,14 +14,14 @@ use super::frame::SignalNames;
 use super::pacing::Pace;
 use super::plant_source::{PlantJob, PlantReport, run_plant};
 use super::process_usage::cpu_s_and_peak_rss_mib;
-use super::sinks::analyser::{ANALYSED_SIGNAL, AnalyserSink};
+use super::sinks::analyser::AnalyserSink;
 use super::sinks::monitor::MonitorSink;
 use super::sinks::recorder::RecorderSink;
 use super::sinks::scope::ScopeSink;
 use super::sinks::{Sink, SinkReport};
-use super::stages::{NamedStage, build_stages};
 use super::status::SharedStatus;
 use super::wiring::{channel, run_sink, run_stage};
+use crate::chain::NamedStage;
 use crate::scenario::Plan;
 
 /// How to run.
@@ -87,7 +87,7 @@ pub fn run(plan: &Plan, options: &RunOptions) -> anyhow::Result<RunResult> {
     let plant = Plant::new(plan.params.clone(), plan.schedule.clone(), config)
         .context("the rig and schedule of the scenario")?;
     let mut names = SignalNames::plant();
-    let stages = build_stages(&plan.chain, plan.rate_hz, &mut names)?;
+    let stages = plan.chain.stages.build(plan.rate_hz, &mut names)?;
     let status = SharedStatus::default();
     let sinks = build_sinks(plan, &options.out, &names, &status)?;
     let total_samples = (plan.duration_s * plan.rate_hz).round() as u64;
@@ -216,26 +216,19 @@ fn build_sinks(
             Box::new(RecorderSink::create(dir, plan, names)?),
         ),
     ];
-    if let Some(analyser) = plan.analyser {
+    if let Some(analyser) = &plan.analyser {
         let sink = AnalyserSink::create(
             dir,
             plan,
-            analyser,
-            index(ANALYSED_SIGNAL)?,
+            analyser.clone(),
+            index(&analyser.input)?,
             measures.clone(),
             status.clone(),
         )?;
         sinks.push(("analyser", Box::new(sink)));
     }
-    if let Some((scope, coupling_hz)) = plan.chain.scope {
-        let sink = ScopeSink::create(
-            dir,
-            plan,
-            scope,
-            coupling_hz,
-            index("amplifier_v")?,
-            measures,
-        )?;
+    if let Some(scope) = &plan.chain.scope {
+        let sink = ScopeSink::create(dir, plan, scope, index(&scope.input)?, measures)?;
         sinks.push(("scope", Box::new(sink)));
     }
     Ok(sinks)

@@ -8,7 +8,7 @@ use crossbeam_channel::{Receiver, Sender, bounded};
 
 use super::frame::Frame;
 use super::sinks::{Sink, SinkReport};
-use super::stages::NamedStage;
+use crate::chain::NamedStage;
 
 /// Runs a stage: each frame in, the frame with the stage's output added, out to every
 /// listener; ends when its input closes or no one listens.

@@ -5,6 +5,7 @@ use super::file::ScenarioFile;
 use super::plan::{Plan, RecordPlan, WavFormat};
 use super::rig_part::{rig_params, schedule_and_measures};
 use super::source::ScenarioSource;
+use super::stage_part::read_signal;
 use super::values::{Positive, check_load_within_motor, check_simulated_s};
 
 /// Run-time choices from the command line that override the file.
@@ -52,10 +53,19 @@ pub fn build(src: &ScenarioSource, command_line: CommandLine) -> anyhow::Result<
         Some(a) => Some(analyser_plan(src, a, rate_hz, seed)?),
         None => None,
     };
-    let band_hz = analyser.map(|a| a.settings.fmax_hz);
+    let band_hz = analyser.as_ref().map(|a| a.settings.fmax_hz);
     let chain = chain_plan(src, &file.chain, rate_hz, seed, band_hz)?;
+    if let (Some(a), Some(written)) = (&analyser, &file.analyser) {
+        read_signal(
+            src,
+            &chain.stages,
+            written.input.as_ref(),
+            "analyser.input",
+            &a.input,
+        )?;
+    }
     let record = match &file.record {
-        Some(r) => Some(record_plan(src, r, chain.slip_rings.is_some())?),
+        Some(r) => Some(record_plan(src, r, &chain)?),
         None => None,
     };
     if let (Some(r), Some(written)) = (&record, &file.record)

@@ -33,6 +33,25 @@ pub struct ChainFile {
     pub tacho: TachoFile,
     /// Storage oscilloscope on the amplifier output.
     pub scope: Option<ScopeFile>,
+    /// Further stages (`[[chain.stage]]`), each reading any signal of the run.
+    #[serde(default)]
+    pub stage: Vec<StageFile>,
+}
+
+/// `[[chain.stage]]`: a further instrument in the chain, e.g. a second filter or a meter
+/// on another signal. Exactly one of its instrument tables is given.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct StageFile {
+    /// Name of the signal it adds (new; recordable, and readable by the analyser, the
+    /// scope and other stages).
+    pub output: Spanned<String>,
+    /// The signal it reads: a plant signal or a stage's output.
+    pub input: Spanned<String>,
+    /// A low-pass filter, as `[chain.filter]` writes it (without `input`).
+    pub lowpass: Option<FilterFile>,
+    /// An RMS voltmeter, as `[chain.meter]` writes it (without `input`).
+    pub meter: Option<MeterFile>,
 }
 
 /// `[chain.gauges]`.
@@ -139,6 +158,9 @@ pub struct FilterFile {
     /// Fmax (as `testrig analyse` does), or [`DEFAULT_CUTOFF_HZ`] with no analyser.
     #[serde(default)]
     pub cutoff_hz: Option<Spanned<Positive>>,
+    /// The signal it filters (left out: `amplifier_v`).
+    #[serde(default)]
+    pub input: Option<Spanned<String>>,
 }
 
 impl Default for FilterFile {
@@ -147,6 +169,7 @@ impl Default for FilterFile {
             kind: FilterChoice::default(),
             order: default_filter_order(),
             cutoff_hz: None,
+            input: None,
         }
     }
 }
@@ -172,6 +195,9 @@ pub struct MeterFile {
     /// couples DC, so the static strain is read too.
     #[serde(default = "default_coupling")]
     pub ac_coupling_hz: Spanned<NonNegative>,
+    /// The signal it reads (left out: `amplifier_v`).
+    #[serde(default)]
+    pub input: Option<Spanned<String>>,
 }
 
 impl Default for MeterFile {
@@ -180,6 +206,7 @@ impl Default for MeterFile {
             detector: DetectorChoice::default(),
             tau_s: default_meter_tau(),
             ac_coupling_hz: default_coupling(),
+            input: None,
         }
     }
 }
@@ -246,6 +273,9 @@ pub struct ScopeFile {
     /// Corner (Hz) of the AC input coupling (a Tektronix AC input: about 1.6 Hz); 0 for DC.
     #[serde(default = "default_scope_coupling")]
     pub ac_coupling_hz: Spanned<NonNegative>,
+    /// The signal it shows (left out: `amplifier_v`).
+    #[serde(default)]
+    pub input: Option<Spanned<String>>,
 }
 
 fn default_scope_coupling() -> Spanned<NonNegative> {
@@ -282,6 +312,9 @@ pub struct AnalyserFile {
     /// Triangular dither of ±1 LSB.
     #[serde(default)]
     pub dither: bool,
+    /// The signal its ADC samples (left out: `filter_v`).
+    #[serde(default)]
+    pub input: Option<Spanned<String>>,
 }
 
 fn default_analyser_block() -> Spanned<usize> {

@@ -1,23 +1,26 @@
 //! The measuring chain, the analyser and the recordings of a scenario.
 
 use instruments::{
-    AcCoupling, Adc, AdcSettings, Analyser, AnalyserSettings, AntiAliasFilter, Averaging,
-    BridgeArrangement, CarrierDemodulator, CarrierSettings, LowPassSpec, Sampling, Scope,
-    ScopeSettings, ShaftStrain, SlipRingSettings, Slope, Spectrum, StrainBridge, SweepMode,
+    AcCoupling, Adc, AdcSettings, Analyser, AnalyserSettings, Averaging, BridgeArrangement,
+    CarrierSettings, LowPassSpec, Sampling, Scope, ScopeSettings, ShaftStrain, SlipRingSettings,
+    Slope, Spectrum, StrainBridge, SweepMode,
 };
 use toml::Spanned;
 
-use super::chain_file::DEFAULT_CUTOFF_HZ;
+use super::chain_file::{AmplifierFile, DEFAULT_CUTOFF_HZ, FilterFile, MeterFile};
 use super::file::{AnalyserFile, ChainFile, RecordFile};
-use super::plan::{AnalyserPlan, ChainPlan, DvmSettings, MeterSettings, RecordPlan, WavFormat};
+use super::plan::{AnalyserPlan, ChainPlan, RecordPlan, ScopePlan, WavFormat};
 use super::source::ScenarioSource;
-use crate::signal_catalog;
+use super::stage_part::{read_signal, wired_stages};
+use crate::chain::signal_names::{AMPLIFIER_V, FILTER_V};
+use crate::chain::{ChainStages, DvmSettings, MeterSettings, StandardChain};
 
 /// Carrier frequency when the scenario gives none and the stream allows it (Hz).
 pub const DEFAULT_CARRIER_HZ: f64 = 10_000.0;
 
-/// The chain's settings, each checked by building the instrument once. `band_hz` is the
-/// analyser's Fmax, the anti-alias filter's cut-off when the file gives none.
+/// The chain's stages and scope, each instrument checked by building it once, as the run
+/// builds it. `band_hz` is the analyser's Fmax, the anti-alias filter's cut-off when the
+/// file gives none.
 pub fn chain_plan(
     src: &ScenarioSource,
     chain: &ChainFile,
@@ -25,42 +28,61 @@ pub fn chain_plan(
     seed: u64,
     band_hz: Option<f64>,
 ) -> anyhow::Result<ChainPlan> {
+    let standard = standard_chain(src, chain, rate_hz, seed, band_hz)?;
+    let stages = wired_stages(src, chain, &standard, rate_hz, band_hz)?;
+    let scope = scope_plan(src, chain, rate_hz, &stages)?;
+    Ok(ChainPlan {
+        stages,
+        strain_per_nm: standard.shaft.strain_per_nm(),
+        volts_per_nm: standard.volts_per_nm(),
+        scope,
+    })
+}
+
+fn standard_chain(
+    src: &ScenarioSource,
+    chain: &ChainFile,
+    rate_hz: f64,
+    seed: u64,
+    band_hz: Option<f64>,
+) -> anyhow::Result<StandardChain> {
     let g = &chain.gauges;
     let arrangement = BridgeArrangement::from(g.arrangement);
     let mut bridge = StrainBridge::new(arrangement, g.gauge_factor.0, g.excitation_v.0)
         .map_err(|e| src.error(0..0, "chain.gauges", e))?;
     bridge.gauge_factor_error = g.gauge_factor_error.0;
-    let carrier = carrier_settings(src, chain, &bridge, rate_hz)?;
     let slip_rings = chain.slip_rings.as_ref().map(|s| SlipRingSettings {
         broadband_rms: s.broadband_rms.0,
         per_rev_amplitude: s.per_rev_amplitude.0,
         contact_noise_v_rms: s.contact_noise_v_rms.0,
         seed: seed.wrapping_add(1),
     });
-    Ok(ChainPlan {
+    let input = |i: &Option<Spanned<String>>| i.as_ref().map(|i| i.get_ref().clone());
+    let t = &chain.tacho;
+    Ok(StandardChain {
         shaft: ShaftStrain::intermediate_shaft(),
+        carrier: carrier_settings(&chain.amplifier, &bridge, rate_hz),
         bridge,
-        carrier,
         slip_rings,
-        filter: filter_spec(src, chain, rate_hz, band_hz)?,
-        meter: meter_settings(src, chain, rate_hz)?,
-        dvm: dvm_settings(src, chain, rate_hz)?,
-        scope: scope_settings(src, chain, rate_hz)?,
+        filter: (
+            filter_spec(src, &chain.filter, "chain.filter", rate_hz, band_hz)?,
+            input(&chain.filter.input),
+        ),
+        meter: (meter_settings(&chain.meter), input(&chain.meter.input)),
+        dvm: DvmSettings {
+            gate_s: t.gate_s.get_ref().0,
+            tau_s: t.tau_s.0,
+            resolution_v: t.resolution_v.0,
+        },
     })
 }
 
-fn carrier_settings(
-    src: &ScenarioSource,
-    chain: &ChainFile,
-    bridge: &StrainBridge,
-    rate_hz: f64,
-) -> anyhow::Result<CarrierSettings> {
-    let a = &chain.amplifier;
+fn carrier_settings(a: &AmplifierFile, bridge: &StrainBridge, rate_hz: f64) -> CarrierSettings {
     let carrier_hz = a
         .carrier_hz
         .as_ref()
         .map_or(DEFAULT_CARRIER_HZ.min(rate_hz / 5.0), |c| c.get_ref().0);
-    let settings = CarrierSettings {
+    CarrierSettings {
         carrier_hz,
         output_lowpass_hz: a
             .output_lowpass_hz
@@ -71,26 +93,19 @@ fn carrier_settings(
             a.calibration_v.0,
             bridge.output_v(1.0),
         ),
-    };
-    let span = [&a.carrier_hz, &a.output_lowpass_hz]
-        .into_iter()
-        .flatten()
-        .next()
-        .map_or(0..0, Spanned::span);
-    CarrierDemodulator::new(settings, rate_hz)
-        .map_err(|e| src.error(span, "chain.amplifier", e))?;
-    Ok(settings)
+    }
 }
 
-fn filter_spec(
+/// A low-pass filter's spec (`None`: none), written at `field`; its cut-off defaults to
+/// `band_hz` and must lie below the stream's Nyquist frequency.
+pub fn filter_spec(
     src: &ScenarioSource,
-    chain: &ChainFile,
+    f: &FilterFile,
+    field: &str,
     rate_hz: f64,
     band_hz: Option<f64>,
 ) -> anyhow::Result<Option<LowPassSpec>> {
-    let f = &chain.filter;
-    let kind = f.kind.kind();
-    let Some(kind) = kind else {
+    let Some(kind) = f.kind.kind() else {
         return Ok(None);
     };
     let (cutoff, span, origin) = match &f.cutoff_hz {
@@ -103,63 +118,35 @@ fn filter_spec(
     if cutoff >= rate_hz / 2.0 {
         return Err(src.error(
             span,
-            "chain.filter.cutoff_hz",
+            &format!("{field}.cutoff_hz"),
             format!(
                 "{cutoff} Hz{origin} is at or above the analogue Nyquist rate {} Hz (half of rate_hz); a cut-off below it is allowed",
                 rate_hz / 2.0
             ),
         ));
     }
-    let spec = LowPassSpec {
+    Ok(Some(LowPassSpec {
         kind,
         order: *f.order.get_ref(),
         cutoff_hz: cutoff,
-    };
-    AntiAliasFilter::new(Some(spec), rate_hz)
-        .map_err(|e| src.error(f.order.span(), "chain.filter", e))?;
-    Ok(Some(spec))
+    }))
 }
 
-fn meter_settings(
+/// An RMS meter's settings.
+pub fn meter_settings(m: &MeterFile) -> MeterSettings {
+    MeterSettings {
+        detector: m.detector.into(),
+        tau_s: m.tau_s.0,
+        ac_coupling_hz: m.ac_coupling_hz.get_ref().0,
+    }
+}
+
+fn scope_plan(
     src: &ScenarioSource,
     chain: &ChainFile,
     rate_hz: f64,
-) -> anyhow::Result<MeterSettings> {
-    let settings = MeterSettings {
-        detector: chain.meter.detector.into(),
-        tau_s: chain.meter.tau_s.0,
-        ac_coupling_hz: chain.meter.ac_coupling_hz.get_ref().0,
-    };
-    settings
-        .build(rate_hz)
-        .map_err(|e| src.error(chain.meter.ac_coupling_hz.span(), "chain.meter", e))?;
-    Ok(settings)
-}
-
-/// The tacho's DVM, checked by building it (a gate shorter than one sample fails here,
-/// at its line, not at run time).
-fn dvm_settings(
-    src: &ScenarioSource,
-    chain: &ChainFile,
-    rate_hz: f64,
-) -> anyhow::Result<DvmSettings> {
-    let t = &chain.tacho;
-    let settings = DvmSettings {
-        gate_s: t.gate_s.get_ref().0,
-        tau_s: t.tau_s.0,
-        resolution_v: t.resolution_v.0,
-    };
-    settings
-        .build(rate_hz)
-        .map_err(|e| src.error(t.gate_s.span(), "chain.tacho", e))?;
-    Ok(settings)
-}
-
-fn scope_settings(
-    src: &ScenarioSource,
-    chain: &ChainFile,
-    rate_hz: f64,
-) -> anyhow::Result<Option<(ScopeSettings, f64)>> {
+    stages: &ChainStages,
+) -> anyhow::Result<Option<ScopePlan>> {
     let Some(s) = &chain.scope else {
         return Ok(None);
     };
@@ -178,7 +165,17 @@ fn scope_settings(
         AcCoupling::new(coupling, rate_hz)
             .map_err(|e| src.error(s.ac_coupling_hz.span(), "chain.scope.ac_coupling_hz", e))?;
     }
-    Ok(Some((settings, coupling)))
+    Ok(Some(ScopePlan {
+        settings,
+        ac_coupling_hz: coupling,
+        input: read_signal(
+            src,
+            stages,
+            s.input.as_ref(),
+            "chain.scope.input",
+            AMPLIFIER_V,
+        )?,
+    }))
 }
 
 /// The analyser's and ADC's settings.
@@ -224,29 +221,26 @@ pub fn analyser_plan(
         dither_seed: file.dither.then_some(seed.wrapping_add(2)),
     };
     Adc::new(adc).map_err(|e| src.error(file.bits.span(), "analyser.bits", e))?;
-    Ok(AnalyserPlan { settings, adc })
+    Ok(AnalyserPlan {
+        input: file
+            .input
+            .as_ref()
+            .map_or(FILTER_V.to_string(), |i| i.get_ref().clone()),
+        settings,
+        adc,
+    })
 }
 
-/// What to record, with each name checked.
+/// What to record, with each name checked against the run's signals.
 pub fn record_plan(
     src: &ScenarioSource,
     file: &RecordFile,
-    slip_rings: bool,
+    chain: &ChainPlan,
 ) -> anyhow::Result<RecordPlan> {
     let mut signals = Vec::new();
     for name in &file.signals {
         let n = name.get_ref();
-        let wired = signal_catalog::is_known(n) && (slip_rings || n != "slip_ring_v");
-        if !wired {
-            return Err(src.error(
-                name.span(),
-                "record.signals",
-                format!(
-                    "`{n}` is not a signal of this run; known: {}",
-                    signal_catalog::all_names()
-                ),
-            ));
-        }
+        read_signal(src, &chain.stages, Some(name), "record.signals", n)?;
         signals.push(n.clone());
     }
     if signals.is_empty() {
@@ -263,9 +257,10 @@ pub fn record_plan(
         full_scale: signals
             .iter()
             .map(|s| {
-                file.full_scale
-                    .get(s)
-                    .map_or(signal_catalog::default_full_scale(s), |v| v.get_ref().0)
+                file.full_scale.get(s).map_or_else(
+                    || chain.stages.full_scale_of(s).unwrap_or(1.0),
+                    |v| v.get_ref().0,
+                )
             })
             .collect(),
         signals,

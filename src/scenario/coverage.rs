@@ -55,8 +55,8 @@ pub fn measurement_warnings(plan: &Plan) -> Vec<String> {
                 ));
             }
         }
-        if let Some((scope, _)) = &plan.chain.scope {
-            let sweep_s = 10.0 * scope.seconds_per_div;
+        if let Some(scope) = &plan.chain.scope {
+            let sweep_s = 10.0 * scope.settings.seconds_per_div;
             if sweep_s > available_s + 1e-9 {
                 warnings.push(format!(
                     "{name}: the scope's sweep of {sweep_s} s does not fit in the {available_s:.3} s {until} leaves; no trace"

@@ -10,11 +10,12 @@ pub mod overrides;
 pub mod plan;
 pub mod rig_part;
 pub mod source;
+pub mod stage_part;
 pub mod values;
 
 pub use build::{CommandLine, build};
 pub use coverage::measurement_warnings;
 pub use file::Overflow;
 pub use overrides::apply_override;
-pub use plan::{AnalyserPlan, ChainPlan, Measure, Plan, RecordPlan, WavFormat};
+pub use plan::{AnalyserPlan, ChainPlan, Measure, Plan, RecordPlan, ScopePlan, WavFormat};
 pub use source::ScenarioSource;

@@ -1,12 +1,10 @@
 //! A scenario checked and turned into settings the runtime uses directly.
 
-use instruments::{
-    AdcSettings, AnalyserSettings, CarrierSettings, Detector, DigitalVoltmeter, InstrumentError,
-    LowPassSpec, ScopeSettings, ShaftStrain, SlipRingSettings, StrainBridge, Voltmeter,
-};
+use instruments::{AdcSettings, AnalyserSettings, ScopeSettings};
 use rig::{RigParams, Schedule};
 
 use super::file::Overflow;
+use crate::chain::ChainStages;
 
 /// Everything a run needs, checked.
 #[derive(Clone, Debug)]
@@ -60,37 +58,35 @@ pub struct Measure {
     pub load_nm: f64,
 }
 
-/// The chain's settings.
+/// The chain's stages and its calibration.
 #[derive(Clone, Debug)]
 pub struct ChainPlan {
-    /// Shaft under the gauges.
-    pub shaft: ShaftStrain,
-    /// Gauges and bridge.
-    pub bridge: StrainBridge,
-    /// Carrier amplifier.
-    pub carrier: CarrierSettings,
-    /// Slip rings, if wired.
-    pub slip_rings: Option<SlipRingSettings>,
-    /// Anti-alias filter (`None`: bypassed).
-    pub filter: Option<LowPassSpec>,
-    /// RMS meter detector, time constant (s) and AC-coupling corner (Hz; 0 for DC).
-    pub meter: MeterSettings,
-    /// Tacho DVM gate (s), time constant (s), resolution (V).
-    pub dvm: DvmSettings,
-    /// Scope, if wired, and its AC-coupling corner (Hz; 0 for DC).
-    pub scope: Option<(ScopeSettings, f64)>,
+    /// Every stage in running order: the standard ones and the scenario's own.
+    pub stages: ChainStages,
+    /// Surface strain per N m of intermediate-shaft torque (the gauged shaft).
+    pub strain_per_nm: f64,
+    /// Amplifier output (V) per N m of intermediate-shaft torque, static.
+    pub volts_per_nm: f64,
+    /// Scope, if wired.
+    pub scope: Option<ScopePlan>,
 }
 
-impl ChainPlan {
-    /// Amplifier output (V) per N m of intermediate-shaft torque, static.
-    pub fn volts_per_nm(&self) -> f64 {
-        self.shaft.strain_per_nm() * self.bridge.output_v(1.0) * self.carrier.gain
-    }
+/// The storage oscilloscope.
+#[derive(Clone, Debug)]
+pub struct ScopePlan {
+    /// Its settings.
+    pub settings: ScopeSettings,
+    /// Corner of its AC input coupling (Hz; 0 for DC).
+    pub ac_coupling_hz: f64,
+    /// The signal it shows.
+    pub input: String,
 }
 
 /// The analyser and its ADC.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 pub struct AnalyserPlan {
+    /// The signal its ADC samples.
+    pub input: String,
     /// Analyser settings.
     pub settings: AnalyserSettings,
     /// ADC settings (ratio from the stream rate).
@@ -136,46 +132,5 @@ impl Plan {
             speed_rpm: self.schedule.speed_rpm.value_at(0.0),
             load_nm: self.schedule.load_nm.value_at(0.0),
         }]
-    }
-}
-
-/// The RMS voltmeter on the amplifier output (the HP 400E or a true-RMS meter).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct MeterSettings {
-    /// Average-responding (400E) or true RMS.
-    pub detector: Detector,
-    /// Detector time constant (s).
-    pub tau_s: f64,
-    /// Corner of the AC coupling (Hz); 0 couples DC.
-    pub ac_coupling_hz: f64,
-}
-
-impl MeterSettings {
-    /// The meter on a stream at `rate_hz`.
-    pub fn build(&self, rate_hz: f64) -> Result<Voltmeter, InstrumentError> {
-        let meter = Voltmeter::new(self.detector, rate_hz, self.tau_s)?;
-        if self.ac_coupling_hz > 0.0 {
-            meter.ac_coupled(self.ac_coupling_hz, rate_hz)
-        } else {
-            Ok(meter)
-        }
-    }
-}
-
-/// The digital voltmeter reading the tacho.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct DvmSettings {
-    /// Gate time (s).
-    pub gate_s: f64,
-    /// RMS converter time constant (s).
-    pub tau_s: f64,
-    /// Display resolution (V).
-    pub resolution_v: f64,
-}
-
-impl DvmSettings {
-    /// The DVM on a stream at `rate_hz`.
-    pub fn build(&self, rate_hz: f64) -> Result<DigitalVoltmeter, InstrumentError> {
-        DigitalVoltmeter::new(rate_hz, self.gate_s, self.tau_s, self.resolution_v)
     }
 }

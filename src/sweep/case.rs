@@ -9,8 +9,6 @@ use super::lines::{OrderLine, order_line, peaks};
 use super::plan::{Case, SweepPlan};
 use crate::runtime::frame::{Frame, SignalNames};
 use crate::runtime::plant_source::REGIME_WINDOW_S;
-use crate::runtime::sinks::analyser::ANALYSED_SIGNAL;
-use crate::runtime::stages::build_stages;
 
 /// Chain time run before the analyser starts, so the filters have settled (s).
 const CHAIN_LEAD_S: f64 = 1.0;
@@ -85,15 +83,13 @@ pub fn run_case(plan: &SweepPlan, case: &Case) -> anyhow::Result<CaseResult> {
     plant.skip(((plan.settle_s - lead) * plan.rate_hz).round() as usize)?;
     plant.drain_impacts();
     plant.drain_revolutions();
-    let mut chain = plan.chain.clone();
-    if let Some(rings) = &mut chain.slip_rings {
-        rings.seed = case.seed;
-    }
+    let mut chain = plan.chain.stages.clone();
+    chain.reseed(case.seed);
     let mut names = SignalNames::plant();
-    let mut stages = build_stages(&chain, plan.rate_hz, &mut names)?;
+    let mut stages = chain.build(plan.rate_hz, &mut names)?;
     let input = names
-        .index(ANALYSED_SIGNAL)
-        .ok_or_else(|| anyhow::anyhow!("internal wiring: no {ANALYSED_SIGNAL}"))?;
+        .index(&plan.analyser.input)
+        .ok_or_else(|| anyhow::anyhow!("internal wiring: no {}", plan.analyser.input))?;
     let mut adc_settings = plan.analyser.adc;
     adc_settings.dither_seed = adc_settings.dither_seed.map(|_| case.seed ^ 1);
     let mut adc = Adc::new(adc_settings)?;

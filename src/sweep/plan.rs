@@ -6,6 +6,7 @@ use rig::geometry::centre_distance_shift_m;
 use crate::scenario::build::stream_rate_hz;
 use crate::scenario::chain_part::{analyser_plan, chain_plan};
 use crate::scenario::rig_part::rig_params;
+use crate::scenario::stage_part::read_signal;
 use crate::scenario::values::{check_load_within_motor, check_simulated_s};
 use crate::scenario::{AnalyserPlan, ChainPlan, ScenarioSource};
 
@@ -62,6 +63,8 @@ pub fn build_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<Swe
     let analyser = analyser_plan(src, &file.analyser, rate_hz, file.seed)?;
     let band_hz = Some(analyser.settings.fmax_hz);
     let chain = chain_plan(src, &file.chain, rate_hz, file.seed, band_hz)?;
+    let input = file.analyser.input.as_ref();
+    read_signal(src, &chain.stages, input, "analyser.input", &analyser.input)?;
     let block_s = analyser.settings.block as f64 / analyser.settings.sample_rate_hz();
     for (value, field) in [
         (&file.case.settle_s, "case.settle_s"),

@@ -18,9 +18,6 @@ use crate::runtime::frame::Frame;
 use crate::runtime::status::SharedStatus;
 use crate::scenario::{AnalyserPlan, Measure, Plan};
 
-/// Name of the analysed signal.
-pub const ANALYSED_SIGNAL: &str = "filter_v";
-
 /// The analyser with its ADC and the alias truth.
 pub struct AnalyserSink {
     plan: AnalyserPlan,
@@ -54,10 +51,13 @@ impl AnalyserSink {
         status: SharedStatus,
     ) -> anyhow::Result<Self> {
         let s = analyser.settings;
-        let filter = match plan.chain.filter {
-            Some(f) => format!("{:?} order {} at {} Hz", f.kind, f.order, f.cutoff_hz),
-            None => "none".into(),
-        };
+        let filter = plan
+            .chain
+            .stages
+            .producing(&analyser.input)
+            .map_or("none".into(), |s| s.instrument.describe());
+        let adc = Adc::new(analyser.adc)?;
+        let truth = AliasTruth::new(s.block, analyser.adc.ratio, plan.rate_hz, s.window)?;
         Ok(Self {
             plan: analyser,
             input,
@@ -67,9 +67,9 @@ impl AnalyserSink {
             uff: plan.record.as_ref().is_some_and(|r| r.uff58),
             clock: MeasureClock::new(measures.iter().map(|m| m.at_s), plan.rate_hz),
             measures,
-            adc: Adc::new(analyser.adc)?,
+            adc,
             analyser: Analyser::new(s)?,
-            truth: AliasTruth::new(s.block, analyser.adc.ratio, plan.rate_hz, s.window)?,
+            truth,
             active: None,
             analogue: Vec::new(),
             adc_out: Vec::new(),
@@ -177,7 +177,7 @@ impl AnalyserSink {
             ("load_set_nm", measure.load_nm.to_string()),
             (
                 "signal",
-                format!("{ANALYSED_SIGNAL} (amplifier output after the anti-alias filter)"),
+                format!("{} (after {})", self.plan.input, self.filter),
             ),
             ("fs_hz", s.sample_rate_hz().to_string()),
             ("n", s.block.to_string()),

@@ -11,6 +11,7 @@ use serde::Serialize;
 
 use super::measure_clock::MeasureClock;
 use super::{Sink, SinkReport};
+use crate::chain::signal_names::{DVM_V, METER_V, SHAFT_TORQUE_NM};
 use crate::plots::{SurveyPoint, write_survey_plots};
 use crate::recording::CsvRecorder;
 use crate::runtime::frame::{Frame, SignalNames};
@@ -75,15 +76,15 @@ impl MonitorSink {
                 .ok_or_else(|| anyhow::anyhow!("internal wiring: no `{n}`"))
         };
         let chain = &plan.chain;
-        let microstrain_per_nm = chain.shaft.strain_per_nm() * 1e6;
+        let microstrain_per_nm = chain.strain_per_nm * 1e6;
         let header = [
             "label",
             "time_s",
             "speed_set_rpm",
             "load_set_nm",
-            "dvm_v",
+            DVM_V,
             "dvm_rpm",
-            "meter_v",
+            METER_V,
             "meter_microstrain",
             "true_torque_mean_nm",
             "true_torque_ac_rms_nm",
@@ -93,9 +94,9 @@ impl MonitorSink {
         .map(String::from);
         Ok(Self {
             inputs: Inputs {
-                dvm: index("dvm_v")?,
-                meter: index("meter_v")?,
-                torque: index("torque_intermediate_shaft_nm")?,
+                dvm: index(DVM_V)?,
+                meter: index(METER_V)?,
+                torque: index(SHAFT_TORQUE_NM)?,
             },
             truth_starts: MeasureClock::new(
                 measures.iter().map(|m| (m.at_s - TRUTH_WINDOW_S).max(0.0)),
@@ -103,7 +104,7 @@ impl MonitorSink {
             ),
             readings_at: MeasureClock::new(measures.iter().map(|m| m.at_s), plan.rate_hz),
             measures,
-            volts_per_microstrain: chain.volts_per_nm() / microstrain_per_nm,
+            volts_per_microstrain: chain.volts_per_nm / microstrain_per_nm,
             microstrain_per_nm,
             window: (0.0, 0.0, 0),
             csv: CsvRecorder::create(&dir.join("readings.csv"), &header)?,

@@ -6,12 +6,12 @@ use std::path::Path;
 use rig::Impact;
 
 use super::{Sink, SinkReport};
+use crate::chain::signal_names::STRAIN;
 use crate::recording::{
     ChannelInfo, CsvRecorder, Uff58Channel, Uff58Recorder, WavRecorder, WavSamples,
 };
 use crate::runtime::frame::{Frame, SignalNames};
 use crate::scenario::{Plan, WavFormat};
-use crate::signal_catalog::unit_of;
 
 /// Writes every recorded frame.
 pub struct RecorderSink {
@@ -67,7 +67,7 @@ impl RecorderSink {
                 .zip(&record.full_scale)
                 .map(|(name, &scale)| ChannelInfo {
                     name: name.clone(),
-                    unit: unit_of(name).into(),
+                    unit: unit_of(plan, name).into(),
                     scale: if format == WavFormat::Float32 {
                         1.0
                     } else {
@@ -99,7 +99,7 @@ impl RecorderSink {
                 .signals
                 .iter()
                 .enumerate()
-                .map(|(i, s)| uff_channel(s, i))
+                .map(|(i, s)| uff_channel(plan, s, i))
                 .collect();
             let source = format!("testrig scenario {}", plan.name);
             sink.uff = Some(Uff58Recorder::create(
@@ -121,13 +121,18 @@ impl RecorderSink {
     }
 }
 
-fn uff_channel(name: &str, index: usize) -> Uff58Channel {
+/// Unit of a recorded signal (the plan has checked every name).
+fn unit_of(plan: &Plan, name: &str) -> &'static str {
+    plan.chain.stages.unit_of(name).unwrap_or("1")
+}
+
+fn uff_channel(plan: &Plan, name: &str, index: usize) -> Uff58Channel {
     Uff58Channel {
         description: format!("testrig {name}"),
         response_name: name.chars().take(10).collect(),
         response_node: index as u32 + 1,
-        ordinate_type: if name == "strain" { 3 } else { 0 },
-        ordinate_unit: unit_of(name).into(),
+        ordinate_type: if name == STRAIN { 3 } else { 0 },
+        ordinate_unit: unit_of(plan, name).into(),
     }
 }
 

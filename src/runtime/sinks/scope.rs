@@ -1,4 +1,4 @@
-//! The storage scope on the amplifier output: armed for one sweep at each measurement;
+//! The storage scope (on the amplifier output unless the scenario says otherwise): armed for one sweep at each measurement;
 //! each stored sweep is written as CSV (time, volts) and drawn as PNG and SVG.
 
 use std::path::{Path, PathBuf};
@@ -11,13 +11,14 @@ use super::{Sink, SinkReport};
 use crate::plots::write_scope_plots;
 use crate::recording::CsvRecorder;
 use crate::runtime::frame::Frame;
-use crate::scenario::{Measure, Plan};
+use crate::scenario::{Measure, Plan, ScopePlan};
 
 /// The scope.
 pub struct ScopeSink {
     settings: ScopeSettings,
     rate_hz: f64,
     input: usize,
+    signal: String,
     dir: PathBuf,
     scenario: String,
     measures: Vec<Measure>,
@@ -30,26 +31,26 @@ pub struct ScopeSink {
 }
 
 impl ScopeSink {
-    /// A scope on channel `input` (AC-coupled at `coupling_hz`, DC when 0), writing to
-    /// `dir`, armed at `measures`.
+    /// The scope `scope` reading channel `input` (its signal), writing to `dir`, armed
+    /// at `measures`.
     pub fn create(
         dir: &Path,
         plan: &Plan,
-        settings: ScopeSettings,
-        coupling_hz: f64,
+        scope: &ScopePlan,
         input: usize,
         measures: Vec<Measure>,
     ) -> anyhow::Result<Self> {
-        let coupling = if coupling_hz > 0.0 {
-            Some(AcCoupling::new(coupling_hz, plan.rate_hz)?)
+        let coupling = if scope.ac_coupling_hz > 0.0 {
+            Some(AcCoupling::new(scope.ac_coupling_hz, plan.rate_hz)?)
         } else {
             None
         };
         Ok(Self {
             coupling,
-            settings,
+            settings: scope.settings,
             rate_hz: plan.rate_hz,
             input,
+            signal: scope.input.clone(),
             dir: dir.to_path_buf(),
             scenario: plan.name.clone(),
             clock: MeasureClock::new(measures.iter().map(|m| m.at_s), plan.rate_hz),
@@ -88,7 +89,7 @@ impl ScopeSink {
         let v = self.settings.volts_per_div;
         let mut csv = CsvRecorder::create(
             &base.with_extension("csv"),
-            &["time_from_trigger_s".to_string(), "amplifier_v".to_string()],
+            &["time_from_trigger_s".to_string(), self.signal.clone()],
         )?;
         for &(t, div) in trace {
             csv.write_row(&[t, div * v])?;

@@ -1,0 +1,16 @@
+//! The measuring chain as data: each stage a described instrument (output signal, unit,
+//! full scale, inputs, how it is built), one table of the rig's standard stages, and the
+//! builder that the scenario check, the threaded run and the sweeps' inline chain share.
+
+pub mod instrument;
+pub mod signal_names;
+pub mod stage;
+pub mod stage_plan;
+pub mod standard;
+pub mod voltmeters;
+
+pub use instrument::Instrument;
+pub use stage::{NamedStage, Stage};
+pub use stage_plan::{ChainStages, StagePlan, WiringError};
+pub use standard::{StandardChain, standard_stages};
+pub use voltmeters::{DvmSettings, MeterSettings};

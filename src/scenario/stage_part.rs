@@ -1,0 +1,175 @@
+//! The chain's stages as a scenario declares them: the standard table with the inputs the
+//! file chose, then its `[[chain.stage]]` entries; wired, ordered and built once, each
+//! fault reported at the line of the table it comes from.
+
+use std::ops::Range;
+
+use toml::Spanned;
+
+use super::chain_file::{ChainFile, StageFile};
+use super::chain_part::{filter_spec, meter_settings};
+use super::source::ScenarioSource;
+use crate::chain::signal_names::{
+    AMPLIFIER_V, BRIDGE_V, CARRIER_V, DVM_V, FILTER_V, METER_V, SLIP_RING_V, STRAIN, TACHO_V,
+};
+use crate::chain::{
+    ChainStages, Instrument, StagePlan, StandardChain, WiringError, standard_stages,
+};
+use crate::runtime::frame::SignalNames;
+
+/// Where a stage is written: its table's field and lines (settings, and the input when
+/// the file names it).
+struct Origin {
+    output: String,
+    field: String,
+    span: Range<usize>,
+    input_span: Option<Range<usize>>,
+}
+
+/// The standard stages and the file's own, in running order, each built once on a stream
+/// at `rate_hz` to check it.
+pub fn wired_stages(
+    src: &ScenarioSource,
+    chain: &ChainFile,
+    standard: &StandardChain,
+    rate_hz: f64,
+    band_hz: Option<f64>,
+) -> anyhow::Result<ChainStages> {
+    let mut plans = standard_stages(standard);
+    let mut origins: Vec<Origin> = plans
+        .iter()
+        .map(|p| standard_origin(chain, &p.output))
+        .collect();
+    for (i, file) in chain.stage.iter().enumerate() {
+        let field = format!("chain.stage #{}", i + 1);
+        plans.push(further_stage(src, file, &field, rate_hz, band_hz)?);
+        origins.push(Origin {
+            output: file.output.get_ref().clone(),
+            field,
+            span: file.output.span(),
+            input_span: Some(file.input.span()),
+        });
+    }
+    let stages = ChainStages::ordered(plans).map_err(|e| wiring_error(src, &origins, &e))?;
+    stages
+        .build(rate_hz, &mut SignalNames::plant())
+        .map_err(|e| wiring_error(src, &origins, &e))?;
+    Ok(stages)
+}
+
+/// The signal a reader (analyser, scope, recording) names at `field`, or `default` when
+/// the file names none; it must be a signal of the run.
+pub fn read_signal(
+    src: &ScenarioSource,
+    stages: &ChainStages,
+    given: Option<&Spanned<String>>,
+    field: &str,
+    default: &str,
+) -> anyhow::Result<String> {
+    let (name, span) = given.map_or((default, 0..0), |g| (g.get_ref().as_str(), g.span()));
+    let names = stages.signal_names();
+    if names.index(name).is_none() {
+        return Err(src.error(
+            span,
+            field,
+            format!(
+                "`{name}` is not a signal of this run; known: {}",
+                names.names().join(", ")
+            ),
+        ));
+    }
+    Ok(name.to_string())
+}
+
+fn further_stage(
+    src: &ScenarioSource,
+    file: &StageFile,
+    field: &str,
+    rate_hz: f64,
+    band_hz: Option<f64>,
+) -> anyhow::Result<StagePlan> {
+    let nested_input = [
+        file.lowpass.as_ref().and_then(|l| l.input.as_ref()),
+        file.meter.as_ref().and_then(|m| m.input.as_ref()),
+    ];
+    if let Some(input) = nested_input.into_iter().flatten().next() {
+        return Err(src.error(
+            input.span(),
+            &format!("{field}.input"),
+            "give the stage's input beside its `output`, not inside its instrument",
+        ));
+    }
+    let instrument = match (&file.lowpass, &file.meter) {
+        (Some(lowpass), None) => Instrument::LowPass(filter_spec(
+            src,
+            lowpass,
+            &format!("{field}.lowpass"),
+            rate_hz,
+            band_hz,
+        )?),
+        (None, Some(meter)) => Instrument::Meter(meter_settings(meter)),
+        _ => {
+            return Err(src.error(
+                file.output.span(),
+                field,
+                "give exactly one instrument: `lowpass = { ... }` or `meter = { ... }`",
+            ));
+        }
+    };
+    Ok(StagePlan {
+        output: file.output.get_ref().clone(),
+        inputs: vec![file.input.get_ref().clone()],
+        instrument,
+    })
+}
+
+fn standard_origin(chain: &ChainFile, output: &str) -> Origin {
+    let first = |spans: &[Option<Range<usize>>]| spans.iter().flatten().next().cloned();
+    let a = &chain.amplifier;
+    let amplifier = first(&[
+        a.carrier_hz.as_ref().map(Spanned::span),
+        a.output_lowpass_hz.as_ref().map(Spanned::span),
+    ]);
+    let input = |i: &Option<Spanned<String>>| i.as_ref().map(Spanned::span);
+    let (field, span, input_span) = match output {
+        STRAIN | BRIDGE_V => ("chain.gauges", None, None),
+        CARRIER_V | AMPLIFIER_V => ("chain.amplifier", amplifier, None),
+        SLIP_RING_V => ("chain.slip_rings", None, None),
+        FILTER_V => (
+            "chain.filter",
+            Some(chain.filter.order.span()),
+            input(&chain.filter.input),
+        ),
+        METER_V => (
+            "chain.meter",
+            Some(chain.meter.ac_coupling_hz.span()),
+            input(&chain.meter.input),
+        ),
+        TACHO_V => ("chain.tacho", None, None),
+        DVM_V => ("chain.tacho", Some(chain.tacho.gate_s.span()), None),
+        _ => ("chain", None, None),
+    };
+    Origin {
+        output: output.to_string(),
+        field: field.to_string(),
+        span: span.unwrap_or(0..0),
+        input_span,
+    }
+}
+
+fn wiring_error(src: &ScenarioSource, origins: &[Origin], e: &WiringError) -> anyhow::Error {
+    let Some(origin) = origins.iter().rev().find(|o| o.output == e.output()) else {
+        return anyhow::anyhow!("{}: chain: {e}", src.path.display());
+    };
+    match e {
+        WiringError::UnknownInput { .. } => src.error(
+            origin.input_span.clone().unwrap_or(origin.span.clone()),
+            &format!("{}.input", origin.field),
+            e,
+        ),
+        WiringError::DuplicateOutput { .. } => {
+            src.error(origin.span.clone(), &format!("{}.output", origin.field), e)
+        }
+        WiringError::Instrument { .. } => src.error(origin.span.clone(), &origin.field, e),
+    }
+}
