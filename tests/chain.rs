@@ -50,7 +50,10 @@ fn stages_run_after_the_stages_they_read_and_bad_wiring_is_named() {
     assert_eq!(stages.unit_of("speed1_rad_s"), Some("rad/s"));
     assert_eq!(stages.unit_of("nothing"), None);
 
-    let looped = vec![stage("x_v", "y_v", wire.clone()), stage("y_v", "x_v", wire.clone())];
+    let looped = vec![
+        stage("x_v", "y_v", wire.clone()),
+        stage("y_v", "x_v", wire.clone()),
+    ];
     let err = ChainStages::ordered(looped).expect_err("a loop");
     assert!(matches!(err, WiringError::UnknownInput { ref output, .. } if output == "x_v"));
     let twice = vec![stage("contact", "mesh_torque_nm", wire)];
@@ -113,7 +116,10 @@ formats = ["csv", "wav"]
     let rms = (filter.iter().map(|x| x * x).sum::<f64>() / filter.len() as f64).sqrt();
     let reading = column("rms_filter_v");
     let last = reading[reading.len() - 1];
-    assert!((last / rms - 1.0).abs() < 0.05, "meter {last} against {rms}");
+    assert!(
+        (last / rms - 1.0).abs() < 0.05,
+        "meter {last} against {rms}"
+    );
     // The 400E now reads the slow filter's output, AC-coupled: almost nothing is left.
     let meter = column("meter_v");
     assert!(
@@ -149,7 +155,12 @@ fn bad_wiring_is_refused_at_its_line_and_field() {
     let cases: [(&str, &[&str]); 7] = [
         (
             "\n[[chain.stage]]\noutput = \"x_v\"\ninput = \"nowhere_v\"\nlowpass = { cutoff_hz = 50 }\n",
-            &["wired.toml:10:", "chain.stage #1.input", "`nowhere_v`", "not a signal before it"],
+            &[
+                "wired.toml:10:",
+                "chain.stage #1.input",
+                "`nowhere_v`",
+                "not a signal before it",
+            ],
         ),
         (
             "\n[[chain.stage]]\noutput = \"filter_v\"\ninput = \"amplifier_v\"\nlowpass = { cutoff_hz = 50 }\n",
@@ -161,7 +172,11 @@ fn bad_wiring_is_refused_at_its_line_and_field() {
         ),
         (
             "\n[chain.meter]\ninput = \"x_v\"\n\n[[chain.stage]]\noutput = \"x_v\"\ninput = \"meter_v\"\nmeter = {}\n",
-            &["wired.toml:9:", "chain.meter.input", "not a signal before it"],
+            &[
+                "wired.toml:9:",
+                "chain.meter.input",
+                "not a signal before it",
+            ],
         ),
         (
             "\n[[chain.stage]]\noutput = \"x_v\"\ninput = \"amplifier_v\"\nlowpass = { cutoff_hz = 30000 }\n",
@@ -169,7 +184,11 @@ fn bad_wiring_is_refused_at_its_line_and_field() {
         ),
         (
             "\n[analyser]\nfmax_hz = 200\ninput = \"slip_ring_v\"\n",
-            &["wired.toml:10:", "analyser.input", "`slip_ring_v` is not a signal of this run"],
+            &[
+                "wired.toml:10:",
+                "analyser.input",
+                "`slip_ring_v` is not a signal of this run",
+            ],
         ),
         (
             "\n[chain.scope]\nvolts_per_div = 1\nseconds_per_div = 0.01\ninput = \"x\"\n",

@@ -3,6 +3,7 @@
 
 pub mod cleanup;
 pub mod csv_stream;
+pub mod frame_writer;
 pub mod partial;
 pub mod spectrum_csv;
 pub mod uff58;
@@ -11,6 +12,7 @@ pub mod wav;
 
 pub use cleanup::remove_files_with_extension;
 pub use csv_stream::CsvRecorder;
+pub use frame_writer::{CsvFrames, FrameWriter, Written};
 pub use partial::PartialFile;
 pub use spectrum_csv::{ALIAS_COLUMN, Metadata, write_spectrum_csv};
 pub use uff58::{

@@ -8,6 +8,7 @@ use std::path::{Path, PathBuf};
 
 use anyhow::Context;
 
+use super::frame_writer::{FrameWriter, Written};
 use super::partial::PartialFile;
 use super::uff58::{
     Uff58Abscissa, Uff58Record, write_uff58_header, write_uff58_trailer, write_uff58_values,
@@ -124,5 +125,18 @@ impl Uff58Recorder {
         out.flush().context("writing the UFF58 file")?;
         drop(out);
         self.file.commit()
+    }
+}
+
+impl FrameWriter for Uff58Recorder {
+    fn write_frame(&mut self, _time_s: f64, values: &[f64]) -> anyhow::Result<()> {
+        Uff58Recorder::write_frame(self, values)
+    }
+
+    fn finish(self: Box<Self>) -> anyhow::Result<Written> {
+        Ok(Written {
+            files: vec![Uff58Recorder::finish(*self)?],
+            facts: Vec::new(),
+        })
     }
 }

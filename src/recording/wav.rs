@@ -9,6 +9,7 @@ use std::path::{Path, PathBuf};
 use anyhow::Context;
 use serde::Serialize;
 
+use super::frame_writer::{FrameWriter, Written};
 use super::partial::PartialFile;
 
 /// One recorded channel.
@@ -150,5 +151,26 @@ impl WavRecorder {
     pub fn finish(self) -> anyhow::Result<PathBuf> {
         self.writer.finalize().context("closing the WAV file")?;
         self.file.commit()
+    }
+}
+
+impl FrameWriter for WavRecorder {
+    fn write_frame(&mut self, _time_s: f64, values: &[f64]) -> anyhow::Result<()> {
+        WavRecorder::write_frame(self, values)
+    }
+
+    /// The WAV file and its sidecar; facts `wav_frames` and `wav_clipped_samples`.
+    fn finish(self: Box<Self>) -> anyhow::Result<Written> {
+        let facts = vec![
+            ("wav_frames", self.frames().into()),
+            ("wav_clipped_samples", self.clipped().into()),
+        ];
+        let wav = WavRecorder::finish(*self)?;
+        let mut sidecar = wav.clone().into_os_string();
+        sidecar.push(".json");
+        Ok(Written {
+            files: vec![wav, sidecar.into()],
+            facts,
+        })
     }
 }

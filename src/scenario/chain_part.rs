@@ -8,6 +8,7 @@ use instruments::{
 use toml::Spanned;
 
 use super::chain_file::{AmplifierFile, DEFAULT_CUTOFF_HZ, FilterFile, MeterFile};
+use super::choices::RecordFormatChoice;
 use super::file::{AnalyserFile, ChainFile, RecordFile};
 use super::plan::{AnalyserPlan, ChainPlan, RecordPlan, ScopePlan, WavFormat};
 use super::source::ScenarioSource;
@@ -274,17 +275,10 @@ pub fn record_plan(
     }
     let wav_format = WavFormat::from(file.wav_format);
     for format in &file.formats {
-        match format.get_ref().as_str() {
-            "wav" => plan.wav = Some(wav_format),
-            "csv" => plan.csv = true,
-            "uff58" => plan.uff58 = true,
-            other => {
-                return Err(src.error(
-                    format.span(),
-                    "record.formats",
-                    format!("`{other}` is not one of wav, csv, uff58"),
-                ));
-            }
+        match format {
+            RecordFormatChoice::Wav => plan.wav = Some(wav_format),
+            RecordFormatChoice::Csv => plan.csv = true,
+            RecordFormatChoice::Uff58 => plan.uff58 = true,
         }
     }
     Ok(plan)

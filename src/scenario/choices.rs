@@ -1,5 +1,5 @@
 //! The named choices a scenario or sweep file makes (bridge arrangement, filter, meter
-//! detector, scope slope, analyser window and sampling, WAV format) as typed enums: serde
+//! detector, scope slope, analyser window and sampling, recording formats, WAV format) as typed enums: serde
 //! refuses anything else at the value's line with the allowed names, and each maps onto
 //! the instrument's own type.
 
@@ -185,4 +185,16 @@ impl From<WavFormatChoice> for WavFormat {
             WavFormatChoice::Int24 => Self::Int24,
         }
     }
+}
+
+/// An entry of `record.formats`.
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub enum RecordFormatChoice {
+    /// WAV with a JSON sidecar.
+    Wav,
+    /// CSV, a column per signal.
+    Csv,
+    /// UFF58 time histories.
+    Uff58,
 }

@@ -7,7 +7,7 @@ use serde::Deserialize;
 use toml::Spanned;
 
 pub use super::chain_file::{AnalyserFile, ChainFile};
-use super::choices::WavFormatChoice;
+use super::choices::{RecordFormatChoice, WavFormatChoice};
 use super::values::{LoadNm, NonNegative, Positive, SpeedRpm};
 
 /// The whole file.
@@ -179,7 +179,7 @@ pub struct RecordFile {
     /// Signal names (`testrig run --list-signals`, or scenarios/README.md).
     pub signals: Vec<Spanned<String>>,
     /// Any of wav, csv, uff58.
-    pub formats: Vec<Spanned<String>>,
+    pub formats: Vec<RecordFormatChoice>,
     /// WAV sample format: float32 or int24.
     #[serde(default)]
     pub wav_format: WavFormatChoice,

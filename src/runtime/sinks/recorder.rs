@@ -8,18 +8,17 @@ use rig::Impact;
 use super::{Sink, SinkReport};
 use crate::chain::signal_names::STRAIN;
 use crate::recording::{
-    ChannelInfo, CsvRecorder, Uff58Channel, Uff58Recorder, WavRecorder, WavSamples,
+    ChannelInfo, CsvFrames, CsvRecorder, FrameWriter, Uff58Channel, Uff58Recorder, WavRecorder,
+    WavSamples,
 };
 use crate::runtime::frame::{Frame, SignalNames};
-use crate::scenario::{Plan, WavFormat};
+use crate::scenario::{Plan, RecordPlan, WavFormat};
 
 /// Writes every recorded frame.
 pub struct RecorderSink {
     indices: Vec<usize>,
     decimate: u64,
-    wav: Option<WavRecorder>,
-    csv: Option<CsvRecorder>,
-    uff: Option<Uff58Recorder>,
+    writers: Vec<Box<dyn FrameWriter>>,
     impacts: CsvRecorder,
     row: Vec<f64>,
     rate_hz: f64,
@@ -37,9 +36,7 @@ impl RecorderSink {
         let mut sink = Self {
             indices: Vec::new(),
             decimate: 1,
-            wav: None,
-            csv: None,
-            uff: None,
+            writers: Vec::new(),
             impacts,
             row: Vec::new(),
             rate_hz: plan.rate_hz,
@@ -59,57 +56,7 @@ impl RecorderSink {
             })
             .collect::<anyhow::Result<_>>()?;
         sink.decimate = record.decimate as u64;
-        let rate = plan.rate_hz / record.decimate as f64;
-        if let Some(format) = record.wav {
-            let channels = record
-                .signals
-                .iter()
-                .zip(&record.full_scale)
-                .map(|(name, &scale)| ChannelInfo {
-                    name: name.clone(),
-                    unit: unit_of(plan, name).into(),
-                    scale: if format == WavFormat::Float32 {
-                        1.0
-                    } else {
-                        scale
-                    },
-                    full_scale: scale,
-                })
-                .collect();
-            let samples = match format {
-                WavFormat::Float32 => WavSamples::Float32,
-                WavFormat::Int24 => WavSamples::Int24,
-            };
-            let wav_rate = rate.round() as u32;
-            sink.wav = Some(WavRecorder::create_as(
-                &dir.join("recording.wav"),
-                wav_rate,
-                channels,
-                &plan.text,
-                samples,
-            )?);
-        }
-        if record.csv {
-            let mut header = vec!["time_s".to_string()];
-            header.extend(record.signals.iter().cloned());
-            sink.csv = Some(CsvRecorder::create(&dir.join("recording.csv"), &header)?);
-        }
-        if record.uff58 {
-            let channels = record
-                .signals
-                .iter()
-                .enumerate()
-                .map(|(i, s)| uff_channel(plan, s, i))
-                .collect();
-            let source = format!("testrig scenario {}", plan.name);
-            sink.uff = Some(Uff58Recorder::create(
-                &dir.join("recording.uff"),
-                channels,
-                &source,
-                0.0,
-                1.0 / rate,
-            )?);
-        }
+        sink.writers = writers(dir, plan, record)?;
         Ok(sink)
     }
 
@@ -119,6 +66,65 @@ impl RecorderSink {
         }
         Ok(())
     }
+}
+
+/// The recording's writers, one per format asked for.
+fn writers(
+    dir: &Path,
+    plan: &Plan,
+    record: &RecordPlan,
+) -> anyhow::Result<Vec<Box<dyn FrameWriter>>> {
+    let rate = plan.rate_hz / record.decimate as f64;
+    let mut writers: Vec<Box<dyn FrameWriter>> = Vec::new();
+    if let Some(format) = record.wav {
+        let channels = record
+            .signals
+            .iter()
+            .zip(&record.full_scale)
+            .map(|(name, &scale)| ChannelInfo {
+                name: name.clone(),
+                unit: unit_of(plan, name).into(),
+                scale: if format == WavFormat::Float32 {
+                    1.0
+                } else {
+                    scale
+                },
+                full_scale: scale,
+            })
+            .collect();
+        let samples = match format {
+            WavFormat::Float32 => WavSamples::Float32,
+            WavFormat::Int24 => WavSamples::Int24,
+        };
+        writers.push(Box::new(WavRecorder::create_as(
+            &dir.join("recording.wav"),
+            rate.round() as u32,
+            channels,
+            &plan.text,
+            samples,
+        )?));
+    }
+    if record.csv {
+        let path = dir.join("recording.csv");
+        writers.push(Box::new(CsvFrames::create(&path, &record.signals)?));
+    }
+    if record.uff58 {
+        let channels = record
+            .signals
+            .iter()
+            .enumerate()
+            .map(|(i, s)| uff_channel(plan, s, i))
+            .collect();
+        let source = format!("testrig scenario {}", plan.name);
+        writers.push(Box::new(Uff58Recorder::create(
+            &dir.join("recording.uff"),
+            channels,
+            &source,
+            0.0,
+            1.0 / rate,
+        )?));
+    }
+    Ok(writers)
 }
 
 /// Unit of a recorded signal (the plan has checked every name).
@@ -154,15 +160,9 @@ impl Sink for RecorderSink {
             self.row.clear();
             self.row
                 .extend(self.indices.iter().map(|&c| frame.channels[c][i]));
-            if let Some(wav) = &mut self.wav {
-                wav.write_frame(&self.row)?;
-            }
-            if let Some(uff) = &mut self.uff {
-                uff.write_frame(&self.row)?;
-            }
-            if let Some(csv) = &mut self.csv {
-                self.row.insert(0, sample as f64 / self.rate_hz);
-                csv.write_row(&self.row)?;
+            let time_s = sample as f64 / self.rate_hz;
+            for writer in &mut self.writers {
+                writer.write_frame(time_s, &self.row)?;
             }
         }
         Ok(())
@@ -171,23 +171,10 @@ impl Sink for RecorderSink {
     fn finish(self: Box<Self>) -> anyhow::Result<SinkReport> {
         let mut report = SinkReport::default();
         report.files.push(self.impacts.finish()?);
-        if let Some(wav) = self.wav {
-            report.facts.push(("wav_frames", wav.frames().into()));
-            report
-                .facts
-                .push(("wav_clipped_samples", wav.clipped().into()));
-            report.files.push(wav.finish()?);
-            let mut sidecar = report.files[report.files.len() - 1]
-                .clone()
-                .into_os_string();
-            sidecar.push(".json");
-            report.files.push(sidecar.into());
-        }
-        if let Some(csv) = self.csv {
-            report.files.push(csv.finish()?);
-        }
-        if let Some(uff) = self.uff {
-            report.files.push(uff.finish()?);
+        for writer in self.writers {
+            let written = writer.finish()?;
+            report.files.extend(written.files);
+            report.facts.extend(written.facts);
         }
         report
             .facts
