@@ -1,11 +1,16 @@
 //! Regime classification from once-per-revolution samples: period-k or aperiodic.
 
-use serde::Serialize;
+use std::fmt;
+use std::str::FromStr;
+
+use serde::{Deserialize, Serialize};
 
 use crate::records::RevolutionSample;
 
-/// The motion's repetition.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+/// The motion's repetition; written (and read, in JSON and tables) as `period-k` or
+/// `aperiodic`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(into = "String", try_from = "String")]
 pub enum Regime {
     /// Repeats every k revolutions (k ≥ 1).
     Periodic(usize),
@@ -14,12 +19,50 @@ pub enum Regime {
 }
 
 impl Regime {
-    /// `period-k` or `aperiodic`.
-    pub fn label(self) -> String {
+    /// k of period-k; `None` when aperiodic.
+    pub fn period(self) -> Option<usize> {
         match self {
-            Self::Periodic(k) => format!("period-{k}"),
-            Self::Aperiodic => "aperiodic".to_string(),
+            Self::Periodic(k) => Some(k),
+            Self::Aperiodic => None,
         }
+    }
+}
+
+impl fmt::Display for Regime {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Periodic(k) => write!(f, "period-{k}"),
+            Self::Aperiodic => f.write_str("aperiodic"),
+        }
+    }
+}
+
+impl FromStr for Regime {
+    type Err = String;
+
+    fn from_str(text: &str) -> Result<Self, String> {
+        if text == "aperiodic" {
+            return Ok(Self::Aperiodic);
+        }
+        text.strip_prefix("period-")
+            .and_then(|k| k.parse().ok())
+            .filter(|&k| k >= 1)
+            .map(Self::Periodic)
+            .ok_or_else(|| format!("`{text}` is not a regime: period-k (k ≥ 1) or aperiodic"))
+    }
+}
+
+impl From<Regime> for String {
+    fn from(regime: Regime) -> Self {
+        regime.to_string()
+    }
+}
+
+impl TryFrom<String> for Regime {
+    type Error = String;
+
+    fn try_from(text: String) -> Result<Self, String> {
+        text.parse()
     }
 }
 

@@ -5,7 +5,7 @@ use serde::Serialize;
 use crate::error::RigError;
 use crate::plant::Plant;
 use crate::records::{Impact, RevolutionSample};
-use crate::regime::{RegimeCriteria, classify_scaled, impacts_per_tooth};
+use crate::regime::{Regime, RegimeCriteria, classify_scaled, impacts_per_tooth};
 use crate::signals::{INTERMEDIATE_SHAFT, SignalBlock};
 
 /// Samples advanced per call while measuring.
@@ -22,8 +22,8 @@ pub struct SteadySummary {
     pub impacts_per_rev: f64,
     /// Contact starts in the window on each tooth of the driving gear.
     pub impacts_per_tooth: Vec<u64>,
-    /// `period-k` or `aperiodic`, from once-per-revolution samples.
-    pub regime: String,
+    /// Period-k or aperiodic, from once-per-revolution samples.
+    pub regime: Regime,
     /// Whether the teeth ever lose contact in the window.
     pub separates: bool,
     /// Share of samples with no mesh torque.
@@ -117,8 +117,7 @@ impl SteadyWindow {
                 &self.revolutions,
                 &vibration_scale(&self.speed_moments, count),
                 criteria,
-            )
-            .label(),
+            ),
             separates: self.apart > 0 || self.impacts > 0,
             apart_fraction: self.apart as f64 / count,
             torque_mean_nm: mean,

@@ -57,7 +57,7 @@ fn revolution_samples_are_one_turn_of_the_driving_gear_apart() {
     }
 }
 
-fn steady_regime(rpm: f64) -> String {
+fn steady_regime(rpm: f64) -> Regime {
     let mut plant = support::plant(support::thesis(), Schedule::constant(rpm, 2.712), 51_200.0);
     let summary = rig::run_steady(&mut plant, 20.0, 5.0, &RegimeCriteria::default(), |_| {
         Ok::<(), rig::RigError>(())
@@ -69,10 +69,24 @@ fn steady_regime(rpm: f64) -> String {
 
 #[test]
 fn the_thesis_rig_shows_the_half_order_at_1300_rpm() {
-    assert_eq!(steady_regime(1300.0), "period-2");
+    assert_eq!(steady_regime(1300.0), Regime::Periodic(2));
 }
 
 #[test]
 fn the_thesis_rig_is_period_one_at_600_rpm() {
-    assert_eq!(steady_regime(600.0), "period-1");
+    assert_eq!(steady_regime(600.0), Regime::Periodic(1));
+}
+
+#[test]
+fn a_regime_is_written_and_read_back_as_its_label() {
+    for regime in [Regime::Periodic(1), Regime::Periodic(12), Regime::Aperiodic] {
+        let text = regime.to_string();
+        assert_eq!(text.parse::<Regime>(), Ok(regime));
+    }
+    assert_eq!(Regime::Periodic(2).to_string(), "period-2");
+    assert_eq!(Regime::Periodic(2).period(), Some(2));
+    assert_eq!(Regime::Aperiodic.period(), None);
+    for bad in ["period-0", "period-", "period-x", "chaos", ""] {
+        assert!(bad.parse::<Regime>().is_err(), "{bad:?} accepted");
+    }
 }

@@ -4,11 +4,12 @@ use std::path::{Path, PathBuf};
 
 use plotters::coord::Shift;
 use plotters::prelude::*;
+use rig::Regime;
 
 use super::canvas::{axes, draw_error, legend, legend_share, mesh, png_and_svg};
 
-/// One cell: (rpm, load N m, period; 0 for aperiodic).
-pub type RegimeCell = (f64, f64, usize);
+/// One cell: (rpm, load N m, regime).
+pub type RegimeCell = (f64, f64, Regime);
 
 /// Writes `base.png` and `base.svg`.
 pub fn write_regime_map(
@@ -24,9 +25,11 @@ pub fn write_regime_map(
 }
 
 /// Colour of a period: 1 green, 2 red, 3 orange, 4 purple, more blue, aperiodic black.
-fn colour(period: usize) -> RGBColor {
+fn colour(regime: Regime) -> RGBColor {
+    let Some(period) = regime.period() else {
+        return RGBColor(0, 0, 0);
+    };
     match period {
-        0 => RGBColor(0, 0, 0),
         1 => RGBColor(60, 170, 60),
         2 => RGBColor(220, 40, 40),
         3 => RGBColor(240, 150, 20),
@@ -66,26 +69,22 @@ fn draw<DB: DrawingBackend>(
     let half_r = 0.45 * smallest_step(cells.iter().map(|c| c.0)).unwrap_or(100.0);
     let half_l = 0.45 * smallest_step(cells.iter().map(|c| c.1)).unwrap_or(1.0);
     let (pad_r, pad_l) = (2.0 * half_r, 2.0 * half_l);
-    let mut periods: Vec<usize> = cells.iter().map(|c| c.2).collect();
-    periods.sort_unstable();
-    periods.dedup();
+    let mut regimes: Vec<Regime> = cells.iter().map(|c| c.2).collect();
+    regimes.sort_by_key(|r| r.period().unwrap_or(0));
+    regimes.dedup();
     // Headroom above the top row of cells for the legend.
     let span_l = (l1 + pad_l) - (l0 - pad_l);
-    let top = (l0 - pad_l) + span_l / (1.0 - legend_share(periods.len()));
+    let top = (l0 - pad_l) + span_l / (1.0 - legend_share(regimes.len()));
     let mut chart = axes(&root, title, (r0 - pad_r)..(r1 + pad_r), (l0 - pad_l)..top)?;
     mesh(&mut chart, ("speed (rev/min)", "load (N m)"), |_| {})?;
-    for period in periods {
-        let c = colour(period);
-        let label = if period == 0 {
-            "aperiodic".to_string()
-        } else {
-            format!("period-{period}")
-        };
+    for regime in regimes {
+        let c = colour(regime);
+        let label = regime.to_string();
         chart
             .draw_series(
                 cells
                     .iter()
-                    .filter(|cell| cell.2 == period)
+                    .filter(|cell| cell.2 == regime)
                     .map(move |cell| {
                         Rectangle::new(
                             [

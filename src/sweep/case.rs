@@ -2,7 +2,9 @@
 //! chain (one thread, stage after stage) into the analyser.
 
 use instruments::{Adc, Analyser, Line};
-use rig::{Plant, PlantConfig, RegimeCriteria, Schedule, SignalBlock, SteadySummary, SteadyWindow};
+use rig::{
+    Plant, PlantConfig, Regime, RegimeCriteria, Schedule, SignalBlock, SteadySummary, SteadyWindow,
+};
 use serde::{Deserialize, Serialize};
 
 use super::lines::{OrderLine, order_line, peaks};
@@ -28,10 +30,8 @@ pub struct CaseResult {
     pub values: Vec<String>,
     /// The case's seed.
     pub seed: u64,
-    /// `period-k` or `aperiodic`.
-    pub regime: String,
-    /// k of period-k, 0 when aperiodic.
-    pub period: usize,
+    /// Period-k or aperiodic (`period-k` or `aperiodic` in JSON).
+    pub regime: Regime,
     /// Power of the half-order line (V² rms at the amplifier output).
     #[serde(deserialize_with = "null_as_nan")]
     pub half_order: f64,
@@ -177,12 +177,7 @@ fn result(
         load_nm: case.load_nm,
         values: case.values.clone(),
         seed: case.seed,
-        regime: s.regime.clone(),
-        period: s
-            .regime
-            .strip_prefix("period-")
-            .and_then(|k| k.parse().ok())
-            .unwrap_or(0),
+        regime: s.regime,
         half_order: half.power,
         first_order: order(1.0).power,
         second_order: order(2.0).power,

@@ -156,7 +156,7 @@ fn at_1100(md: &mut String, cases: &[CaseResult]) {
         there.len(),
         there
             .iter()
-            .map(|c| c.regime.clone())
+            .map(|c| c.regime.to_string())
             .collect::<Vec<_>>()
             .join(", ")
     );

@@ -281,7 +281,7 @@ fn plots(out: &Path, meta: &SweepMeta, cases: &[CaseResult]) -> anyhow::Result<V
         let cells: Vec<RegimeCell> = cases
             .iter()
             .filter(|c| c.values == values)
-            .map(|c| (c.rpm, c.load_nm, c.period))
+            .map(|c| (c.rpm, c.load_nm, c.regime))
             .collect();
         let what = if values.is_empty() {
             String::new()

@@ -94,8 +94,8 @@ pub fn write_table(dir: &Path, swept: &[String], cases: &[CaseResult]) -> anyhow
             .copied()
             .fold(0.0, f64::max);
         row.extend([
-            c.regime.clone(),
-            c.period.to_string(),
+            c.regime.to_string(),
+            c.regime.period().unwrap_or(0).to_string(),
             format!("{:e}", c.half_order),
             format!("{:e}", c.first_order),
             format!("{:e}", c.second_order),
