@@ -1,12 +1,12 @@
 //! The product A·u of the Taylor expansion. A is stored by columns and multiplied as the
-//! step matrices are ([`crate::propagator::product`]): every row at once in vector
+//! step matrices are ([`crate::column_product::product`]): every row at once in vector
 //! multiply-adds. (Over A's nonzero entries alone, about a quarter of them, the product
 //! took twice as long: its index loads and scattered rows cost more than the zeros.)
 
 use nalgebra::DMatrix;
 
+use crate::column_product::product;
 use crate::layout::Layout;
-use crate::propagator::product;
 
 /// A·u for one mode's matrix A.
 pub struct Derivative {

@@ -6,7 +6,7 @@
 
 use crate::derivative::Derivative;
 use crate::layout::{Layout, N_MECH, X0};
-use crate::propagator::TAYLOR_ORDER;
+use crate::taylor::TAYLOR_ORDER;
 
 /// The states a jump may move: the driving and driven gears' angles X2, X3.
 pub const GEAR_ANGLES: [usize; 2] = [X0 + 1, X0 + 2];

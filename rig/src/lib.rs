@@ -20,29 +20,36 @@
 //! # Ok::<(), rig::RigError>(())
 //! ```
 
-pub mod derivative;
+mod column_product;
+mod derivative;
 pub mod energy;
 pub mod error;
-pub mod events;
+mod events;
+mod fused_step;
 pub mod geometry;
-pub mod jump_response;
-pub mod layout;
+mod jump_response;
+mod layout;
+mod matrix_exp;
 pub mod modal;
-pub mod mode;
-pub mod model;
+mod mode;
+mod model;
 pub mod options;
 pub mod param_table;
 pub mod params;
-pub mod plant;
+mod plant;
 pub mod presets;
-pub mod propagator;
+mod propagator;
 pub mod records;
 pub mod regime;
 pub mod schedule;
 pub mod signals;
 pub mod steady;
-pub mod stride;
-pub mod system_cache;
+mod stride;
+mod system_cache;
+mod taylor;
+
+#[cfg(test)]
+mod jump_response_tests;
 
 pub use error::RigError;
 pub use geometry::GearGeometry;

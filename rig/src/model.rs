@@ -4,7 +4,7 @@
 use nalgebra::DMatrix;
 
 use crate::geometry::GearGeometry;
-use crate::layout::{LOAD, Layout, N_MECH, REV, UNIT, V0, VF, X0, Z};
+use crate::layout::{LOAD, Layout, REV, UNIT, V0, VF, X0, Z};
 use crate::mode::{Engagement, Mode, MotorMode, PairZone};
 use crate::params::RigParams;
 
@@ -244,6 +244,3 @@ fn add_rotation(a: &mut DMatrix<f64>, index: usize, w: f64) {
     a[(index, index + 1)] = -w;
     a[(index + 1, index)] = w;
 }
-
-/// Number of rows of A that the fast stepper propagates with the full matrix.
-pub const PROPAGATED_ROWS: usize = N_MECH;

@@ -6,15 +6,16 @@
 //! product with the mechanical rows of e^{A k h} for each sample k = 1..m−1 inside it.
 //! Where the check over a stride says a function may cross, the fast path takes that
 //! stretch in single steps (and the exact path locates the crossing on a step of ρh ≤
-//! [`crate::propagator::MAX_RHO_H`], as ever), so a stride only needs its check to be
+//! [`crate::taylor::MAX_RHO_H`], as ever), so a stride only needs its check to be
 //! sound: m is the largest power of two up to [`MAX_STRIDE`] with ρ·m·h ≤
 //! [`MAX_RHO_STRIDE`].
 
 use nalgebra::DMatrix;
 
+use crate::column_product::product;
 use crate::events::EventFn;
+use crate::fused_step::{FusedColumns, FusedRows, fused_columns};
 use crate::layout::{Layout, N_MECH};
-use crate::propagator::{FusedColumns, FusedRows, fused_columns, product};
 
 /// Most internal steps one stride takes.
 pub const MAX_STRIDE: usize = 8;

@@ -3,12 +3,14 @@
 
 use crate::events::{EventFlags, mode_events};
 use crate::layout::{Layout, REV};
+use crate::matrix_exp::spectral_radius;
 use crate::mode::{MeshMode, Mode, MotorMode, PairZone};
 use crate::model::{Frequencies, ModelConstants, system_matrix};
 use crate::options::ContactLaw;
-use crate::propagator::{MAX_RHO_H, ModeSystem, spectral_radius};
+use crate::propagator::ModeSystem;
 use crate::schedule::Schedule;
 use crate::stride::MAX_STRIDE;
+use crate::taylor::MAX_RHO_H;
 
 /// Lazily built [`ModeSystem`]s for the current forcing frequencies.
 pub struct SystemCache {
@@ -116,7 +118,7 @@ impl SystemCache {
             &a,
             self.frequencies.rotation_rad_s,
         );
-        self.systems[mode.index()] = Some(ModeSystem::new(mode, &a, self.step_s, events));
+        self.systems[mode.index()] = Some(ModeSystem::new(&a, self.step_s, events));
     }
 
     /// The system of `mode`; [`SystemCache::ensure`] must have been called for it.

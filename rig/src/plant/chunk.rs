@@ -6,8 +6,8 @@ use crate::mode::{MeshMode, Mode, MotorMode};
 use crate::model::ModelConstants;
 use crate::signals::SignalBlock;
 
-use super::output::flank_overlap;
-use super::state::Segment;
+use super::mesh_position::{flank_overlap, tooth_of_pitches};
+use super::segment::Segment;
 
 /// Most samples a run of the fast path stores before they are turned into signals.
 pub(super) const CHUNK: usize = 128;
@@ -168,19 +168,6 @@ impl SampleFrame<'_> {
         };
         out.motor_torque_nm.extend(std::iter::repeat_n(held, count));
     }
-}
-
-/// Tooth in mesh (0..teeth) at driving-gear angle `theta2` (rad), for a pitch in rad.
-#[inline]
-pub(super) fn tooth_at(theta2: f64, pitch_rad: f64, teeth: f64) -> u32 {
-    tooth_of_pitches((theta2 / pitch_rad).floor(), teeth)
-}
-
-/// The tooth after a whole number of pitches (as f64), modulo the teeth, in floating
-/// point (exact for any count below 2⁵²).
-#[inline]
-fn tooth_of_pitches(pitches: f64, teeth: f64) -> u32 {
-    (pitches - teeth * (pitches / teeth).floor()) as u32
 }
 
 /// 0, 1, 2, … as floats: the offsets of the samples in a chunk.

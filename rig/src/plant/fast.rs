@@ -5,8 +5,8 @@
 //! `advance_step` takes those).
 
 use crate::error::RigError;
+use crate::fused_step::{FUSED_ROWS, FusedRows, MAX_ROW_EVENTS};
 use crate::layout::{Layout, N_MECH};
-use crate::propagator::{FUSED_ROWS, FusedRows, MAX_ROW_EVENTS};
 
 use super::output::within_bounds;
 use super::segments::rotate;

@@ -10,10 +10,12 @@
 
 mod chunk;
 mod fast;
+mod mesh_position;
 mod output;
+mod segment;
 mod segments;
 mod state;
 mod stepping;
 mod switches;
 
-pub use state::{Plant, PlantConfig, SWITCH_LIMIT};
+pub use state::{Plant, PlantConfig};

@@ -7,7 +7,8 @@ use crate::model::ModelConstants;
 use crate::records::Flank;
 use crate::signals::SignalBlock;
 
-use super::chunk::{CHUNK, SampleFrame, tooth_at};
+use super::chunk::{CHUNK, SampleFrame};
+use super::mesh_position::{flank_overlap, tooth_at};
 use super::state::{Plant, SPEED_LIMIT_RAD_S, TWIST_LIMIT_RAD};
 
 impl Plant {
@@ -136,21 +137,4 @@ pub(super) fn flank_gap(
         u[REV + 1],
     ];
     flank_overlap(mc, speed_rad_s, flank.sign(), mesh)
-}
-
-/// Overlap (rad) and its rate (rad/s) of the flank with `sign` (+1 drive, −1 back), from
-/// `mesh` = [X2, X3, V2, V3, cos φ, sin φ]: ∓(X3 − X2) − B with B = B₀(1 − C1 cos φ).
-#[inline(always)]
-pub(super) fn flank_overlap(
-    mc: &ModelConstants,
-    speed_rad_s: f64,
-    sign: f64,
-    mesh: [f64; 6],
-) -> (f64, f64) {
-    let [x2, x3, v2, v3, cos, sin] = mesh;
-    let b0 = mc.half_backlash_rad;
-    let c1 = mc.backlash_variation;
-    let b = b0 * (1.0 - c1 * cos);
-    let b_rate = b0 * c1 * speed_rad_s * sin;
-    (-sign * (x3 - x2) - b, -sign * (v3 - v2) - b_rate)
 }

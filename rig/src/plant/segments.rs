@@ -3,7 +3,8 @@
 use crate::layout::{LOAD, Layout, REV, V0, VF, X0};
 use crate::model::Frequencies;
 
-use super::state::{Plant, Segment};
+use super::segment::Segment;
+use super::state::Plant;
 
 impl Plant {
     /// Starts a new stretch of constant set points at the current step.

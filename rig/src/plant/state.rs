@@ -5,18 +5,20 @@ use std::f64::consts::TAU;
 
 use crate::error::RigError;
 use crate::events::EventFlags;
+use crate::fused_step::MAX_ROW_EVENTS;
 use crate::geometry::GearGeometry;
 use crate::layout::{LOAD, Layout, N_MECH, UNIT, X0, Z};
 use crate::mode::{MeshMode, Mode, MotorMode, PairZone};
 use crate::model::ModelConstants;
 use crate::options::{ContactLaw, MeshPairs};
 use crate::params::RigParams;
-use crate::propagator::{MAX_ROW_EVENTS, TAYLOR_ORDER, TaylorVectors};
 use crate::records::{Impact, RevolutionSample};
 use crate::schedule::{Schedule, SetPoints};
 use crate::system_cache::SystemCache;
+use crate::taylor::{TAYLOR_ORDER, TaylorVectors};
 
 use super::chunk::StateChunk;
+use super::segment::Segment;
 
 /// Output and set-point timing of a run.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -46,24 +48,6 @@ pub(super) const SPEED_LIMIT_RAD_S: f64 = 1.0e4;
 
 /// Internal steps between exact re-syncs of the harmonic states from the phase.
 pub(super) const RESYNC_STEPS: u64 = 4096;
-
-/// The set points held over the current stretch of internal steps.
-#[derive(Clone, Copy, Debug)]
-pub(super) struct Segment {
-    pub(super) start_step: u64,
-    pub(super) end_step: Option<u64>,
-    pub(super) phase_rad: f64,
-    pub(super) osc_phase_rad: f64,
-    pub(super) set: SetPoints,
-}
-
-impl Segment {
-    /// Set rotation φ (rad) `steps` internal steps of `step_s` into the segment.
-    #[inline(always)]
-    pub(super) fn phase_after(&self, steps: f64, step_s: f64) -> f64 {
-        self.phase_rad + self.set.speed_rad_s() * (steps * step_s)
-    }
-}
 
 /// The five-inertia rig with backlash, advanced in virtual time.
 pub struct Plant {

@@ -3,9 +3,11 @@
 
 use crate::error::RigError;
 use crate::events::{EventFn, EventKind, first_crossing, may_cross};
+use crate::fused_step::{FUSED_ROWS, FusedRows, MAX_ROW_EVENTS};
 use crate::jump_response::GEAR_ANGLES;
 use crate::layout::{Layout, N_MECH, V0, X0};
-use crate::propagator::{FUSED_ROWS, FusedRows, MAX_ROW_EVENTS, ModeSystem, TAYLOR_ORDER};
+use crate::propagator::ModeSystem;
+use crate::taylor::TAYLOR_ORDER;
 
 use super::segments::rotate;
 use super::state::{Plant, RESYNC_STEPS, SWITCH_LIMIT};

@@ -1,10 +1,12 @@
 //! The response to a jump of the gear angles (the tooth pass's shift) from its Taylor
 //! series equals e^{A s h} Δ from the balanced Padé exponential, in contact and apart.
+//! (A unit test: it reaches the plant's internals, which are private to the crate.)
 
-use rig::layout::{Layout, N_MECH};
-use rig::model::{Frequencies, ModelConstants, system_matrix};
-use rig::propagator::{ModeSystem, exp_powers, spectral_radius};
-use rig::{MeshMode, Mode, MotorMode, PairZone, preset};
+use crate::layout::{Layout, N_MECH};
+use crate::matrix_exp::{exp_powers, spectral_radius};
+use crate::model::{Frequencies, ModelConstants, system_matrix};
+use crate::propagator::ModeSystem;
+use crate::{MeshMode, Mode, MotorMode, PairZone, preset};
 
 /// Largest difference between the series and Padé responses over the mechanical states,
 /// relative to the largest entry of the response, for a jump of +δ on X2 and −δ on X3.
@@ -23,7 +25,7 @@ fn worst_mismatch(mesh: MeshMode) -> f64 {
     };
     let a = system_matrix(&mc, &layout, mode, frequencies);
     let step_s = 1.0 / 51_200.0;
-    let system = ModeSystem::new(mode, &a, step_s, Vec::new());
+    let system = ModeSystem::new(&a, step_s, Vec::new());
     let delta_rad = 3e-5;
     let mut worst = 0.0_f64;
     for s in [0.0, 0.07, 0.5, 0.93, 1.0] {

@@ -1,0 +1,42 @@
+//! The product of a fixed-shape column matrix with the augmented state, the inner loop of
+//! every step, stride and derivative.
+
+use crate::layout::Layout;
+
+/// `columns` times `u` over the first `len` columns (16, 18 or 20): a fixed shape for
+/// each, which the compiler unrolls into vector multiply-adds, the columns summed in two
+/// chains (even and odd) to halve the latency.
+#[inline]
+pub fn product<const ROWS: usize>(
+    columns: &[[f64; ROWS]; Layout::MAX_LEN],
+    u: &[f64; Layout::MAX_LEN],
+    len: usize,
+) -> [f64; ROWS] {
+    match len {
+        16 => product_of::<ROWS, 16>(columns, u),
+        18 => product_of::<ROWS, 18>(columns, u),
+        _ => product_of::<ROWS, { Layout::MAX_LEN }>(columns, u),
+    }
+}
+
+#[inline(always)]
+fn product_of<const ROWS: usize, const N: usize>(
+    columns: &[[f64; ROWS]; Layout::MAX_LEN],
+    u: &[f64; Layout::MAX_LEN],
+) -> [f64; ROWS] {
+    let (mut even, mut odd) = ([0.0; ROWS], [0.0; ROWS]);
+    for (pair, weights) in columns[..N].chunks_exact(2).zip(u[..N].chunks_exact(2)) {
+        for ((e, o), (&c0, &c1)) in even
+            .iter_mut()
+            .zip(odd.iter_mut())
+            .zip(pair[0].iter().zip(&pair[1]))
+        {
+            *e = c0.mul_add(weights[0], *e);
+            *o = c1.mul_add(weights[1], *o);
+        }
+    }
+    for (e, o) in even.iter_mut().zip(odd) {
+        *e += o;
+    }
+    even
+}

@@ -1,0 +1,25 @@
+//! The Taylor expansion of e^{A τ} within a step: its order, its coefficients and the
+//! vectors it is summed from.
+
+use crate::layout::Layout;
+
+/// Highest Taylor order kept; with ρ·h ≤ 0.5 the remainder of order 16 is below 1e-17.
+pub const TAYLOR_ORDER: usize = 16;
+
+/// Largest ρ·h (spectral radius of A times the internal step) the Taylor expansion is used at.
+pub const MAX_RHO_H: f64 = 0.5;
+
+/// 1/k for k = 0..=TAYLOR_ORDER (1/0 taken as 0, never used).
+pub(crate) const RECIPROCALS: [f64; TAYLOR_ORDER + 1] = {
+    let mut r = [0.0; TAYLOR_ORDER + 1];
+    let mut k = 1;
+    while k <= TAYLOR_ORDER {
+        r[k] = 1.0 / k as f64;
+        k += 1;
+    }
+    r
+};
+
+/// Taylor vectors v_k = (A δ)^k u₀ / k!, so that u(s δ) = Σ_k v_k s^k for s ∈ [0, 1]
+/// (only those up to the order of the last expansion are valid).
+pub type TaylorVectors = [[f64; Layout::MAX_LEN]; TAYLOR_ORDER + 1];

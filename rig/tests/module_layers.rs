@@ -1,0 +1,140 @@
+//! The plant's modules form layers: no file imports, directly or through others, a file
+//! that imports it. Checked from the source: every `crate::…` and `super::…` path outside
+//! comments is an edge, at two levels (the crate's modules, with `plant/` as one; and the
+//! files inside `plant/`).
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::Path;
+
+type Graph = BTreeMap<String, BTreeSet<String>>;
+
+/// Module names a piece of code refers to after `prefix` (`crate::` or `super::`).
+fn referenced(code: &str, prefix: &str) -> BTreeSet<String> {
+    let mut names = BTreeSet::new();
+    for line in code.lines() {
+        let line = line.split("//").next().unwrap_or("");
+        let mut rest = line;
+        while let Some(at) = rest.find(prefix) {
+            rest = &rest[at + prefix.len()..];
+            let groups: Vec<&str> = if let Some(inner) = rest.strip_prefix('{') {
+                inner.split('}').next().unwrap_or("").split(',').collect()
+            } else {
+                vec![rest]
+            };
+            for g in groups {
+                let name: String = g
+                    .trim()
+                    .chars()
+                    .take_while(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || *c == '_')
+                    .collect();
+                if !name.is_empty() && g.trim()[name.len()..].starts_with("::") {
+                    names.insert(name);
+                }
+            }
+        }
+    }
+    names
+}
+
+fn files(dir: &Path) -> Vec<(String, String)> {
+    let mut out: Vec<(String, String)> = std::fs::read_dir(dir)
+        .expect("source folder")
+        .filter_map(|e| {
+            let path = e.expect("entry").path();
+            let stem = path.file_stem()?.to_str()?.to_string();
+            (path.extension()? == "rs")
+                .then(|| (stem, std::fs::read_to_string(&path).expect("read")))
+        })
+        .collect();
+    out.sort();
+    out
+}
+
+/// A cycle of `graph`, if there is one, as the names along it.
+fn cycle(graph: &Graph) -> Option<Vec<String>> {
+    fn visit(
+        node: &str,
+        graph: &Graph,
+        done: &mut BTreeSet<String>,
+        path: &mut Vec<String>,
+    ) -> Option<Vec<String>> {
+        if let Some(at) = path.iter().position(|n| n == node) {
+            let mut found = path[at..].to_vec();
+            found.push(node.to_string());
+            return Some(found);
+        }
+        if done.contains(node) {
+            return None;
+        }
+        path.push(node.to_string());
+        for next in graph.get(node).into_iter().flatten() {
+            if let Some(found) = visit(next, graph, done, path) {
+                return Some(found);
+            }
+        }
+        path.pop();
+        done.insert(node.to_string());
+        None
+    }
+    let mut done = BTreeSet::new();
+    graph
+        .keys()
+        .find_map(|n| visit(n, graph, &mut done, &mut Vec::new()))
+}
+
+fn graphs() -> (Graph, Graph) {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut crate_level = Graph::new();
+    for (name, code) in files(&src) {
+        if name != "lib" {
+            let edges = referenced(&code, "crate::");
+            crate_level.entry(name).or_default().extend(edges);
+        }
+    }
+    let mut plant_level = Graph::new();
+    for (name, code) in files(&src.join("plant")) {
+        let mut outward = referenced(&code, "crate::");
+        outward.remove("plant");
+        crate_level
+            .entry("plant".into())
+            .or_default()
+            .extend(outward);
+        if name != "mod" {
+            plant_level.insert(name, referenced(&code, "super::"));
+        }
+    }
+    for (name, edges) in crate_level.iter_mut() {
+        edges.remove(name);
+    }
+    for (name, edges) in plant_level.iter_mut() {
+        edges.remove(name);
+    }
+    (crate_level, plant_level)
+}
+
+#[test]
+fn the_reference_finder_sees_each_form_of_path() {
+    let code =
+        "use crate::a::B;\nuse crate::{b::C, c::d};\nlet x = crate::e::f(); // crate::g::h\n";
+    let found: Vec<String> = referenced(code, "crate::").into_iter().collect();
+    assert_eq!(found, ["a", "b", "c", "e"]);
+    let mut looped = Graph::new();
+    looped.insert("x".into(), ["y".into()].into());
+    looped.insert("y".into(), ["x".into()].into());
+    assert!(cycle(&looped).is_some());
+}
+
+#[test]
+fn the_plant_has_no_import_cycles() {
+    let (crate_level, plant_level) = graphs();
+    assert!(
+        crate_level["propagator"].contains("stride"),
+        "graph read: {crate_level:?}"
+    );
+    assert!(
+        plant_level["output"].contains("state"),
+        "graph read: {plant_level:?}"
+    );
+    assert_eq!(cycle(&crate_level), None, "modules of rig");
+    assert_eq!(cycle(&plant_level), None, "files of rig/src/plant");
+}
