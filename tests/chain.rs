@@ -79,8 +79,13 @@ output = "rms_filter_v"
 input = "filter_v"
 meter = {{ detector = "true-rms", tau_s = 0.2, ac_coupling_hz = 0 }}
 
+[[chain.stage]]
+output = "ac_v"
+input = "amplifier_v"
+ac_coupling = {{ corner_hz = 1 }}
+
 [record]
-signals = ["amplifier_v", "slow_v", "filter_v", "rms_filter_v", "meter_v"]
+signals = ["amplifier_v", "slow_v", "filter_v", "rms_filter_v", "meter_v", "ac_v"]
 formats = ["csv", "wav"]
 "#
     );
@@ -128,6 +133,20 @@ formats = ["csv", "wav"]
         meter[meter.len() - 1],
         ac_rms(&amplifier)
     );
+    // A 1 Hz AC coupling blocks the static strain and passes the lines from 10 Hz up
+    // (gain 10/√101 = 0.995 at 10 Hz).
+    let ac = column("ac_v");
+    assert!(
+        mean(&ac).abs() < 0.02 * mean(&amplifier),
+        "DC through: {}",
+        mean(&ac)
+    );
+    assert!(
+        (ac_rms(&ac) / ac_rms(&amplifier) - 1.0).abs() < 0.05,
+        "AC {} against {}",
+        ac_rms(&ac),
+        ac_rms(&amplifier)
+    );
     let sidecar = std::fs::read_to_string(out.join("recording.wav.json")).expect("sidecar");
     let sidecar: serde_json::Value = serde_json::from_str(&sidecar).expect("JSON");
     let slow_entry = sidecar["channels"]
@@ -152,7 +171,7 @@ fn refusal(extra: &str) -> String {
 
 #[test]
 fn bad_wiring_is_refused_at_its_line_and_field() {
-    let cases: [(&str, &[&str]); 7] = [
+    let cases: [(&str, &[&str]); 8] = [
         (
             "\n[[chain.stage]]\noutput = \"x_v\"\ninput = \"nowhere_v\"\nlowpass = { cutoff_hz = 50 }\n",
             &[
@@ -168,6 +187,10 @@ fn bad_wiring_is_refused_at_its_line_and_field() {
         ),
         (
             "\n[[chain.stage]]\noutput = \"x_v\"\ninput = \"amplifier_v\"\n",
+            &["wired.toml:9:", "chain.stage #1", "exactly one instrument"],
+        ),
+        (
+            "\n[[chain.stage]]\noutput = \"x_v\"\ninput = \"amplifier_v\"\nmeter = {}\nac_coupling = { corner_hz = 1 }\n",
             &["wired.toml:9:", "chain.stage #1", "exactly one instrument"],
         ),
         (

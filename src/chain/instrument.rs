@@ -2,8 +2,8 @@
 //! unit and full scale of what it writes, and how it is built on a stream.
 
 use instruments::{
-    AntiAliasFilter, CarrierDemodulator, CarrierModulator, CarrierSettings, InstrumentError,
-    LowPassSpec, ShaftStrain, SlipRing, SlipRingSettings, StrainBridge, Tacho,
+    AcCoupling, AntiAliasFilter, CarrierDemodulator, CarrierModulator, CarrierSettings,
+    InstrumentError, LowPassSpec, ShaftStrain, SlipRing, SlipRingSettings, StrainBridge, Tacho,
 };
 
 use super::stage::{Stage, block_stage, slip_ring_stage};
@@ -30,6 +30,8 @@ pub enum Instrument {
     Tacho,
     /// The digital voltmeter on the tacho.
     Dvm(DvmSettings),
+    /// A first-order AC coupling (high-pass) with its corner (Hz).
+    AcCoupling(f64),
 }
 
 impl Instrument {
@@ -94,6 +96,9 @@ impl Instrument {
             Self::Meter(m) => block_stage(m.build(rate_hz)?, input),
             Self::Tacho => block_stage(Tacho::crompton_parkinson(rate_hz)?, input),
             Self::Dvm(d) => block_stage(d.build(rate_hz)?, input),
+            Self::AcCoupling(corner_hz) => {
+                block_stage(AcCoupling::new(*corner_hz, rate_hz)?, input)
+            }
         })
     }
 }

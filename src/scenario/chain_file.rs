@@ -52,6 +52,16 @@ pub struct StageFile {
     pub lowpass: Option<FilterFile>,
     /// An RMS voltmeter, as `[chain.meter]` writes it (without `input`).
     pub meter: Option<MeterFile>,
+    /// A first-order AC coupling (high-pass).
+    pub ac_coupling: Option<AcCouplingFile>,
+}
+
+/// `ac_coupling = { corner_hz = … }` of a `[[chain.stage]]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct AcCouplingFile {
+    /// Corner frequency (Hz).
+    pub corner_hz: Positive,
 }
 
 /// `[chain.gauges]`.

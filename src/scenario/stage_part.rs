@@ -99,22 +99,25 @@ fn further_stage(
             "give the stage's input beside its `output`, not inside its instrument",
         ));
     }
-    let instrument = match (&file.lowpass, &file.meter) {
-        (Some(lowpass), None) => Instrument::LowPass(filter_spec(
-            src,
-            lowpass,
-            &format!("{field}.lowpass"),
-            rate_hz,
-            band_hz,
-        )?),
-        (None, Some(meter)) => Instrument::Meter(meter_settings(meter)),
-        _ => {
-            return Err(src.error(
-                file.output.span(),
-                field,
-                "give exactly one instrument: `lowpass = { ... }` or `meter = { ... }`",
-            ));
-        }
+    let lowpass_field = format!("{field}.lowpass");
+    let given = [
+        file.lowpass.as_ref().map(|l| {
+            filter_spec(src, l, &lowpass_field, rate_hz, band_hz).map(Instrument::LowPass)
+        }),
+        file.meter
+            .as_ref()
+            .map(|m| Ok(Instrument::Meter(meter_settings(m)))),
+        file.ac_coupling
+            .as_ref()
+            .map(|a| Ok(Instrument::AcCoupling(a.corner_hz.0))),
+    ];
+    let mut given: Vec<Instrument> = given.into_iter().flatten().collect::<anyhow::Result<_>>()?;
+    let (Some(instrument), true) = (given.pop(), given.is_empty()) else {
+        return Err(src.error(
+            file.output.span(),
+            field,
+            "give exactly one instrument: `lowpass = { ... }`, `meter = { ... }` or `ac_coupling = { ... }`",
+        ));
     };
     Ok(StagePlan {
         output: file.output.get_ref().clone(),
