@@ -23,11 +23,14 @@ pub struct StandardChain {
     pub carrier: CarrierSettings,
     /// Slip rings, if wired (left out: the bridge feeds the demodulator directly).
     pub slip_rings: Option<SlipRingSettings>,
-    /// Anti-alias filter (`None`: a straight wire) and the signal it reads (default
-    /// `amplifier_v`).
-    pub filter: (Option<LowPassSpec>, Option<String>),
-    /// RMS meter and the signal it reads (default `amplifier_v`).
-    pub meter: (MeterSettings, Option<String>),
+    /// Anti-alias filter (`None`: a straight wire).
+    pub filter: Option<LowPassSpec>,
+    /// The signal the filter reads (`None`: `amplifier_v`).
+    pub filter_input: Option<String>,
+    /// RMS meter.
+    pub meter: MeterSettings,
+    /// The signal the meter reads (`None`: `amplifier_v`).
+    pub meter_input: Option<String>,
     /// Tacho DVM.
     pub dvm: DvmSettings,
 }
@@ -46,8 +49,8 @@ pub fn standard_stages(c: &StandardChain) -> Vec<StagePlan> {
     } else {
         CARRIER_V
     };
-    let filter_input = c.filter.1.as_deref().unwrap_or(AMPLIFIER_V);
-    let meter_input = c.meter.1.as_deref().unwrap_or(AMPLIFIER_V);
+    let filter_input = c.filter_input.as_deref().unwrap_or(AMPLIFIER_V);
+    let meter_input = c.meter_input.as_deref().unwrap_or(AMPLIFIER_V);
     let rows: [(&str, &[&str], Option<Instrument>); 9] = [
         (
             STRAIN,
@@ -73,9 +76,9 @@ pub fn standard_stages(c: &StandardChain) -> Vec<StagePlan> {
         (
             FILTER_V,
             &[filter_input],
-            Some(Instrument::LowPass(c.filter.0)),
+            Some(Instrument::LowPass(c.filter)),
         ),
-        (METER_V, &[meter_input], Some(Instrument::Meter(c.meter.0))),
+        (METER_V, &[meter_input], Some(Instrument::Meter(c.meter))),
         (TACHO_V, &[MOTOR_SPEED_RAD_S], Some(Instrument::Tacho)),
         (DVM_V, &[TACHO_V], Some(Instrument::Dvm(c.dvm))),
     ];

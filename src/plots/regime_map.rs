@@ -8,8 +8,16 @@ use rig::Regime;
 
 use super::canvas::{axes, draw_error, legend, legend_share, mesh, png_and_svg};
 
-/// One cell: (rpm, load N m, regime).
-pub type RegimeCell = (f64, f64, Regime);
+/// One case on the map.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RegimeCell {
+    /// Speed set point (rev/min).
+    pub rpm: f64,
+    /// Load (N m).
+    pub load_nm: f64,
+    /// Its motion.
+    pub regime: Regime,
+}
 
 /// Writes `base.png` and `base.svg`.
 pub fn write_regime_map(
@@ -59,17 +67,17 @@ fn draw<DB: DrawingBackend>(
     let (r0, r1) = cells
         .iter()
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), c| {
-            (a.min(c.0), b.max(c.0))
+            (a.min(c.rpm), b.max(c.rpm))
         });
     let (l0, l1) = cells
         .iter()
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), c| {
-            (a.min(c.1), b.max(c.1))
+            (a.min(c.load_nm), b.max(c.load_nm))
         });
-    let half_r = 0.45 * smallest_step(cells.iter().map(|c| c.0)).unwrap_or(100.0);
-    let half_l = 0.45 * smallest_step(cells.iter().map(|c| c.1)).unwrap_or(1.0);
+    let half_r = 0.45 * smallest_step(cells.iter().map(|c| c.rpm)).unwrap_or(100.0);
+    let half_l = 0.45 * smallest_step(cells.iter().map(|c| c.load_nm)).unwrap_or(1.0);
     let (pad_r, pad_l) = (2.0 * half_r, 2.0 * half_l);
-    let mut regimes: Vec<Regime> = cells.iter().map(|c| c.2).collect();
+    let mut regimes: Vec<Regime> = cells.iter().map(|c| c.regime).collect();
     regimes.sort_by_key(|r| r.period().unwrap_or(0));
     regimes.dedup();
     // Headroom above the top row of cells for the legend.
@@ -84,12 +92,12 @@ fn draw<DB: DrawingBackend>(
             .draw_series(
                 cells
                     .iter()
-                    .filter(|cell| cell.2 == regime)
+                    .filter(|cell| cell.regime == regime)
                     .map(move |cell| {
                         Rectangle::new(
                             [
-                                (cell.0 - half_r, cell.1 - half_l),
-                                (cell.0 + half_r, cell.1 + half_l),
+                                (cell.rpm - half_r, cell.load_nm - half_l),
+                                (cell.rpm + half_r, cell.load_nm + half_l),
                             ],
                             c.filled(),
                         )

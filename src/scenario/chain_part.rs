@@ -65,11 +65,10 @@ fn standard_chain(
         carrier: carrier_settings(&chain.amplifier, &bridge, rate_hz),
         bridge,
         slip_rings,
-        filter: (
-            filter_spec(src, &chain.filter, "chain.filter", rate_hz, band_hz)?,
-            input(&chain.filter.input),
-        ),
-        meter: (meter_settings(&chain.meter), input(&chain.meter.input)),
+        filter: filter_spec(src, &chain.filter, "chain.filter", rate_hz, band_hz)?,
+        filter_input: input(&chain.filter.input),
+        meter: meter_settings(&chain.meter),
+        meter_input: input(&chain.meter.input),
         dvm: DvmSettings {
             gate_s: t.gate_s.get_ref().0,
             tau_s: t.tau_s.0,

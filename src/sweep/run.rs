@@ -281,7 +281,11 @@ fn plots(out: &Path, meta: &SweepMeta, cases: &[CaseResult]) -> anyhow::Result<V
         let cells: Vec<RegimeCell> = cases
             .iter()
             .filter(|c| c.values == values)
-            .map(|c| (c.rpm, c.load_nm, c.regime))
+            .map(|c| RegimeCell {
+                rpm: c.rpm,
+                load_nm: c.load_nm,
+                regime: c.regime,
+            })
             .collect();
         let what = if values.is_empty() {
             String::new()
