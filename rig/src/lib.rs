@@ -62,6 +62,6 @@ pub use plant::{Plant, PlantConfig};
 pub use presets::{PRESET_NAMES, preset};
 pub use records::{Flank, Impact, RevolutionSample};
 pub use regime::{Regime, RegimeCriteria, classify, classify_scaled};
-pub use schedule::{Schedule, SetPoints, Track};
+pub use schedule::{LiveCeiling, Schedule, SetPoints, Track};
 pub use signals::{COLUMN_NAMES, INTERMEDIATE_SHAFT, SignalBlock};
 pub use steady::{SteadySummary, SteadyWindow, run_steady};

@@ -51,6 +51,14 @@ impl Track {
         self
     }
 
+    /// Drops the knots after `t_s` and steps to `value` there.
+    pub fn hold_from(&mut self, t_s: f64, value: f64) {
+        let held = self.value_at(t_s);
+        self.knots.retain(|&(t, _)| t <= t_s);
+        self.knots.push((t_s, held));
+        self.knots.push((t_s, value));
+    }
+
     /// Adds a ramp from the value held at `from_s` to `value` at `to_s`.
     pub fn ramp_to(mut self, from_s: f64, to_s: f64, value: f64) -> Self {
         let held = self.value_at(from_s);
@@ -144,6 +152,20 @@ impl Schedule {
         Ok(())
     }
 
+    /// From `t_s` on, holds `set` (the knots after `t_s` are dropped): a knob turned
+    /// while the rig runs.
+    pub fn hold_from(&mut self, t_s: f64, set: SetPoints) {
+        let tracks = [
+            (&mut self.speed_rpm, set.speed_rpm),
+            (&mut self.load_nm, set.load_nm),
+            (&mut self.oscillating_load_nm, set.oscillating_load_nm),
+            (&mut self.oscillating_load_hz, set.oscillating_load_hz),
+        ];
+        for (track, value) in tracks {
+            track.hold_from(t_s, value);
+        }
+    }
+
     /// Whether any oscillating load is ever applied.
     pub fn has_oscillating_load(&self) -> bool {
         self.oscillating_load_nm.range().1 > 0.0
@@ -186,6 +208,15 @@ impl Schedule {
             oscillating_load_hz: self.oscillating_load_hz.value_at(at),
         }
     }
+}
+
+/// The highest set points live commands may bring (see `PlantConfig::live_ceiling`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LiveCeiling {
+    /// Highest speed set point (rev/min).
+    pub speed_rpm: f64,
+    /// Highest oscillating-load frequency (Hz); 0 allows no oscillating load.
+    pub oscillating_load_hz: f64,
 }
 
 /// The set points at one instant.

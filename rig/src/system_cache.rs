@@ -8,7 +8,7 @@ use crate::mode::{MeshMode, Mode, MotorMode, PairZone};
 use crate::model::{Frequencies, ModelConstants, system_matrix};
 use crate::options::ContactLaw;
 use crate::propagator::ModeSystem;
-use crate::schedule::Schedule;
+use crate::schedule::LiveCeiling;
 use crate::stride::MAX_STRIDE;
 use crate::taylor::MAX_RHO_H;
 
@@ -50,18 +50,16 @@ impl SystemCache {
     }
 
     /// Internal steps per output step so that ρ·h ≤ [`MAX_RHO_H`] in the stiffest mode at
-    /// the schedule's highest speed and oscillating-load frequency.
+    /// the highest speed and oscillating-load frequency the plant is built for.
     pub fn substeps_for(
         mc: &ModelConstants,
         layout: &Layout,
-        schedule: &Schedule,
+        ceiling: LiveCeiling,
         output_step_s: f64,
     ) -> u64 {
         let frequencies = Frequencies {
-            rotation_rad_s: schedule.speed_rpm.range().1 * std::f64::consts::PI / 30.0,
-            oscillating_load_rad_s: 2.0
-                * std::f64::consts::PI
-                * schedule.oscillating_load_hz.range().1,
+            rotation_rad_s: ceiling.speed_rpm * std::f64::consts::PI / 30.0,
+            oscillating_load_rad_s: 2.0 * std::f64::consts::PI * ceiling.oscillating_load_hz,
         };
         let stiffest = Mode {
             mesh: MeshMode::Drive,

@@ -1,12 +1,39 @@
 //! Set-point segments: starting one, the phase of the set rotation, and the harmonic states.
 
+use crate::error::RigError;
 use crate::layout::{LOAD, Layout, REV, V0, VF, X0};
 use crate::model::Frequencies;
+use crate::schedule::SetPoints;
 
 use super::segment::Segment;
 use super::state::Plant;
 
 impl Plant {
+    /// Holds `set` from the current sample on, as a knob turned while the rig runs (the
+    /// schedule's later knots are dropped); a new stretch of set points starts at the next
+    /// internal step, exactly as at a knot of the schedule. Refused, with nothing changed,
+    /// outside the schedule's ranges or above the ceiling the plant was built for.
+    pub fn set_points_from_now(&mut self, set: SetPoints) -> Result<(), RigError> {
+        let c = self.ceiling;
+        if set.speed_rpm > c.speed_rpm || set.oscillating_load_hz > c.oscillating_load_hz {
+            return Err(RigError::Schedule(format!(
+                "{} rev/min, {} Hz: this plant was built for at most {} rev/min and {} Hz of oscillating load",
+                set.speed_rpm, set.oscillating_load_hz, c.speed_rpm, c.oscillating_load_hz
+            )));
+        }
+        if set.oscillating_load_nm > 0.0 && self.layout.osc.is_none() {
+            return Err(RigError::Schedule(
+                "this plant was built without an oscillating load".into(),
+            ));
+        }
+        let mut schedule = self.schedule.clone();
+        schedule.hold_from(self.time_at(0.0), set);
+        schedule.validate()?;
+        self.schedule = schedule;
+        self.segment.end_step = Some(self.step_index);
+        Ok(())
+    }
+
     /// Starts a new stretch of constant set points at the current step.
     #[inline(never)]
     pub(super) fn begin_segment(&mut self) {

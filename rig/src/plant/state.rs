@@ -13,7 +13,7 @@ use crate::model::ModelConstants;
 use crate::options::{ContactLaw, MeshPairs};
 use crate::params::RigParams;
 use crate::records::{Impact, RevolutionSample};
-use crate::schedule::{Schedule, SetPoints};
+use crate::schedule::{LiveCeiling, MAX_SPEED_RPM, Schedule, SetPoints};
 use crate::system_cache::SystemCache;
 use crate::taylor::{TAYLOR_ORDER, TaylorVectors};
 
@@ -27,6 +27,11 @@ pub struct PlantConfig {
     pub output_rate_hz: f64,
     /// During a ramp the set points change in steps this long (s).
     pub setpoint_update_s: f64,
+    /// For set points changed while the plant runs ([`Plant::set_points_from_now`]): the
+    /// highest speed (rev/min) and oscillating-load frequency (Hz) they may reach, beside
+    /// the schedule's own (the internal step is sized for them), and with an oscillating
+    /// frequency above 0 the oscillating-load states are kept. `None`: only the schedule's.
+    pub live_ceiling: Option<LiveCeiling>,
 }
 
 impl Default for PlantConfig {
@@ -34,6 +39,7 @@ impl Default for PlantConfig {
         Self {
             output_rate_hz: 51_200.0,
             setpoint_update_s: 0.01,
+            live_ceiling: None,
         }
     }
 }
@@ -62,6 +68,7 @@ pub struct Plant {
     pub(super) substeps: u64,
     pub(super) step_s: f64,
     pub(super) setpoint_update_s: f64,
+    pub(super) ceiling: LiveCeiling,
     pub(super) cache: SystemCache,
     pub(super) u: [f64; Layout::MAX_LEN],
     pub(super) mode: Mode,
@@ -94,9 +101,10 @@ impl Plant {
         check_config(&config)?;
         let mc = ModelConstants::of(&params);
         let geometry = GearGeometry::of(&params);
+        let ceiling = ceiling_of(&schedule, config.live_ceiling);
         let layout = Layout::new(
             params.gear_error_c3_nm != 0.0,
-            schedule.has_oscillating_load(),
+            schedule.has_oscillating_load() || ceiling.oscillating_load_hz > 0.0,
         );
         let alternating =
             params.mesh_pairs == MeshPairs::Alternating && geometry.double_pair_fraction() > 0.0;
@@ -105,7 +113,7 @@ impl Plant {
             tooth_shifting: params.tooth_shifting,
         };
         let output_step_s = 1.0 / config.output_rate_hz;
-        let substeps = SystemCache::substeps_for(&mc, &layout, &schedule, output_step_s);
+        let substeps = SystemCache::substeps_for(&mc, &layout, ceiling, output_step_s);
         let step_s = output_step_s / substeps as f64;
         let set = schedule.held_over(0.0, 0.0);
         let segment = Segment {
@@ -129,6 +137,7 @@ impl Plant {
             substeps,
             step_s,
             setpoint_update_s: config.setpoint_update_s,
+            ceiling,
             u: [0.0; Layout::MAX_LEN],
             mode: Mode {
                 mesh: MeshMode::Apart,
@@ -282,7 +291,33 @@ impl Plant {
     }
 }
 
+/// The highest speed and oscillating-load frequency the plant is built for.
+fn ceiling_of(schedule: &Schedule, live: Option<LiveCeiling>) -> LiveCeiling {
+    let live = live.unwrap_or(LiveCeiling {
+        speed_rpm: 0.0,
+        oscillating_load_hz: 0.0,
+    });
+    LiveCeiling {
+        speed_rpm: schedule.speed_rpm.range().1.max(live.speed_rpm),
+        oscillating_load_hz: schedule
+            .oscillating_load_hz
+            .range()
+            .1
+            .max(live.oscillating_load_hz),
+    }
+}
+
 fn check_config(config: &PlantConfig) -> Result<(), RigError> {
+    if let Some(c) = config.live_ceiling {
+        let speed_ok = (0.0..=MAX_SPEED_RPM).contains(&c.speed_rpm);
+        if !(speed_ok && c.oscillating_load_hz.is_finite() && c.oscillating_load_hz >= 0.0) {
+            return Err(RigError::InvalidOption {
+                name: "live_ceiling",
+                value: format!("{c:?}"),
+                allowed: "a speed in [0, 10000] rev/min and a frequency ≥ 0 Hz",
+            });
+        }
+    }
     if !(config.output_rate_hz.is_finite()
         && config.output_rate_hz >= 100.0
         && config.output_rate_hz <= 10.0e6)
