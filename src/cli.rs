@@ -30,6 +30,27 @@ pub enum Command {
     Sweep(SweepArgs),
     /// Join the outputs of sweep shards into one table and its plots.
     Merge(MergeArgs),
+    /// Operate the rig live from a front panel in the browser (and from scripts, docs/api.md).
+    Panel(PanelArgs),
+}
+
+/// `testrig panel`.
+#[derive(Debug, Args)]
+pub struct PanelArgs {
+    /// The scenario (TOML); left out: the bundled scenarios/panel.toml.
+    pub scenario: Option<PathBuf>,
+    /// Address to serve the panel on; anything but loopback is reachable by others.
+    #[arg(long, default_value = "127.0.0.1:8080")]
+    pub listen: std::net::SocketAddr,
+    /// 1 for real time, or a factor.
+    #[arg(long, default_value = "1")]
+    pub pace: String,
+    /// Change one scenario key (repeatable), as for `run`.
+    #[arg(long = "set", value_name = "KEY=VALUE")]
+    pub overrides: Vec<String>,
+    /// Output folder: recordings, spectra, scope traces, manifest.json and session.toml.
+    #[arg(long, default_value = "out/panel")]
+    pub out: PathBuf,
 }
 
 /// `testrig sweep`.

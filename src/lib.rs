@@ -26,6 +26,7 @@
 //! ```
 
 pub mod chain;
+pub mod live;
 pub mod plots;
 pub mod recording;
 pub mod runtime;

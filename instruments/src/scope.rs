@@ -51,6 +51,7 @@ pub struct Scope {
     sweeping: Vec<f64>,
     armed: bool,
     stored: Option<Vec<f64>>,
+    sweeps: u64,
 }
 
 /// Slowest time base (s/div): the Tektronix 2B67's 5 s/div.
@@ -86,7 +87,18 @@ impl Scope {
             sweeping: Vec::with_capacity(sweep as usize),
             armed: true,
             stored: None,
+            sweeps: 0,
         })
+    }
+
+    /// Sweeps completed and stored since the scope was made.
+    pub fn sweeps(&self) -> u64 {
+        self.sweeps
+    }
+
+    /// Its settings.
+    pub fn settings(&self) -> ScopeSettings {
+        self.settings
     }
 
     /// The stored sweep as (time from the trigger in s, vertical position in divisions,
@@ -133,6 +145,7 @@ impl Block for Scope {
             }
             if self.sweeping.len() == self.sweep_samples {
                 self.stored = Some(std::mem::take(&mut self.sweeping));
+                self.sweeps += 1;
                 self.sweeping.reserve(self.sweep_samples);
                 self.armed = self.settings.mode == SweepMode::Repeat;
             }

@@ -76,17 +76,24 @@ impl AliasTruth {
         self.blocks += 1;
     }
 
-    /// Adds the analogue blocks behind `count` analyser blocks taken every `hop` ADC
-    /// samples from the start of `analogue` (the stream since the average began); a block
-    /// that would run past its end is left out.
+    /// Adds the analogue blocks behind analyser blocks [`AliasTruth::blocks`]..`count`,
+    /// taken every `hop` ADC samples from the start of `analogue` (the stream since the
+    /// average began), so that it can be called again as an average grows (after
+    /// [`AliasTruth::restart`], every block from the first); a block that would run past
+    /// the end of `analogue` is left for a later call.
     pub fn add_blocks(&mut self, analogue: &[f64], count: usize, hop: usize) {
         let hop_samples = hop as f64 * self.ratio;
-        for b in 0..count {
+        for b in self.blocks..count {
             let start = (b as f64 * hop_samples).round() as usize;
             if let Some(block) = analogue.get(start..start + self.span) {
                 self.add(block);
             }
         }
+    }
+
+    /// Analogue blocks added since the last restart.
+    pub fn blocks(&self) -> usize {
+        self.blocks
     }
 
     /// Clears the running sum.

@@ -162,6 +162,9 @@ impl ChainStages {
             built.push(NamedStage {
                 output: s.output.clone(),
                 stage,
+                plan: s.clone(),
+                inputs,
+                rate_hz,
             });
         }
         Ok(built)

@@ -3,6 +3,7 @@
 mod analyse;
 mod merge;
 mod modes;
+mod panel;
 mod params;
 mod run;
 mod simulate;
@@ -23,6 +24,7 @@ pub fn run(command: Command) -> anyhow::Result<ExitCode> {
         Command::Run(args) => return run::run(&args),
         Command::Sweep(args) => sweep::run(&args),
         Command::Merge(args) => merge::run(&args),
+        Command::Panel(args) => return panel::run(&args),
     };
     done.map(|()| ExitCode::SUCCESS)
 }

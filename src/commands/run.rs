@@ -57,6 +57,7 @@ pub fn run(args: &RunArgs) -> anyhow::Result<ExitCode> {
         out: args.out.clone(),
         stop: signals.flag(),
         console: std::io::stderr().is_terminal(),
+        control: None,
     };
     let result = run_plan(&plan, &options)?;
     let failed = !result.errors.is_empty() || result.plant.error.is_some();

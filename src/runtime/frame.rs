@@ -3,7 +3,9 @@
 
 use std::sync::Arc;
 
-use rig::{Impact, SignalBlock};
+use rig::{Impact, SetPoints, SignalBlock};
+
+use crate::live::Pending;
 
 /// One block of samples. Channels are shared (`Arc`), so a stage that adds its output
 /// copies only pointers; channel `i` is named by the run's [`SignalNames`] entry `i`.
@@ -17,6 +19,11 @@ pub struct Frame {
     pub channels: Vec<Arc<[f64]>>,
     /// Contacts that started within the block.
     pub impacts: Arc<[Impact]>,
+    /// Commands that take effect at the block's start, for the stages and sinks they
+    /// address (each carries them out before the block's samples).
+    pub commands: Arc<[Pending]>,
+    /// The set points the block was made under (live runs and commands use them).
+    pub set_points: Option<SetPoints>,
 }
 
 impl Frame {
@@ -47,7 +54,16 @@ impl Frame {
             start_sample,
             channels,
             impacts: impacts.into(),
+            commands: Arc::new([]),
+            set_points: None,
         }
+    }
+
+    /// This frame carrying `commands`, made under `set_points`.
+    pub fn with_commands(mut self, commands: Vec<Pending>, set_points: SetPoints) -> Self {
+        self.commands = commands.into();
+        self.set_points = Some(set_points);
+        self
     }
 
     /// Samples per channel.
@@ -70,6 +86,8 @@ impl Frame {
             start_sample: self.start_sample,
             channels,
             impacts: Arc::clone(&self.impacts),
+            commands: Arc::clone(&self.commands),
+            set_points: self.set_points,
         }
     }
 }

@@ -8,6 +8,7 @@ pub mod pacing;
 pub mod plant_source;
 pub mod previous_run;
 pub mod process_usage;
+pub mod rolling_regime;
 pub mod run;
 pub mod sinks;
 pub mod status;

@@ -5,12 +5,15 @@ use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 
 use crossbeam_channel::{Sender, TrySendError};
-use rig::{Plant, RegimeCriteria, SignalBlock, SteadySummary, SteadyWindow};
+use rig::{Plant, RegimeCriteria, RigParams, SetPoints, SignalBlock, SteadySummary, SteadyWindow};
 
 use super::frame::Frame;
 use super::pacing::{LatenessHistogram, Pace, Pacer};
+use super::rolling_regime::RollingRegime;
 use super::status::SharedStatus;
+use crate::live::{Command, CommandInbox, Pending};
 use crate::scenario::Overflow;
+use crate::scenario::values::{check_load_nm, check_load_within_motor, check_speed_rpm};
 
 /// Longest stretch at the end of a run whose once-per-revolution samples decide the regime (s).
 pub const REGIME_WINDOW_S: f64 = 10.0;
@@ -33,6 +36,8 @@ pub struct PlantJob {
     pub stop: Arc<AtomicBool>,
     /// What the console shows.
     pub status: SharedStatus,
+    /// Commands: the scenario's timed ones and, live, those of scripts and pages.
+    pub inbox: CommandInbox,
 }
 
 /// What the plant's thread reports.
@@ -78,8 +83,13 @@ pub fn run_plant(mut job: PlantJob, out: Sender<Frame>) -> PlantReport {
     };
     let mut block = SignalBlock::default();
     let mut seq = 0;
+    let mut rolling = RollingRegime::new(job.plant.params().teeth, step_s);
     while report.samples < job.total_samples && !job.stop.load(Ordering::Relaxed) {
         let n = (job.total_samples - report.samples).min(job.block_samples as u64) as usize;
+        let commands = take_commands(&mut job, report.samples, report.samples as f64 * step_s);
+        if job.stop.load(Ordering::Relaxed) {
+            break;
+        }
         block.clear();
         if let Err(e) = job.plant.run(n, &mut block) {
             report.error = Some(format!(
@@ -92,24 +102,86 @@ pub fn run_plant(mut job: PlantJob, out: Sender<Frame>) -> PlantReport {
         let revolutions = job.plant.drain_revolutions();
         report.impacts += impacts.len() as u64;
         let start_s = report.samples as f64 * step_s;
+        let speed_rad_s = job.plant.set_points().speed_rad_s();
         if start_s >= window_from_s {
-            window.add_block(&block, job.plant.set_points().speed_rad_s());
+            window.add_block(&block, speed_rad_s);
             window.add_impacts(&impacts);
             window.add_revolutions(&revolutions);
         }
-        let frame = Frame::of_block(seq, report.samples, &block, impacts);
+        if let Some(regime) = rolling.add(&block, speed_rad_s, &impacts, &revolutions) {
+            job.status.update(|s| s.regime = Some(regime));
+        }
+        let frame = Frame::of_block(seq, report.samples, &block, impacts)
+            .with_commands(commands, job.plant.set_points());
         report.samples += n as u64;
         seq += 1;
         if let Some(pacer) = &pacer {
-            report.lateness.add(pacer.wait_for(report.samples));
+            let lateness_s = pacer.wait_for(report.samples);
+            report.lateness.add(lateness_s);
+            job.status.update(|s| s.lateness_s = lateness_s);
         }
         if !release(&job, &out, frame, start_s, &mut report) {
             break;
         }
-        job.status.update(|s| s.simulated_samples = report.samples);
+        let impacts = report.impacts;
+        job.status.update(|s| {
+            s.simulated_samples = report.samples;
+            s.impacts = impacts;
+        });
     }
     report.steady = window.summary(&RegimeCriteria::default());
     report
+}
+
+/// The commands due at the block starting at `start_sample` (`at_s`): the plant's own
+/// (set points, quit) carried out and answered here, the others returned for the frame.
+fn take_commands(job: &mut PlantJob, start_sample: u64, at_s: f64) -> Vec<Pending> {
+    let mut onward = Vec::new();
+    for pending in job.inbox.due(start_sample, at_s) {
+        let mut set = job.plant.set_points();
+        match pending.command {
+            Command::SetSpeed { rpm } => set.speed_rpm = rpm,
+            Command::SetLoad { nm } => set.load_nm = nm,
+            Command::SetOscillatingLoad { nm, hz } => {
+                set.oscillating_load_nm = nm;
+                set.oscillating_load_hz = hz;
+            }
+            Command::Quit => {
+                job.stop.store(true, Ordering::Relaxed);
+                pending.answer(Ok(()));
+                continue;
+            }
+            _ => {
+                onward.push(pending);
+                continue;
+            }
+        }
+        let outcome = check_set_points(&set, job.plant.params()).and_then(|()| {
+            job.plant
+                .set_points_from_now(set)
+                .map_err(|e| e.to_string())
+        });
+        pending.answer(outcome);
+    }
+    job.status
+        .update(|s| s.set_points = Some(job.plant.set_points()));
+    onward
+}
+
+/// The bounds every command shares (speed, brake load), as for a scenario's set points.
+fn check_set_points(set: &SetPoints, params: &RigParams) -> Result<(), String> {
+    check_speed_rpm(set.speed_rpm).map_err(|e| format!("speed: {e}"))?;
+    check_load_nm(set.load_nm).map_err(|e| format!("load: {e}"))?;
+    check_load_within_motor(set.load_nm, params)?;
+    for (value, what) in [
+        (set.oscillating_load_nm, "oscillating load amplitude (N m)"),
+        (set.oscillating_load_hz, "oscillating load frequency (Hz)"),
+    ] {
+        if !(value.is_finite() && value >= 0.0) {
+            return Err(format!("{what} {value}: must be finite and ≥ 0"));
+        }
+    }
+    Ok(())
 }
 
 /// Sends one frame by the overflow policy; false when nobody listens any more.

@@ -22,6 +22,8 @@ use super::sinks::{Sink, SinkReport};
 use super::status::SharedStatus;
 use super::wiring::{channel, run_sink, run_stage};
 use crate::chain::NamedStage;
+use crate::chain::signal_names::{AMPLIFIER_V, FILTER_V};
+use crate::live::{CommandInbox, Request, Target};
 use crate::scenario::Plan;
 
 /// How to run.
@@ -35,6 +37,8 @@ pub struct RunOptions {
     pub stop: Arc<AtomicBool>,
     /// Draw the console (progress and rack readings).
     pub console: bool,
+    /// Live commands (a panel's), besides the scenario's timed ones.
+    pub control: Option<crossbeam_channel::Receiver<Request>>,
 }
 
 /// What a run did.
@@ -74,6 +78,15 @@ impl RunResult {
 
 /// Runs `plan`, writing into `options.out`.
 pub fn run(plan: &Plan, options: &RunOptions) -> anyhow::Result<RunResult> {
+    run_with_status(plan, options, SharedStatus::default())
+}
+
+/// As [`run`], the rack's readings and displays kept in `status` (a live panel reads it).
+pub fn run_with_status(
+    plan: &Plan,
+    options: &RunOptions,
+    status: SharedStatus,
+) -> anyhow::Result<RunResult> {
     std::fs::create_dir_all(&options.out).with_context(|| {
         format!(
             "--out {}: cannot create the output folder",
@@ -82,14 +95,15 @@ pub fn run(plan: &Plan, options: &RunOptions) -> anyhow::Result<RunResult> {
     })?;
     let config = PlantConfig {
         output_rate_hz: plan.rate_hz,
+        live_ceiling: plan.live_ceiling,
         ..PlantConfig::default()
     };
     let plant = Plant::new(plan.params.clone(), plan.schedule.clone(), config)
         .context("the rig and schedule of the scenario")?;
     let mut names = SignalNames::plant();
     let stages = plan.chain.stages.build(plan.rate_hz, &mut names)?;
-    let status = SharedStatus::default();
-    let sinks = build_sinks(plan, &options.out, &names, &status)?;
+    let live = options.control.is_some();
+    let sinks = build_sinks(plan, &options.out, &names, &status, live)?;
     let total_samples = (plan.duration_s * plan.rate_hz).round() as u64;
     let job = PlantJob {
         plant,
@@ -99,6 +113,12 @@ pub fn run(plan: &Plan, options: &RunOptions) -> anyhow::Result<RunResult> {
         overflow: plan.overflow,
         stop: Arc::clone(&options.stop),
         status: status.clone(),
+        inbox: CommandInbox::new(
+            &plan.commands,
+            options.control.clone(),
+            command_targets(plan),
+            plan.rate_hz,
+        ),
     };
     let (cpu_before, _) = cpu_s_and_peak_rss_mib();
     let started = Instant::now();
@@ -188,11 +208,32 @@ impl Threads<'_> {
 
 type NamedSink = (&'static str, Box<dyn Sink>);
 
+/// The parts of `plan`'s rig that carry out commands.
+fn command_targets(plan: &Plan) -> Vec<Target> {
+    let mut targets = vec![Target::Plant];
+    for stage in [AMPLIFIER_V, FILTER_V] {
+        if plan.chain.stages.producing(stage).is_some() {
+            targets.push(Target::Stage(stage));
+        }
+    }
+    if plan.analyser.is_some() {
+        targets.extend([Target::Analyser, Target::Displays]);
+    }
+    if plan.chain.scope.is_some() {
+        targets.push(Target::Scope);
+    }
+    if plan.record.is_some() {
+        targets.push(Target::Recorder);
+    }
+    targets
+}
+
 fn build_sinks(
     plan: &Plan,
     dir: &Path,
     names: &SignalNames,
     status: &SharedStatus,
+    live: bool,
 ) -> anyhow::Result<Vec<NamedSink>> {
     let measures = plan.measurements();
     let index = |n: &str| {
@@ -200,24 +241,23 @@ fn build_sinks(
             .index(n)
             .ok_or_else(|| anyhow::anyhow!("internal wiring: no `{n}`"))
     };
-    let mut sinks: Vec<NamedSink> = vec![
-        (
-            "monitor",
-            Box::new(MonitorSink::create(
-                dir,
-                plan,
-                names,
-                plan.measures.clone(),
-                status.clone(),
-            )?),
-        ),
-        (
-            "recorder",
-            Box::new(RecorderSink::create(dir, plan, names)?),
-        ),
-    ];
+    let mut sinks: Vec<NamedSink> = vec![(
+        "monitor",
+        Box::new(MonitorSink::create(
+            dir,
+            plan,
+            names,
+            plan.measures.clone(),
+            status.clone(),
+        )?),
+    )];
+    let mut recorder = RecorderSink::create(dir, plan, names)?;
+    if live {
+        recorder.go_live(status.clone());
+    }
+    sinks.push(("recorder", Box::new(recorder)));
     if let Some(analyser) = &plan.analyser {
-        let sink = AnalyserSink::create(
+        let mut sink = AnalyserSink::create(
             dir,
             plan,
             analyser.clone(),
@@ -225,10 +265,16 @@ fn build_sinks(
             measures.clone(),
             status.clone(),
         )?;
+        if live {
+            sink.go_live();
+        }
         sinks.push(("analyser", Box::new(sink)));
     }
     if let Some(scope) = &plan.chain.scope {
-        let sink = ScopeSink::create(dir, plan, scope, index(&scope.input)?, measures)?;
+        let mut sink = ScopeSink::create(dir, plan, scope, index(&scope.input)?, measures)?;
+        // The panel's scope runs in every run, so that a session's saved traces come
+        // out alike when it is replayed.
+        sink.go_live(status.clone())?;
         sinks.push(("scope", Box::new(sink)));
     }
     Ok(sinks)

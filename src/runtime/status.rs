@@ -2,6 +2,8 @@
 
 use std::sync::{Arc, Mutex, PoisonError};
 
+use crate::live::{LiveSpectrum, LiveTrace};
+
 /// The rack as the experimenter reads it.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Status {
@@ -17,6 +19,20 @@ pub struct Status {
     pub adc_overloads: u64,
     /// Blocks dropped at a full queue.
     pub overruns: u64,
+    /// The set points now.
+    pub set_points: Option<rig::SetPoints>,
+    /// The analyser's display (live runs).
+    pub spectrum: Option<Arc<LiveSpectrum>>,
+    /// The scope's latest trace (live runs).
+    pub trace: Option<Arc<LiveTrace>>,
+    /// Whether the recorder is writing.
+    pub recording: bool,
+    /// Lateness of the last release (s; paced runs).
+    pub lateness_s: f64,
+    /// Contact starts so far.
+    pub impacts: u64,
+    /// Regime of the last full 10 s window (live runs).
+    pub regime: Option<rig::Regime>,
 }
 
 /// A handle every thread can update.

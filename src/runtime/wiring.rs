@@ -9,6 +9,7 @@ use crossbeam_channel::{Receiver, Sender, bounded};
 use super::frame::Frame;
 use super::sinks::{Sink, SinkReport};
 use crate::chain::NamedStage;
+use crate::live::stage_commands::apply_to_stage;
 
 /// Runs a stage: each frame in, the frame with the stage's output added, out to every
 /// listener; ends when its input closes or no one listens.
@@ -16,6 +17,11 @@ pub fn run_stage(mut stage: NamedStage, input: Receiver<Frame>, outputs: Vec<Sen
     let mut outputs = outputs;
     let mut out = Vec::new();
     for frame in input {
+        for pending in frame.commands.iter() {
+            if let Some(outcome) = apply_to_stage(&mut stage, &pending.command) {
+                pending.answer(outcome);
+            }
+        }
         out.clear();
         out.resize(frame.len(), 0.0);
         stage.stage.process(&frame, &mut out);
@@ -44,6 +50,11 @@ pub fn run_sink(
             .push(format!("{name}: {e:#}"));
     };
     for frame in input {
+        for pending in frame.commands.iter() {
+            if let Some(outcome) = sink.command(&pending.command, &frame) {
+                pending.answer(outcome);
+            }
+        }
         if let Err(e) = sink.consume(&frame) {
             fail(e);
             break;

@@ -103,6 +103,11 @@ pub fn build(src: &ScenarioSource, command_line: CommandLine) -> anyhow::Result<
         chain,
         analyser,
         record,
+        live_ceiling: file.live.as_ref().map(|l| rig::LiveCeiling {
+            speed_rpm: l.max_speed_rpm.0,
+            oscillating_load_hz: l.max_oscillating_load_hz.0,
+        }),
+        commands: file.command,
     })
 }
 

@@ -268,6 +268,7 @@ pub fn record_plan(
         csv: false,
         uff58: false,
         decimate: (*file.decimate.get_ref()).max(1),
+        from_start: file.from_start,
     };
     if *file.decimate.get_ref() == 0 {
         return Err(src.error(file.decimate.span(), "record.decimate", "must be ≥ 1"));

@@ -4,7 +4,7 @@
 //! the instrument's own type.
 
 use instruments::{BridgeArrangement, Detector, FilterKind, Sampling, Slope, Window};
-use serde::Deserialize;
+use serde::{Deserialize, Serialize};
 
 use super::plan::WavFormat;
 
@@ -32,7 +32,7 @@ impl From<ArrangementChoice> for BridgeArrangement {
 }
 
 /// `chain.filter.kind`.
-#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, Deserialize, Serialize, PartialEq, Eq)]
 #[serde(rename_all = "kebab-case")]
 pub enum FilterChoice {
     /// No anti-alias filter.
@@ -97,9 +97,15 @@ impl From<SlopeChoice> for Slope {
 
 /// `analyser.window`: any name [`Window::parse`] takes (`uniform`, `hanning`, `flattop`
 /// and their aliases), so the file and `testrig analyse --window` share one list.
-#[derive(Clone, Copy, Debug, Deserialize, PartialEq, Eq)]
-#[serde(try_from = "String")]
+#[derive(Clone, Copy, Debug, Deserialize, Serialize, PartialEq, Eq)]
+#[serde(try_from = "String", into = "String")]
 pub struct WindowChoice(pub Window);
+
+impl From<WindowChoice> for String {
+    fn from(choice: WindowChoice) -> Self {
+        choice.0.name().to_string()
+    }
+}
 
 impl Default for WindowChoice {
     fn default() -> Self {

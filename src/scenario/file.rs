@@ -9,6 +9,7 @@ use toml::Spanned;
 pub use super::chain_file::{AnalyserFile, ChainFile};
 use super::choices::{RecordFormatChoice, WavFormatChoice};
 use super::values::{LoadNm, NonNegative, Positive, SpeedRpm};
+use crate::live::TimedCommand;
 
 /// The whole file.
 #[derive(Debug, Deserialize)]
@@ -54,6 +55,22 @@ pub struct ScenarioFile {
     pub analyser: Option<AnalyserFile>,
     /// What to record (left out: nothing but the manifest, readings and impacts).
     pub record: Option<RecordFile>,
+    /// The plant built for live commands (as `testrig panel` builds it).
+    pub live: Option<LiveFile>,
+    /// Commands at their virtual times, as an operator gave them (a panel's session).
+    #[serde(default)]
+    pub command: Vec<TimedCommand>,
+}
+
+/// `[live]`: the highest set points live commands may bring; the plant's internal step
+/// and states are made for them.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LiveFile {
+    /// Highest speed set point (rev/min).
+    pub max_speed_rpm: SpeedRpm,
+    /// Highest oscillating-load frequency (Hz).
+    pub max_oscillating_load_hz: NonNegative,
 }
 
 fn default_rate() -> Spanned<Positive> {
@@ -186,6 +203,9 @@ pub struct RecordFile {
     /// Keep every M-th sample (no filtering: what is above the new Nyquist aliases).
     #[serde(default = "default_decimate")]
     pub decimate: Spanned<usize>,
+    /// Record from the start (false: only once a `record` command starts it).
+    #[serde(default = "default_true")]
+    pub from_start: bool,
     /// Full scale of a signal in its unit for int24 WAV (defaults by unit).
     #[serde(default)]
     pub full_scale: BTreeMap<String, Spanned<Positive>>,
@@ -193,4 +213,8 @@ pub struct RecordFile {
 
 fn default_decimate() -> Spanned<usize> {
     Spanned::new(0..0, 1)
+}
+
+fn default_true() -> bool {
+    true
 }

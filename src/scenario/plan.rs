@@ -43,6 +43,10 @@ pub struct Plan {
     pub analyser: Option<AnalyserPlan>,
     /// Recordings, if any.
     pub record: Option<RecordPlan>,
+    /// The ceiling of live set points the plant is built for (`None`: the schedule's).
+    pub live_ceiling: Option<rig::LiveCeiling>,
+    /// Commands at their virtual times.
+    pub commands: Vec<crate::live::TimedCommand>,
 }
 
 /// One reading of the rack.
@@ -117,6 +121,8 @@ pub struct RecordPlan {
     pub uff58: bool,
     /// Keep every M-th sample.
     pub decimate: usize,
+    /// Record from the start (false: only once a `record` command starts it).
+    pub from_start: bool,
 }
 
 impl Plan {

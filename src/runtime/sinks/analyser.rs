@@ -9,6 +9,7 @@ use instruments::{Adc, AliasTruth, Analyser, Spectrum};
 
 use super::measure_clock::MeasureClock;
 use super::{Sink, SinkReport};
+use crate::live::Command;
 use crate::plots::{SpectrumPlot, write_spectrum_plots};
 use crate::recording::{
     ALIAS_COLUMN, Metadata, PartialFile, Uff58Abscissa, Uff58Record, write_spectrum_csv,
@@ -20,24 +21,32 @@ use crate::scenario::{AnalyserPlan, Measure, Plan};
 
 /// The analyser with its ADC and the alias truth.
 pub struct AnalyserSink {
-    plan: AnalyserPlan,
+    pub(super) plan: AnalyserPlan,
     input: usize,
-    dir: PathBuf,
+    pub(super) dir: PathBuf,
     scenario: String,
     filter: String,
     uff: bool,
-    measures: Vec<Measure>,
+    pub(super) measures: Vec<Measure>,
     clock: MeasureClock,
-    adc: Adc,
-    analyser: Analyser,
-    truth: AliasTruth,
-    active: Option<usize>,
-    analogue: Vec<f64>,
+    pub(super) adc: Adc,
+    pub(super) analyser: Analyser,
+    pub(super) truth: AliasTruth,
+    pub(super) active: Option<usize>,
+    pub(super) analogue: Vec<f64>,
     adc_out: Vec<f64>,
-    overloads: u64,
+    pub(super) overloads: u64,
     files: Vec<PathBuf>,
     incomplete: Vec<String>,
-    status: SharedStatus,
+    pub(super) status: SharedStatus,
+    /// Live runs: the display is published after every block, with its alias truth.
+    pub(super) live: bool,
+    /// Displays saved on command so far.
+    pub(super) saved: usize,
+    /// The stream rate (Hz).
+    pub(super) rate_hz: f64,
+    /// Averages in the display last published.
+    pub(super) published: Option<usize>,
 }
 
 impl AnalyserSink {
@@ -77,14 +86,19 @@ impl AnalyserSink {
             files: Vec::new(),
             incomplete: Vec::new(),
             status,
+            live: false,
+            saved: 0,
+            rate_hz: plan.rate_hz,
+            published: None,
         })
     }
 
-    fn start(&mut self, index: usize) -> anyhow::Result<()> {
+    pub(super) fn start(&mut self, index: usize) -> anyhow::Result<()> {
         self.close_measurement()?;
         self.overloads += self.adc.overloads();
         self.adc.reset();
         self.analyser.restart();
+        self.truth.restart();
         self.analogue.clear();
         self.active = Some(index);
         Ok(())
@@ -104,6 +118,9 @@ impl AnalyserSink {
             s.averages = (n, of);
             s.adc_overloads = overloads;
         });
+        if self.live {
+            self.publish();
+        }
         if self.analyser.is_complete() {
             self.close_measurement()?;
         }
@@ -111,7 +128,7 @@ impl AnalyserSink {
     }
 
     /// Writes the measurement under way (if any spectrum was averaged) and ends it.
-    fn close_measurement(&mut self) -> anyhow::Result<()> {
+    pub(super) fn close_measurement(&mut self) -> anyhow::Result<()> {
         let Some(index) = self.active.take() else {
             return Ok(());
         };
@@ -127,20 +144,39 @@ impl AnalyserSink {
         if count == 0 {
             return Ok(());
         }
+        let base = self.dir.join(format!("spectrum-{:02}", index + 1));
+        self.write_spectrum(&base, index, count)?;
+        if self.live {
+            self.published = None;
+            self.publish();
+        }
+        Ok(())
+    }
+
+    /// The display's lines and, for each, the alias truth from the blocks averaged.
+    pub(super) fn lines_and_truth(&mut self) -> (Vec<instruments::Line>, Vec<Option<f64>>) {
+        let count = self.analyser.average_count();
         self.truth.restart();
         self.truth
             .add_blocks(&self.analogue, count, self.plan.settings.hop());
-        self.write_spectrum(index, count)
-    }
-
-    fn write_spectrum(&mut self, index: usize, count: usize) -> anyhow::Result<()> {
         let lines = self.analyser.display();
         let floor = self
             .adc
             .quantisation_line_power(self.analyser.enbw_hz(), self.plan.settings.sample_rate_hz());
         let alias_of = self.truth.flags(lines.len(), floor);
+        (lines, alias_of)
+    }
+
+    /// Writes the display as `base` (CSV, PNG, SVG, UFF58 when asked), of measurement
+    /// `index` after `count` averages.
+    pub(super) fn write_spectrum(
+        &mut self,
+        base: &Path,
+        index: usize,
+        count: usize,
+    ) -> anyhow::Result<()> {
+        let (lines, alias_of) = self.lines_and_truth();
         let measure = &self.measures[index];
-        let base = self.dir.join(format!("spectrum-{:02}", index + 1));
         let csv = base.with_extension("csv");
         write_spectrum_csv(&csv, &self.metadata(measure, count), &lines, &alias_of)?;
         self.files.push(csv);
@@ -159,9 +195,9 @@ impl AnalyserSink {
             alias_of: &alias_of,
             running_hz: Some(measure.speed_rpm / 60.0),
         };
-        self.files.extend(write_spectrum_plots(&base, &plot)?);
+        self.files.extend(write_spectrum_plots(base, &plot)?);
         if self.uff {
-            self.files.push(write_spectrum_uff(&base, &title, &lines)?);
+            self.files.push(write_spectrum_uff(base, &title, &lines)?);
         }
         Ok(())
     }
@@ -239,6 +275,10 @@ fn write_spectrum_uff(
 }
 
 impl Sink for AnalyserSink {
+    fn command(&mut self, command: &Command, frame: &Frame) -> Option<Result<(), String>> {
+        self.carry_out(command, frame)
+    }
+
     fn consume(&mut self, frame: &Frame) -> anyhow::Result<()> {
         let x = frame.channels[self.input].clone();
         let mut offset = 0;

@@ -1,14 +1,17 @@
 //! The ends of the chain: each consumes every frame in its own thread and writes files.
 
 pub mod analyser;
+pub mod analyser_live;
 pub mod measure_clock;
 pub mod monitor;
 pub mod recorder;
 pub mod scope;
+pub mod scope_live;
 
 use std::path::PathBuf;
 
 use super::frame::Frame;
+use crate::live::Command;
 
 /// A consumer of frames.
 pub trait Sink: Send {
@@ -16,6 +19,11 @@ pub trait Sink: Send {
     fn consume(&mut self, frame: &Frame) -> anyhow::Result<()>;
     /// Closes the sink's files (everything consumed is kept) and reports.
     fn finish(self: Box<Self>) -> anyhow::Result<SinkReport>;
+    /// Carries out `command` (taking effect at `frame`'s start, before its samples) if it
+    /// is this sink's: `Some(outcome)`, else `None`.
+    fn command(&mut self, _command: &Command, _frame: &Frame) -> Option<Result<(), String>> {
+        None
+    }
 }
 
 /// What a sink leaves behind.

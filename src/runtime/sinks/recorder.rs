@@ -1,17 +1,19 @@
 //! The recorder: chosen signals to WAV (with sidecar), CSV and UFF58 as they come, and
 //! the impact log to `impacts.csv`.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use rig::Impact;
 
 use super::{Sink, SinkReport};
 use crate::chain::signal_names::STRAIN;
+use crate::live::Command;
 use crate::recording::{
     ChannelInfo, CsvFrames, CsvRecorder, FrameWriter, Uff58Channel, Uff58Recorder, WavRecorder,
-    WavSamples,
+    WavSamples, Written,
 };
 use crate::runtime::frame::{Frame, SignalNames};
+use crate::runtime::status::SharedStatus;
 use crate::scenario::{Plan, RecordPlan, WavFormat};
 
 /// Writes every recorded frame.
@@ -24,6 +26,13 @@ pub struct RecorderSink {
     rate_hz: f64,
     expected_seq: u64,
     gaps: u64,
+    /// For recordings started by command: the plan, and how many were started.
+    plan: Option<Box<Plan>>,
+    recordings: usize,
+    /// Recordings stopped by command, complete.
+    finished: Vec<Written>,
+    status: Option<SharedStatus>,
+    dir: PathBuf,
 }
 
 impl RecorderSink {
@@ -42,6 +51,11 @@ impl RecorderSink {
             rate_hz: plan.rate_hz,
             expected_seq: 0,
             gaps: 0,
+            plan: None,
+            recordings: 0,
+            finished: Vec::new(),
+            status: None,
+            dir: dir.to_path_buf(),
         };
         let Some(record) = &plan.record else {
             return Ok(sink);
@@ -56,8 +70,50 @@ impl RecorderSink {
             })
             .collect::<anyhow::Result<_>>()?;
         sink.decimate = record.decimate as u64;
-        sink.writers = writers(dir, plan, record)?;
+        sink.plan = Some(Box::new(plan.clone()));
+        if record.from_start {
+            sink.start_recording(dir)?;
+        }
         Ok(sink)
+    }
+
+    /// Reports whether it records on the live panel's status.
+    pub fn go_live(&mut self, status: SharedStatus) {
+        let recording = !self.writers.is_empty();
+        status.update(|s| s.recording = recording);
+        self.status = Some(status);
+    }
+
+    /// Opens the files of a new recording in `dir`: `recording.*`, then `recording-02.*` …
+    fn start_recording(&mut self, dir: &Path) -> anyhow::Result<()> {
+        let Some(plan) = &self.plan else {
+            anyhow::bail!("this run records nothing ([record] is left out)");
+        };
+        let Some(record) = &plan.record else {
+            anyhow::bail!("this run records nothing ([record] is left out)");
+        };
+        self.recordings += 1;
+        let stem = match self.recordings {
+            1 => "recording".to_string(),
+            n => format!("recording-{n:02}"),
+        };
+        self.writers = writers(dir, &stem, plan, record)?;
+        self.set_recording(true);
+        Ok(())
+    }
+
+    fn stop_recording(&mut self) -> anyhow::Result<()> {
+        for writer in std::mem::take(&mut self.writers) {
+            self.finished.push(writer.finish()?);
+        }
+        self.set_recording(false);
+        Ok(())
+    }
+
+    fn set_recording(&self, on: bool) {
+        if let Some(status) = &self.status {
+            status.update(|s| s.recording = on);
+        }
     }
 
     fn write_impacts(&mut self, impacts: &[Impact]) -> anyhow::Result<()> {
@@ -71,9 +127,11 @@ impl RecorderSink {
 /// The recording's writers, one per format asked for.
 fn writers(
     dir: &Path,
+    stem: &str,
     plan: &Plan,
     record: &RecordPlan,
 ) -> anyhow::Result<Vec<Box<dyn FrameWriter>>> {
+    let file = |extension: &str| dir.join(format!("{stem}.{extension}"));
     let rate = plan.rate_hz / record.decimate as f64;
     let mut writers: Vec<Box<dyn FrameWriter>> = Vec::new();
     if let Some(format) = record.wav {
@@ -97,7 +155,7 @@ fn writers(
             WavFormat::Int24 => WavSamples::Int24,
         };
         writers.push(Box::new(WavRecorder::create_as(
-            &dir.join("recording.wav"),
+            &file("wav"),
             rate.round() as u32,
             channels,
             &plan.text,
@@ -105,7 +163,7 @@ fn writers(
         )?));
     }
     if record.csv {
-        let path = dir.join("recording.csv");
+        let path = file("csv");
         writers.push(Box::new(CsvFrames::create(&path, &record.signals)?));
     }
     if record.uff58 {
@@ -117,7 +175,7 @@ fn writers(
             .collect();
         let source = format!("testrig scenario {}", plan.name);
         writers.push(Box::new(Uff58Recorder::create(
-            &dir.join("recording.uff"),
+            &file("uff"),
             channels,
             &source,
             0.0,
@@ -143,13 +201,27 @@ fn uff_channel(plan: &Plan, name: &str, index: usize) -> Uff58Channel {
 }
 
 impl Sink for RecorderSink {
+    fn command(&mut self, command: &Command, _frame: &Frame) -> Option<Result<(), String>> {
+        let Command::Record { on } = command else {
+            return None;
+        };
+        let dir = self.dir.clone();
+        let outcome = match (on, self.writers.is_empty()) {
+            (true, true) => self.start_recording(&dir),
+            (false, false) => self.stop_recording(),
+            (true, false) => Err(anyhow::anyhow!("already recording")),
+            (false, true) => Err(anyhow::anyhow!("not recording")),
+        };
+        Some(outcome.map_err(|e| format!("{e:#}")))
+    }
+
     fn consume(&mut self, frame: &Frame) -> anyhow::Result<()> {
         if frame.seq != self.expected_seq {
             self.gaps += frame.seq - self.expected_seq;
         }
         self.expected_seq = frame.seq + 1;
         self.write_impacts(&frame.impacts)?;
-        if self.indices.is_empty() {
+        if self.writers.is_empty() {
             return Ok(());
         }
         for i in 0..frame.len() {
@@ -171,8 +243,11 @@ impl Sink for RecorderSink {
     fn finish(self: Box<Self>) -> anyhow::Result<SinkReport> {
         let mut report = SinkReport::default();
         report.files.push(self.impacts.finish()?);
+        let mut finished = self.finished;
         for writer in self.writers {
-            let written = writer.finish()?;
+            finished.push(writer.finish()?);
+        }
+        for written in finished {
             report.files.extend(written.files);
             report.facts.extend(written.facts);
         }

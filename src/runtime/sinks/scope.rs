@@ -7,7 +7,9 @@ use std::sync::Arc;
 use instruments::{AcCoupling, Block, Scope, ScopeSettings};
 
 use super::measure_clock::MeasureClock;
+use super::scope_live::LiveScope;
 use super::{Sink, SinkReport};
+use crate::live::Command;
 use crate::plots::write_scope_plots;
 use crate::recording::CsvRecorder;
 use crate::runtime::frame::Frame;
@@ -15,19 +17,21 @@ use crate::scenario::{Measure, Plan, ScopePlan};
 
 /// The scope.
 pub struct ScopeSink {
-    settings: ScopeSettings,
-    rate_hz: f64,
+    pub(super) settings: ScopeSettings,
+    pub(super) rate_hz: f64,
     input: usize,
-    signal: String,
-    dir: PathBuf,
+    pub(super) signal: String,
+    pub(super) dir: PathBuf,
     scenario: String,
-    measures: Vec<Measure>,
+    pub(super) measures: Vec<Measure>,
     clock: MeasureClock,
     armed: Option<(usize, Scope)>,
     coupling: Option<AcCoupling>,
     scratch: Vec<f64>,
     files: Vec<PathBuf>,
     untriggered: Vec<usize>,
+    /// Live runs: the panel's scope, sweeping as set, and its latest trace published.
+    pub(super) live: Option<LiveScope>,
 }
 
 impl ScopeSink {
@@ -59,6 +63,7 @@ impl ScopeSink {
             scratch: Vec::new(),
             files: Vec::new(),
             untriggered: Vec::new(),
+            live: None,
         })
     }
 
@@ -76,7 +81,7 @@ impl ScopeSink {
         Ok(())
     }
 
-    fn arm(&mut self, index: usize) -> anyhow::Result<()> {
+    pub(super) fn arm(&mut self, index: usize) -> anyhow::Result<()> {
         if let Some((previous, _)) = self.armed.take() {
             self.untriggered.push(previous + 1);
         }
@@ -86,7 +91,19 @@ impl ScopeSink {
 
     fn write(&mut self, index: usize, trace: &[(f64, f64)]) -> anyhow::Result<()> {
         let base = self.dir.join(format!("scope-{:02}", index + 1));
-        let v = self.settings.volts_per_div;
+        let label = self.measures[index].label.clone();
+        self.write_trace(&base, &label, trace, self.settings)
+    }
+
+    /// Writes `trace` (at `settings`) as `base` CSV, PNG and SVG, titled with `label`.
+    pub(super) fn write_trace(
+        &mut self,
+        base: &std::path::Path,
+        label: &str,
+        trace: &[(f64, f64)],
+        settings: ScopeSettings,
+    ) -> anyhow::Result<()> {
+        let v = settings.volts_per_div;
         let mut csv = CsvRecorder::create(
             &base.with_extension("csv"),
             &["time_from_trigger_s".to_string(), self.signal.clone()],
@@ -96,23 +113,25 @@ impl ScopeSink {
         }
         self.files.push(csv.finish()?);
         let title = format!(
-            "{}: {} ({} V/div, {} ms/div)",
+            "{}: {label} ({v} V/div, {} ms/div)",
             self.scenario,
-            self.measures[index].label,
-            v,
-            self.settings.seconds_per_div * 1e3
+            settings.seconds_per_div * 1e3
         );
         self.files.extend(write_scope_plots(
-            &base,
+            base,
             &title,
             trace,
-            self.settings.seconds_per_div,
+            settings.seconds_per_div,
         )?);
         Ok(())
     }
 }
 
 impl Sink for ScopeSink {
+    fn command(&mut self, command: &Command, frame: &Frame) -> Option<Result<(), String>> {
+        self.carry_out(command, frame)
+    }
+
     fn consume(&mut self, frame: &Frame) -> anyhow::Result<()> {
         let raw = &frame.channels[self.input];
         let x: Arc<[f64]> = match &mut self.coupling {
@@ -123,6 +142,9 @@ impl Sink for ScopeSink {
             }
             None => Arc::clone(raw),
         };
+        if self.live.is_some() {
+            self.watch_live(&x);
+        }
         let mut offset = 0;
         while let Some((at, index)) = self.clock.next_within(frame.start_sample, x.len()) {
             self.watch(&x[offset..at])?;

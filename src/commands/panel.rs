@@ -1,0 +1,142 @@
+//! `testrig panel`: the rig run live, paced, with a front panel in the browser and the
+//! JSON API for scripts; on Quit or a stop signal every file is closed and the manifest
+//! and the session (a scenario that replays it) are written.
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use anyhow::{Context, bail};
+use rig::LiveCeiling;
+use testrig::live::ControlHandle;
+use testrig::live::server::{PanelInfo, PanelServer};
+use testrig::live::session::Session;
+use testrig::runtime::manifest::Ending;
+use testrig::runtime::previous_run::clear_previous_run;
+use testrig::runtime::run::run_with_status;
+use testrig::runtime::status::SharedStatus;
+use testrig::runtime::{Pace, RunOptions, StopSignals, write_manifest};
+use testrig::scenario::values::MAX_SIMULATED_S;
+use testrig::scenario::{CommandLine, Plan, ScenarioSource, apply_override, build};
+
+use crate::cli::PanelArgs;
+
+/// The bundled scenario, used when none is given.
+const BUNDLED: &str = include_str!("../../scenarios/panel.toml");
+/// Where the bundled scenario lives in the source tree (named in messages and the manifest).
+const BUNDLED_PATH: &str = "scenarios/panel.toml";
+/// The live ceiling when the scenario has no `[live]`.
+const DEFAULT_CEILING: LiveCeiling = LiveCeiling {
+    speed_rpm: 3000.0,
+    oscillating_load_hz: 200.0,
+};
+
+pub fn run(args: &PanelArgs) -> anyhow::Result<ExitCode> {
+    let pace = match Pace::parse(&args.pace) {
+        Some(Pace::Factor(f)) => Pace::Factor(f),
+        _ => bail!(
+            "--pace {}: 1 (real time) or a factor from 0.001 to 1e6; a panel is paced",
+            args.pace
+        ),
+    };
+    let (path, mut source) = scenario_source(args)?;
+    let mut plan = build(&source, CommandLine::default())?;
+    let ceiling = *plan.live_ceiling.get_or_insert(DEFAULT_CEILING);
+    // Runs until Quit or a signal: as long as any run may be.
+    plan.duration_s = MAX_SIMULATED_S;
+    source.text = plan.text.clone();
+    if !args.listen.ip().is_loopback() {
+        eprintln!(
+            "warning: --listen {}: the panel and its API are open to every machine that can reach this address; anyone there can operate the rig",
+            args.listen
+        );
+    }
+    clear_previous_run(&args.out)?;
+    let (control, requests) = ControlHandle::new();
+    let status = SharedStatus::default();
+    let server = PanelServer::start(
+        args.listen,
+        control.clone(),
+        status.clone(),
+        info(&plan, ceiling),
+    )?;
+    println!(
+        "testrig panel: http://{}/ (Quit on the page, or Ctrl-C, ends the session)",
+        server.address
+    );
+    let signals = StopSignals::install().context("cannot install the signal handlers")?;
+    let options = RunOptions {
+        pace,
+        out: args.out.clone(),
+        stop: signals.flag(),
+        console: false,
+        control: Some(requests),
+    };
+    let result = run_with_status(&plan, &options, status);
+    server.shut_down();
+    let result = result?;
+    let session = Session {
+        scenario_text: &plan.text,
+        duration_s: result.simulated_s(),
+        seed: plan.seed,
+        ceiling,
+        commands: &control.session(),
+    };
+    let session_path = args.out.join("session.toml");
+    std::fs::write(&session_path, session.to_toml()?)
+        .with_context(|| format!("cannot write {}", session_path.display()))?;
+    let failed = !result.errors.is_empty() || result.plant.error.is_some();
+    let ending = if failed {
+        Ending::Failed
+    } else {
+        Ending::Interrupted
+    };
+    write_manifest(&args.out, &path, &plan, pace, &result, ending)?;
+    println!(
+        "testrig panel: {:.1} s simulated; files, manifest.json and session.toml (replay: testrig run {} --pace max --out DIR) in {}",
+        result.simulated_s(),
+        session_path.display(),
+        args.out.display()
+    );
+    if failed {
+        let all: Vec<String> = result
+            .errors
+            .iter()
+            .cloned()
+            .chain(result.plant.error.clone())
+            .collect();
+        bail!("{}", all.join("; "));
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// The scenario given, or the bundled one; `--set` items applied.
+fn scenario_source(args: &PanelArgs) -> anyhow::Result<(PathBuf, ScenarioSource)> {
+    let (path, mut source) = match &args.scenario {
+        Some(path) => (path.clone(), ScenarioSource::read(path)?),
+        None => {
+            let path = PathBuf::from(BUNDLED_PATH);
+            let source = ScenarioSource {
+                path: path.clone(),
+                text: BUNDLED.to_string(),
+            };
+            (path, source)
+        }
+    };
+    for item in &args.overrides {
+        source.text = apply_override(&source.text, item)?;
+    }
+    Ok((path, source))
+}
+
+fn info(plan: &Plan, ceiling: LiveCeiling) -> PanelInfo {
+    PanelInfo {
+        scenario: plan.name.clone(),
+        rate_hz: plan.rate_hz,
+        max_speed_rpm: ceiling.speed_rpm,
+        max_load_nm: plan.params.motor_torque_limit_nm,
+        max_oscillating_load_hz: ceiling.oscillating_load_hz,
+        analyser: plan.analyser.is_some(),
+        scope: plan.chain.scope.is_some(),
+        record: plan.record.is_some(),
+    }
+}

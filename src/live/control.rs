@@ -1,0 +1,197 @@
+//! How commands travel: a script or the page sends one through a [`ControlHandle`]; the
+//! plant's thread takes it at the start of its next block ([`CommandInbox`]), stamps it
+//! with that block's virtual time and carries it on the frame to its target, which
+//! carries it out before that frame's samples and answers. Accepted commands make the
+//! session's log.
+
+use std::collections::VecDeque;
+use std::sync::{Arc, Mutex, PoisonError};
+use std::time::Duration;
+
+use crossbeam_channel::{Receiver, Sender, bounded, unbounded};
+
+use super::command::{Command, Reply, Target, TimedCommand};
+
+/// How long a sender waits for the answer (s of wall time).
+const ANSWER_WAIT_S: f64 = 10.0;
+
+/// A command on its way to its target.
+#[derive(Clone, Debug)]
+pub struct Pending {
+    /// The command.
+    pub command: Command,
+    /// Virtual time it takes effect at (s).
+    pub at_s: f64,
+    /// The order the plant's thread took it in.
+    pub order: u64,
+    answer: Option<Sender<(u64, Reply)>>,
+}
+
+impl Pending {
+    /// Answers the sender (if one waits): carried out, or refused with why.
+    pub fn answer(&self, outcome: Result<(), String>) {
+        if let Some(tx) = &self.answer {
+            let reply = Reply {
+                ok: outcome.is_ok(),
+                at_s: self.at_s,
+                error: outcome.err(),
+            };
+            // The sender may have given up waiting; nothing else to do then.
+            let _ = tx.send((self.order, reply));
+        }
+    }
+}
+
+/// A command as sent, before the plant's thread takes it.
+#[derive(Debug)]
+pub struct Request {
+    command: Command,
+    answer: Sender<(u64, Reply)>,
+}
+
+/// Where scripts and pages send commands; clones share the session's log.
+#[derive(Clone, Debug)]
+pub struct ControlHandle {
+    requests: Sender<Request>,
+    log: Arc<Mutex<Vec<(u64, TimedCommand)>>>,
+}
+
+impl ControlHandle {
+    /// A handle and the receiving end the run's plant thread reads.
+    pub fn new() -> (Self, Receiver<Request>) {
+        let (requests, inbox) = unbounded();
+        let handle = Self {
+            requests,
+            log: Arc::default(),
+        };
+        (handle, inbox)
+    }
+
+    /// Sends `command` and waits for its answer; an accepted command joins the log.
+    pub fn send(&self, command: Command) -> Reply {
+        let (answer, answers) = bounded(1);
+        let request = Request {
+            command: command.clone(),
+            answer,
+        };
+        if self.requests.send(request).is_err() {
+            return refused("the run has ended");
+        }
+        match answers.recv_timeout(Duration::from_secs_f64(ANSWER_WAIT_S)) {
+            Ok((order, reply)) => {
+                if reply.ok {
+                    let timed = TimedCommand {
+                        at_s: reply.at_s,
+                        command,
+                    };
+                    self.log
+                        .lock()
+                        .unwrap_or_else(PoisonError::into_inner)
+                        .push((order, timed));
+                }
+                reply
+            }
+            Err(_) => refused("no answer from the rig (it has ended, or its queues are full)"),
+        }
+    }
+
+    /// The accepted commands in the order they took effect.
+    pub fn session(&self) -> Vec<TimedCommand> {
+        let mut log = self
+            .log
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner)
+            .clone();
+        log.sort_by_key(|(order, _)| *order);
+        log.into_iter().map(|(_, c)| c).collect()
+    }
+}
+
+fn refused(why: &str) -> Reply {
+    Reply {
+        ok: false,
+        at_s: f64::NAN,
+        error: Some(why.to_string()),
+    }
+}
+
+/// What the plant's thread takes commands from: a scenario's timed commands and, live,
+/// the requests of scripts and pages.
+#[derive(Debug, Default)]
+pub struct CommandInbox {
+    scheduled: VecDeque<(u64, Command)>,
+    live: Option<Receiver<Request>>,
+    targets: Vec<Target>,
+    next_order: u64,
+}
+
+impl CommandInbox {
+    /// An inbox for a run at `rate_hz` whose parts are `targets`: the scenario's
+    /// `scheduled` commands (each at the first block starting at or after its time) and
+    /// the `live` requests.
+    pub fn new(
+        scheduled: &[TimedCommand],
+        live: Option<Receiver<Request>>,
+        targets: Vec<Target>,
+        rate_hz: f64,
+    ) -> Self {
+        let mut scheduled: Vec<(u64, Command)> = scheduled
+            .iter()
+            .map(|c| ((c.at_s * rate_hz).round() as u64, c.command.clone()))
+            .collect();
+        scheduled.sort_by_key(|(at, _)| *at);
+        Self {
+            scheduled: scheduled.into(),
+            live,
+            targets,
+            next_order: 0,
+        }
+    }
+
+    /// The commands that take effect at the block starting at sample `start_sample`
+    /// (virtual time `at_s`): the scheduled ones due, then the live ones waiting. One
+    /// whose target this run lacks is refused at once.
+    pub fn due(&mut self, start_sample: u64, at_s: f64) -> Vec<Pending> {
+        let mut due = Vec::new();
+        while self
+            .scheduled
+            .front()
+            .is_some_and(|(at, _)| *at <= start_sample)
+        {
+            if let Some((_, command)) = self.scheduled.pop_front() {
+                due.push((command, None));
+            }
+        }
+        if let Some(live) = &self.live {
+            due.extend(live.try_iter().map(|r| (r.command, Some(r.answer))));
+        }
+        let mut pending = Vec::with_capacity(due.len());
+        for (command, answer) in due {
+            let p = Pending {
+                command,
+                at_s,
+                order: self.next_order,
+                answer,
+            };
+            self.next_order += 1;
+            if self.targets.contains(&p.command.target()) {
+                pending.push(p);
+            } else {
+                p.answer(Err(format!(
+                    "this run has no {:?} to carry out `{}`",
+                    p.command.target(),
+                    command_name(&p.command)
+                )));
+            }
+        }
+        pending
+    }
+}
+
+/// The command's `cmd` name.
+pub fn command_name(command: &Command) -> String {
+    serde_json::to_value(command)
+        .ok()
+        .and_then(|v| v.get("cmd").and_then(|c| c.as_str()).map(str::to_string))
+        .unwrap_or_default()
+}

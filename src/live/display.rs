@@ -1,0 +1,48 @@
+//! What the front panel shows, as the sinks last left it: the analyser's display with
+//! its alias truth, and the scope's latest trace. Serialised into the API's `state`.
+
+use serde::Serialize;
+
+/// The analyser's display now.
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+pub struct LiveSpectrum {
+    /// Frequency of each line (Hz).
+    pub frequency_hz: Vec<f64>,
+    /// Power of each line (V² rms).
+    pub power_v2: Vec<f64>,
+    /// For each line, the true frequency (Hz) of the component aliased onto it, if any.
+    pub alias_of_hz: Vec<Option<f64>>,
+    /// Averages taken.
+    pub averages: usize,
+    /// Averages asked for.
+    pub averages_set: usize,
+    /// Whether the average is complete (or held).
+    pub complete: bool,
+    /// Running speed of the motor shaft when the average started (Hz), for order marks.
+    pub running_hz: f64,
+    /// The analysed signal.
+    pub signal: String,
+    /// Window name.
+    pub window: String,
+    /// Top of the band (Hz).
+    pub fmax_hz: f64,
+}
+
+/// The scope's latest trace.
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+pub struct LiveTrace {
+    /// Time from the trigger of each point (s).
+    pub time_s: Vec<f64>,
+    /// Vertical position of each point (divisions, ±4 on screen).
+    pub divisions: Vec<f64>,
+    /// V per division.
+    pub volts_per_div: f64,
+    /// s per division.
+    pub seconds_per_div: f64,
+    /// Trigger level (V).
+    pub trigger_v: f64,
+    /// `auto` or `single`.
+    pub mode: String,
+    /// The signal shown.
+    pub signal: String,
+}

@@ -1,0 +1,50 @@
+//! Commands a chain stage carries out: the anti-alias filter's type and cut-off, the
+//! carrier amplifier's gain. The stage is rebuilt with the new settings (its state starts
+//! afresh, as when a real filter card is switched); refused, it stays as it was.
+
+use instruments::LowPassSpec;
+
+use super::command::{Command, Target};
+use crate::chain::{Instrument, NamedStage};
+
+/// Carries out `command` if it is for `stage`: `Some(outcome)`, else `None`.
+pub fn apply_to_stage(stage: &mut NamedStage, command: &Command) -> Option<Result<(), String>> {
+    match command.target() {
+        Target::Stage(output) if output == stage.output => {}
+        _ => return None,
+    }
+    let instrument = match command {
+        Command::SetFilter {
+            kind,
+            order,
+            cutoff_hz,
+        } => {
+            let nyquist_hz = stage.rate_hz / 2.0;
+            if !(cutoff_hz.is_finite() && *cutoff_hz > 0.0 && *cutoff_hz < nyquist_hz) {
+                return Some(Err(format!(
+                    "cutoff_hz {cutoff_hz}: a cut-off lies in (0, {nyquist_hz}) Hz"
+                )));
+            }
+            Instrument::LowPass(kind.kind().map(|kind| LowPassSpec {
+                kind,
+                order: *order,
+                cutoff_hz: *cutoff_hz,
+            }))
+        }
+        Command::SetAmplifierGain { gain } => {
+            let Instrument::CarrierDemodulator(mut settings) = stage.plan.instrument.clone() else {
+                return Some(Err(format!(
+                    "`{}` is not the carrier amplifier",
+                    stage.output
+                )));
+            };
+            if !(gain.is_finite() && *gain > 0.0) {
+                return Some(Err(format!("gain {gain}: a gain is finite and > 0")));
+            }
+            settings.gain = *gain;
+            Instrument::CarrierDemodulator(settings)
+        }
+        _ => return None,
+    };
+    Some(stage.rebuild(instrument).map_err(|e| e.to_string()))
+}

@@ -1,0 +1,171 @@
+//! The analyser operated live: commands (start, hold, settings, ADC range, save) and the
+//! display published for the front panel after every block averaged.
+
+use std::sync::Arc;
+
+use instruments::{Adc, AdcSettings, AliasTruth, Analyser};
+
+use super::analyser::AnalyserSink;
+use crate::live::{Command, LiveSpectrum};
+use crate::runtime::frame::Frame;
+use crate::scenario::Measure;
+
+impl AnalyserSink {
+    /// Publishes the display on the panel after every block averaged.
+    pub fn go_live(&mut self) {
+        self.live = true;
+    }
+
+    /// Carries out `command` (at `frame`'s start) if it is the analyser's.
+    pub(super) fn carry_out(
+        &mut self,
+        command: &Command,
+        frame: &Frame,
+    ) -> Option<Result<(), String>> {
+        let outcome = match command {
+            Command::StartAverage => self.start_now(frame),
+            Command::HoldAverage => self.close_measurement().map_err(|e| format!("{e:#}")),
+            Command::SetAdcRange { range_v } => self.set_adc(AdcSettings {
+                range_v: *range_v,
+                ..self.plan.adc
+            }),
+            Command::SetAnalyser { .. } => self.set_analyser(command),
+            Command::SaveDisplays => self.save().map_err(|e| format!("{e:#}")),
+            _ => return None,
+        };
+        if outcome.is_ok() && self.live {
+            self.published = None;
+            self.publish();
+        }
+        Some(outcome)
+    }
+
+    /// A fresh average from `frame`'s start, as a measurement of the session.
+    fn start_now(&mut self, frame: &Frame) -> Result<(), String> {
+        let set = frame.set_points.unwrap_or(rig::SetPoints {
+            speed_rpm: 0.0,
+            load_nm: 0.0,
+            oscillating_load_nm: 0.0,
+            oscillating_load_hz: 0.0,
+        });
+        let index = self.measures.len();
+        self.measures.push(Measure {
+            at_s: frame.start_sample as f64 / self.rate_hz,
+            label: format!("average {}", index + 1),
+            speed_rpm: set.speed_rpm,
+            load_nm: set.load_nm,
+        });
+        self.start(index).map_err(|e| format!("{e:#}"))
+    }
+
+    fn set_adc(&mut self, settings: AdcSettings) -> Result<(), String> {
+        let adc = Adc::new(settings).map_err(|e| e.to_string())?;
+        self.overloads += self.adc.overloads();
+        self.adc = adc;
+        self.plan.adc = settings;
+        Ok(())
+    }
+
+    /// New analyser settings; the average under way is written and a fresh one started.
+    fn set_analyser(&mut self, command: &Command) -> Result<(), String> {
+        let Command::SetAnalyser {
+            fmax_hz,
+            block,
+            window,
+            averages,
+            overlap_pct,
+        } = command
+        else {
+            return Err("not an analyser setting".into());
+        };
+        let mut s = self.plan.settings;
+        s.fmax_hz = fmax_hz.unwrap_or(s.fmax_hz);
+        s.block = block.unwrap_or(s.block);
+        s.window = window.map_or(s.window, |w| w.0);
+        s.averages = averages.unwrap_or(s.averages);
+        if let Some(pct) = overlap_pct {
+            if !(0.0..100.0).contains(pct) {
+                return Err(format!("overlap_pct {pct}: must lie in [0, 100)"));
+            }
+            s.overlap = pct / 100.0;
+        }
+        let analyser = Analyser::new(s).map_err(|e| e.to_string())?;
+        let ratio = self.rate_hz / s.sample_rate_hz();
+        if ratio < 1.0 {
+            return Err(format!(
+                "fmax_hz {}: needs an ADC rate of {} Hz, above the stream rate {} Hz",
+                s.fmax_hz,
+                s.sample_rate_hz(),
+                self.rate_hz
+            ));
+        }
+        let adc = AdcSettings {
+            ratio,
+            ..self.plan.adc
+        };
+        let truth =
+            AliasTruth::new(s.block, ratio, self.rate_hz, s.window).map_err(|e| e.to_string())?;
+        let restart = self.active;
+        self.close_measurement().map_err(|e| format!("{e:#}"))?;
+        self.set_adc(adc)?;
+        self.analyser = analyser;
+        self.truth = truth;
+        self.plan.settings = s;
+        if let Some(index) = restart {
+            let measure = self.measures[index].clone();
+            self.measures.push(measure);
+            self.start(self.measures.len() - 1)
+                .map_err(|e| format!("{e:#}"))?;
+        }
+        Ok(())
+    }
+
+    /// Writes the display as it stands as `saved-NN-spectrum`.
+    fn save(&mut self) -> anyhow::Result<()> {
+        self.saved += 1;
+        let count = self.analyser.average_count();
+        let Some(index) = self.active.or(self.measures.len().checked_sub(1)) else {
+            anyhow::bail!("no average has been started");
+        };
+        let base = self.dir.join(format!("saved-{:02}-spectrum", self.saved));
+        self.write_spectrum(&base, index, count)
+    }
+
+    /// Puts the display (and the truth of the blocks averaged so far) on the panel.
+    pub(super) fn publish(&mut self) {
+        let count = self.analyser.average_count();
+        if self.published == Some(count) {
+            return;
+        }
+        self.published = Some(count);
+        let s = self.plan.settings;
+        self.truth.add_blocks(&self.analogue, count, s.hop());
+        let lines = self.analyser.display();
+        let floor = self
+            .adc
+            .quantisation_line_power(self.analyser.enbw_hz(), s.sample_rate_hz());
+        let alias_of_hz = if count > 0 {
+            self.truth.flags(lines.len(), floor)
+        } else {
+            vec![None; lines.len()]
+        };
+        let running_hz = self
+            .active
+            .or(self.measures.len().checked_sub(1))
+            .map_or(0.0, |i| self.measures[i].speed_rpm / 60.0);
+        let spectrum = LiveSpectrum {
+            frequency_hz: lines.iter().map(|l| l.frequency_hz).collect(),
+            power_v2: lines.iter().map(|l| l.value).collect(),
+            alias_of_hz,
+            averages: count,
+            averages_set: s.averages,
+            complete: self.active.is_none(),
+            running_hz,
+            signal: self.plan.input.clone(),
+            window: s.window.name().to_string(),
+            fmax_hz: s.fmax_hz,
+        };
+        self.status
+            .update(|st| st.spectrum = Some(Arc::new(spectrum)));
+    }
+}

@@ -1,0 +1,173 @@
+//! `testrig panel`: commands over the API take effect at a frame boundary and are
+//! answered; bad ones change nothing; the session replays byte for byte; a stop signal
+//! closes every file.
+
+mod common;
+mod panel_support;
+
+use std::time::Duration;
+
+use common::{folder, testrig};
+use panel_support::Panel;
+
+const WAIT: Duration = Duration::from_secs(60);
+
+#[test]
+fn a_session_of_commands_replays_byte_for_byte() {
+    let out = folder("panel-session");
+    let panel = Panel::start(&out, &["--pace", "20", "--set", "analyser.averages=2"]);
+    let (_, info) = panel.get("/api/info");
+    assert!(info.contains("\"scenario\":\"panel\""), "{info}");
+    for command in [
+        r#"{"cmd": "set_speed", "rpm": 1300}"#,
+        r#"{"cmd": "set_load", "nm": 2.712}"#,
+        r#"{"cmd": "record", "on": true}"#,
+    ] {
+        let (status, reply) = panel.command(command);
+        assert_eq!(status, 200, "{command}: {reply}");
+        assert_eq!(reply["ok"], true);
+    }
+    // The tacho DVM follows the motor to 1300 rev/min (0.04 V per rev/min, 1 s gate).
+    panel.wait_for(WAIT, |s| {
+        (s["dvm_rpm"].as_f64().unwrap_or(0.0) - 1300.0).abs() < 15.0
+    });
+    let (_, started) = panel.command(r#"{"cmd": "start_average"}"#);
+    let at_s = started["at_s"].as_f64().expect("a time");
+    // Virtual times are block boundaries: 1024 samples at 51.2 kHz.
+    assert!(
+        ((at_s / 0.02).round() - at_s / 0.02).abs() < 1e-9,
+        "at {at_s}"
+    );
+    let state = panel.wait_for(WAIT, |s| s["spectrum"]["complete"] == true);
+    assert_eq!(state["spectrum"]["averages"], 2);
+    for command in [
+        r#"{"cmd": "set_filter", "kind": "bessel", "cutoff_hz": 150}"#,
+        r#"{"cmd": "set_scope", "volts_per_div": 0.5, "mode": "single"}"#,
+        r#"{"cmd": "arm_scope"}"#,
+        r#"{"cmd": "save_displays"}"#,
+        r#"{"cmd": "record", "on": false}"#,
+        r#"{"cmd": "record", "on": true}"#,
+        r#"{"cmd": "quit"}"#,
+    ] {
+        let (status, reply) = panel.command(command);
+        assert_eq!(status, 200, "{command}: {reply}");
+    }
+    let (status, stderr) = panel.wait();
+    assert!(status.success(), "{stderr}");
+    let replay = folder("panel-replay");
+    let session = out.join("session.toml");
+    let output = testrig(&[
+        "run",
+        session.to_str().expect("utf-8"),
+        "--pace",
+        "max",
+        "--out",
+        replay.to_str().expect("utf-8"),
+    ]);
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let mut compared = 0;
+    for entry in std::fs::read_dir(&out).expect("folder") {
+        let name = entry
+            .expect("entry")
+            .file_name()
+            .to_string_lossy()
+            .to_string();
+        if ["manifest.json", "session.toml"].contains(&name.as_str()) || name.ends_with(".wav.json")
+        {
+            continue;
+        }
+        let a = std::fs::read(out.join(&name)).expect("session file");
+        let b = std::fs::read(replay.join(&name)).unwrap_or_default();
+        assert!(a == b, "{name} differs in the replay");
+        compared += 1;
+    }
+    for expected in [
+        "recording.wav",
+        "recording-02.wav",
+        "spectrum-02.csv",
+        "saved-01-spectrum.csv",
+        "saved-01-scope.csv",
+        "scope-02.csv",
+    ] {
+        assert!(out.join(expected).exists(), "{expected} missing");
+    }
+    assert!(compared >= 20, "only {compared} files compared");
+}
+
+#[test]
+fn bad_commands_are_refused_and_change_nothing() {
+    let out = folder("panel-bad");
+    let panel = Panel::start(&out, &["--pace", "5"]);
+    let before = panel.wait_for(WAIT, |s| s["simulated_s"].as_f64() > Some(0.0));
+    let cases = [
+        ("not json", "not a command"),
+        (r#"{"cmd": "fly"}"#, "unknown variant `fly`"),
+        (r#"{"cmd": "set_speed"}"#, "missing field `rpm`"),
+        (
+            r#"{"cmd": "set_speed", "rpm": 1300, "extra": 1}"#,
+            "unknown field `extra`",
+        ),
+        (
+            r#"{"cmd": "set_speed", "rpm": 5000}"#,
+            "at most 3000 rev/min",
+        ),
+        (r#"{"cmd": "set_load", "nm": -1}"#, "load"),
+        (
+            r#"{"cmd": "set_load", "nm": 9}"#,
+            "more than the motor can hold",
+        ),
+        (
+            r#"{"cmd": "set_filter", "kind": "bessel", "cutoff_hz": 30000}"#,
+            "(0, 25600) Hz",
+        ),
+        (
+            r#"{"cmd": "set_filter", "kind": "chebyshev", "cutoff_hz": 100}"#,
+            "unknown variant",
+        ),
+        (r#"{"cmd": "set_analyser", "block": 1000}"#, "power of two"),
+        (
+            r#"{"cmd": "set_scope", "seconds_per_div": 60}"#,
+            "s/div in (0, 5]",
+        ),
+        (r#"{"cmd": "record", "on": false}"#, "not recording"),
+        (r#"{"cmd": "set_adc_range", "range_v": 0}"#, "range"),
+    ];
+    for (body, expected) in cases {
+        let (status, reply) = panel.command(body);
+        assert_eq!(status, 400, "{body}: {reply}");
+        assert_eq!(reply["ok"], false);
+        let error = reply["error"].as_str().unwrap_or("");
+        assert!(error.contains(expected), "{body}: {error}");
+    }
+    let (status, _) = panel.get("/api/nothing");
+    assert_eq!(status, 404);
+    let after = panel.state();
+    assert_eq!(before["speed_set_rpm"], after["speed_set_rpm"]);
+    assert_eq!(before["load_set_nm"], after["load_set_nm"]);
+    assert!(
+        after["simulated_s"].as_f64() > before["simulated_s"].as_f64(),
+        "the rig runs on"
+    );
+    // A stop signal ends the session with every file closed, manifest and session written.
+    let killed = std::process::Command::new("kill")
+        .args(["-INT", &panel.child.id().to_string()])
+        .status()
+        .expect("kill runs");
+    assert!(killed.success());
+    let (status, stderr) = panel.wait();
+    assert!(status.success(), "{stderr}");
+    let manifest: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(out.join("manifest.json")).expect("manifest"),
+    )
+    .expect("JSON");
+    assert_eq!(manifest["ending"], "interrupted");
+    let session = std::fs::read_to_string(out.join("session.toml")).expect("session");
+    assert!(
+        !session.contains("[[command]]"),
+        "refused commands are not in the session"
+    );
+}

@@ -1,0 +1,122 @@
+//! A panel started for a test, and a plain HTTP client for its API.
+#![allow(dead_code)]
+
+use std::io::{BufRead, BufReader, Read, Write};
+use std::net::{SocketAddr, TcpStream};
+use std::path::Path;
+use std::process::{Child, Command, Stdio};
+use std::time::{Duration, Instant};
+
+/// A running `testrig panel`.
+pub struct Panel {
+    /// The process.
+    pub child: Child,
+    /// Where it serves.
+    pub address: SocketAddr,
+    /// Its standard output after the first line (kept open: the panel prints at the end).
+    stdout: BufReader<std::process::ChildStdout>,
+}
+
+impl Panel {
+    /// Starts a panel on a free loopback port with `args` besides `--listen` and `--out`.
+    pub fn start(out: &Path, args: &[&str]) -> Self {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_testrig"))
+            .args(["panel", "--listen", "127.0.0.1:0", "--out"])
+            .arg(out)
+            .args(args)
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .expect("the panel starts");
+        let stdout = child.stdout.take().expect("stdout");
+        let mut stdout = BufReader::new(stdout);
+        let mut line = String::new();
+        stdout.read_line(&mut line).expect("a first line");
+        let address = line
+            .split("http://")
+            .nth(1)
+            .and_then(|rest| rest.split('/').next())
+            .and_then(|a| a.parse().ok())
+            .unwrap_or_else(|| panic!("no address in {line:?}"));
+        Self {
+            child,
+            address,
+            stdout,
+        }
+    }
+
+    /// `GET path`: (status, body).
+    pub fn get(&self, path: &str) -> (u16, String) {
+        http(self.address, "GET", path, "")
+    }
+
+    /// `POST /api/command` with `body`: (status, reply as JSON).
+    pub fn command(&self, body: &str) -> (u16, serde_json::Value) {
+        let (status, text) = http(self.address, "POST", "/api/command", body);
+        let reply = serde_json::from_str(&text).unwrap_or_else(|e| panic!("{e}: {text}"));
+        (status, reply)
+    }
+
+    /// The panel's state.
+    pub fn state(&self) -> serde_json::Value {
+        let (status, text) = self.get("/api/state");
+        assert_eq!(status, 200, "{text}");
+        serde_json::from_str(&text).unwrap_or_else(|e| panic!("{e}: {text:?}"))
+    }
+
+    /// Waits (at most `limit`) until `ready` holds of the state; returns that state.
+    pub fn wait_for(
+        &self,
+        limit: Duration,
+        ready: impl Fn(&serde_json::Value) -> bool,
+    ) -> serde_json::Value {
+        let start = Instant::now();
+        loop {
+            let state = self.state();
+            if ready(&state) {
+                return state;
+            }
+            assert!(
+                start.elapsed() < limit,
+                "not reached within {limit:?}: {state}"
+            );
+            std::thread::sleep(Duration::from_millis(50));
+        }
+    }
+
+    /// Waits for the process to end; its exit status and stdout and stderr.
+    pub fn wait(mut self) -> (std::process::ExitStatus, String) {
+        let mut stderr = String::new();
+        self.stdout.read_to_string(&mut stderr).expect("stdout");
+        let status = self.child.wait().expect("ends");
+        if let Some(mut e) = self.child.stderr.take() {
+            e.read_to_string(&mut stderr).expect("stderr");
+        }
+        (status, stderr)
+    }
+}
+
+/// One HTTP/1.1 request, the connection closed after it.
+pub fn http(address: SocketAddr, method: &str, path: &str, body: &str) -> (u16, String) {
+    let mut stream = TcpStream::connect(address).expect("connects");
+    stream
+        .set_read_timeout(Some(Duration::from_secs(30)))
+        .expect("timeout");
+    write!(
+        stream,
+        "{method} {path} HTTP/1.1\r\nHost: {address}\r\nContent-Type: application/json\r\nContent-Length: {}\r\nConnection: close\r\n\r\n{body}",
+        body.len()
+    )
+    .expect("sends");
+    let mut response = String::new();
+    stream.read_to_string(&mut response).expect("reads");
+    let status = response
+        .split_whitespace()
+        .nth(1)
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(0);
+    let body = response
+        .split_once("\r\n\r\n")
+        .map_or(String::new(), |(_, b)| b.to_string());
+    (status, body)
+}
