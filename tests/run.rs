@@ -16,7 +16,7 @@ const ONE_SUBHARMONIC_POINT: [&str; 4] = [
 ];
 
 /// Shortened runs of each shipped scenario: (file stem, `--set` items, other arguments).
-const SHORTENED: [(&str, &[&str], &[&str]); 6] = [
+const SHORTENED: [(&str, &[&str], &[&str]); 7] = [
     (
         "aliasing-windowing",
         &["analyser.averages=1"],
@@ -32,6 +32,11 @@ const SHORTENED: [(&str, &[&str], &[&str]); 6] = [
             "analyser.averages=2",
         ],
         &[],
+    ),
+    (
+        "panel",
+        &["analyser.averages=2", "record.from_start=true"],
+        &["--duration", "6"],
     ),
     (
         "rms-survey",
