@@ -171,3 +171,41 @@ fn bad_commands_are_refused_and_change_nothing() {
         "refused commands are not in the session"
     );
 }
+
+#[test]
+fn the_python_example_finds_the_half_order_line_at_1300_rpm() {
+    let out = folder("panel-python");
+    let panel = Panel::start(&out, &["--pace", "20"]);
+    let script = format!("{}/examples/panel_client.py", env!("CARGO_MANIFEST_DIR"));
+    let url = format!("http://{}", panel.address);
+    let output = std::process::Command::new("python3")
+        .args([
+            script.as_str(),
+            "--url",
+            &url,
+            "--speed",
+            "1300",
+            "--load",
+            "2.712",
+            "--quit",
+        ])
+        .output()
+        .expect("python3 runs");
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        output.status.success(),
+        "the example failed (requests, websocket-client and numpy installed? .ci/run installs them): {stderr}"
+    );
+    let result: serde_json::Value =
+        serde_json::from_slice(&output.stdout).expect("the example prints JSON");
+    // Above 1100 rev/min the teeth part once every two revolutions (the thesis's
+    // subharmonic): a line at half the running speed, 1300 / 120 = 10.83 Hz, within one
+    // line (400 Hz / 1024 = 0.39 Hz) and well above its neighbours; a real line, not an alias.
+    let hz = result["half_order_hz"].as_f64().expect("Hz");
+    assert!((hz - 1300.0 / 120.0).abs() <= 0.4, "half order at {hz} Hz");
+    let above = result["above_floor_db"].as_f64().expect("dB");
+    assert!(above >= 20.0, "only {above} dB above its neighbours");
+    assert!(result["alias_of_hz"].is_null(), "{result}");
+    let (status, log) = panel.wait();
+    assert!(status.success(), "{log}");
+}
