@@ -57,7 +57,7 @@ pub fn run(args: &PanelArgs) -> anyhow::Result<ExitCode> {
         args.listen,
         control.clone(),
         status.clone(),
-        info(&plan, ceiling),
+        info(&plan, ceiling, pace),
     )?;
     println!(
         "testrig panel: http://{}/ (Quit on the page, or Ctrl-C, ends the session)",
@@ -128,10 +128,11 @@ fn scenario_source(args: &PanelArgs) -> anyhow::Result<(PathBuf, ScenarioSource)
     Ok((path, source))
 }
 
-fn info(plan: &Plan, ceiling: LiveCeiling) -> PanelInfo {
+fn info(plan: &Plan, ceiling: LiveCeiling, pace: Pace) -> PanelInfo {
     PanelInfo {
         scenario: plan.name.clone(),
         rate_hz: plan.rate_hz,
+        pace: pace.label(),
         max_speed_rpm: ceiling.speed_rpm,
         max_load_nm: plan.params.motor_torque_limit_nm,
         max_oscillating_load_hz: ceiling.oscillating_load_hz,

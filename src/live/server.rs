@@ -32,6 +32,8 @@ pub struct PanelInfo {
     pub scenario: String,
     /// Stream rate (Hz).
     pub rate_hz: f64,
+    /// Pace: `1` is real time.
+    pub pace: String,
     /// Highest speed set point (rev/min).
     pub max_speed_rpm: f64,
     /// Highest brake load (N m): the motor's torque limit.

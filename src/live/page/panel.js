@@ -17,6 +17,7 @@ async function send(command) {
   $("error").textContent = reply.ok
     ? `${command.cmd} at t = ${reply.at_s.toFixed(3)} s`
     : `${command.cmd}: ${reply.error}`;
+  $("error").style.color = reply.ok ? "#bfe3bf" : "#ff8080";
   return reply;
 }
 
@@ -55,8 +56,6 @@ function drawScope() {
   const t = state && state.trace;
   g.fillStyle = "#9fd9a8"; g.font = "12px monospace";
   if (!t) { g.fillText("scope: waiting for a trigger", 8, 16); return; }
-  g.fillText(`${t.signal}  ${t.volts_per_div} V/div  ${(t.seconds_per_div * 1e3).toPrecision(3)} ms/div  ` +
-    `trig ${t.trigger_v} V  ${t.mode}`, 8, 16);
   g.strokeStyle = "#7CFC8A"; g.lineWidth = 1.5; g.beginPath();
   const span = 10 * t.seconds_per_div;
   t.time_s.forEach((ts, k) => {
@@ -64,6 +63,10 @@ function drawScope() {
     if (k === 0) g.moveTo(x, y); else g.lineTo(x, y);
   });
   g.stroke();
+  g.fillStyle = "rgba(13, 20, 16, 0.8)"; g.fillRect(4, 3, 430, 18);
+  g.fillStyle = "#9fd9a8";
+  g.fillText(`${t.signal}  ${t.volts_per_div} V/div  ${(t.seconds_per_div * 1e3).toPrecision(3)} ms/div  ` +
+    `trig ${t.trigger_v} V  ${t.mode}`, 8, 16);
 }
 
 // ---- spectrum: dB against linear frequency, orders and aliases marked ----
@@ -152,8 +155,17 @@ $("spectrum").addEventListener("click", (e) => {
   drawSpectrum();
 });
 
+let previous = null; // the state of about a second ago, for rates
+let impactRate = 0;
+
 function show() {
   if (!state) return;
+  if (!previous || state.simulated_s < previous.simulated_s) previous = state;
+  const span = state.simulated_s - previous.simulated_s;
+  if (span >= 1) {
+    impactRate = (state.impacts - previous.impacts) / span;
+    previous = state;
+  }
   $("dvm").textContent = state.dvm_v.toFixed(2);
   $("dvm-rpm").textContent = `(${state.dvm_rpm.toFixed(0)} rev/min)`;
   $("meter").textContent = state.meter_v.toFixed(4);
@@ -163,7 +175,7 @@ function show() {
   $("status").textContent =
     `t ${state.simulated_s.toFixed(1)} s | set ${state.speed_set_rpm} rev/min ${state.load_set_nm} N m | ` +
     `late ${state.lateness_ms.toFixed(2)} ms | overruns ${state.overruns} | ADC overloads ${state.adc_overloads} | ` +
-    `impacts ${state.impacts} | regime ${state.regime ?? "–"}`;
+    `pace ${info ? info.pace : "–"} | impacts ${impactRate.toFixed(0)}/s | regime (last 10 s) ${state.regime ?? "–"}`;
   drawScope();
   drawSpectrum();
 }

@@ -1,0 +1,103 @@
+#!/usr/bin/env python3
+"""The front panel in a real browser (Debian's chromium, headless, driven by playwright).
+
+Starts `testrig panel`, opens the page, moves the speed to 1300 rev/min and the load to
+2.712 N m with the page's own controls, sees the tacho DVM follow, starts an average and
+reads the half-order line with the marker; keeps screenshots. Run by .ci/run:
+
+    python3 tests/browser/panel_browser.py --binary target/debug/testrig --shots target/panel-screenshots
+"""
+
+import argparse
+import re
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+from playwright.sync_api import sync_playwright
+
+CHROMIUM = "/usr/bin/chromium"
+
+
+def start_panel(binary, out):
+    panel = subprocess.Popen(
+        [binary, "panel", "--listen", "127.0.0.1:0", "--pace", "10", "--out", out,
+         "--set", "analyser.averages=4"],
+        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    line = panel.stdout.readline()
+    match = re.search(r"http://[0-9.:]+/", line)
+    if not match:
+        panel.kill()
+        sys.exit(f"the panel did not start: {line!r} {panel.stderr.read()}")
+    return panel, match.group(0)
+
+
+def wait_until(what, test, limit_s=120):
+    start = time.time()
+    while not test():
+        if time.time() - start > limit_s:
+            sys.exit(f"FAILED: {what} within {limit_s} s")
+        time.sleep(0.1)
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--binary", default="target/debug/testrig")
+    parser.add_argument("--shots", default="target/panel-screenshots")
+    args = parser.parse_args()
+    shots = Path(args.shots)
+    shots.mkdir(parents=True, exist_ok=True)
+    out = tempfile.mkdtemp(prefix="testrig-browser-")
+    panel, url = start_panel(args.binary, out)
+    try:
+        with sync_playwright() as p:
+            browser = p.chromium.launch(executable_path=CHROMIUM, headless=True,
+                                        args=["--no-sandbox"])
+            page = browser.new_page(viewport={"width": 1280, "height": 900})
+            page.goto(url)
+            rpm = lambda: float(re.sub(r"[^0-9.]", "", page.inner_text("#dvm-rpm")) or 0)
+            wait_until("a first DVM reading", lambda: rpm() > 0)
+            before = rpm()
+            page.screenshot(path=str(shots / "1-at-rest.png"))
+            page.fill("#speed", "1300")
+            page.click("#set-speed")
+            page.fill("#load", "2.712")
+            page.click("#set-load")
+            wait_until("the tacho DVM at 1300 rev/min", lambda: abs(rpm() - 1300) <= 13)
+            print(f"DVM: {before:.0f} -> {rpm():.0f} rev/min")
+            page.click("#start-average")
+            # The page's own state: the new average (its running speed 1300 / 60 Hz), complete.
+            done = "() => state.spectrum && state.spectrum.complete && state.spectrum.averages === 4" \
+                   " && state.spectrum.running_hz > 21"
+            wait_until("an average of 4 at 1300 rev/min", lambda: page.evaluate(done))
+            page.click("#marker-half")
+            readout = page.inner_text("#marker-readout")
+            print(f"marker: {readout}")
+            page.screenshot(path=str(shots / "2-half-order.png"))
+            order = float(re.search(r"order ([0-9.]+)", readout).group(1))
+            level = float(re.search(r"(-?[0-9.]+) dB", readout).group(1))
+            if not (abs(order - 0.5) <= 0.02 and "not an alias" in readout and level > -20):
+                sys.exit(f"FAILED: the marker does not read a half-order line: {readout}")
+            # A second page sees the same rig.
+            other = browser.new_page()
+            other.goto(url)
+            wait_until("the second page's DVM", lambda: "1300" in other.inner_text("#dvm-rpm")
+                       or abs(float(re.sub(r"[^0-9.]", "", other.inner_text("#dvm-rpm")) or 0) - 1300) <= 13)
+            other.close()
+            page.click("#quit")
+            browser.close()
+        code = panel.wait(timeout=60)
+        if code != 0:
+            sys.exit(f"FAILED: the panel exited with {code}: {panel.stderr.read()}")
+        if not (Path(out) / "session.toml").exists():
+            sys.exit("FAILED: no session.toml")
+        print(f"browser test passed; screenshots in {shots}")
+    finally:
+        if panel.poll() is None:
+            panel.kill()
+
+
+if __name__ == "__main__":
+    main()
