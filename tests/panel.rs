@@ -135,6 +135,18 @@ fn bad_commands_are_refused_and_change_nothing() {
         ),
         (r#"{"cmd": "record", "on": false}"#, "not recording"),
         (r#"{"cmd": "set_adc_range", "range_v": 0}"#, "range"),
+        (
+            r#"{"cmd": "set_oscillating_load", "nm": 8, "hz": 10}"#,
+            "oscillating part",
+        ),
+        (
+            r#"{"cmd": "set_oscillating_load", "nm": 1, "hz": 500}"#,
+            "200 Hz",
+        ),
+        (
+            r#"{"cmd": "set_analyser", "fmax_hz": 1e6}"#,
+            "above the stream rate",
+        ),
     ];
     for (body, expected) in cases {
         let (status, reply) = panel.command(body);
@@ -187,6 +199,8 @@ fn the_python_example_finds_the_half_order_line_at_1300_rpm() {
             "1300",
             "--load",
             "2.712",
+            "--limit-s",
+            "120",
             "--quit",
         ])
         .output()
@@ -208,4 +222,37 @@ fn the_python_example_finds_the_half_order_line_at_1300_rpm() {
     assert!(result["alias_of_hz"].is_null(), "{result}");
     let (status, log) = panel.wait();
     assert!(status.success(), "{log}");
+}
+
+#[test]
+fn a_scenarios_commands_act_at_their_times_and_refusals_are_warnings() {
+    let dir = folder("panel-scheduled");
+    let text = r#"name = "scheduled"
+duration_s = 2
+
+[schedule]
+speed_rpm = 600
+load_nm = 2.712
+
+[live]
+max_speed_rpm = 1300
+max_oscillating_load_hz = 0
+
+[[command]]
+at_s = 1.0
+cmd = "set_speed"
+rpm = 1300
+
+[[command]]
+at_s = 1.5
+cmd = "set_speed"
+rpm = 2000
+"#;
+    let path = dir.join("scheduled.toml");
+    std::fs::write(&path, text).expect("written");
+    let (_, manifest) = common::run_ok("panel-scheduled-run", path.to_str().expect("utf-8"), &[]);
+    let warnings = manifest["warnings"].to_string();
+    assert!(warnings.contains("at t = 1.5 s was refused"), "{warnings}");
+    assert!(warnings.contains("at most 1300 rev/min"), "{warnings}");
+    assert!(!warnings.contains("at t = 1 s"), "{warnings}");
 }

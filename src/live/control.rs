@@ -15,6 +15,9 @@ use super::command::{Command, Reply, Target, TimedCommand};
 /// How long a sender waits for the answer (s of wall time).
 const ANSWER_WAIT_S: f64 = 10.0;
 
+/// An answer: the order the plant's thread took the command in, and the reply.
+pub type Answer = (u64, Reply);
+
 /// A command on its way to its target.
 #[derive(Clone, Debug)]
 pub struct Pending {
@@ -24,7 +27,7 @@ pub struct Pending {
     pub at_s: f64,
     /// The order the plant's thread took it in.
     pub order: u64,
-    answer: Option<Sender<(u64, Reply)>>,
+    answer: Option<Sender<Answer>>,
 }
 
 impl Pending {
@@ -46,7 +49,7 @@ impl Pending {
 #[derive(Debug)]
 pub struct Request {
     command: Command,
-    answer: Sender<(u64, Reply)>,
+    answer: Sender<Answer>,
 }
 
 /// Where scripts and pages send commands; clones share the session's log.
@@ -117,9 +120,10 @@ fn refused(why: &str) -> Reply {
 
 /// What the plant's thread takes commands from: a scenario's timed commands and, live,
 /// the requests of scripts and pages.
-#[derive(Debug, Default)]
+#[derive(Debug)]
 pub struct CommandInbox {
     scheduled: VecDeque<(u64, Command)>,
+    scheduled_answers: (Sender<Answer>, Receiver<Answer>),
     live: Option<Receiver<Request>>,
     targets: Vec<Target>,
     next_order: u64,
@@ -142,6 +146,7 @@ impl CommandInbox {
         scheduled.sort_by_key(|(at, _)| *at);
         Self {
             scheduled: scheduled.into(),
+            scheduled_answers: unbounded(),
             live,
             targets,
             next_order: 0,
@@ -159,7 +164,7 @@ impl CommandInbox {
             .is_some_and(|(at, _)| *at <= start_sample)
         {
             if let Some((_, command)) = self.scheduled.pop_front() {
-                due.push((command, None));
+                due.push((command, Some(self.scheduled_answers.0.clone())));
             }
         }
         if let Some(live) = &self.live {
@@ -186,6 +191,30 @@ impl CommandInbox {
         }
         pending
     }
+}
+
+impl CommandInbox {
+    /// Where the answers to the scenario's own commands arrive (read it after the run:
+    /// the refused ones are the run's warnings).
+    pub fn scheduled_answers(&self) -> Receiver<Answer> {
+        self.scheduled_answers.1.clone()
+    }
+}
+
+/// The scenario's commands that were refused, as warnings, from their answers.
+pub fn refusals(answers: &Receiver<Answer>) -> Vec<String> {
+    let mut refused: Vec<Answer> = answers.try_iter().filter(|(_, r)| !r.ok).collect();
+    refused.sort_by_key(|(order, _)| *order);
+    refused
+        .into_iter()
+        .map(|(_, r)| {
+            format!(
+                "a [[command]] at t = {} s was refused: {}",
+                r.at_s,
+                r.error.unwrap_or_default()
+            )
+        })
+        .collect()
 }
 
 /// The command's `cmd` name.

@@ -172,7 +172,8 @@ fn take_commands(job: &mut PlantJob, start_sample: u64, at_s: f64) -> Vec<Pendin
 fn check_set_points(set: &SetPoints, params: &RigParams) -> Result<(), String> {
     check_speed_rpm(set.speed_rpm).map_err(|e| format!("speed: {e}"))?;
     check_load_nm(set.load_nm).map_err(|e| format!("load: {e}"))?;
-    check_load_within_motor(set.load_nm, params)?;
+    check_load_within_motor(set.load_nm + set.oscillating_load_nm, params)
+        .map_err(|e| format!("load with its oscillating part: {e}"))?;
     for (value, what) in [
         (set.oscillating_load_nm, "oscillating load amplitude (N m)"),
         (set.oscillating_load_hz, "oscillating load frequency (Hz)"),

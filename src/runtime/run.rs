@@ -23,6 +23,7 @@ use super::status::SharedStatus;
 use super::wiring::{channel, run_sink, run_stage};
 use crate::chain::NamedStage;
 use crate::chain::signal_names::{AMPLIFIER_V, FILTER_V};
+use crate::live::control::refusals;
 use crate::live::{CommandInbox, Request, Target};
 use crate::scenario::Plan;
 
@@ -58,6 +59,8 @@ pub struct RunResult {
     pub errors: Vec<String>,
     /// Whether the run was stopped before its end (Ctrl-C or an error).
     pub stopped_early: bool,
+    /// The scenario's `[[command]]` entries that were refused, with why.
+    pub refused_commands: Vec<String>,
 }
 
 impl RunResult {
@@ -72,6 +75,7 @@ impl RunResult {
         self.sinks
             .iter()
             .flat_map(|s| s.warnings.iter().cloned())
+            .chain(self.refused_commands.iter().cloned())
             .collect()
     }
 }
@@ -105,6 +109,13 @@ pub fn run_with_status(
     let live = options.control.is_some();
     let sinks = build_sinks(plan, &options.out, &names, &status, live)?;
     let total_samples = (plan.duration_s * plan.rate_hz).round() as u64;
+    let inbox = CommandInbox::new(
+        &plan.commands,
+        options.control.clone(),
+        command_targets(plan),
+        plan.rate_hz,
+    );
+    let scheduled_answers = inbox.scheduled_answers();
     let job = PlantJob {
         plant,
         total_samples,
@@ -113,12 +124,7 @@ pub fn run_with_status(
         overflow: plan.overflow,
         stop: Arc::clone(&options.stop),
         status: status.clone(),
-        inbox: CommandInbox::new(
-            &plan.commands,
-            options.control.clone(),
-            command_targets(plan),
-            plan.rate_hz,
-        ),
+        inbox,
     };
     let (cpu_before, _) = cpu_s_and_peak_rss_mib();
     let started = Instant::now();
@@ -144,6 +150,7 @@ pub fn run_with_status(
         cpu_s: cpu_after - cpu_before,
         peak_rss_mib,
         errors,
+        refused_commands: refusals(&scheduled_answers),
     })
 }
 

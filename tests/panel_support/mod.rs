@@ -96,6 +96,16 @@ impl Panel {
     }
 }
 
+impl Drop for Panel {
+    /// A test that fails part-way leaves no panel running.
+    fn drop(&mut self) {
+        if matches!(self.child.try_wait(), Ok(None)) {
+            let _ = self.child.kill();
+            let _ = self.child.wait();
+        }
+    }
+}
+
 /// One HTTP/1.1 request, the connection closed after it.
 pub fn http(address: SocketAddr, method: &str, path: &str, body: &str) -> (u16, String) {
     let mut stream = TcpStream::connect(address).expect("connects");
