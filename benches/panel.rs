@@ -5,7 +5,9 @@
 //! when the plant's thread has made the new set point act from the start of a block:
 //! the command's latency (the frame carrying the new set point is released one block
 //! later at pace 1). Then: overruns, lateness p50/p99/max and the CPU share
-//! of the whole process, from the session's manifest.
+//! of the whole process, from the session's manifest. With `TESTRIG_PANEL_BROWSER` set to
+//! a browser (e.g. /usr/bin/chromium), the page itself is open in it, headless, for the
+//! whole run, beside the client.
 
 use std::io::{BufRead, BufReader, Read, Write};
 use std::net::{SocketAddr, TcpStream};
@@ -70,6 +72,20 @@ fn main() {
         .and_then(|r| r.split('/').next())
         .and_then(|a| a.parse().ok())
         .expect("an address");
+    let mut browser = std::env::var("TESTRIG_PANEL_BROWSER").ok().map(|program| {
+        Command::new(program)
+            .args([
+                "--headless",
+                "--no-sandbox",
+                "--disable-gpu",
+                "--remote-debugging-port=0",
+            ])
+            .arg(format!("http://{address}/"))
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .spawn()
+            .expect("the browser starts")
+    });
     let stop = Arc::new(AtomicBool::new(false));
     let states = Arc::new(AtomicU64::new(0));
     let watcher = {
@@ -90,6 +106,12 @@ fn main() {
         assert!(reply.contains("\"ok\":true"), "{reply}");
     }
     let streamed = states.load(Ordering::Relaxed);
+    let page = browser.as_mut().map(|b| {
+        let alive = matches!(b.try_wait(), Ok(None));
+        b.kill().ok();
+        b.wait().ok();
+        alive
+    });
     post(address, r#"{"cmd": "quit"}"#);
     let mut rest = String::new();
     stdout.read_to_string(&mut rest).expect("stdout");
@@ -103,9 +125,10 @@ fn main() {
     latencies_ms.sort_by(f64::total_cmp);
     let wall = start.elapsed().as_secs_f64();
     println!(
-        "panel at pace 1 for {:.0} s, a client on the stream ({:.1} states/s): {} overruns; lateness p50 {:.3} ms, p99 {:.3} ms, max {:.3} ms over {} releases; CPU {:.1} % of one core (whole process)",
+        "panel at pace 1 for {:.0} s, a client on the stream ({:.1} states/s), the page open in a browser: {:?}: {} overruns; lateness p50 {:.3} ms, p99 {:.3} ms, max {:.3} ms over {} releases; CPU {:.1} % of one core (whole process)",
         manifest["simulated_s"].as_f64().unwrap_or(0.0),
         streamed as f64 / wall,
+        page,
         manifest["overruns"],
         manifest["lateness_ms"]["p50"].as_f64().unwrap_or(f64::NAN),
         manifest["lateness_ms"]["p99"].as_f64().unwrap_or(f64::NAN),

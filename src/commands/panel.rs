@@ -84,7 +84,7 @@ pub fn run(args: &PanelArgs) -> anyhow::Result<ExitCode> {
     let session_path = args.out.join("session.toml");
     std::fs::write(&session_path, session.to_toml()?)
         .with_context(|| format!("cannot write {}", session_path.display()))?;
-    let failed = !result.errors.is_empty() || result.plant.error.is_some();
+    let failed = !result.failures().is_empty();
     let ending = if failed {
         Ending::Failed
     } else {
@@ -98,12 +98,7 @@ pub fn run(args: &PanelArgs) -> anyhow::Result<ExitCode> {
         args.out.display()
     );
     if failed {
-        let all: Vec<String> = result
-            .errors
-            .iter()
-            .cloned()
-            .chain(result.plant.error.clone())
-            .collect();
+        let all = result.failures();
         bail!("{}", all.join("; "));
     }
     Ok(ExitCode::SUCCESS)

@@ -60,7 +60,7 @@ pub fn run(args: &RunArgs) -> anyhow::Result<ExitCode> {
         control: None,
     };
     let result = run_plan(&plan, &options)?;
-    let failed = !result.errors.is_empty() || result.plant.error.is_some();
+    let failed = !result.failures().is_empty();
     let ending = match (failed, result.stopped_early) {
         (true, _) => Ending::Failed,
         (false, true) => Ending::Interrupted,
@@ -69,12 +69,7 @@ pub fn run(args: &RunArgs) -> anyhow::Result<ExitCode> {
     write_manifest(&args.out, &args.scenario, &plan, pace, &result, ending)?;
     print_summary(&plan.name, &args.out, &result, pace);
     if failed {
-        let all: Vec<String> = result
-            .errors
-            .iter()
-            .cloned()
-            .chain(result.plant.error.clone())
-            .collect();
+        let all = result.failures();
         bail!(
             "{} (files up to the stop are kept in {})",
             all.join("; "),

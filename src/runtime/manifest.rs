@@ -60,7 +60,7 @@ pub fn write_manifest(
         "version": env!("CARGO_PKG_VERSION"),
         "preset": plan.preset,
         "ending": ending.label(),
-        "errors": result.errors.iter().cloned().chain(p.error.clone()).collect::<Vec<_>>(),
+        "errors": result.failures(),
         "simulated_s": simulated_s,
         "wall_s": result.wall_s,
         "realtime_factor": simulated_s / result.wall_s.max(1e-9),

@@ -69,6 +69,15 @@ impl RunResult {
         self.plant.samples as f64 * self.plant.step_s
     }
 
+    /// Every error that stopped the run: the sinks', then the plant's; empty if none.
+    pub fn failures(&self) -> Vec<String> {
+        self.errors
+            .iter()
+            .cloned()
+            .chain(self.plant.error.clone())
+            .collect()
+    }
+
     /// Every sink's warnings (spectra short of their averages, measurements not reached,
     /// ADC overloads, scopes that did not trigger), in sink order.
     pub fn warnings(&self) -> Vec<String> {
