@@ -147,6 +147,18 @@ fn bad_commands_are_refused_and_change_nothing() {
             r#"{"cmd": "set_analyser", "fmax_hz": 1e6}"#,
             "above the stream rate",
         ),
+        (
+            r#"{"cmd": "set_analyser", "fmax_hz": 0.01}"#,
+            "band too narrow",
+        ),
+        (
+            r#"{"cmd": "set_analyser", "averages": 1000000}"#,
+            "from 1 to 1000",
+        ),
+        (
+            r#"{"cmd": "set_amplifier_gain", "gain": 1e300}"#,
+            "(0, 1000000]",
+        ),
     ];
     for (body, expected) in cases {
         let (status, reply) = panel.command(body);

@@ -348,3 +348,32 @@ fn a_rerun_into_a_used_folder_removes_the_earlier_runs_files_and_no_other() {
     assert!(out.join("notes.txt").exists(), "a file no run wrote stays");
     std::fs::remove_dir_all(&out).ok();
 }
+
+#[test]
+fn an_analyser_band_too_narrow_for_the_stream_is_refused_at_its_line() {
+    let dir = folder("narrow-band");
+    for (extra, expected) in [
+        ("fmax_hz = 0.01\n", ":9:"),
+        ("fmax_hz = 200\naverages = 5000\n", ":10:"),
+    ] {
+        let text = format!("{MINIMAL}\n[analyser]\n{extra}");
+        let path = dir.join("narrow.toml");
+        std::fs::write(&path, text).expect("written");
+        let output = testrig(
+            &[
+                "run",
+                path.to_str().expect("utf-8"),
+                "--pace",
+                "max",
+                "--out",
+            ]
+            .into_iter()
+            .chain([dir.join("out").to_str().expect("utf-8")])
+            .collect::<Vec<_>>(),
+        );
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert!(!output.status.success());
+        assert!(stderr.contains(expected), "{expected} not in {stderr}");
+        assert!(!stderr.contains("panicked"), "{stderr}");
+    }
+}

@@ -16,6 +16,9 @@ use crate::error::InstrumentError;
 use crate::spectrum::{Spectrum, SpectrumEstimator};
 use crate::window::Window;
 
+/// Longest analogue block behind one analyser block (samples): 16 Mi, 128 MiB of f64.
+pub const MAX_SPAN_SAMPLES: f64 = 16_777_216.0;
+
 /// Classifies displayed lines as real or aliased from the analogue signal.
 pub struct AliasTruth {
     span: usize,
@@ -37,15 +40,16 @@ impl AliasTruth {
         analogue_rate_hz: f64,
         window: Window,
     ) -> Result<Self, InstrumentError> {
-        if !(ratio.is_finite() && ratio >= 1.0) {
+        let span_samples = block as f64 * ratio;
+        if !(ratio.is_finite() && ratio >= 1.0 && span_samples <= MAX_SPAN_SAMPLES) {
             return Err(InstrumentError::setting(
                 "alias truth",
                 "rate ratio",
                 ratio,
-                "must be ≥ 1",
+                "must be ≥ 1, with an analogue block of at most 16 Mi samples (a band too narrow for the stream rate)",
             ));
         }
-        let span = (block as f64 * ratio).round() as usize;
+        let span = span_samples.round() as usize;
         let estimator = SpectrumEstimator::of_length(span, analogue_rate_hz, window)?;
         let adc_rate_hz = analogue_rate_hz / ratio;
         Ok(Self {

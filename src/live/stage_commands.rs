@@ -7,6 +7,9 @@ use instruments::LowPassSpec;
 use super::command::{Command, Target};
 use crate::chain::{Instrument, NamedStage};
 
+/// Highest carrier amplifier gain accepted (V/V): far beyond the 3C66's.
+const MAX_GAIN: f64 = 1.0e6;
+
 /// Carries out `command` if it is for `stage`: `Some(outcome)`, else `None`.
 pub fn apply_to_stage(stage: &mut NamedStage, command: &Command) -> Option<Result<(), String>> {
     match command.target() {
@@ -38,8 +41,8 @@ pub fn apply_to_stage(stage: &mut NamedStage, command: &Command) -> Option<Resul
                     stage.output
                 )));
             };
-            if !(gain.is_finite() && *gain > 0.0) {
-                return Some(Err(format!("gain {gain}: a gain is finite and > 0")));
+            if !(*gain > 0.0 && *gain <= MAX_GAIN) {
+                return Some(Err(format!("gain {gain}: a gain lies in (0, {MAX_GAIN}]")));
             }
             settings.gain = *gain;
             Instrument::CarrierDemodulator(settings)

@@ -1,9 +1,9 @@
 //! The measuring chain, the analyser and the recordings of a scenario.
 
 use instruments::{
-    AcCoupling, Adc, AdcSettings, Analyser, AnalyserSettings, Averaging, BridgeArrangement,
-    CarrierSettings, LowPassSpec, Sampling, Scope, ScopeSettings, ShaftStrain, SlipRingSettings,
-    Slope, Spectrum, StrainBridge, SweepMode,
+    AcCoupling, Adc, AdcSettings, AliasTruth, Analyser, AnalyserSettings, Averaging,
+    BridgeArrangement, CarrierSettings, LowPassSpec, Sampling, Scope, ScopeSettings, ShaftStrain,
+    SlipRingSettings, Slope, Spectrum, StrainBridge, SweepMode,
 };
 use toml::Spanned;
 
@@ -13,6 +13,7 @@ use super::file::{AnalyserFile, ChainFile, RecordFile};
 use super::plan::{AnalyserPlan, ChainPlan, RecordPlan, ScopePlan, WavFormat};
 use super::source::ScenarioSource;
 use super::stage_part::{read_signal, wired_stages};
+use super::values::check_averages;
 use crate::chain::signal_names::{AMPLIFIER_V, FILTER_V};
 use crate::chain::{ChainStages, DvmSettings, MeterSettings, StandardChain};
 
@@ -187,6 +188,8 @@ pub fn analyser_plan(
 ) -> anyhow::Result<AnalyserPlan> {
     let window = file.window.0;
     let sampling = Sampling::from(file.sampling);
+    check_averages(*file.averages.get_ref())
+        .map_err(|e| src.error(file.averages.span(), "analyser.averages", e))?;
     let overlap = file.overlap_pct.as_ref().map_or(0.0, |o| o.get_ref().0);
     if overlap >= 100.0 {
         let span = file.overlap_pct.as_ref().map_or(0..0, Spanned::span);
@@ -221,6 +224,8 @@ pub fn analyser_plan(
         dither_seed: file.dither.then_some(seed.wrapping_add(2)),
     };
     Adc::new(adc).map_err(|e| src.error(file.bits.span(), "analyser.bits", e))?;
+    AliasTruth::new(settings.block, ratio, rate_hz, window)
+        .map_err(|e| src.error(file.fmax_hz.span(), "analyser.fmax_hz", e))?;
     Ok(AnalyserPlan {
         input: file
             .input

@@ -134,3 +134,16 @@ impl TryFrom<f64> for SpeedRpm {
         }
     }
 }
+
+/// Most spectra an average takes: the ground truth keeps the analogue signal behind a
+/// whole average (at 51.2 kHz and the thesis's 2.56 s blocks, 1000 averages hold 1 GiB).
+pub const MAX_AVERAGES: usize = 1000;
+
+/// An analyser's number of averages, 1 to [`MAX_AVERAGES`].
+pub fn check_averages(averages: usize) -> Result<usize, String> {
+    if (1..=MAX_AVERAGES).contains(&averages) {
+        Ok(averages)
+    } else {
+        Err(format!("{averages} averages: from 1 to {MAX_AVERAGES}"))
+    }
+}

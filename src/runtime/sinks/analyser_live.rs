@@ -9,6 +9,7 @@ use super::analyser::AnalyserSink;
 use crate::live::{Command, LiveSpectrum};
 use crate::runtime::frame::Frame;
 use crate::scenario::Measure;
+use crate::scenario::values::check_averages;
 
 impl AnalyserSink {
     /// Publishes the display on the panel after every block averaged.
@@ -82,7 +83,7 @@ impl AnalyserSink {
         s.fmax_hz = fmax_hz.unwrap_or(s.fmax_hz);
         s.block = block.unwrap_or(s.block);
         s.window = window.map_or(s.window, |w| w.0);
-        s.averages = averages.unwrap_or(s.averages);
+        s.averages = check_averages(averages.unwrap_or(s.averages))?;
         if let Some(pct) = overlap_pct {
             if !(0.0..100.0).contains(pct) {
                 return Err(format!("overlap_pct {pct}: must lie in [0, 100)"));
