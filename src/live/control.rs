@@ -194,6 +194,11 @@ impl CommandInbox {
 }
 
 impl CommandInbox {
+    /// Whether scripts and pages can send commands (a live run).
+    pub fn is_live(&self) -> bool {
+        self.live.is_some()
+    }
+
     /// Where the answers to the scenario's own commands arrive (read it after the run:
     /// the refused ones are the run's warnings).
     pub fn scheduled_answers(&self) -> Receiver<Answer> {

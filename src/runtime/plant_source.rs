@@ -83,7 +83,11 @@ pub fn run_plant(mut job: PlantJob, out: Sender<Frame>) -> PlantReport {
     };
     let mut block = SignalBlock::default();
     let mut seq = 0;
-    let mut rolling = RollingRegime::new(job.plant.params().teeth, step_s);
+    // The regime of the last 10 s is for the live panel only.
+    let mut rolling = job
+        .inbox
+        .is_live()
+        .then(|| RollingRegime::new(job.plant.params().teeth, step_s));
     while report.samples < job.total_samples && !job.stop.load(Ordering::Relaxed) {
         let n = (job.total_samples - report.samples).min(job.block_samples as u64) as usize;
         let commands = take_commands(&mut job, report.samples, report.samples as f64 * step_s);
@@ -108,7 +112,10 @@ pub fn run_plant(mut job: PlantJob, out: Sender<Frame>) -> PlantReport {
             window.add_impacts(&impacts);
             window.add_revolutions(&revolutions);
         }
-        if let Some(regime) = rolling.add(&block, speed_rad_s, &impacts, &revolutions) {
+        let regime = rolling
+            .as_mut()
+            .and_then(|r| r.add(&block, speed_rad_s, &impacts, &revolutions));
+        if let Some(regime) = regime {
             job.status.update(|s| s.regime = Some(regime));
         }
         let frame = Frame::of_block(seq, report.samples, &block, impacts)

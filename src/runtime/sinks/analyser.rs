@@ -154,9 +154,10 @@ impl AnalyserSink {
     }
 
     /// The display's lines and, for each, the alias truth from the blocks averaged.
+    /// The truth is restarted with each average and takes only the blocks it lacks, so a
+    /// live run, which keeps it up to date block by block, does not redo it here.
     pub(super) fn lines_and_truth(&mut self) -> (Vec<instruments::Line>, Vec<Option<f64>>) {
         let count = self.analyser.average_count();
-        self.truth.restart();
         self.truth
             .add_blocks(&self.analogue, count, self.plan.settings.hop());
         let lines = self.analyser.display();

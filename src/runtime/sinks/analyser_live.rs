@@ -140,13 +140,9 @@ impl AnalyserSink {
         }
         self.published = Some(count);
         let s = self.plan.settings;
-        self.truth.add_blocks(&self.analogue, count, s.hop());
-        let lines = self.analyser.display();
-        let floor = self
-            .adc
-            .quantisation_line_power(self.analyser.enbw_hz(), s.sample_rate_hz());
+        let (lines, flags) = self.lines_and_truth();
         let alias_of_hz = if count > 0 {
-            self.truth.flags(lines.len(), floor)
+            flags
         } else {
             vec![None; lines.len()]
         };
