@@ -30,6 +30,8 @@ pub enum Command {
     Sweep(SweepArgs),
     /// Join the outputs of sweep shards into one table and its plots.
     Merge(MergeArgs),
+    /// Search free parameters for the rig that best reproduces target findings (CMA-ES).
+    Calibrate(CalibrateArgs),
     /// Operate the rig live from a front panel in the browser (and from scripts, docs/api.md).
     Panel(PanelArgs),
 }
@@ -69,6 +71,37 @@ pub struct SweepArgs {
     #[arg(long)]
     pub resume: bool,
     /// Change one key of the sweep file (repeatable), e.g. --set case.measure_s=10.
+    #[arg(long = "set", value_name = "KEY=VALUE")]
+    pub overrides: Vec<String>,
+    /// Output folder.
+    #[arg(long)]
+    pub out: PathBuf,
+}
+
+/// `testrig calibrate`.
+#[derive(Debug, Args)]
+pub struct CalibrateArgs {
+    /// The calibration file (TOML): targets, free parameters, search.
+    pub calibration: PathBuf,
+    /// Worker threads (default: one per core).
+    #[arg(long)]
+    pub jobs: Option<usize>,
+    /// Evaluations in all, instead of the file's `search.budget`.
+    #[arg(long)]
+    pub budget: Option<usize>,
+    /// Continue the search logged in the output folder (its evaluations are not run again).
+    #[arg(long)]
+    pub resume: bool,
+    /// Run independent search stream K of N (K/N, from 0), each with its own seed, log and
+    /// share of the budget; default from SLURM_ARRAY_TASK_ID and SLURM_ARRAY_TASK_COUNT.
+    /// The report and preset come from every log in the output folder.
+    #[arg(long)]
+    pub shard: Option<String>,
+    /// Search on the target points at even (or odd) positions only and score the best on
+    /// the others too (cross-validation).
+    #[arg(long, value_parser = ["even", "odd"])]
+    pub train_half: Option<String>,
+    /// Change one key of the calibration file (repeatable), e.g. --set search.budget=20.
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub overrides: Vec<String>,
     /// Output folder.

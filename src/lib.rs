@@ -25,6 +25,7 @@
 //! # Ok::<(), std::io::Error>(())
 //! ```
 
+pub mod calibrate;
 pub mod chain;
 pub mod live;
 pub mod plots;

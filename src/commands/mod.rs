@@ -1,6 +1,7 @@
 //! One file per command.
 
 mod analyse;
+mod calibrate;
 mod merge;
 mod modes;
 mod panel;
@@ -24,6 +25,7 @@ pub fn run(command: Command) -> anyhow::Result<ExitCode> {
         Command::Run(args) => return run::run(&args),
         Command::Sweep(args) => sweep::run(&args),
         Command::Merge(args) => merge::run(&args),
+        Command::Calibrate(args) => calibrate::run(&args),
         Command::Panel(args) => return panel::run(&args),
     };
     done.map(|()| ExitCode::SUCCESS)

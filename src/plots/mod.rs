@@ -2,6 +2,7 @@
 //! system font libraries are needed).
 
 pub mod canvas;
+pub mod convergence;
 pub mod frequency_map;
 pub mod regime_map;
 pub mod scope;
@@ -9,6 +10,7 @@ pub mod spectrum;
 pub mod survey;
 pub mod waterfall;
 
+pub use convergence::{SearchPoint, write_convergence};
 pub use frequency_map::{SpeedLines, write_frequency_map};
 pub use regime_map::{RegimeCell, write_regime_map};
 pub use scope::write_scope_plots;

@@ -2,9 +2,7 @@
 //! chain (one thread, stage after stage) into the analyser.
 
 use instruments::{Adc, Analyser, Line};
-use rig::{
-    Plant, PlantConfig, Regime, RegimeCriteria, Schedule, SignalBlock, SteadySummary, SteadyWindow,
-};
+use rig::{Plant, PlantConfig, Regime, RegimeCriteria, SignalBlock, SteadySummary, SteadyWindow};
 use serde::{Deserialize, Serialize};
 
 use super::lines::{OrderLine, order_line, peaks};
@@ -77,10 +75,11 @@ pub fn run_case(plan: &SweepPlan, case: &Case) -> anyhow::Result<CaseResult> {
         output_rate_hz: plan.rate_hz,
         ..PlantConfig::default()
     };
-    let schedule = Schedule::constant(case.rpm, case.load_nm);
+    let schedule = case.approach.schedule(case.rpm, case.load_nm);
     let mut plant = Plant::new(case.params.clone(), schedule, config)?;
     let lead = CHAIN_LEAD_S.min(plan.settle_s);
-    plant.skip(((plan.settle_s - lead) * plan.rate_hz).round() as usize)?;
+    let settle_s = case.approach.lead_in_s() + plan.settle_s - lead;
+    plant.skip((settle_s * plan.rate_hz).round() as usize)?;
     plant.drain_impacts();
     plant.drain_revolutions();
     let mut chain = plan.chain.stages.clone();

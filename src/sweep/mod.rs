@@ -1,6 +1,7 @@
 //! Sweeps: a grid of cases (speed, load, backlash, any parameter), each run at fixed set
 //! points through the chain and the analyser, in parallel, shardable and resumable.
 
+pub mod approach;
 pub mod case;
 pub mod file;
 pub mod lines;
@@ -10,6 +11,7 @@ pub mod run;
 pub mod shard;
 pub mod table;
 
+pub use approach::Approach;
 pub use case::{CaseResult, run_case};
 pub use plan::{Case, SweepPlan, build_sweep};
 pub use run::{Assembled, SweepMeta, SweepOptions, SweepOutcome, assemble, read_meta, run_sweep};

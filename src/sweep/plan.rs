@@ -10,6 +10,7 @@ use crate::scenario::stage_part::read_signal;
 use crate::scenario::values::{check_load_within_motor, check_simulated_s};
 use crate::scenario::{AnalyserPlan, ChainPlan, ScenarioSource};
 
+use super::approach::Approach;
 use super::file::SweepFile;
 
 /// Everything a sweep needs, checked.
@@ -54,6 +55,8 @@ pub struct Case {
     pub params: RigParams,
     /// The case's seed.
     pub seed: u64,
+    /// How the case reaches its operating point.
+    pub approach: Approach,
 }
 
 /// Checks `file` (read from `src`) and expands its grid.
@@ -135,6 +138,7 @@ pub fn build_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<Swe
                     values: values.clone(),
                     params: params.clone(),
                     seed: case_seed(file.seed, index),
+                    approach: Approach::Static,
                 });
             }
         }

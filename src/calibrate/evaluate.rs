@@ -1,0 +1,186 @@
+//! Evaluating candidates: every target point from every approach, in parallel over all
+//! candidates of a generation.
+
+use rayon::prelude::*;
+use rig::{RigChains, RigParams};
+use serde::{Deserialize, Serialize};
+
+use crate::sweep::plan::case_seed;
+use crate::sweep::{Approach, Case, run_case};
+
+use super::free_param::params_at;
+use super::objective::{FAILED_LOSS_DB, PointOutcome, hinge_db, natural_loss_db, verdict_matches};
+use super::plan::{ApproachKind, CalibrationPlan, Expect, TargetPoint};
+
+/// One candidate's result.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Evaluation {
+    /// Objective (dB): the weighted mean point loss plus the natural-frequency losses.
+    pub objective: f64,
+    /// Points matched from every approach.
+    pub matched: usize,
+    /// Points evaluated.
+    pub points: usize,
+    /// Each point.
+    pub outcomes: Vec<PointOutcome>,
+    /// Natural frequencies of the targets' modes (Hz; null if the rig has no such mode).
+    pub natural_hz: Vec<Option<f64>>,
+    /// Why the candidate could not be evaluated, if so.
+    pub error: Option<String>,
+}
+
+/// The case of `point` from `approach` for `params`.
+fn case_of(
+    plan: &CalibrationPlan,
+    point: &TargetPoint,
+    kind: ApproachKind,
+    params: &RigParams,
+) -> Case {
+    let approach = match kind {
+        ApproachKind::Static => Approach::Static,
+        ApproachKind::FromBelow => Approach::ramp_to(point.rpm, plan.approach_rpm, plan.ramp_s),
+        ApproachKind::FromAbove => Approach::ramp_to(point.rpm, -plan.approach_rpm, plan.ramp_s),
+    };
+    Case {
+        index: point.index,
+        rpm: point.rpm,
+        load_nm: point.load_nm,
+        values: Vec::new(),
+        params: params.clone(),
+        seed: case_seed(plan.sweep.seed, point.index),
+        approach,
+    }
+}
+
+/// Evaluates each of `candidates` (unit-box coordinates) on `points`, in parallel on the
+/// current rayon pool.
+pub fn evaluate_all(
+    plan: &CalibrationPlan,
+    candidates: &[Vec<f64>],
+    points: &[TargetPoint],
+) -> Vec<Evaluation> {
+    let params: Vec<Result<RigParams, String>> = candidates
+        .iter()
+        .map(|x| params_at(&plan.base, &plan.free, x))
+        .collect();
+    let jobs: Vec<(usize, &RigParams, usize, usize)> = params
+        .iter()
+        .enumerate()
+        .filter_map(|(c, rig)| rig.as_ref().ok().map(|rig| (c, rig)))
+        .flat_map(|(c, rig)| {
+            (0..points.len())
+                .flat_map(move |p| (0..plan.approaches.len()).map(move |a| (c, rig, p, a)))
+        })
+        .collect();
+    let heights: Vec<((usize, usize, usize), Result<(f64, String), String>)> = jobs
+        .par_iter()
+        .map(|&(c, rig, p, a)| {
+            let case = case_of(plan, &points[p], plan.approaches[a], rig);
+            let result = run_case(&plan.sweep, &case)
+                .map(|r| (r.half_order_db, r.regime.to_string()))
+                .map_err(|e| {
+                    format!(
+                        "{} rev/min, {} N m: {e:#}",
+                        points[p].rpm, points[p].load_nm
+                    )
+                });
+            ((c, p, a), result)
+        })
+        .collect();
+    params
+        .iter()
+        .enumerate()
+        .map(|(c, rig)| match rig {
+            Err(e) => failed(e.clone()),
+            Ok(rig) => {
+                let mine: Vec<_> = heights.iter().filter(|((ci, _, _), _)| *ci == c).collect();
+                assemble(plan, rig, points, &mine)
+            }
+        })
+        .collect()
+}
+
+type Job<'a> = &'a ((usize, usize, usize), Result<(f64, String), String>);
+
+/// One candidate's evaluation from its cases' results.
+fn assemble(
+    plan: &CalibrationPlan,
+    rig: &RigParams,
+    points: &[TargetPoint],
+    jobs: &[Job],
+) -> Evaluation {
+    if let Some(((_, _, _), Err(e))) = jobs.iter().find(|(_, r)| r.is_err()).copied() {
+        return failed(e.clone());
+    }
+    let line_db = plan.sweep.line_db;
+    let mut outcomes = Vec::with_capacity(points.len());
+    for (p, point) in points.iter().enumerate() {
+        let mut heights = vec![f64::NAN; plan.approaches.len()];
+        let mut regimes = vec![String::new(); plan.approaches.len()];
+        for ((_, pi, a), result) in jobs.iter().copied() {
+            if let (true, Ok((h, regime))) = (*pi == p, result) {
+                heights[*a] = *h;
+                regimes[*a] = regime.clone();
+            }
+        }
+        let loss = heights
+            .iter()
+            .map(|&h| hinge_db(point.expect, h, line_db, plan.margin_db))
+            .fold(0.0, f64::max);
+        outcomes.push(PointOutcome {
+            index: point.index,
+            rpm: point.rpm,
+            load_nm: point.load_nm,
+            expect_present: point.expect == Expect::Present,
+            heights_db: heights
+                .iter()
+                .map(|h| h.is_finite().then_some(*h))
+                .collect(),
+            regimes,
+            loss_db: point.weight * loss,
+            matched: heights
+                .iter()
+                .all(|&h| verdict_matches(point.expect, h, line_db)),
+        });
+    }
+    let weights: f64 = points.iter().map(|p| p.weight).sum();
+    let mut objective = if weights > 0.0 {
+        outcomes.iter().map(|o| o.loss_db).sum::<f64>() / weights
+    } else {
+        0.0
+    };
+    let modes = RigChains::of(rig).whole_rig.modes();
+    let natural_hz: Vec<f64> = plan
+        .natural
+        .iter()
+        .map(|n| modes.get(n.mode - 1).map_or(f64::NAN, |m| m.frequency_hz))
+        .collect();
+    objective += plan
+        .natural
+        .iter()
+        .zip(&natural_hz)
+        .map(|(n, &hz)| natural_loss_db(n, hz))
+        .sum::<f64>();
+    Evaluation {
+        objective,
+        matched: outcomes.iter().filter(|o| o.matched).count(),
+        points: outcomes.len(),
+        outcomes,
+        natural_hz: natural_hz
+            .iter()
+            .map(|h| h.is_finite().then_some(*h))
+            .collect(),
+        error: None,
+    }
+}
+
+fn failed(error: String) -> Evaluation {
+    Evaluation {
+        objective: FAILED_LOSS_DB,
+        matched: 0,
+        points: 0,
+        outcomes: Vec::new(),
+        natural_hz: Vec::new(),
+        error: Some(error),
+    }
+}
