@@ -150,7 +150,8 @@ pub struct RunArgs {
 /// Choice of parameter set.
 #[derive(Debug, Args)]
 pub struct RigArgs {
-    /// Named parameter set.
+    /// Named parameter set, or the path of a preset file (`*.toml`, as `testrig calibrate`
+    /// writes).
     #[arg(long, default_value = "basmaji-1983")]
     pub preset: String,
     /// Override one parameter (repeatable), e.g. --set teeth=31.

@@ -4,6 +4,10 @@ use anyhow::{Context, bail};
 use rig::RigParams;
 use rig::geometry::centre_distance_shift_m;
 
+use std::path::Path;
+
+use testrig::scenario::preset_file::preset_params;
+
 use crate::cli::RigArgs;
 
 /// The preset named in `args` with every override applied, in order. The names are those
@@ -11,7 +15,7 @@ use crate::cli::RigArgs;
 /// distance, as a scenario's `backlash_mm`), and the scenario forms `rig.set.NAME` and
 /// `rig.backlash_mm`.
 pub fn params_from(args: &RigArgs) -> anyhow::Result<RigParams> {
-    let mut params = rig::preset(&args.preset).context("--preset")?;
+    let mut params = preset_params(&args.preset, Path::new(".")).context("--preset")?;
     for item in &args.overrides {
         let Some((name, value)) = item.split_once('=') else {
             bail!("--set {item}: expected NAME=VALUE (`testrig params` lists the names)");

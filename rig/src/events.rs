@@ -116,27 +116,30 @@ pub fn mode_events(
     let b0 = mc.half_backlash_rad;
     let bc = b0 * mc.backlash_variation;
     let (x2, x3, v2, v3) = (X0 + 1, X0 + 2, V0 + 1, V0 + 2);
-    let gap_drive = [(x2, 1.0), (x3, -1.0), (UNIT, -b0), (REV, bc)];
-    let gap_back = [(x2, -1.0), (x3, 1.0), (UNIT, -b0), (REV, bc)];
-    // Pushing torque K δ + C δ' of each flank; δ' includes Ḃ = B₀C1·Ω sin φ.
-    let b_rate = -c * bc * rotation_rad_s;
+    // The transmission error E cos φ moves both flanks' contact the same way: it adds to
+    // the drive flank's overlap and takes from the back flank's.
+    let e = mc.te_once_rad;
+    let (rev_drive, rev_back) = (bc + e, bc - e);
+    let gap_drive = [(x2, 1.0), (x3, -1.0), (UNIT, -b0), (REV, rev_drive)];
+    let gap_back = [(x2, -1.0), (x3, 1.0), (UNIT, -b0), (REV, rev_back)];
+    // Pushing torque K δ + C δ' of each flank; δ' includes the rates of B₀C1 cos φ and E cos φ.
     let force_drive = [
         (x2, k),
         (x3, -k),
         (UNIT, -k * b0),
-        (REV, k * bc),
+        (REV, k * rev_drive),
         (v3, -c),
         (v2, c),
-        (REV + 1, b_rate),
+        (REV + 1, -c * rev_drive * rotation_rad_s),
     ];
     let force_back = [
         (x2, -k),
         (x3, k),
         (UNIT, -k * b0),
-        (REV, k * bc),
+        (REV, k * rev_back),
         (v3, c),
         (v2, -c),
-        (REV + 1, b_rate),
+        (REV + 1, -c * rev_back * rotation_rad_s),
     ];
     let limit = mc.torque_limit_nm;
     let (kp, ki) = (mc.kp_nms_per_rad, mc.ki_nm_per_rad);

@@ -22,6 +22,7 @@ fn worst_mismatch(mesh: MeshMode) -> f64 {
     let frequencies = Frequencies {
         rotation_rad_s: 1300.0 * std::f64::consts::PI / 30.0,
         oscillating_load_rad_s: 0.0,
+        brake_characteristic_nms_per_rad: 0.0,
     };
     let a = system_matrix(&mc, &layout, mode, frequencies);
     let step_s = 1.0 / 51_200.0;

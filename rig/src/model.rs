@@ -41,6 +41,12 @@ pub struct ModelConstants {
     pub torque_limit_nm: f64,
     /// Brake torque slope with speed (N m s/rad).
     pub brake_slope_nms_per_rad: f64,
+    /// Bearing and windage drag on each body (N m s/rad).
+    pub bearing_drag_nms_per_rad: f64,
+    /// Critical speed of the eddy-current brake (rad/s); 0: torque independent of speed.
+    pub brake_critical_rad_s: f64,
+    /// Once-per-revolution transmission error E of e(φ) = E cos φ (rad about the gear axis).
+    pub te_once_rad: f64,
 }
 
 /// Spring and damper pairs of the shafts: (body i, body j) for K12, K34, K45.
@@ -74,7 +80,37 @@ impl ModelConstants {
             filter_rad_s: 2.0 * std::f64::consts::PI * params.speed_feedback_filter_hz,
             torque_limit_nm: params.motor_torque_limit_nm,
             brake_slope_nms_per_rad: params.brake_speed_slope_nms_per_rad,
+            bearing_drag_nms_per_rad: params.bearing_drag_nms_per_rad,
+            brake_critical_rad_s: params.brake_critical_speed_rpm * std::f64::consts::PI / 30.0,
+            te_once_rad: params.te_once_per_rev_um * 1e-6 / GearGeometry::of(params).pitch_radius_m,
         }
+    }
+
+    /// Slope (N m s/rad) of the eddy-current brake's torque with its speed at the set
+    /// speed `speed_rad_s`, braking `torque_nm` there: T(ω) = T_set g(ω)/g(Ω) with
+    /// g(ω) = 2x/(1 + x²), x = ω/ω_c (Wouterse 1991), linearised about Ω:
+    /// dT/dω = T_set (1 − x²)/((1 + x²) Ω). Positive below the critical speed (the brake
+    /// damps), negative above it. 0 when the characteristic is off or the rig stands.
+    pub fn brake_characteristic_slope(&self, speed_rad_s: f64, torque_nm: f64) -> f64 {
+        if self.brake_critical_rad_s <= 0.0 || speed_rad_s <= 0.0 {
+            return 0.0;
+        }
+        let x2 = (speed_rad_s / self.brake_critical_rad_s).powi(2);
+        torque_nm * (1.0 - x2) / ((1.0 + x2) * speed_rad_s)
+    }
+
+    /// Drag torque (N m) of bearings and windage on each body at the set speed (at rest relative to it).
+    pub fn bearing_drag_nm(&self, speed_rad_s: f64) -> f64 {
+        self.bearing_drag_nms_per_rad * speed_rad_s
+    }
+
+    /// Transmission error e (rad) and its rate ė (rad/s) at cos φ, sin φ of the set rotation.
+    #[inline(always)]
+    pub fn transmission_error(&self, speed_rad_s: f64, cos: f64, sin: f64) -> (f64, f64) {
+        (
+            self.te_once_rad * cos,
+            -self.te_once_rad * speed_rad_s * sin,
+        )
     }
 
     /// Mesh stiffness (N m/rad) and damping (N m s/rad) with `pairs` in contact.
@@ -109,13 +145,16 @@ impl ModelConstants {
     }
 }
 
-/// Angular frequencies that enter the matrix (rad/s).
+/// What of the set points enters the matrix: angular frequencies (rad/s) and the brake's
+/// slope there.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Frequencies {
     /// Set speed Ω (rad/s): the gear errors and backlash variation turn at Ω and 2Ω.
     pub rotation_rad_s: f64,
     /// Oscillating load frequency (rad/s).
     pub oscillating_load_rad_s: f64,
+    /// Slope of the eddy-current brake's characteristic at the set point (N m s/rad).
+    pub brake_characteristic_nms_per_rad: f64,
 }
 
 /// Builds A of u' = A u for the augmented state `u` (see [`crate::layout`]) in `mode`.
@@ -138,7 +177,8 @@ pub fn system_matrix(
     }
     add_mesh(&mut a, mc, mode, freq.rotation_rad_s);
     add_gear_errors(&mut a, mc, layout);
-    add_brake(&mut a, mc, layout);
+    add_brake(&mut a, mc, layout, freq.brake_characteristic_nms_per_rad);
+    add_bearing_drag(&mut a, mc, freq.rotation_rad_s);
     add_motor(&mut a, mc, mode.motor);
     add_rotation(&mut a, REV, freq.rotation_rad_s);
     if let Some(rev2) = layout.rev2 {
@@ -179,12 +219,29 @@ fn add_mesh(a: &mut DMatrix<f64>, mc: &ModelConstants, mode: Mode, rotation_rad_
     add_spring(a, &mc.inertia_kgm2, (2, 1), k, c);
     let b0 = mc.half_backlash_rad;
     let bc = b0 * mc.backlash_variation;
-    // F_XT = −K d − C ḋ (the spring above) − flank·K·B₀ + flank·K·B₀C1 cos φ − flank·C·B₀C1·Ω sin φ.
+    let e = mc.te_once_rad;
+    // F_XT = −K d − C ḋ (the spring above) − flank·K·B₀ + flank·K·B₀C1 cos φ − flank·C·B₀C1·Ω sin φ
+    // + K E cos φ − C E Ω sin φ (the transmission error, the same on either flank).
     for (body, sign) in [(2, 1.0), (1, -1.0)] {
         let scale = flank * sign / mc.inertia_kgm2[body];
         a[(V0 + body, UNIT)] -= k * b0 * scale;
         a[(V0 + body, REV)] += k * bc * scale;
         a[(V0 + body, REV + 1)] -= c * bc * rotation_rad_s * scale;
+        let scale = sign / mc.inertia_kgm2[body];
+        a[(V0 + body, REV)] += k * e * scale;
+        a[(V0 + body, REV + 1)] -= c * e * rotation_rad_s * scale;
+    }
+}
+
+/// Bearing and windage drag −c(Ω + Vi) on each body.
+fn add_bearing_drag(a: &mut DMatrix<f64>, mc: &ModelConstants, rotation_rad_s: f64) {
+    let c = mc.bearing_drag_nms_per_rad;
+    if c == 0.0 {
+        return;
+    }
+    for (body, j) in mc.inertia_kgm2.iter().enumerate() {
+        a[(V0 + body, V0 + body)] -= c / j;
+        a[(V0 + body, UNIT)] -= c * rotation_rad_s / j;
     }
 }
 
@@ -199,12 +256,13 @@ fn add_gear_errors(a: &mut DMatrix<f64>, mc: &ModelConstants, layout: &Layout) {
     }
 }
 
-/// Brake torque on M5: load T_L + slope·V5 + oscillating part A sin ψ, all resisting.
-fn add_brake(a: &mut DMatrix<f64>, mc: &ModelConstants, layout: &Layout) {
+/// Brake torque on M5: load T_L + slope·V5 + oscillating part A sin ψ, all resisting; the
+/// slope is the set one plus the eddy-current characteristic's at the set point.
+fn add_brake(a: &mut DMatrix<f64>, mc: &ModelConstants, layout: &Layout, characteristic: f64) {
     let row = V0 + 4;
     let j5 = mc.inertia_kgm2[4];
     a[(row, LOAD)] -= 1.0 / j5;
-    a[(row, V0 + 4)] -= mc.brake_slope_nms_per_rad / j5;
+    a[(row, V0 + 4)] -= (mc.brake_slope_nms_per_rad + characteristic) / j5;
     if let Some(osc) = layout.osc {
         a[(row, osc + 1)] -= 1.0 / j5;
     }

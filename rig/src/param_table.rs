@@ -138,6 +138,9 @@ param_specs! {
     motor_torque_limit_nm, "N m", "drive torque limit: 2 hp at 2000 rev/min = 7.12";
     brake_speed_slope_nms_per_rad, "N m s/rad", "brake torque slope with speed (thesis: constant torque, 0)";
     brake_drag_nm, "N m", "residual drag added to the set load: bearings, seals, windage, brake remanence (thesis: none, 0)";
+    bearing_drag_nms_per_rad, "N m s/rad", "speed-proportional bearing and windage drag on each of the five bodies (thesis: none, 0)";
+    brake_critical_speed_rpm, "rev/min", "eddy-current brake critical speed, T ~ 2x/(1+x^2), x = w/wc, set load at set speed (Wouterse 1991; thesis: constant torque, 0 = off)";
+    te_once_per_rev_um, "um", "once-per-rev transmission error as a mesh displacement, arc at the pitch circle (thesis: none, 0)";
 }
 
 /// Looks a parameter up by name.

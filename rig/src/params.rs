@@ -77,6 +77,19 @@ pub struct RigParams {
     /// Residual drag at the brake (N m, ≥ 0): bearing and seal friction, windage and the
     /// brake's remanence, present at zero set load and added to the set load.
     pub brake_drag_nm: f64,
+    /// Speed-proportional drag of bearings and windage on each of the five bodies
+    /// (N m s/rad, ≥ 0): a torque −c·ω on each, ω its absolute speed. 0 in the thesis.
+    pub bearing_drag_nms_per_rad: f64,
+    /// Critical speed of the eddy-current brake (rev/min, ≥ 0): its torque at a fixed
+    /// excitation follows T ∝ 2x/(1 + x²), x = ω/ω_c (Wouterse 1991), peaking at ω_c; the
+    /// excitation is set so that it brakes with the set load at the set speed. 0 is the
+    /// thesis's torque independent of speed.
+    pub brake_critical_speed_rpm: f64,
+    /// Once-per-revolution transmission error as a displacement of the mesh (µm of arc at
+    /// the pitch circle), e(φ) = E cos φ: it shifts both flanks' contact the same way,
+    /// unlike the backlash variation C1 (which widens and narrows the free play) and the
+    /// error torques C2, C3 (which act whether the teeth touch or not). 0 in the thesis.
+    pub te_once_per_rev_um: f64,
 }
 
 impl RigParams {
@@ -162,6 +175,23 @@ impl RigParams {
         for (name, value) in any_finite {
             require(name, value, true, "must be a finite number")?;
         }
+        for (name, value) in [
+            ("bearing_drag_nms_per_rad", self.bearing_drag_nms_per_rad),
+            ("brake_critical_speed_rpm", self.brake_critical_speed_rpm),
+        ] {
+            require(
+                name,
+                value,
+                value >= 0.0,
+                "must be a finite number ≥ 0 (0: off)",
+            )?;
+        }
+        require(
+            "te_once_per_rev_um",
+            self.te_once_per_rev_um,
+            true,
+            "must be a finite number",
+        )?;
         require(
             "brake_drag_nm",
             self.brake_drag_nm,

@@ -65,6 +65,9 @@ pub fn basmaji_1983() -> RigParams {
         motor_torque_limit_nm: TWO_HP_W / (BASE_SPEED_RPM * std::f64::consts::PI / 30.0),
         brake_speed_slope_nms_per_rad: 0.0,
         brake_drag_nm: 0.0,
+        bearing_drag_nms_per_rad: 0.0,
+        brake_critical_speed_rpm: 0.0,
+        te_once_per_rev_um: 0.0,
     }
 }
 

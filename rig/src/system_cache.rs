@@ -43,6 +43,7 @@ impl SystemCache {
             frequencies: Frequencies {
                 rotation_rad_s: 0.0,
                 oscillating_load_rad_s: 0.0,
+                brake_characteristic_nms_per_rad: 0.0,
             },
             systems: (0..Mode::COUNT).map(|_| None).collect(),
             rotations: Vec::new(),
@@ -60,6 +61,7 @@ impl SystemCache {
         let frequencies = Frequencies {
             rotation_rad_s: ceiling.speed_rpm * std::f64::consts::PI / 30.0,
             oscillating_load_rad_s: 2.0 * std::f64::consts::PI * ceiling.oscillating_load_hz,
+            brake_characteristic_nms_per_rad: 0.0,
         };
         let stiffest = Mode {
             mesh: MeshMode::Drive,
@@ -72,6 +74,11 @@ impl SystemCache {
         };
         let rho = spectral_radius(&system_matrix(mc, layout, stiffest, frequencies));
         ((rho * output_step_s / MAX_RHO_H).ceil() as u64).max(1)
+    }
+
+    /// The set-point terms the systems are built for.
+    pub fn frequencies(&self) -> Frequencies {
+        self.frequencies
     }
 
     /// Switches to new forcing frequencies, dropping every system built for the old ones.

@@ -13,6 +13,7 @@ use super::objective::PointOutcome;
 use super::plan::{ApproachKind, CalibrationPlan};
 use crate::plots::{SearchPoint, write_convergence};
 use crate::recording::PartialFile;
+use crate::scenario::preset_file::is_preset_file;
 
 /// The best set and how it scores.
 #[derive(Clone, Debug, Serialize)]
@@ -58,7 +59,13 @@ pub fn preset_text(
     result: &CalibrationResult,
 ) -> anyhow::Result<String> {
     let params = params_at(&plan.base, &plan.free, &best.x).map_err(anyhow::Error::msg)?;
-    let preset = rig::preset(&plan.sweep.preset)?;
+    // A file cannot be the base of another: then the thesis's preset is.
+    let base_name = if is_preset_file(&plan.sweep.preset) {
+        rig::PRESET_NAMES[0]
+    } else {
+        plan.sweep.preset.as_str()
+    };
+    let preset = rig::preset(base_name)?;
     let mut text = String::new();
     let _ = writeln!(
         text,
@@ -70,7 +77,7 @@ pub fn preset_text(
         result.score.0,
         result.score.1
     );
-    let _ = writeln!(text, "base = \"{}\"\n\n[set]", plan.sweep.preset);
+    let _ = writeln!(text, "base = \"{base_name}\"\n\n[set]");
     for spec in rig::PARAM_SPECS {
         let value = spec.value(&params);
         if value != spec.value(&preset) {
@@ -105,10 +112,12 @@ pub fn write_outputs(
         "result.json",
         &serde_json::to_string_pretty(result)?,
     )?);
-    let points: Vec<SearchPoint> = ordered(records)
+    // Shards' logs one after another, numbered in one sequence.
+    let points: Vec<SearchPoint> = records
         .iter()
+        .enumerate()
         .map(|(n, r)| SearchPoint {
-            evaluation: *n,
+            evaluation: n,
             objective_db: r.result.objective,
             restart: r.restart,
         })
@@ -125,11 +134,6 @@ pub fn write_outputs(
         &report_text(plan, best, full, result),
     )?);
     Ok(files)
-}
-
-/// Records of all shards numbered in one sequence (shard logs one after another).
-fn ordered(records: &[EvaluationRecord]) -> Vec<(usize, &EvaluationRecord)> {
-    records.iter().enumerate().collect()
 }
 
 fn write_file(dir: &Path, name: &str, text: &str) -> anyhow::Result<PathBuf> {

@@ -8,6 +8,7 @@ pub mod coverage;
 pub mod file;
 pub mod overrides;
 pub mod plan;
+pub mod preset_file;
 pub mod rig_part;
 pub mod source;
 pub mod stage_part;

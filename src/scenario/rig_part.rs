@@ -6,6 +6,7 @@ use toml::Spanned;
 
 use super::file::{ChangeFile, RigFile, ScenarioFile, ScheduleFile, SurveyFile};
 use super::plan::Measure;
+use super::preset_file::preset_params;
 use super::source::ScenarioSource;
 
 /// Preset name when the scenario names none.
@@ -17,7 +18,9 @@ pub fn rig_params(src: &ScenarioSource, rig: &RigFile) -> anyhow::Result<(String
         Some(p) => (p.get_ref().clone(), p.span()),
         None => (DEFAULT_PRESET.to_string(), 0..0),
     };
-    let mut params = rig::preset(&name).map_err(|e| src.error(span, "rig.preset", e))?;
+    let dir = src.path.parent().unwrap_or(std::path::Path::new("."));
+    let mut params =
+        preset_params(&name, dir).map_err(|e| src.error(span, "rig.preset", format!("{e:#}")))?;
     if let Some(backlash) = &rig.backlash_mm {
         params.centre_distance_shift_m =
             centre_distance_shift_m(&params, backlash.get_ref().0 * 1e-3);

@@ -4,7 +4,8 @@
 use crate::model::ModelConstants;
 
 /// Overlap (rad) and its rate (rad/s) of the flank with `sign` (+1 drive, −1 back), from
-/// `mesh` = [X2, X3, V2, V3, cos φ, sin φ]: ∓(X3 − X2) − B with B = B₀(1 − C1 cos φ).
+/// `mesh` = [X2, X3, V2, V3, cos φ, sin φ]: ∓(X3 − X2 − e) − B with B = B₀(1 − C1 cos φ)
+/// and the transmission error e = E cos φ.
 #[inline(always)]
 pub(super) fn flank_overlap(
     mc: &ModelConstants,
@@ -17,7 +18,11 @@ pub(super) fn flank_overlap(
     let c1 = mc.backlash_variation;
     let b = b0 * (1.0 - c1 * cos);
     let b_rate = b0 * c1 * speed_rad_s * sin;
-    (-sign * (x3 - x2) - b, -sign * (v3 - v2) - b_rate)
+    let (e, e_rate) = mc.transmission_error(speed_rad_s, cos, sin);
+    (
+        -sign * (x3 - x2 - e) - b,
+        -sign * (v3 - v2 - e_rate) - b_rate,
+    )
 }
 
 /// Tooth in mesh (0..teeth) at driving-gear angle `theta2` (rad), for a pitch in rad.

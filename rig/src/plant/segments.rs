@@ -56,8 +56,13 @@ impl Plant {
             self.clamp_controller();
         }
         self.u[LOAD] = set.load_nm + self.params.brake_drag_nm;
-        let frequencies_changed =
-            delta_speed != 0.0 || set.oscillating_load_hz != old.set.oscillating_load_hz;
+        let frequencies = Frequencies {
+            rotation_rad_s: set.speed_rad_s(),
+            oscillating_load_rad_s: set.oscillating_load_rad_s(),
+            brake_characteristic_nms_per_rad: self
+                .mc
+                .brake_characteristic_slope(set.speed_rad_s(), self.u[LOAD]),
+        };
         self.segment = Segment {
             start_step: self.step_index,
             end_step: end
@@ -66,11 +71,8 @@ impl Plant {
             osc_phase_rad: self.osc_phase_rad(0.0),
             set,
         };
-        if frequencies_changed || self.step_index == 0 {
-            self.cache.set_frequencies(Frequencies {
-                rotation_rad_s: set.speed_rad_s(),
-                oscillating_load_rad_s: set.oscillating_load_rad_s(),
-            });
+        if frequencies != self.cache.frequencies() || self.step_index == 0 {
+            self.cache.set_frequencies(frequencies);
         }
         self.resync_harmonics(0.0);
     }

@@ -161,35 +161,35 @@ impl Plant {
         Ok(plant)
     }
 
-    /// Steady state at `set`: no vibration, every shaft carrying the load.
+    /// Steady state at `set`: no vibration, every shaft carrying the load and the drag of
+    /// the bodies after it.
     pub(super) fn set_steady_state(&mut self, set: SetPoints) {
         let load = set.load_nm + self.params.brake_drag_nm;
+        let drag = self.mc.bearing_drag_nm(set.speed_rad_s());
         let [k12, k34, k45] = self.mc.shaft_stiffness_nm_per_rad;
         let b = self.mc.half_backlash_rad * (1.0 - self.mc.backlash_variation);
+        let (e, _) = self.mc.transmission_error(set.speed_rad_s(), 1.0, 0.0);
         let k23 = self.mc.mesh_stiffness_nm_per_rad;
+        // Torques through K12, the mesh, K34 and K45: the load and the drag behind each.
+        let [t12, mesh, t34, t45] = [4.0, 3.0, 2.0, 1.0].map(|bodies| load + bodies * drag);
         // Loaded: on the loaded flank; unloaded: centred in the free play.
-        let d = match load.partial_cmp(&0.0) {
-            Some(std::cmp::Ordering::Greater) => -b - load / k23,
-            Some(std::cmp::Ordering::Less) => b - load / k23,
-            _ => 0.0,
+        let d = match mesh.partial_cmp(&0.0) {
+            Some(std::cmp::Ordering::Greater) => e - b - mesh / k23,
+            Some(std::cmp::Ordering::Less) => e + b - mesh / k23,
+            _ => e,
         };
-        let x = [
-            load / k12,
-            0.0,
-            d,
-            d - load / k34,
-            d - load / k34 - load / k45,
-        ];
+        let x = [t12 / k12, 0.0, d, d - t34 / k34, d - t34 / k34 - t45 / k45];
+        let motor_nm = load + 5.0 * drag;
         self.u = [0.0; Layout::MAX_LEN];
         self.u[X0..X0 + 5].copy_from_slice(&x);
         self.u[Z] = if self.mc.ki_nm_per_rad > 0.0 {
-            load / self.mc.ki_nm_per_rad
+            motor_nm / self.mc.ki_nm_per_rad
         } else {
             0.0
         };
         self.u[UNIT] = 1.0;
         self.u[LOAD] = load;
-        let mesh = match load.partial_cmp(&0.0) {
+        let mesh = match mesh.partial_cmp(&0.0) {
             Some(std::cmp::Ordering::Greater) => MeshMode::Drive,
             Some(std::cmp::Ordering::Less) => MeshMode::Back,
             _ => MeshMode::Apart,

@@ -1,0 +1,128 @@
+//! The model options beyond the thesis (off in its presets), each against what it must do
+//! physically: bearing drag, the eddy-current brake's characteristic, the transmission
+//! error as a displacement.
+
+mod support;
+
+use rig::{GearGeometry, RigParams, Schedule};
+
+/// The thesis's rig with every time-varying effect off: loaded, it turns without vibrating.
+fn quiet() -> RigParams {
+    let mut p = support::thesis();
+    p.backlash_variation_c1 = 0.0;
+    p.tooth_shifting = false;
+    p
+}
+
+fn std_dev(values: &[f64]) -> f64 {
+    let m = support::mean(values);
+    (values.iter().map(|v| (v - m).powi(2)).sum::<f64>() / values.len() as f64).sqrt()
+}
+
+const LOAD_NM: f64 = 2.712;
+
+#[test]
+fn bearing_drag_loads_each_shaft_with_the_drag_behind_it_and_starts_static() {
+    let mut p = quiet();
+    p.bearing_drag_nms_per_rad = 0.002;
+    let rpm = 600.0;
+    let drag = 0.002 * rpm * std::f64::consts::PI / 30.0;
+    let mut plant = support::plant(p, Schedule::constant(rpm, LOAD_NM), 10_240.0);
+    let block = support::record(&mut plant, 2.0);
+    // Intermediate shaft (K34): the brake's load and the drag of M4 and M5; input shaft
+    // (K12): M2 … M5; the motor: all five.
+    for (torque, bodies) in [
+        (&block.shaft_torque_nm[1], 2.0),
+        (&block.shaft_torque_nm[0], 4.0),
+        (&block.motor_torque_nm, 5.0),
+    ] {
+        let expected = LOAD_NM + bodies * drag;
+        assert!(
+            (support::mean(torque) - expected).abs() < 1e-9,
+            "{} vs {expected}",
+            support::mean(torque)
+        );
+        assert!(
+            std_dev(torque) < 1e-9,
+            "the steady state is not steady: {}",
+            std_dev(torque)
+        );
+    }
+}
+
+#[test]
+fn the_brake_characteristic_is_its_slope_at_the_set_point() {
+    // T(ω) = T_set g(ω)/g(Ω), g = 2x/(1 + x²): linearised, a slope T_set (1 − x²)/((1 + x²) Ω).
+    let (rpm, critical_rpm) = (1000.0, 1500.0);
+    let omega = rpm * std::f64::consts::PI / 30.0;
+    let x2: f64 = (rpm / critical_rpm).powi(2);
+    let slope = LOAD_NM * (1.0 - x2) / ((1.0 + x2) * omega);
+    let mut with_characteristic = support::thesis();
+    with_characteristic.brake_critical_speed_rpm = critical_rpm;
+    let mut with_slope = support::thesis();
+    with_slope.brake_speed_slope_nms_per_rad = slope;
+    let run = |p: RigParams| {
+        let mut plant = support::plant(p, Schedule::constant(rpm, LOAD_NM), 10_240.0);
+        support::record(&mut plant, 2.0).shaft_torque_nm[2].clone()
+    };
+    let (a, b) = (run(with_characteristic), run(with_slope));
+    assert!(
+        std_dev(&a) > 1e-3,
+        "the case does not vibrate: it shows nothing"
+    );
+    let worst = a
+        .iter()
+        .zip(&b)
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0, f64::max);
+    assert!(worst < 1e-9, "differs by {worst} N m");
+    // The brake damps below its critical speed and feeds vibration above it: with the
+    // same vibration, the brake's shaft rings less at 1000 than with the slope reversed.
+    let mut reversed = support::thesis();
+    reversed.brake_speed_slope_nms_per_rad = -slope;
+    assert!(slope > 0.0);
+    assert!(std_dev(&run(reversed)) > std_dev(&a));
+}
+
+#[test]
+fn a_quasi_static_transmission_error_turns_the_driven_gear_by_the_error() {
+    // At 20 rev/min (0.33 Hz, far below the 17.8 Hz fundamental) under load the teeth stay
+    // in contact and the driven gear follows the driving one displaced by e = E cos φ.
+    let mut p = quiet();
+    p.te_once_per_rev_um = 20.0;
+    let e_rad = 20e-6 / GearGeometry::of(&p).pitch_radius_m;
+    let rpm = 20.0;
+    let hz = rpm / 60.0;
+    let mut plant = support::plant(p, Schedule::constant(rpm, LOAD_NM), 1024.0);
+    let block = support::record(&mut plant, 2.0 / hz);
+    assert!(block.contact.iter().all(|&c| c == 1), "the teeth separated");
+    let d: Vec<f64> = block.angle_rad[2]
+        .iter()
+        .zip(&block.angle_rad[1])
+        .map(|(x3, x2)| x3 - x2)
+        .collect();
+    let (re, im) = support::phasor(&block.time_s, &d, hz);
+    let amplitude = re.hypot(im);
+    assert!(
+        (amplitude / e_rad - 1.0).abs() < 0.02,
+        "{amplitude:e} rad vs E = {e_rad:e} rad"
+    );
+    // In phase with cos φ (φ = 0 at the start).
+    assert!(re > 0.0 && im.abs() < 0.05 * re, "phase: {re:e} + {im:e} i");
+    // The error torques C2 move the gears apart by no more than the shaft deflection they cause.
+    let mut torque = quiet();
+    torque.gear_error_c2_nm = 0.5;
+    let mut plant = support::plant(torque, Schedule::constant(rpm, LOAD_NM), 1024.0);
+    let block = support::record(&mut plant, 2.0 / hz);
+    let d: Vec<f64> = block.angle_rad[2]
+        .iter()
+        .zip(&block.angle_rad[1])
+        .map(|(x3, x2)| x3 - x2)
+        .collect();
+    let (re, im) = support::phasor(&block.time_s, &d, hz);
+    assert!(
+        re.hypot(im) < 0.01 * e_rad,
+        "C2 moved the mesh by {:e} rad",
+        re.hypot(im)
+    );
+}

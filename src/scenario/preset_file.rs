@@ -1,0 +1,59 @@
+//! Presets from files: a built-in preset and the values that differ from it, as
+//! `testrig calibrate` writes them (comments say where they come from). Every command that takes a preset name takes the path
+//! of such a file (ending in `.toml`) too.
+//!
+//! ```toml
+//! base = "basmaji-1983"
+//! [set]
+//! brake_drag_nm = 0.3
+//! mesh_pairs = "alternating"
+//! ```
+
+use std::collections::BTreeMap;
+use std::path::Path;
+
+use rig::RigParams;
+use serde::Deserialize;
+use toml::Spanned;
+
+use super::source::ScenarioSource;
+
+/// The file as written.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct PresetFile {
+    /// A built-in preset the values start from.
+    base: Spanned<String>,
+    /// Values by `testrig params` name.
+    #[serde(default)]
+    set: BTreeMap<String, Spanned<toml::Value>>,
+}
+
+/// Whether `name` names a preset file rather than a built-in preset.
+pub fn is_preset_file(name: &str) -> bool {
+    name.ends_with(".toml")
+}
+
+/// The parameters of preset `name`: a built-in name, or a file's path (relative to `dir`).
+/// Errors name the file, line and field.
+pub fn preset_params(name: &str, dir: &Path) -> anyhow::Result<RigParams> {
+    if !is_preset_file(name) {
+        return Ok(rig::preset(name)?);
+    }
+    let source = ScenarioSource::read(&dir.join(name))?;
+    let file: PresetFile = source.parse_sweep()?;
+    let mut params =
+        rig::preset(file.base.get_ref()).map_err(|e| source.error(file.base.span(), "base", e))?;
+    for (key, value) in &file.set {
+        let text = match value.get_ref() {
+            toml::Value::String(s) => s.clone(),
+            other => other.to_string(),
+        };
+        rig::set_param(&mut params, key, &text)
+            .map_err(|e| source.error(value.span(), &format!("set.{key}"), e))?;
+    }
+    params
+        .validate()
+        .map_err(|e| source.error(0..0, "set", e))?;
+    Ok(params)
+}
