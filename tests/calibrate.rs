@@ -1,0 +1,227 @@
+//! `testrig calibrate`: a short search that improves its objective, resumes from its log,
+//! writes a preset every command takes, and refuses bad files at their line.
+
+mod common;
+
+use std::path::{Path, PathBuf};
+
+use common::{folder, testrig};
+
+/// Two points of the campaign's chain: unloaded at 1300 rev/min the thesis saw the half
+/// order, at 500 rev/min not. The campaign's rig starts with an intermediate shaft six
+/// times stiffer than the thesis's: its subharmonic band lies higher and 1300 rev/min
+/// shows no line; the search may soften the shaft.
+fn calibration(campaign: &Path, budget: usize) -> String {
+    format!(
+        r#"name = "short"
+campaign = "{}"
+seed = 11
+
+[case]
+settle_s = 8
+measure_s = 6
+
+[search]
+budget = {budget}
+population = 4
+sigma = 0.3
+approaches = ["from-below"]
+
+[[target]]
+rpm = [1300]
+load_nm = [0.0]
+half_order = "present"
+
+[[target]]
+rpm = [500]
+load_nm = [0.0]
+half_order = "absent"
+
+[[free]]
+name = "k34_intermediate_shaft_nm_per_rad"
+min = 1000
+max = 20000
+scale = "log"
+"#,
+        campaign.display()
+    )
+}
+
+/// The campaign with a stiff intermediate shaft (15 000 N m/rad): the search starts there.
+fn campaign(dir: &Path) -> PathBuf {
+    let text = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios/thesis-campaign.toml"),
+    )
+    .expect("campaign")
+    .replace(
+        "backlash_mm = 0.73",
+        "backlash_mm = 0.73\nset = { k34_intermediate_shaft_nm_per_rad = 15000 }",
+    );
+    let path = dir.join("campaign.toml");
+    std::fs::write(&path, text).expect("campaign");
+    path
+}
+
+fn calibrate(file: &Path, out: &Path, extra: &[&str]) -> String {
+    let mut args = vec![
+        "calibrate",
+        file.to_str().expect("utf-8"),
+        "--out",
+        out.to_str().expect("utf-8"),
+    ];
+    args.extend(extra);
+    let output = testrig(&args);
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    String::from_utf8_lossy(&output.stdout).into_owned()
+}
+
+fn log(out: &Path) -> Vec<serde_json::Value> {
+    std::fs::read_to_string(out.join("evaluations.jsonl"))
+        .expect("log")
+        .lines()
+        .map(|l| serde_json::from_str(l).expect("json line"))
+        .collect()
+}
+
+#[test]
+fn a_short_search_improves_its_objective_resumes_and_writes_a_usable_preset() {
+    let dir = folder("calibrate-short");
+    let file = dir.join("short.toml");
+    std::fs::write(&file, calibration(&campaign(&dir), 12)).expect("file");
+    let out = dir.join("out");
+    calibrate(&file, &out, &["--budget", "8"]);
+    let first = log(&out);
+    let objective = |r: &serde_json::Value| r["objective"].as_f64().expect("objective");
+    // The first candidate of the search lies near the stiff start: no line at 1300.
+    let start = objective(&first[0]);
+    let best = first.iter().map(objective).fold(f64::INFINITY, f64::min);
+    assert!(
+        start > 1.0,
+        "the start already meets the targets: {start} dB"
+    );
+    assert!(best < 0.5 * start, "no improvement: {start} → {best} dB");
+    // The search stops early only when every target is met with its margin.
+    let met = best <= 0.0;
+    assert!(
+        first.len() == 8 || (met && first.len() % 4 == 0),
+        "{} evaluations",
+        first.len()
+    );
+    // Resumed with a larger budget: the logged evaluations are reused as they were (and
+    // nothing more runs if every target was met).
+    let n = first.len();
+    let more = if met { 0 } else { 4 };
+    let said = calibrate(&file, &out, &["--resume"]);
+    assert!(
+        said.contains(&format!("{more} run now, {n} from the log")),
+        "{said}"
+    );
+    let resumed = log(&out);
+    assert_eq!(resumed.len(), n + more);
+    assert_eq!(resumed[..n], first[..]);
+    // The result and the preset file agree with the best of the log.
+    let result: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("result.json")).expect("result"))
+            .expect("json");
+    let best = resumed.iter().map(objective).fold(f64::INFINITY, f64::min);
+    assert_eq!(result["objective_db"].as_f64(), Some(best));
+    let k34: f64 = result["values"]["k34_intermediate_shaft_nm_per_rad"]
+        .as_str()
+        .expect("value")
+        .parse()
+        .expect("number");
+    let preset = out.join("preset.toml");
+    let params = testrig(&[
+        "params",
+        "--preset",
+        preset.to_str().expect("utf-8"),
+        "--json",
+    ]);
+    assert!(
+        params.status.success(),
+        "{}",
+        String::from_utf8_lossy(&params.stderr)
+    );
+    let listed: serde_json::Value = serde_json::from_slice(&params.stdout).expect("json");
+    let listed_k34 = listed["parameters"]
+        .as_array()
+        .expect("list")
+        .iter()
+        .find(|p| p["name"] == "k34_intermediate_shaft_nm_per_rad")
+        .and_then(|p| p["value"].as_str())
+        .and_then(|v| v.parse::<f64>().ok())
+        .expect("k34 listed");
+    assert_eq!(listed_k34, k34);
+    for name in ["report.md", "convergence.png", "convergence.svg"] {
+        assert!(out.join(name).is_file(), "{name} missing");
+    }
+}
+
+#[test]
+fn bad_calibration_files_are_refused_at_their_line() {
+    let dir = folder("calibrate-bad");
+    let campaign = campaign(&dir);
+    let good = calibration(&campaign, 4);
+    for (from, to, field) in [
+        (
+            "name = \"k34_intermediate_shaft_nm_per_rad\"",
+            "name = \"k34\"",
+            "free",
+        ),
+        (
+            "half_order = \"absent\"",
+            "half_order = \"gone\"",
+            "target.half_order",
+        ),
+        (
+            "approaches = [\"from-below\"]",
+            "approaches = [\"sideways\"]",
+            "search.approaches",
+        ),
+        ("min = 1000", "min = -1", "free"),
+        ("population = 4", "population = 2", "search.population"),
+    ] {
+        let file = dir.join("bad.toml");
+        std::fs::write(&file, good.replace(from, to)).expect("file");
+        let output = testrig(&[
+            "calibrate",
+            file.to_str().expect("utf-8"),
+            "--out",
+            dir.join("out").to_str().expect("utf-8"),
+        ]);
+        let said = String::from_utf8_lossy(&output.stderr);
+        assert!(!output.status.success(), "{to}: accepted");
+        assert!(
+            said.contains("bad.toml:") && said.contains(field),
+            "{to}: {said}"
+        );
+        let line = said
+            .split("bad.toml:")
+            .nth(1)
+            .and_then(|s| s.split(':').next())
+            .and_then(|l| l.parse::<usize>().ok());
+        assert!(line.is_some_and(|l| l > 1), "{to}: no line in {said}");
+    }
+}
+
+#[test]
+fn a_preset_file_is_refused_at_its_line() {
+    let dir = folder("preset-bad");
+    let file = dir.join("preset.toml");
+    std::fs::write(
+        &file,
+        "base = \"basmaji-1983\"\n[set]\nbrake_drag_nm = -1\n",
+    )
+    .expect("file");
+    let output = testrig(&["params", "--preset", file.to_str().expect("utf-8")]);
+    let said = String::from_utf8_lossy(&output.stderr);
+    assert!(!output.status.success());
+    assert!(
+        said.contains("preset.toml:3:") && said.contains("set.brake_drag_nm"),
+        "{said}"
+    );
+}
