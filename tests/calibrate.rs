@@ -107,7 +107,7 @@ fn a_short_search_improves_its_objective_resumes_and_writes_a_usable_preset() {
     // The search stops early only when every target is met with its margin.
     let met = best <= 0.0;
     assert!(
-        first.len() == 8 || (met && first.len() % 4 == 0),
+        first.len() == 8 || (met && first.len().is_multiple_of(4)),
         "{} evaluations",
         first.len()
     );

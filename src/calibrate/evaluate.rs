@@ -72,19 +72,22 @@ pub fn evaluate_all(
                 .flat_map(move |p| (0..plan.approaches.len()).map(move |a| (c, rig, p, a)))
         })
         .collect();
-    let heights: Vec<((usize, usize, usize), Result<(f64, String), String>)> = jobs
+    let heights: Vec<CaseOutcome> = jobs
         .par_iter()
-        .map(|&(c, rig, p, a)| {
-            let case = case_of(plan, &points[p], plan.approaches[a], rig);
+        .map(|&(candidate, rig, point, approach)| {
+            let case = case_of(plan, &points[point], plan.approaches[approach], rig);
             let result = run_case(&plan.sweep, &case)
                 .map(|r| (r.half_order_db, r.regime.to_string()))
                 .map_err(|e| {
-                    format!(
-                        "{} rev/min, {} N m: {e:#}",
-                        points[p].rpm, points[p].load_nm
-                    )
+                    let p = &points[point];
+                    format!("{} rev/min, {} N m: {e:#}", p.rpm, p.load_nm)
                 });
-            ((c, p, a), result)
+            CaseOutcome {
+                candidate,
+                point,
+                approach,
+                result,
+            }
         })
         .collect();
     params
@@ -93,23 +96,29 @@ pub fn evaluate_all(
         .map(|(c, rig)| match rig {
             Err(e) => failed(e.clone()),
             Ok(rig) => {
-                let mine: Vec<_> = heights.iter().filter(|((ci, _, _), _)| *ci == c).collect();
+                let mine: Vec<&CaseOutcome> = heights.iter().filter(|h| h.candidate == c).collect();
                 assemble(plan, rig, points, &mine)
             }
         })
         .collect()
 }
 
-type Job<'a> = &'a ((usize, usize, usize), Result<(f64, String), String>);
+/// One case of one candidate: its half-order height (dB) and regime, or why it failed.
+struct CaseOutcome {
+    candidate: usize,
+    point: usize,
+    approach: usize,
+    result: Result<(f64, String), String>,
+}
 
 /// One candidate's evaluation from its cases' results.
 fn assemble(
     plan: &CalibrationPlan,
     rig: &RigParams,
     points: &[TargetPoint],
-    jobs: &[Job],
+    cases: &[&CaseOutcome],
 ) -> Evaluation {
-    if let Some(((_, _, _), Err(e))) = jobs.iter().find(|(_, r)| r.is_err()).copied() {
+    if let Some(Err(e)) = cases.iter().map(|c| &c.result).find(|r| r.is_err()) {
         return failed(e.clone());
     }
     let line_db = plan.sweep.line_db;
@@ -117,10 +126,10 @@ fn assemble(
     for (p, point) in points.iter().enumerate() {
         let mut heights = vec![f64::NAN; plan.approaches.len()];
         let mut regimes = vec![String::new(); plan.approaches.len()];
-        for ((_, pi, a), result) in jobs.iter().copied() {
-            if let (true, Ok((h, regime))) = (*pi == p, result) {
-                heights[*a] = *h;
-                regimes[*a] = regime.clone();
+        for case in cases.iter().filter(|c| c.point == p) {
+            if let Ok((h, regime)) = &case.result {
+                heights[case.approach] = *h;
+                regimes[case.approach] = regime.clone();
             }
         }
         let loss = heights
