@@ -16,7 +16,7 @@ fn worst_mismatch(mesh: MeshMode) -> f64 {
     let layout = Layout::new(true, false);
     let mode = Mode {
         mesh,
-        pairs: PairZone::One,
+        pairs: PairZone::ONE,
         motor: MotorMode::Linear,
     };
     let frequencies = Frequencies {

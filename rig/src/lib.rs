@@ -34,6 +34,7 @@ pub mod modal;
 mod mode;
 mod model;
 pub mod options;
+mod pair_zones;
 pub mod param_table;
 pub mod params;
 mod plant;

@@ -18,13 +18,30 @@ pub enum MeshMode {
     BackClipped,
 }
 
-/// How many tooth pairs carry the mesh torque.
+/// How stiff the mesh is: one pair (level 0), two pairs (level [`PairZone::TWO`]), or a
+/// step of a smoothed change between them (levels 1 … 4, `mesh_stiffness_smoothing`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum PairZone {
+pub struct PairZone(pub u8);
+
+/// Steps of each smoothed change between one and two pairs.
+pub const TRANSITION_STEPS: u8 = 4;
+
+impl PairZone {
     /// One pair: stiffness K23.
-    One,
+    pub const ONE: Self = Self(0);
     /// Two pairs: stiffness K23 × `double_pair_stiffness_ratio`.
-    Two,
+    pub const TWO: Self = Self(TRANSITION_STEPS + 1);
+    /// Number of levels.
+    pub const LEVELS: usize = Self::TWO.0 as usize + 1;
+
+    /// Where the level lies from one pair (0) to two (1): step l of a change at (l − ½)/steps.
+    pub fn share_of_second_pair(self) -> f64 {
+        match self.0 {
+            0 => 0.0,
+            l if l >= Self::TWO.0 => 1.0,
+            l => (f64::from(l) - 0.5) / f64::from(TRANSITION_STEPS),
+        }
+    }
 }
 
 /// State of the drive's speed controller.
@@ -89,11 +106,11 @@ impl Mode {
     /// Index in 0..[`Mode::COUNT`], for caches.
     pub fn index(self) -> usize {
         let mesh = self.mesh as usize;
-        let pairs = self.pairs as usize;
+        let pairs = usize::from(self.pairs.0);
         let motor = self.motor as usize;
-        (mesh * 2 + pairs) * 3 + motor
+        (mesh * PairZone::LEVELS + pairs) * 3 + motor
     }
 
     /// Number of distinct modes.
-    pub const COUNT: usize = 5 * 2 * 3;
+    pub const COUNT: usize = 5 * PairZone::LEVELS * 3;
 }

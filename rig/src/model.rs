@@ -115,10 +115,7 @@ impl ModelConstants {
 
     /// Mesh stiffness (N m/rad) and damping (N m s/rad) with `pairs` in contact.
     pub fn mesh_spring(&self, pairs: PairZone) -> (f64, f64) {
-        let ratio = match pairs {
-            PairZone::One => 1.0,
-            PairZone::Two => self.double_pair_ratio,
-        };
+        let ratio = 1.0 + (self.double_pair_ratio - 1.0) * pairs.share_of_second_pair();
         (
             ratio * self.mesh_stiffness_nm_per_rad,
             ratio * self.mesh_damping_nms_per_rad,

@@ -132,6 +132,7 @@ param_specs! {
     gear_error_c3_nm, "N m", "C3 twice-per-rev gear error torque on M2 and M3 (thesis: not given)";
     mesh_pairs, "-", "tooth pairs sharing the load: single (thesis) or alternating (contact ratio from geometry)";
     double_pair_stiffness_ratio, "1", "mesh stiffness and damping with two pairs / one pair (two pairs in parallel: 2)";
+    mesh_stiffness_smoothing, "1", "width of each single/double pair change as a fraction of the pitch, 4-step staircase (thesis: one pair, 0 = sharp)";
     speed_loop_hz, "Hz", "closed speed-loop natural frequency on the whole rig inertia (thesis silent: 0.5)";
     speed_loop_damping_ratio, "1", "closed speed-loop damping ratio (thesis silent: 0.7)";
     speed_feedback_filter_hz, "Hz", "low-pass on the controller's speed feedback (thesis silent: 2)";

@@ -63,6 +63,9 @@ pub struct RigParams {
     pub mesh_pairs: MeshPairs,
     /// Mesh stiffness and damping with two pairs in contact, as a multiple of one pair's.
     pub double_pair_stiffness_ratio: f64,
+    /// Width of each change between one and two pairs in contact, as a fraction of the
+    /// tooth pitch (0: sharp steps; see `pair_zones`). Only with alternating pairs.
+    pub mesh_stiffness_smoothing: f64,
     /// Natural frequency of the closed speed loop on the whole rig's inertia (Hz); 0 turns
     /// the loop off (motor torque zero, for free-vibration studies).
     pub speed_loop_hz: f64,
@@ -232,6 +235,13 @@ impl RigParams {
             loop_hz,
             loop_hz >= 0.0,
             "must be a finite number ≥ 0 (0 switches the speed loop off)",
+        )?;
+        let smoothing = self.mesh_stiffness_smoothing;
+        require(
+            "mesh_stiffness_smoothing",
+            smoothing,
+            (0.0..=1.0).contains(&smoothing),
+            "must lie in [0, 1] (a fraction of the tooth pitch)",
         )?;
         let c1 = self.backlash_variation_c1;
         require(

@@ -59,6 +59,7 @@ pub fn basmaji_1983() -> RigParams {
         gear_error_c3_nm: 0.0,
         mesh_pairs: MeshPairs::Single,
         double_pair_stiffness_ratio: 2.0,
+        mesh_stiffness_smoothing: 0.0,
         speed_loop_hz: 0.5,
         speed_loop_damping_ratio: 0.7,
         speed_feedback_filter_hz: 2.0,

@@ -66,9 +66,9 @@ impl SystemCache {
         let stiffest = Mode {
             mesh: MeshMode::Drive,
             pairs: if mc.double_pair_ratio > 1.0 {
-                PairZone::Two
+                PairZone::TWO
             } else {
-                PairZone::One
+                PairZone::ONE
             },
             motor: MotorMode::Linear,
         };

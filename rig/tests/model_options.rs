@@ -126,3 +126,56 @@ fn a_quasi_static_transmission_error_turns_the_driven_gear_by_the_error() {
         re.hypot(im)
     );
 }
+
+#[test]
+fn a_smoothed_mesh_stiffness_steps_through_its_staircase_for_the_set_share_of_each_pitch() {
+    // Quasi-static under load, the mesh torque over the tooth overlap is the stiffness in
+    // force: K23 with one pair, 2 K23 with two, and with smoothing w four steps between
+    // them at K23 (1 + (l − ½)/4), each held for w/4 of the pitch at both changes.
+    let share_at = |smoothing: f64| {
+        let mut p = quiet();
+        p.mesh_pairs = rig::MeshPairs::Alternating;
+        p.mesh_stiffness_smoothing = smoothing;
+        let k = p.k23_mesh_nm_per_rad;
+        let b = GearGeometry::of(&p).half_backlash_rad;
+        let mut plant = support::plant(p, Schedule::constant(20.0, LOAD_NM), 10_240.0);
+        let block = support::record(&mut plant, 1.0);
+        let stiffness: Vec<f64> = (0..block.len())
+            .map(|n| {
+                let overlap = -(block.angle_rad[2][n] - block.angle_rad[1][n]) - b;
+                block.mesh_torque_nm[n] / overlap / k
+            })
+            .collect();
+        let share = |level: f64| {
+            stiffness
+                .iter()
+                .filter(|s| (*s / level - 1.0).abs() < 0.01)
+                .count() as f64
+                / stiffness.len() as f64
+        };
+        let steps: Vec<f64> = (1..=4)
+            .map(|l| share(1.0 + (f64::from(l) - 0.5) / 4.0))
+            .collect();
+        (share(1.0), share(2.0), steps)
+    };
+    let (one, two, steps) = share_at(0.0);
+    assert!(
+        steps.iter().all(|&s| s == 0.0),
+        "steps without smoothing: {steps:?}"
+    );
+    assert!(one + two > 0.97, "one {one}, two {two}");
+    let w = 0.2;
+    let (one_s, two_s, steps) = share_at(w);
+    for s in &steps {
+        assert!(
+            (s - w / 2.0).abs() < 0.01,
+            "each step held {s} of the time, expected {}",
+            w / 2.0
+        );
+    }
+    // The staircase takes its time half from each neighbouring zone.
+    assert!(
+        (one - one_s - w).abs() < 0.02 && (two - two_s - w).abs() < 0.02,
+        "{one} → {one_s}, {two} → {two_s}"
+    );
+}

@@ -11,6 +11,7 @@ use crate::layout::{LOAD, Layout, N_MECH, UNIT, X0, Z};
 use crate::mode::{MeshMode, Mode, MotorMode, PairZone};
 use crate::model::ModelConstants;
 use crate::options::{ContactLaw, MeshPairs};
+use crate::pair_zones::PairZones;
 use crate::params::RigParams;
 use crate::records::{Impact, RevolutionSample};
 use crate::schedule::{LiveCeiling, MAX_SPEED_RPM, Schedule, SetPoints};
@@ -60,6 +61,8 @@ pub struct Plant {
     pub(super) params: RigParams,
     pub(super) mc: ModelConstants,
     pub(super) geometry: GearGeometry,
+    /// The mesh stiffness zones of a tooth period.
+    pub(super) zones: PairZones,
     pub(super) schedule: Schedule,
     pub(super) layout: Layout,
     pub(super) law: ContactLaw,
@@ -112,6 +115,10 @@ impl Plant {
             alternating_pairs: alternating && geometry.double_pair_fraction() < 1.0,
             tooth_shifting: params.tooth_shifting,
         };
+        let zones = PairZones::new(
+            geometry.double_pair_fraction(),
+            params.mesh_stiffness_smoothing,
+        );
         let output_step_s = 1.0 / config.output_rate_hz;
         let substeps = SystemCache::substeps_for(&mc, &layout, ceiling, output_step_s);
         let step_s = output_step_s / substeps as f64;
@@ -128,6 +135,7 @@ impl Plant {
             cache: SystemCache::new(mc.clone(), layout, law, flags, step_s),
             params,
             mc,
+            zones,
             geometry,
             schedule,
             layout,
@@ -141,7 +149,7 @@ impl Plant {
             u: [0.0; Layout::MAX_LEN],
             mode: Mode {
                 mesh: MeshMode::Apart,
-                pairs: PairZone::One,
+                pairs: PairZone::ONE,
                 motor: MotorMode::Linear,
             },
             step_index: 0,
@@ -196,7 +204,7 @@ impl Plant {
         };
         self.mode = Mode {
             mesh,
-            pairs: PairZone::One,
+            pairs: PairZone::ONE,
             motor: MotorMode::Linear,
         };
         self.clamp_controller();

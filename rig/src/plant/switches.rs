@@ -150,30 +150,21 @@ impl Plant {
         });
     }
 
-    /// Pair zones alternate along θ2: zone 2k is [kp, kp + fp) with two pairs, zone 2k+1
-    /// [kp + fp, (k+1)p) with one, f = ε − 1.
+    /// Start and end (rad of θ2) of the current pair zone (see [`crate::pair_zones`]).
     pub(super) fn zone_bounds(&self) -> (f64, f64) {
         let pitch = self.geometry.tooth_pitch_rad;
-        let f = self.geometry.double_pair_fraction();
-        let k = self.zone_index.div_euclid(2) as f64;
-        if self.zone_index.rem_euclid(2) == 0 {
-            (k * pitch, (k + f) * pitch)
-        } else {
-            ((k + f) * pitch, (k + 1.0) * pitch)
-        }
+        let (start, end) = self.zones.bounds(self.zone_index);
+        (start * pitch, end * pitch)
     }
 
     pub(super) fn set_zone_from_angle(&mut self, tau_s: f64) {
         let engaged = matches!(self.mode.mesh, MeshMode::Drive | MeshMode::Back);
         if !(self.flags.alternating_pairs && engaged) {
-            self.mode.pairs = PairZone::One;
+            self.mode.pairs = PairZone::ONE;
             return;
         }
-        let pitch = self.geometry.tooth_pitch_rad;
         let theta2 = self.driving_gear_angle_rad(tau_s);
-        let k = (theta2 / pitch).floor();
-        let in_double = theta2 - k * pitch < self.geometry.double_pair_fraction() * pitch;
-        self.zone_index = 2 * k as i64 + i64::from(!in_double);
+        self.zone_index = self.zones.zone_at(theta2 / self.geometry.tooth_pitch_rad);
         self.apply_zone();
     }
 
@@ -183,10 +174,6 @@ impl Plant {
     }
 
     pub(super) fn apply_zone(&mut self) {
-        self.mode.pairs = if self.zone_index.rem_euclid(2) == 0 {
-            PairZone::Two
-        } else {
-            PairZone::One
-        };
+        self.mode.pairs = self.zones.level(self.zone_index);
     }
 }
