@@ -225,3 +225,58 @@ fn a_preset_file_is_refused_at_its_line() {
         "{said}"
     );
 }
+
+#[test]
+fn a_natural_frequency_target_finds_the_shaft_stiffness_of_the_measured_fundamental() {
+    // The measured fundamental, 13.33 Hz, as a natural frequency of the linear model: the
+    // intermediate shaft that gives it is 1449.5 N m/rad (docs/calibration.md, found by
+    // hand with `testrig modes`); the search has only the linear model to evaluate.
+    let dir = folder("calibrate-natural");
+    let text = calibration(&campaign(&dir), 120)
+        .split("[[target]]")
+        .next()
+        .expect("head")
+        .to_string()
+        + r#"
+[[natural]]
+mode = 1
+hz = 13.33
+tolerance_hz = 0.005
+
+[[free]]
+name = "k34_intermediate_shaft_nm_per_rad"
+min = 500
+max = 5000
+scale = "log"
+"#;
+    let file = dir.join("natural.toml");
+    std::fs::write(&file, text).expect("file");
+    let out = dir.join("out");
+    calibrate(&file, &out, &[]);
+    let result: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("result.json")).expect("result"))
+            .expect("json");
+    assert_eq!(result["objective_db"].as_f64(), Some(0.0), "{result}");
+    let k34: f64 = result["values"]["k34_intermediate_shaft_nm_per_rad"]
+        .as_str()
+        .and_then(|v| v.parse().ok())
+        .expect("k34");
+    assert!((k34 / 1449.5 - 1.0).abs() < 0.005, "K34 = {k34}");
+}
+
+#[test]
+fn a_cross_validated_search_scores_the_points_it_did_not_see() {
+    let dir = folder("calibrate-halves");
+    let file = dir.join("halves.toml");
+    std::fs::write(&file, calibration(&campaign(&dir), 4)).expect("file");
+    let out = dir.join("out");
+    let said = calibrate(&file, &out, &["--train-half", "even"]);
+    assert!(said.contains("held-out points"), "{said}");
+    let result: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("result.json")).expect("result"))
+            .expect("json");
+    // Two points: the search sees the first (index 0), the second is held out.
+    assert_eq!(result["training_score"][1], 1, "{result}");
+    assert_eq!(result["held_out_score"][1], 1, "{result}");
+    assert_eq!(result["score"][1], 2, "{result}");
+}
