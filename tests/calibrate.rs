@@ -5,7 +5,7 @@ mod common;
 
 use std::path::{Path, PathBuf};
 
-use common::{folder, testrig};
+use common::{folder, testrig, testrig_ok};
 
 /// Two points of the campaign's chain: unloaded at 1300 rev/min the thesis saw the half
 /// order, at 500 rev/min not. The campaign's rig starts with an intermediate shaft six
@@ -70,13 +70,7 @@ fn calibrate(file: &Path, out: &Path, extra: &[&str]) -> String {
         out.to_str().expect("utf-8"),
     ];
     args.extend(extra);
-    let output = testrig(&args);
-    assert!(
-        output.status.success(),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
-    String::from_utf8_lossy(&output.stdout).into_owned()
+    testrig_ok(&args)
 }
 
 fn log(out: &Path) -> Vec<serde_json::Value> {

@@ -5,7 +5,7 @@ mod common;
 
 use std::path::Path;
 
-use common::{csv_rows, folder, number, sets, testrig};
+use common::{csv_rows, folder, number, sets, testrig, testrig_ok};
 use testrig::sweep::Shard;
 
 /// A small grid: two speeds, two loads, two tooth counts; short cases.
@@ -55,13 +55,7 @@ fn sweep(dir: &Path, out: &str, extra: &[&str]) -> String {
         out.to_str().expect("utf-8"),
     ];
     args.extend(extra);
-    let output = testrig(&args);
-    assert!(
-        output.status.success(),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
-    String::from_utf8_lossy(&output.stdout).into_owned()
+    testrig_ok(&args)
 }
 
 fn table(dir: &Path) -> String {

@@ -6,24 +6,11 @@ mod support;
 
 use rig::{GearGeometry, RigParams, Schedule};
 
-/// The thesis's rig with every time-varying effect off: loaded, it turns without vibrating.
-fn quiet() -> RigParams {
-    let mut p = support::thesis();
-    p.backlash_variation_c1 = 0.0;
-    p.tooth_shifting = false;
-    p
-}
-
-fn std_dev(values: &[f64]) -> f64 {
-    let m = support::mean(values);
-    (values.iter().map(|v| (v - m).powi(2)).sum::<f64>() / values.len() as f64).sqrt()
-}
-
 const LOAD_NM: f64 = 2.712;
 
 #[test]
 fn bearing_drag_loads_each_shaft_with_the_drag_behind_it_and_starts_static() {
-    let mut p = quiet();
+    let mut p = support::quiet();
     p.bearing_drag_nms_per_rad = 0.002;
     let rpm = 600.0;
     let drag = 0.002 * rpm * std::f64::consts::PI / 30.0;
@@ -43,9 +30,9 @@ fn bearing_drag_loads_each_shaft_with_the_drag_behind_it_and_starts_static() {
             support::mean(torque)
         );
         assert!(
-            std_dev(torque) < 1e-9,
+            support::std_dev(torque) < 1e-9,
             "the steady state is not steady: {}",
-            std_dev(torque)
+            support::std_dev(torque)
         );
     }
 }
@@ -67,7 +54,7 @@ fn the_brake_characteristic_is_its_slope_at_the_set_point() {
     };
     let (a, b) = (run(with_characteristic), run(with_slope));
     assert!(
-        std_dev(&a) > 1e-3,
+        support::std_dev(&a) > 1e-3,
         "the case does not vibrate: it shows nothing"
     );
     let worst = a
@@ -81,14 +68,14 @@ fn the_brake_characteristic_is_its_slope_at_the_set_point() {
     let mut reversed = support::thesis();
     reversed.brake_speed_slope_nms_per_rad = -slope;
     assert!(slope > 0.0);
-    assert!(std_dev(&run(reversed)) > std_dev(&a));
+    assert!(support::std_dev(&run(reversed)) > support::std_dev(&a));
 }
 
 #[test]
 fn a_quasi_static_transmission_error_turns_the_driven_gear_by_the_error() {
     // At 20 rev/min (0.33 Hz, far below the 17.8 Hz fundamental) under load the teeth stay
     // in contact and the driven gear follows the driving one displaced by e = E cos φ.
-    let mut p = quiet();
+    let mut p = support::quiet();
     p.te_once_per_rev_um = 20.0;
     let e_rad = 20e-6 / GearGeometry::of(&p).pitch_radius_m;
     let rpm = 20.0;
@@ -96,11 +83,7 @@ fn a_quasi_static_transmission_error_turns_the_driven_gear_by_the_error() {
     let mut plant = support::plant(p, Schedule::constant(rpm, LOAD_NM), 1024.0);
     let block = support::record(&mut plant, 2.0 / hz);
     assert!(block.contact.iter().all(|&c| c == 1), "the teeth separated");
-    let d: Vec<f64> = block.angle_rad[2]
-        .iter()
-        .zip(&block.angle_rad[1])
-        .map(|(x3, x2)| x3 - x2)
-        .collect();
+    let d = support::mesh_angle(&block);
     let (re, im) = support::phasor(&block.time_s, &d, hz);
     let amplitude = re.hypot(im);
     assert!(
@@ -110,15 +93,11 @@ fn a_quasi_static_transmission_error_turns_the_driven_gear_by_the_error() {
     // In phase with cos φ (φ = 0 at the start).
     assert!(re > 0.0 && im.abs() < 0.05 * re, "phase: {re:e} + {im:e} i");
     // The error torques C2 move the gears apart by no more than the shaft deflection they cause.
-    let mut torque = quiet();
+    let mut torque = support::quiet();
     torque.gear_error_c2_nm = 0.5;
     let mut plant = support::plant(torque, Schedule::constant(rpm, LOAD_NM), 1024.0);
     let block = support::record(&mut plant, 2.0 / hz);
-    let d: Vec<f64> = block.angle_rad[2]
-        .iter()
-        .zip(&block.angle_rad[1])
-        .map(|(x3, x2)| x3 - x2)
-        .collect();
+    let d = support::mesh_angle(&block);
     let (re, im) = support::phasor(&block.time_s, &d, hz);
     assert!(
         re.hypot(im) < 0.01 * e_rad,
@@ -133,7 +112,7 @@ fn a_smoothed_mesh_stiffness_steps_through_its_staircase_for_the_set_share_of_ea
     // force: K23 with one pair, 2 K23 with two, and with smoothing w four steps between
     // them at K23 (1 + (l − ½)/4), each held for w/4 of the pitch at both changes.
     let share_at = |smoothing: f64| {
-        let mut p = quiet();
+        let mut p = support::quiet();
         p.mesh_pairs = rig::MeshPairs::Alternating;
         p.mesh_stiffness_smoothing = smoothing;
         let k = p.k23_mesh_nm_per_rad;

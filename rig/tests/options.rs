@@ -2,37 +2,28 @@
 
 mod support;
 
-use rig::{ContactLaw, GearGeometry, MeshPairs, RigParams, Schedule};
-
-/// Thesis preset with every time-varying effect off: a loaded rig at 200 rev/min is then static.
-fn quiet() -> RigParams {
-    let mut p = support::thesis();
-    p.backlash_variation_c1 = 0.0;
-    p.tooth_shifting = false;
-    p
-}
-
-fn std_dev(values: &[f64]) -> f64 {
-    let m = support::mean(values);
-    (values.iter().map(|v| (v - m).powi(2)).sum::<f64>() / values.len() as f64).sqrt()
-}
+use rig::{ContactLaw, GearGeometry, MeshPairs, Schedule};
 
 const LOAD: f64 = 2.712;
 const RPM: f64 = 200.0;
 
 #[test]
 fn without_options_a_loaded_rig_is_static() {
-    let mut plant = support::plant(quiet(), Schedule::constant(RPM, LOAD), 51_200.0);
+    let mut plant = support::plant(support::quiet(), Schedule::constant(RPM, LOAD), 51_200.0);
     let block = support::record(&mut plant, 1.0);
     let torque = &block.shaft_torque_nm[1];
-    assert!(std_dev(torque) < 1e-9, "{}", std_dev(torque));
+    assert!(
+        support::std_dev(torque) < 1e-9,
+        "{}",
+        support::std_dev(torque)
+    );
     assert!((support::mean(torque) - LOAD).abs() < 1e-9);
     assert!(plant.impacts().is_empty());
 }
 
 #[test]
 fn tooth_shifting_kicks_the_shafts_at_tooth_pass_frequency() {
-    let mut p = quiet();
+    let mut p = support::quiet();
     p.tooth_shifting = true;
     let mut plant = support::plant(p, Schedule::constant(RPM, LOAD), 51_200.0);
     let block = support::record(&mut plant, 3.0);
@@ -43,14 +34,18 @@ fn tooth_shifting_kicks_the_shafts_at_tooth_pass_frequency() {
     let at_tooth = re.hypot(im);
     let (re, im) = support::phasor(t, torque, 1.5 * tooth_hz);
     let between = re.hypot(im);
-    assert!(std_dev(torque) > 1e-4, "no effect: {}", std_dev(torque));
+    assert!(
+        support::std_dev(torque) > 1e-4,
+        "no effect: {}",
+        support::std_dev(torque)
+    );
     assert!(
         at_tooth > 10.0 * between,
         "tooth-pass line {at_tooth:e} vs {between:e} beside it"
     );
     // Handing the overlap back removes the mesh's elastic deflection: with the load still
     // carried, the gears sit closer to the flank on average than the static T/K23.
-    let p = quiet();
+    let p = support::quiet();
     let b = GearGeometry::of(&p).half_backlash_rad;
     let mean_overlap = support::mean(
         &block.angle_rad[1][start..]
@@ -67,7 +62,7 @@ fn tooth_shifting_kicks_the_shafts_at_tooth_pass_frequency() {
 
 #[test]
 fn two_pairs_halve_the_mesh_deflection_for_the_contact_ratio_fraction() {
-    let mut p = quiet();
+    let mut p = support::quiet();
     p.mesh_pairs = MeshPairs::Alternating;
     let geometry = GearGeometry::of(&p);
     let fraction = geometry.double_pair_fraction();
@@ -110,12 +105,12 @@ fn two_pairs_halve_the_mesh_deflection_for_the_contact_ratio_fraction() {
         "double-pair overlap {two:e}"
     );
     // The stiffness changes excite the shafts at the tooth-pass frequency.
-    assert!(std_dev(&block.shaft_torque_nm[1][block.len() / 2..]) > 1e-5);
+    assert!(support::std_dev(&block.shaft_torque_nm[1][block.len() / 2..]) > 1e-5);
 }
 
 #[test]
 fn backlash_variation_moves_the_loaded_gears_once_per_revolution() {
-    let mut p = quiet();
+    let mut p = support::quiet();
     p.backlash_variation_c1 = 0.38;
     let mut plant = support::plant(p.clone(), Schedule::constant(RPM, LOAD), 51_200.0);
     let block = support::record(&mut plant, 3.0);

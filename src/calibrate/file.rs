@@ -5,6 +5,7 @@ use serde::Deserialize;
 use toml::Spanned;
 
 use crate::scenario::values::{LoadNm, Positive, SpeedRpm};
+use crate::sweep::file::CaseFile;
 
 /// The whole file.
 #[derive(Debug, Deserialize)]
@@ -23,7 +24,7 @@ pub struct CalibrationFile {
     pub seed: u64,
     /// The evaluations' case timing, instead of the campaign's.
     #[serde(default)]
-    pub case: Option<CaseTiming>,
+    pub case: Option<CaseFile>,
     /// The search.
     #[serde(default)]
     pub search: SearchFile,
@@ -36,16 +37,6 @@ pub struct CalibrationFile {
     /// The parameters the search may change.
     #[serde(default)]
     pub free: Vec<Spanned<FreeFile>>,
-}
-
-/// `[case]`: settling and measured time of each evaluated point.
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct CaseTiming {
-    /// Simulated time before measuring (s).
-    pub settle_s: Spanned<Positive>,
-    /// Simulated time measured (s).
-    pub measure_s: Spanned<Positive>,
 }
 
 /// `[search]`.

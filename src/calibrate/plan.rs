@@ -6,8 +6,8 @@ use std::path::Path;
 use rig::RigParams;
 
 use crate::scenario::ScenarioSource;
-use crate::scenario::values::check_simulated_s;
 use crate::sweep::file::SweepFile;
+use crate::sweep::plan::case_timing;
 use crate::sweep::{SweepPlan, build_sweep};
 
 use super::file::{CalibrationFile, FreeFile};
@@ -174,24 +174,7 @@ fn campaign_plan(src: &ScenarioSource, file: &CalibrationFile) -> anyhow::Result
     let sweep_file: SweepFile = campaign.parse_sweep()?;
     let mut sweep = build_sweep(&campaign, &sweep_file)?;
     if let Some(timing) = &file.case {
-        for (value, field) in [
-            (&timing.settle_s, "case.settle_s"),
-            (&timing.measure_s, "case.measure_s"),
-        ] {
-            check_simulated_s(value.get_ref().0, false)
-                .map_err(|message| src.error(value.span(), field, message))?;
-        }
-        let analyser = &sweep.analyser.settings;
-        let block_s = analyser.block as f64 / analyser.sample_rate_hz();
-        if timing.measure_s.get_ref().0 < block_s {
-            return Err(src.error(
-                timing.measure_s.span(),
-                "case.measure_s",
-                format!("shorter than one analyser block ({block_s} s)"),
-            ));
-        }
-        sweep.settle_s = timing.settle_s.get_ref().0;
-        sweep.measure_s = timing.measure_s.get_ref().0;
+        (sweep.settle_s, sweep.measure_s) = case_timing(src, timing, &sweep.analyser)?;
     }
     Ok(sweep)
 }

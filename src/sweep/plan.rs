@@ -11,7 +11,7 @@ use crate::scenario::values::{check_load_within_motor, check_simulated_s};
 use crate::scenario::{AnalyserPlan, ChainPlan, ScenarioSource};
 
 use super::approach::Approach;
-use super::file::SweepFile;
+use super::file::{CaseFile, SweepFile};
 
 /// Everything a sweep needs, checked.
 #[derive(Clone, Debug)]
@@ -68,21 +68,7 @@ pub fn build_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<Swe
     let chain = chain_plan(src, &file.chain, rate_hz, file.seed, band_hz)?;
     let input = file.analyser.input.as_ref();
     read_signal(src, &chain.stages, input, "analyser.input", &analyser.input)?;
-    let block_s = analyser.settings.block as f64 / analyser.settings.sample_rate_hz();
-    for (value, field) in [
-        (&file.case.settle_s, "case.settle_s"),
-        (&file.case.measure_s, "case.measure_s"),
-    ] {
-        check_simulated_s(value.get_ref().0, false)
-            .map_err(|message| src.error(value.span(), field, message))?;
-    }
-    if file.case.measure_s.get_ref().0 < block_s {
-        return Err(src.error(
-            file.case.measure_s.span(),
-            "case.measure_s",
-            format!("shorter than one analyser block ({block_s} s): no spectrum could be taken"),
-        ));
-    }
+    let (settle_s, measure_s) = case_timing(src, &file.case, &analyser)?;
     let grid = &file.grid;
     if grid.rpm.is_empty() || grid.load_nm.is_empty() {
         return Err(src.error(0..0, "grid", "rpm and load_nm each need at least one value"));
@@ -148,14 +134,39 @@ pub fn build_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<Swe
         seed: file.seed,
         rate_hz,
         preset,
-        settle_s: file.case.settle_s.get_ref().0,
-        measure_s: file.case.measure_s.get_ref().0,
+        settle_s,
+        measure_s,
         chain,
         analyser,
         line_db: file.detect.line_db.0,
         swept,
         cases,
     })
+}
+
+/// The settling and measured times (s) of `case`, checked: each a simulated time the
+/// program accepts, the measured time at least one of `analyser`'s blocks.
+pub fn case_timing(
+    src: &ScenarioSource,
+    case: &CaseFile,
+    analyser: &AnalyserPlan,
+) -> anyhow::Result<(f64, f64)> {
+    for (value, field) in [
+        (&case.settle_s, "case.settle_s"),
+        (&case.measure_s, "case.measure_s"),
+    ] {
+        check_simulated_s(value.get_ref().0, false)
+            .map_err(|message| src.error(value.span(), field, message))?;
+    }
+    let block_s = analyser.settings.block as f64 / analyser.settings.sample_rate_hz();
+    if case.measure_s.get_ref().0 < block_s {
+        return Err(src.error(
+            case.measure_s.span(),
+            "case.measure_s",
+            format!("shorter than one analyser block ({block_s} s): no spectrum could be taken"),
+        ));
+    }
+    Ok((case.settle_s.get_ref().0, case.measure_s.get_ref().0))
 }
 
 /// Every variant so far with every value of one more parameter.

@@ -11,6 +11,18 @@ pub fn testrig(args: &[&str]) -> Output {
         .expect("the binary runs")
 }
 
+/// Runs the binary with `args`, checks that it succeeded (else fails with its stderr) and
+/// returns its stdout.
+pub fn testrig_ok(args: &[&str]) -> String {
+    let output = testrig(args);
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    String::from_utf8_lossy(&output.stdout).into_owned()
+}
+
 pub fn folder(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("testrig-e2e-{name}-{}", std::process::id()));
     std::fs::remove_dir_all(&dir).ok();

@@ -44,3 +44,27 @@ pub fn phasor(times_s: &[f64], signal: &[f64], freq_hz: f64) -> (f64, f64) {
 pub fn mean(values: &[f64]) -> f64 {
     values.iter().sum::<f64>() / values.len() as f64
 }
+
+/// Population standard deviation of a slice.
+pub fn std_dev(values: &[f64]) -> f64 {
+    let m = mean(values);
+    (values.iter().map(|v| (v - m).powi(2)).sum::<f64>() / values.len() as f64).sqrt()
+}
+
+/// The thesis's rig with every time-varying effect off (no backlash variation, no tooth
+/// shifting): loaded, it turns without vibrating.
+pub fn quiet() -> RigParams {
+    let mut p = thesis();
+    p.backlash_variation_c1 = 0.0;
+    p.tooth_shifting = false;
+    p
+}
+
+/// The gears' relative angle X3 − X2 (rad) of each sample.
+pub fn mesh_angle(block: &SignalBlock) -> Vec<f64> {
+    block.angle_rad[2]
+        .iter()
+        .zip(&block.angle_rad[1])
+        .map(|(x3, x2)| x3 - x2)
+        .collect()
+}
