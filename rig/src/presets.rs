@@ -6,7 +6,11 @@ use crate::options::{ContactLaw, MeshPairs};
 use crate::params::RigParams;
 
 /// Names of every preset, in the order `testrig params` lists them.
-pub const PRESET_NAMES: &[&str] = &["basmaji-1983", "basmaji-1983-calibrated"];
+pub const PRESET_NAMES: &[&str] = &[
+    "basmaji-1983",
+    "basmaji-1983-calibrated",
+    "basmaji-1983-hand",
+];
 
 /// 2 hp (W).
 const TWO_HP_W: f64 = 2.0 * 745.699_872;
@@ -18,6 +22,7 @@ pub fn preset(name: &str) -> Result<RigParams, RigError> {
     match name {
         "basmaji-1983" => Ok(basmaji_1983()),
         "basmaji-1983-calibrated" => Ok(basmaji_1983_calibrated()),
+        "basmaji-1983-hand" => Ok(basmaji_1983_hand()),
         _ => Err(RigError::UnknownPreset {
             name: name.to_string(),
             known: PRESET_NAMES.join(", "),
@@ -72,11 +77,14 @@ pub fn basmaji_1983() -> RigParams {
     }
 }
 
-/// The thesis's rig with what the thesis does not give chosen against its measurements
-/// (docs/calibration.md): a residual drag at the brake and a once-per-revolution gear
-/// error. Its stiffnesses stay the thesis's: with backlash the rig softens where it
-/// resonates, and the once-per-revolution resonance falls at the measured 13.33 Hz
-/// (≈ 780 rev/min) although the linear fundamental is App. C's 17.84 Hz.
+/// The thesis's rig with what the thesis does not give chosen against its findings by
+/// `testrig calibrate scenarios/thesis-targets.toml` (docs/calibration.md): the best of
+/// 200 evaluations of a CMA-ES search over ten parameters, as the search wrote them (the
+/// verdicts at the campaign's chaotic points change with the last digits). Its
+/// stiffnesses and inertias stay the thesis's; the search chose a lower mesh damping, a
+/// once-per-revolution error both as a torque (C2) and as a transmission error, a small
+/// residual and speed-proportional drag, and an eddy-current brake whose torque peaks at
+/// 1581 rev/min. Tooth shifting and one tooth pair stay as in the thesis.
 ///
 /// Its backlash is the experiments' 0.73 mm exactly (the thesis's 1.0 mm centre-distance
 /// setting gives 0.728 mm), so that it is the rig of the campaign's scenarios, which set
@@ -85,8 +93,13 @@ pub fn basmaji_1983() -> RigParams {
 pub fn basmaji_1983_calibrated() -> RigParams {
     let thesis = basmaji_1983();
     RigParams {
-        brake_drag_nm: 0.3,
-        gear_error_c2_nm: 0.5,
+        c23_mesh_nms_per_rad: 33.361141947111314,
+        backlash_variation_c1: 0.3963672675319577,
+        gear_error_c2_nm: 1.8273129772214407,
+        te_once_per_rev_um: 86.33112139087254,
+        brake_drag_nm: 0.1258217654659165,
+        bearing_drag_nms_per_rad: 0.00040727934876294813,
+        brake_critical_speed_rpm: 1580.7401934574948,
         centre_distance_shift_m: centre_distance_shift_m(&thesis, EXPERIMENT_BACKLASH_M),
         ..thesis
     }
@@ -94,3 +107,18 @@ pub fn basmaji_1983_calibrated() -> RigParams {
 
 /// Total circular backlash of the experiments (m): rig-spec §4, 0.73 mm.
 pub const EXPERIMENT_BACKLASH_M: f64 = 0.73e-3;
+
+/// The calibration chosen by hand before the search (docs/calibration.md, "Before the
+/// search"): the thesis's rig with a residual drag at the brake (0.3 N m) and a
+/// once-per-revolution gear error torque (C2 = 0.5 N m). With it the rig's
+/// once-per-revolution resonance falls at the measured fundamental's running speed
+/// (≈ 780 rev/min), which the searched preset, not asked for it, does not keep.
+pub fn basmaji_1983_hand() -> RigParams {
+    let thesis = basmaji_1983();
+    RigParams {
+        brake_drag_nm: 0.3,
+        gear_error_c2_nm: 0.5,
+        centre_distance_shift_m: centre_distance_shift_m(&thesis, EXPERIMENT_BACKLASH_M),
+        ..thesis
+    }
+}

@@ -1,4 +1,4 @@
-//! The calibrated preset against the thesis's measured fundamental: 13.33 Hz, seen as the
+//! The hand-calibrated preset against the thesis's measured fundamental: 13.33 Hz, seen as the
 //! running speed (≈ 780 rev/min) at which the output shaft resonates once per revolution.
 //! With backlash the teeth separate at that resonance and the rig softens, so the peak of
 //! the once-per-revolution response lies below the linear 17.84 Hz (1070 rev/min) of App. C.
@@ -35,8 +35,11 @@ fn first_order_peak_rpm(params: &RigParams, load_nm: f64) -> f64 {
 }
 
 #[test]
-fn the_calibrated_rig_resonates_once_per_revolution_near_780_rev_per_min() {
-    let calibrated = preset("basmaji-1983-calibrated").expect("preset");
+fn the_hand_calibrated_rig_resonates_once_per_revolution_near_780_rev_per_min() {
+    // The preset chosen by hand keeps the measured fundamental's resonance; the searched
+    // `basmaji-1983-calibrated` was not asked for it and puts it at 850–900 rev/min
+    // (docs/calibration.md).
+    let calibrated = preset("basmaji-1983-hand").expect("preset");
     // The thesis's stiffnesses are kept: its linear fundamental is App. C's 17.84 Hz.
     let thesis = support::thesis();
     assert_eq!(
