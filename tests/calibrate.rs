@@ -274,3 +274,41 @@ fn a_cross_validated_search_scores_the_points_it_did_not_see() {
     assert_eq!(result["held_out_score"][1], 1, "{result}");
     assert_eq!(result["score"][1], 2, "{result}");
 }
+
+#[test]
+fn shards_search_independently_and_the_report_takes_the_best_of_all_logs() {
+    let dir = folder("calibrate-shards");
+    let file = dir.join("shards.toml");
+    std::fs::write(&file, calibration(&campaign(&dir), 8)).expect("file");
+    let out = dir.join("out");
+    for shard in ["0/2", "1/2"] {
+        calibrate(&file, &out, &["--shard", shard]);
+    }
+    let read = |name: &str| -> Vec<serde_json::Value> {
+        std::fs::read_to_string(out.join(name))
+            .expect("shard log")
+            .lines()
+            .map(|l| serde_json::from_str(l).expect("json line"))
+            .collect()
+    };
+    let (a, b) = (
+        read("evaluations-0-of-2.jsonl"),
+        read("evaluations-1-of-2.jsonl"),
+    );
+    // Each stream has its own seed: the same start, different samples.
+    assert!(!a.is_empty() && !b.is_empty());
+    assert_ne!(a[0]["x"], b[0]["x"]);
+    let result: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("result.json")).expect("result"))
+            .expect("json");
+    assert_eq!(
+        result["evaluations"].as_u64(),
+        Some((a.len() + b.len()) as u64)
+    );
+    let best = a
+        .iter()
+        .chain(&b)
+        .filter_map(|r| r["objective"].as_f64())
+        .fold(f64::INFINITY, f64::min);
+    assert_eq!(result["objective_db"].as_f64(), Some(best));
+}

@@ -47,7 +47,9 @@ fn draw<DB: DrawingBackend>(
         .unwrap_or(1)
         .max(1) as f64;
     let mut chart = axes(&root, title, 0.0..right, 0.0..top)?;
-    mesh(&mut chart, ("evaluation", "objective (dB)"), |_| {})?;
+    mesh(&mut chart, ("evaluation", "objective (dB)"), |m| {
+        m.x_label_formatter(&|v| format!("{v:.0}"));
+    })?;
     chart
         .draw_series(finite().map(|p| {
             Circle::new(
