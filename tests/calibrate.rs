@@ -312,3 +312,29 @@ fn shards_search_independently_and_the_report_takes_the_best_of_all_logs() {
         .fold(f64::INFINITY, f64::min);
     assert_eq!(result["objective_db"].as_f64(), Some(best));
 }
+
+#[test]
+fn each_file_given_to_the_wrong_command_is_refused_with_the_right_one() {
+    let targets = format!(
+        "{}/scenarios/thesis-targets.toml",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let campaign = format!(
+        "{}/scenarios/thesis-campaign.toml",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let out = folder("calibrate-wrong").join("out");
+    let out = out.to_str().expect("utf-8");
+    for (args, right) in [
+        (vec!["run", &targets, "--out", out], "testrig calibrate"),
+        (vec!["sweep", &targets, "--out", out], "testrig calibrate"),
+        (vec!["calibrate", &campaign, "--out", out], "testrig sweep"),
+    ] {
+        let output = testrig(&args);
+        let said = String::from_utf8_lossy(&output.stderr);
+        assert!(
+            !output.status.success() && said.contains(right),
+            "{args:?}: {said}"
+        );
+    }
+}

@@ -52,9 +52,13 @@ const SHORTENED: [(&str, &[&str], &[&str]); 7] = [
     ("subharmonic-5424nm", &ONE_SUBHARMONIC_POINT, &[]),
 ];
 
-/// Whether a shipped file is a sweep (`testrig sweep`) rather than a scenario.
+/// Whether a shipped file is for another command: a sweep (`testrig sweep`) or a
+/// calibration (`testrig calibrate`) rather than a scenario.
 fn is_sweep(path: &str) -> bool {
-    std::fs::read_to_string(path).is_ok_and(|t| t.lines().any(|l| l.trim() == "[grid]"))
+    std::fs::read_to_string(path).is_ok_and(|t| {
+        t.lines()
+            .any(|l| l.trim() == "[grid]" || l.starts_with("campaign = "))
+    })
 }
 
 #[test]

@@ -21,7 +21,7 @@ pub fn run(args: &CalibrateArgs) -> anyhow::Result<()> {
     }
     let shard = Shard::choose(args.shard.as_deref(), |k| std::env::var(k).ok())?;
     let source = ScenarioSource::read_with(&args.calibration, &args.overrides)?;
-    let file: CalibrationFile = source.parse_sweep()?;
+    let file: CalibrationFile = source.parse_calibration()?;
     let plan = build_calibration(&source, &file)?;
     let training = match args.train_half.as_deref() {
         Some("even") => TrainingPoints::Even,

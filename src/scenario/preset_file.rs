@@ -41,7 +41,7 @@ pub fn preset_params(name: &str, dir: &Path) -> anyhow::Result<RigParams> {
         return Ok(rig::preset(name)?);
     }
     let source = ScenarioSource::read(&dir.join(name))?;
-    let file: PresetFile = source.parse_sweep()?;
+    let file: PresetFile = source.parse_calibration()?;
     let mut params =
         rig::preset(file.base.get_ref()).map_err(|e| source.error(file.base.span(), "base", e))?;
     for (key, value) in &file.set {

@@ -41,6 +41,7 @@ impl ScenarioSource {
     /// Parses the text as a scenario; unknown keys and out-of-range values are errors at
     /// their place. A sweep file is refused with the command that runs it.
     pub fn parse(&self) -> anyhow::Result<ScenarioFile> {
+        self.refuse_calibration()?;
         if self.has_table("grid") {
             return Err(anyhow!(
                 "{}: this is a sweep file (it has a [grid]): run it with `testrig sweep {} --out DIR`",
@@ -53,6 +54,7 @@ impl ScenarioSource {
 
     /// Parses the text as a sweep file. A scenario is refused with the command that runs it.
     pub fn parse_sweep<T: serde::de::DeserializeOwned>(&self) -> anyhow::Result<T> {
+        self.refuse_calibration()?;
         if !self.has_table("grid") && ["schedule", "survey"].iter().any(|t| self.has_table(t)) {
             return Err(anyhow!(
                 "{}: this is a scenario file (it has a [schedule] or [survey], no [grid]): run it with `testrig run {} --out DIR`",
@@ -61,6 +63,37 @@ impl ScenarioSource {
             ));
         }
         self.parse_as()
+    }
+
+    /// Parses the text as a calibration file. A sweep or a scenario is refused with the
+    /// command that runs it.
+    pub fn parse_calibration<T: serde::de::DeserializeOwned>(&self) -> anyhow::Result<T> {
+        let (command, kind) = if self.has_table("grid") {
+            ("sweep", "a sweep file (it has a [grid])")
+        } else if ["schedule", "survey"].iter().any(|t| self.has_table(t)) {
+            ("run", "a scenario file (it has a [schedule] or [survey])")
+        } else {
+            return self.parse_as();
+        };
+        Err(anyhow!(
+            "{}: this is {kind}: run it with `testrig {command} {} --out DIR`",
+            self.path.display(),
+            self.path.display()
+        ))
+    }
+
+    /// A calibration file (a top-level `campaign`) given to `run` or `sweep`.
+    fn refuse_calibration(&self) -> anyhow::Result<()> {
+        let is_calibration = toml::from_str::<toml::Table>(&self.text)
+            .is_ok_and(|table| table.get("campaign").is_some_and(toml::Value::is_str));
+        if is_calibration {
+            return Err(anyhow!(
+                "{}: this is a calibration file (it names a campaign): run it with `testrig calibrate {} --out DIR`",
+                self.path.display(),
+                self.path.display()
+            ));
+        }
+        Ok(())
     }
 
     /// Whether the text, read as TOML, has the top-level table `name`.
