@@ -73,6 +73,12 @@ fn calibrate(file: &Path, out: &Path, extra: &[&str]) -> String {
     testrig_ok(&args)
 }
 
+/// The search's `result.json` in `out`.
+fn result_of(out: &Path) -> serde_json::Value {
+    serde_json::from_str(&std::fs::read_to_string(out.join("result.json")).expect("result"))
+        .expect("json")
+}
+
 fn log(out: &Path) -> Vec<serde_json::Value> {
     std::fs::read_to_string(out.join("evaluations.jsonl"))
         .expect("log")
@@ -118,9 +124,7 @@ fn a_short_search_improves_its_objective_resumes_and_writes_a_usable_preset() {
     assert_eq!(resumed.len(), n + more);
     assert_eq!(resumed[..n], first[..]);
     // The result and the preset file agree with the best of the log.
-    let result: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(out.join("result.json")).expect("result"))
-            .expect("json");
+    let result = result_of(&out);
     let best = resumed.iter().map(objective).fold(f64::INFINITY, f64::min);
     assert_eq!(result["objective_db"].as_f64(), Some(best));
     let k34: f64 = result["values"]["k34_intermediate_shaft_nm_per_rad"]
@@ -247,9 +251,7 @@ scale = "log"
     std::fs::write(&file, text).expect("file");
     let out = dir.join("out");
     calibrate(&file, &out, &[]);
-    let result: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(out.join("result.json")).expect("result"))
-            .expect("json");
+    let result = result_of(&out);
     assert_eq!(result["objective_db"].as_f64(), Some(0.0), "{result}");
     let k34: f64 = result["values"]["k34_intermediate_shaft_nm_per_rad"]
         .as_str()
@@ -266,9 +268,7 @@ fn a_cross_validated_search_scores_the_points_it_did_not_see() {
     let out = dir.join("out");
     let said = calibrate(&file, &out, &["--train-half", "even"]);
     assert!(said.contains("held-out points"), "{said}");
-    let result: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(out.join("result.json")).expect("result"))
-            .expect("json");
+    let result = result_of(&out);
     // Two points: the search sees the first (index 0), the second is held out.
     assert_eq!(result["training_score"][1], 1, "{result}");
     assert_eq!(result["held_out_score"][1], 1, "{result}");
@@ -298,9 +298,7 @@ fn shards_search_independently_and_the_report_takes_the_best_of_all_logs() {
     // Each stream has its own seed: the same start, different samples.
     assert!(!a.is_empty() && !b.is_empty());
     assert_ne!(a[0]["x"], b[0]["x"]);
-    let result: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(out.join("result.json")).expect("result"))
-            .expect("json");
+    let result = result_of(&out);
     assert_eq!(
         result["evaluations"].as_u64(),
         Some((a.len() + b.len()) as u64)

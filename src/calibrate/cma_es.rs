@@ -13,8 +13,6 @@ use nalgebra::{DMatrix, DVector, SymmetricEigen};
 /// Settings of a search.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CmaSettings {
-    /// Dimension (free parameters).
-    pub dim: usize,
     /// Start of the first run's mean, in the unit box.
     pub start: Vec<f64>,
     /// Initial step size, as a fraction of the box's side.
@@ -32,11 +30,15 @@ pub struct CmaSettings {
 }
 
 impl CmaSettings {
+    /// Dimension: the number of free parameters.
+    pub fn dim(&self) -> usize {
+        self.start.len()
+    }
+
     /// Defaults for `dim` parameters starting at `start`.
     pub fn new(start: Vec<f64>, seed: u64) -> Self {
         let dim = start.len();
         Self {
-            dim,
             start,
             sigma0: 0.3,
             population: None,
@@ -94,7 +96,7 @@ struct Run {
 
 impl Run {
     fn new(settings: &CmaSettings, lambda: usize, mean: Vec<f64>) -> Self {
-        let n = settings.dim as f64;
+        let n = settings.dim() as f64;
         let mu = lambda / 2;
         let raw: Vec<f64> = (0..mu)
             .map(|i| (mu as f64 + 0.5).ln() - ((i + 1) as f64).ln())
@@ -109,7 +111,7 @@ impl Run {
             (1.0 - c_1).min(2.0 * (mu_eff - 2.0 + 1.0 / mu_eff) / ((n + 2.0).powi(2) + mu_eff));
         let d_s = 1.0 + 2.0 * (((mu_eff - 1.0) / (n + 1.0)).sqrt() - 1.0).max(0.0) + c_s;
         let chi_n = n.sqrt() * (1.0 - 1.0 / (4.0 * n) + 1.0 / (21.0 * n * n));
-        let dim = settings.dim;
+        let dim = settings.dim();
         Self {
             lambda,
             mu,
@@ -138,7 +140,7 @@ impl Run {
 impl CmaEs {
     /// A search with `settings`.
     pub fn new(settings: CmaSettings) -> Self {
-        let n = settings.dim.max(1) as f64;
+        let n = settings.dim().max(1) as f64;
         let lambda = settings
             .population
             .unwrap_or(4 + (3.0 * n.ln()).floor() as usize)
@@ -161,7 +163,7 @@ impl CmaEs {
         let mut out = Vec::with_capacity(self.run.lambda);
         self.run.pending.clear();
         for _ in 0..self.run.lambda {
-            let z = DVector::from_fn(self.settings.dim, |_, _| self.normals.sample());
+            let z = DVector::from_fn(self.settings.dim(), |_, _| self.normals.sample());
             let y = &self.run.basis * self.run.scales.component_mul(&z);
             let x = (&self.run.mean + y * self.run.sigma).map(mirror_into_unit);
             out.push(Candidate {
@@ -196,7 +198,7 @@ impl CmaEs {
             self.restart += 1;
             let lambda = self.run.lambda * 2;
             // A fresh start anywhere in the box, most likely its middle half.
-            let start: Vec<f64> = (0..self.settings.dim)
+            let start: Vec<f64> = (0..self.settings.dim())
                 .map(|_| mirror_into_unit(0.5 + 0.25 * self.normals.sample()))
                 .collect();
             self.run = Run::new(&self.settings, lambda, start);
@@ -220,7 +222,7 @@ impl CmaEs {
         if order.len() < r.mu {
             return;
         }
-        let n = self.settings.dim as f64;
+        let n = self.settings.dim() as f64;
         let old_mean = r.mean.clone();
         let steps: Vec<DVector<f64>> = order[..r.mu]
             .iter()
@@ -229,7 +231,7 @@ impl CmaEs {
         let y_w = steps
             .iter()
             .zip(&r.weights)
-            .fold(DVector::zeros(self.settings.dim), |acc, (y, w)| {
+            .fold(DVector::zeros(self.settings.dim()), |acc, (y, w)| {
                 acc + y * *w
             });
         r.mean = &old_mean + &y_w * r.sigma;
@@ -245,7 +247,7 @@ impl CmaEs {
         let h = if h_s { 1.0 } else { 0.0 };
         r.p_c = &r.p_c * (1.0 - r.c_c) + &y_w * (h * (r.c_c * (2.0 - r.c_c) * r.mu_eff).sqrt());
         let rank_mu = steps.iter().zip(&r.weights).fold(
-            DMatrix::zeros(self.settings.dim, self.settings.dim),
+            DMatrix::zeros(self.settings.dim(), self.settings.dim()),
             |acc, (y, w)| acc + y * y.transpose() * *w,
         );
         let decay = 1.0 - r.c_1 - r.c_mu + (1.0 - h) * r.c_1 * r.c_c * (2.0 - r.c_c);

@@ -53,13 +53,4 @@ impl Approach {
             Self::Ramp { ramp_s, .. } => ramp_s,
         }
     }
-
-    /// A short name: `static`, `from-below`, `from-above`, relative to `rpm`.
-    pub fn name(self, rpm: f64) -> &'static str {
-        match self {
-            Self::Static => "static",
-            Self::Ramp { from_rpm, .. } if from_rpm < rpm => "from-below",
-            Self::Ramp { .. } => "from-above",
-        }
-    }
 }
