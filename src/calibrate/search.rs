@@ -102,20 +102,8 @@ pub fn run_search(
         let take = candidates.len().min(budget - records.len());
         let first = records.len();
         let xs: Vec<Vec<f64>> = candidates[..take].iter().map(|c| c.x.clone()).collect();
-        let mut results: Vec<Option<Evaluation>> = vec![None; take];
-        for (i, slot) in results.iter_mut().enumerate() {
-            if let Some(r) = logged.get(first + i) {
-                if !same_point(&r.x, &xs[i]) {
-                    bail!(
-                        "{}: evaluation {} does not match this calibration (the file, the seed or the program changed): start afresh without --resume",
-                        path.display(),
-                        first + i
-                    );
-                }
-                *slot = Some(r.result.clone());
-                reused += 1;
-            }
-        }
+        let mut results = from_log(&logged, first, &xs, &path)?;
+        reused += results.iter().filter(|r| r.is_some()).count();
         let missing: Vec<usize> = (0..take).filter(|&i| results[i].is_none()).collect();
         let missing_x: Vec<Vec<f64>> = missing.iter().map(|&i| xs[i].clone()).collect();
         for (i, e) in missing.iter().zip(evaluate_all(plan, &missing_x, &points)) {
@@ -160,6 +148,28 @@ pub fn run_search(
         wall_s: started.elapsed().as_secs_f64(),
         all_met,
     })
+}
+
+/// The logged results of the candidates `xs`, evaluations `first`, `first + 1`, … of the
+/// search (`None` past the log's end); a logged candidate that differs is an error.
+fn from_log(
+    logged: &[EvaluationRecord],
+    first: usize,
+    xs: &[Vec<f64>],
+    path: &Path,
+) -> anyhow::Result<Vec<Option<Evaluation>>> {
+    xs.iter()
+        .enumerate()
+        .map(|(i, x)| match logged.get(first + i) {
+            None => Ok(None),
+            Some(r) if same_point(&r.x, x) => Ok(Some(r.result.clone())),
+            Some(_) => bail!(
+                "{}: evaluation {} does not match this calibration (the file, the seed or the program changed): start afresh without --resume",
+                path.display(),
+                first + i
+            ),
+        })
+        .collect()
 }
 
 /// The optimiser's settings: start at the base rig's values where they lie in range.
