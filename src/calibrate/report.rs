@@ -102,15 +102,13 @@ pub fn write_outputs(
     result: &CalibrationResult,
 ) -> anyhow::Result<Vec<PathBuf>> {
     let mut files = Vec::new();
-    files.push(write_file(
-        dir,
-        "preset.toml",
-        &preset_text(plan, best, result)?,
+    files.push(PartialFile::write_whole(
+        &dir.join("preset.toml"),
+        preset_text(plan, best, result)?,
     )?);
-    files.push(write_file(
-        dir,
-        "result.json",
-        &serde_json::to_string_pretty(result)?,
+    files.push(PartialFile::write_whole(
+        &dir.join("result.json"),
+        serde_json::to_string_pretty(result)?,
     )?);
     // Shards' logs one after another, numbered in one sequence.
     let points: Vec<SearchPoint> = records
@@ -128,18 +126,11 @@ pub fn write_outputs(
         &title,
         &points,
     )?);
-    files.push(write_file(
-        dir,
-        "report.md",
-        &report_text(plan, best, full, result),
+    files.push(PartialFile::write_whole(
+        &dir.join("report.md"),
+        report_text(plan, best, full, result),
     )?);
     Ok(files)
-}
-
-fn write_file(dir: &Path, name: &str, text: &str) -> anyhow::Result<PathBuf> {
-    let file = PartialFile::new(&dir.join(name));
-    std::fs::write(file.partial_path(), text)?;
-    file.commit()
 }
 
 fn report_text(

@@ -42,6 +42,14 @@ impl PartialFile {
         Ok(BufWriter::new(file))
     }
 
+    /// Writes the whole of `contents` to `path` by way of its partial name.
+    pub fn write_whole(path: &Path, contents: impl AsRef<[u8]>) -> anyhow::Result<PathBuf> {
+        let file = Self::new(path);
+        std::fs::write(&file.partial, contents)
+            .with_context(|| format!("cannot write {}", file.partial.display()))?;
+        file.commit()
+    }
+
     /// Gives the finished file its final name.
     pub fn commit(&self) -> anyhow::Result<PathBuf> {
         std::fs::rename(&self.partial, &self.path)

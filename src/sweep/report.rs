@@ -87,9 +87,7 @@ pub fn write_report(
             .unwrap_or_default();
         let _ = writeln!(md, "![{name}]({name})\n");
     }
-    let file = PartialFile::new(&dir.join("report.md"));
-    std::fs::write(file.partial_path(), md)?;
-    file.commit()
+    PartialFile::write_whole(&dir.join("report.md"), md)
 }
 
 /// The verdict on a finding that `matched` of the grid's `points` for it reproduce.
