@@ -158,7 +158,12 @@ fn assemble(
     } else {
         0.0
     };
-    let modes = RigChains::of(rig).whole_rig.modes();
+    // The modal analysis only where a natural frequency is a target.
+    let modes = if plan.natural.is_empty() {
+        Vec::new()
+    } else {
+        RigChains::of(rig).whole_rig.modes()
+    };
     let natural_hz: Vec<f64> = plan
         .natural
         .iter()
