@@ -3,7 +3,7 @@
 
 use crate::layout::Layout;
 
-/// `columns` times `u` over the first `len` columns (16, 18 or 20): a fixed shape for
+/// `columns` times `u` over the first `len` columns (16, 18, 20 or 22): a fixed shape for
 /// each, which the compiler unrolls into vector multiply-adds, the columns summed in two
 /// chains (even and odd) to halve the latency.
 #[inline]
@@ -15,6 +15,7 @@ pub fn product<const ROWS: usize>(
     match len {
         16 => product_of::<ROWS, 16>(columns, u),
         18 => product_of::<ROWS, 18>(columns, u),
+        20 => product_of::<ROWS, 20>(columns, u),
         _ => product_of::<ROWS, { Layout::MAX_LEN }>(columns, u),
     }
 }

@@ -3,7 +3,7 @@
 
 use nalgebra::DMatrix;
 
-use crate::layout::{REV, UNIT, V0, VF, X0, Z};
+use crate::layout::{Layout, REV, UNIT, V0, VF, X0, Z};
 use crate::mode::{MeshMode, Mode, MotorMode};
 use crate::model::ModelConstants;
 use crate::options::ContactLaw;
@@ -106,6 +106,7 @@ pub struct EventFn {
 /// The switching functions active in `mode`.
 pub fn mode_events(
     mc: &ModelConstants,
+    layout: &Layout,
     law: ContactLaw,
     flags: EventFlags,
     mode: Mode,
@@ -120,10 +121,10 @@ pub fn mode_events(
     // the drive flank's overlap and takes from the back flank's.
     let e = mc.te_once_rad;
     let (rev_drive, rev_back) = (bc + e, bc - e);
-    let gap_drive = [(x2, 1.0), (x3, -1.0), (UNIT, -b0), (REV, rev_drive)];
-    let gap_back = [(x2, -1.0), (x3, 1.0), (UNIT, -b0), (REV, rev_back)];
+    let mut gap_drive = vec![(x2, 1.0), (x3, -1.0), (UNIT, -b0), (REV, rev_drive)];
+    let mut gap_back = vec![(x2, -1.0), (x3, 1.0), (UNIT, -b0), (REV, rev_back)];
     // Pushing torque K δ + C δ' of each flank; δ' includes the rates of B₀C1 cos φ and E cos φ.
-    let force_drive = [
+    let mut force_drive = vec![
         (x2, k),
         (x3, -k),
         (UNIT, -k * b0),
@@ -132,7 +133,7 @@ pub fn mode_events(
         (v2, c),
         (REV + 1, -c * rev_drive * rotation_rad_s),
     ];
-    let force_back = [
+    let mut force_back = vec![
         (x2, -k),
         (x3, k),
         (UNIT, -k * b0),
@@ -141,6 +142,18 @@ pub fn mode_events(
         (v2, -c),
         (REV + 1, -c * rev_back * rotation_rad_s),
     ];
+    // The profile error P cos zφ, like E cos φ: to the drive flank's overlap, from the back's.
+    if let Some(mesh) = layout.mesh {
+        let p = mc.te_mesh_rad;
+        let p_rate = p * mc.teeth * rotation_rad_s;
+        for (flank, gap, force) in [
+            (1.0, &mut gap_drive, &mut force_drive),
+            (-1.0, &mut gap_back, &mut force_back),
+        ] {
+            gap.push((mesh, flank * p));
+            force.extend([(mesh, flank * k * p), (mesh + 1, -flank * c * p_rate)]);
+        }
+    }
     let limit = mc.torque_limit_nm;
     let (kp, ki) = (mc.kp_nms_per_rad, mc.ki_nm_per_rad);
     let over_high = [(VF, -kp), (Z, ki), (UNIT, -limit)];

@@ -4,7 +4,8 @@
 //! X1..X5 angles (rad), V1..V5 speeds (rad/s), Vf the controller's filtered speed
 //! (rad/s), z the integral of the speed error (rad). The forcing part holds what drives
 //! the equations: a unit constant, the brake load torque (N m), and harmonic pairs
-//! (cos, sin) of the set rotation's phase, its double, and the oscillating load.
+//! (cos, sin) of the set rotation's phase, its double, its tooth multiple and the
+//! oscillating load.
 
 /// Index of X1; X_i is at `X0 + i`.
 pub const X0: usize = 0;
@@ -30,25 +31,35 @@ pub struct Layout {
     pub rev2: Option<usize>,
     /// Index of A cos ψ (A sin ψ follows), if an oscillating load is scheduled.
     pub osc: Option<usize>,
+    /// Index of cos zφ (sin zφ follows, z the teeth), if the profile error at mesh
+    /// frequency is on.
+    pub mesh: Option<usize>,
     /// Length of the augmented state.
     pub len: usize,
 }
 
 impl Layout {
-    /// Lays out the states: the twice-per-rev pair and the oscillating-load pair only when used.
-    pub fn new(with_rev2: bool, with_osc: bool) -> Self {
+    /// Lays out the states: the twice-per-rev pair, the oscillating-load pair and the
+    /// mesh-frequency pair only when used.
+    pub fn new(with_rev2: bool, with_osc: bool, with_mesh: bool) -> Self {
         let mut len = REV + 2;
-        let rev2 = with_rev2.then(|| {
-            len += 2;
-            len - 2
-        });
-        let osc = with_osc.then(|| {
-            len += 2;
-            len - 2
-        });
-        Self { rev2, osc, len }
+        let mut place = |used: bool| {
+            used.then(|| {
+                len += 2;
+                len - 2
+            })
+        };
+        let rev2 = place(with_rev2);
+        let osc = place(with_osc);
+        let mesh = place(with_mesh);
+        Self {
+            rev2,
+            osc,
+            mesh,
+            len,
+        }
     }
 
     /// Largest augmented length any layout has.
-    pub const MAX_LEN: usize = REV + 6;
+    pub const MAX_LEN: usize = REV + 8;
 }

@@ -45,8 +45,14 @@ pub struct ModelConstants {
     pub bearing_drag_nms_per_rad: f64,
     /// Critical speed of the eddy-current brake (rad/s); 0: torque independent of speed.
     pub brake_critical_rad_s: f64,
-    /// Once-per-revolution transmission error E of e(φ) = E cos φ (rad about the gear axis).
+    /// Once-per-revolution transmission error E of e(φ) = E cos φ + P cos zφ (rad about
+    /// the gear axis).
     pub te_once_rad: f64,
+    /// Mesh-frequency (profile) transmission error P of e(φ) = E cos φ + P cos zφ (rad
+    /// about the gear axis).
+    pub te_mesh_rad: f64,
+    /// Teeth z on each gear: the mesh frequency is zΩ.
+    pub teeth: f64,
 }
 
 /// Spring and damper pairs of the shafts: (body i, body j) for K12, K34, K45.
@@ -83,6 +89,9 @@ impl ModelConstants {
             bearing_drag_nms_per_rad: params.bearing_drag_nms_per_rad,
             brake_critical_rad_s: params.brake_critical_speed_rpm * std::f64::consts::PI / 30.0,
             te_once_rad: params.te_once_per_rev_um * 1e-6 / GearGeometry::of(params).pitch_radius_m,
+            te_mesh_rad: params.te_mesh_frequency_um * 1e-6
+                / GearGeometry::of(params).pitch_radius_m,
+            teeth: f64::from(params.teeth),
         }
     }
 
@@ -104,12 +113,15 @@ impl ModelConstants {
         self.bearing_drag_nms_per_rad * speed_rad_s
     }
 
-    /// Transmission error e (rad) and its rate ė (rad/s) at cos φ, sin φ of the set rotation.
+    /// Transmission error e = E cos φ + P cos zφ (rad) and its rate ė (rad/s) at
+    /// `harmonics` = [cos φ, sin φ, cos zφ, sin zφ] of the set rotation.
     #[inline(always)]
-    pub fn transmission_error(&self, speed_rad_s: f64, cos: f64, sin: f64) -> (f64, f64) {
+    pub fn transmission_error(&self, speed_rad_s: f64, harmonics: [f64; 4]) -> (f64, f64) {
+        let [cos, sin, cos_z, sin_z] = harmonics;
+        let mesh_rad_s = self.teeth * speed_rad_s;
         (
-            self.te_once_rad * cos,
-            -self.te_once_rad * speed_rad_s * sin,
+            self.te_once_rad * cos + self.te_mesh_rad * cos_z,
+            -self.te_once_rad * speed_rad_s * sin - self.te_mesh_rad * mesh_rad_s * sin_z,
         )
     }
 
@@ -172,7 +184,7 @@ pub fn system_matrix(
     {
         add_spring(&mut a, &mc.inertia_kgm2, (i, j), k, c);
     }
-    add_mesh(&mut a, mc, mode, freq.rotation_rad_s);
+    add_mesh(&mut a, mc, layout, mode, freq.rotation_rad_s);
     add_gear_errors(&mut a, mc, layout);
     add_brake(&mut a, mc, layout, freq.brake_characteristic_nms_per_rad);
     add_bearing_drag(&mut a, mc, freq.rotation_rad_s);
@@ -183,6 +195,9 @@ pub fn system_matrix(
     }
     if let Some(osc) = layout.osc {
         add_rotation(&mut a, osc, freq.oscillating_load_rad_s);
+    }
+    if let Some(mesh) = layout.mesh {
+        add_rotation(&mut a, mesh, mc.teeth * freq.rotation_rad_s);
     }
     a
 }
@@ -206,7 +221,15 @@ fn add_spring(a: &mut DMatrix<f64>, inertia: &[f64; 5], (i, j): (usize, usize), 
 /// With B constant this is (5.6) exactly (δ' = ∓ḋ). With the backlash variation the
 /// thesis's damper acts on ḋ alone, which makes the pair transmit C·Ḃ with its spring
 /// unloaded and chatter at the boundary; here it acts on the overlap rate ḋ ± Ḃ.
-fn add_mesh(a: &mut DMatrix<f64>, mc: &ModelConstants, mode: Mode, rotation_rad_s: f64) {
+///
+/// The transmission error e = E cos φ + P cos zφ adds K e + C ė on either flank.
+fn add_mesh(
+    a: &mut DMatrix<f64>,
+    mc: &ModelConstants,
+    layout: &Layout,
+    mode: Mode,
+    rotation_rad_s: f64,
+) {
     let flank = match mode.mesh.engagement() {
         Engagement::Free => return,
         Engagement::Drive => 1.0,
@@ -227,6 +250,11 @@ fn add_mesh(a: &mut DMatrix<f64>, mc: &ModelConstants, mode: Mode, rotation_rad_
         let scale = sign / mc.inertia_kgm2[body];
         a[(V0 + body, REV)] += k * e * scale;
         a[(V0 + body, REV + 1)] -= c * e * rotation_rad_s * scale;
+        if let Some(mesh) = layout.mesh {
+            let p = mc.te_mesh_rad;
+            a[(V0 + body, mesh)] += k * p * scale;
+            a[(V0 + body, mesh + 1)] -= c * p * mc.teeth * rotation_rad_s * scale;
+        }
     }
 }
 

@@ -142,6 +142,7 @@ param_specs! {
     bearing_drag_nms_per_rad, "N m s/rad", "speed-proportional bearing and windage drag on each of the five bodies (thesis: none, 0)";
     brake_critical_speed_rpm, "rev/min", "eddy-current brake critical speed, T ~ 2x/(1+x^2), x = w/wc, set load at set speed (Wouterse 1991; thesis: constant torque, 0 = off)";
     te_once_per_rev_um, "um", "once-per-rev transmission error as a mesh displacement, arc at the pitch circle (thesis: none, 0)";
+    te_mesh_frequency_um, "um", "profile error at mesh frequency (teeth x rev) as a mesh displacement, arc at the pitch circle (thesis: none, 0)";
 }
 
 /// Looks a parameter up by name.

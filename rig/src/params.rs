@@ -93,6 +93,11 @@ pub struct RigParams {
     /// unlike the backlash variation C1 (which widens and narrows the free play) and the
     /// error torques C2, C3 (which act whether the teeth touch or not). 0 in the thesis.
     pub te_once_per_rev_um: f64,
+    /// Profile error at mesh frequency as a displacement of the mesh (µm of arc at the
+    /// pitch circle), e_z(φ) = P cos zφ with z the teeth: the same error on every tooth,
+    /// added to the once-per-revolution one and acting like it on both flanks. 0 in the
+    /// thesis.
+    pub te_mesh_frequency_um: f64,
 }
 
 impl RigParams {
@@ -189,12 +194,12 @@ impl RigParams {
                 "must be a finite number ≥ 0 (0: off)",
             )?;
         }
-        require(
-            "te_once_per_rev_um",
-            self.te_once_per_rev_um,
-            true,
-            "must be a finite number",
-        )?;
+        for (name, value) in [
+            ("te_once_per_rev_um", self.te_once_per_rev_um),
+            ("te_mesh_frequency_um", self.te_mesh_frequency_um),
+        ] {
+            require(name, value, true, "must be a finite number")?;
+        }
         require(
             "brake_drag_nm",
             self.brake_drag_nm,

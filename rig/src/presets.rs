@@ -74,6 +74,7 @@ pub fn basmaji_1983() -> RigParams {
         bearing_drag_nms_per_rad: 0.0,
         brake_critical_speed_rpm: 0.0,
         te_once_per_rev_um: 0.0,
+        te_mesh_frequency_um: 0.0,
     }
 }
 

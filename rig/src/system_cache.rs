@@ -93,6 +93,9 @@ impl SystemCache {
         if let Some(osc) = self.layout.osc {
             rotations.push((osc, frequencies.oscillating_load_rad_s));
         }
+        if let Some(mesh) = self.layout.mesh {
+            rotations.push((mesh, self.mc.teeth * frequencies.rotation_rad_s));
+        }
         self.rotations = (1..=MAX_STRIDE)
             .map(|k| {
                 let span_s = k as f64 * h;
@@ -117,6 +120,7 @@ impl SystemCache {
         let a = system_matrix(&self.mc, &self.layout, mode, self.frequencies);
         let events = mode_events(
             &self.mc,
+            &self.layout,
             self.law,
             self.flags,
             mode,

@@ -107,6 +107,37 @@ fn a_quasi_static_transmission_error_turns_the_driven_gear_by_the_error() {
 }
 
 #[test]
+fn a_quasi_static_profile_error_turns_the_driven_gear_by_the_error_at_mesh_frequency() {
+    // At 2 rev/min the mesh frequency is 30 x 1/30 Hz = 1 Hz, far below the 17.8 Hz
+    // fundamental: under load the driven gear follows the driving one displaced by
+    // e = P cos zφ, tooth by tooth, and nothing moves at the once-per-revolution frequency.
+    let mut p = support::quiet();
+    p.te_mesh_frequency_um = 5.0;
+    let p_rad = 5e-6 / GearGeometry::of(&p).pitch_radius_m;
+    let rpm = 2.0;
+    let mesh_hz = f64::from(p.teeth) * rpm / 60.0;
+    let mut plant = support::plant(p, Schedule::constant(rpm, LOAD_NM), 256.0);
+    let block = support::record(&mut plant, 3.0 / mesh_hz);
+    assert!(block.contact.iter().all(|&c| c == 1), "the teeth separated");
+    let d = support::mesh_angle(&block);
+    let (re, im) = support::phasor(&block.time_s, &d, mesh_hz);
+    let amplitude = re.hypot(im);
+    assert!(
+        (amplitude / p_rad - 1.0).abs() < 0.02,
+        "{amplitude:e} rad vs P = {p_rad:e} rad"
+    );
+    assert!(re > 0.0 && im.abs() < 0.05 * re, "phase: {re:e} + {im:e} i");
+    // The recorded mesh torque carries the load (the error moves the gears, not the torque,
+    // when they follow it quasi-statically): within 1 % of the load.
+    let worst = block
+        .mesh_torque_nm
+        .iter()
+        .map(|t| (t - LOAD_NM).abs())
+        .fold(0.0, f64::max);
+    assert!(worst < 0.01 * LOAD_NM, "mesh torque departs by {worst} N m");
+}
+
+#[test]
 fn a_smoothed_mesh_stiffness_steps_through_its_staircase_for_the_set_share_of_each_pitch() {
     // Quasi-static under load, the mesh torque over the tooth overlap is the stiffness in
     // force: K23 with one pair, 2 K23 with two, and with smoothing w four steps between

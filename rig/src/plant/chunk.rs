@@ -98,7 +98,7 @@ impl SampleFrame<'_> {
         for (s, (&(i, j), &k)) in self.mc.shafts().enumerate() {
             out.shaft_torque_nm[s].extend(x(i).iter().zip(x(j)).map(|(a, b)| k * (a - b)));
         }
-        self.append_mesh_torque(chunk, count, out);
+        self.append_mesh_torque(chunk, phase, out);
         self.append_motor_torque(chunk, count, out);
         let contact = self.mode.mesh.contact_code();
         out.contact.extend(std::iter::repeat_n(contact, count));
@@ -125,8 +125,10 @@ impl SampleFrame<'_> {
         }
     }
 
-    /// Mesh torque F_XT (N m): K δ + C δ' of the engaged flank, signed by flank.
-    fn append_mesh_torque(&self, chunk: &StateChunk, count: usize, out: &mut SignalBlock) {
+    /// Mesh torque F_XT (N m): K δ + C δ' of the engaged flank, signed by flank, at the
+    /// samples whose set rotation is `phase` (rad).
+    fn append_mesh_torque(&self, chunk: &StateChunk, phase: &[f64], out: &mut SignalBlock) {
+        let count = phase.len();
         let sign = match self.mode.mesh {
             MeshMode::Drive => 1.0,
             MeshMode::Back => -1.0,
@@ -145,9 +147,16 @@ impl SampleFrame<'_> {
             column(V0 + 2),
         );
         let (cos, sin) = (column(COS), column(SIN));
+        let profile = self.mc.te_mesh_rad != 0.0;
         out.mesh_torque_nm.extend((0..count).map(|n| {
-            let mesh = [x2[n], x3[n], v2[n], v3[n], cos[n], sin[n]];
-            let (overlap, rate) = flank_overlap(self.mc, omega, sign, mesh);
+            let (sin_z, cos_z) = if profile {
+                (self.mc.teeth * phase[n]).sin_cos()
+            } else {
+                (0.0, 0.0)
+            };
+            let mesh = [x2[n], x3[n], v2[n], v3[n]];
+            let harmonics = [cos[n], sin[n], cos_z, sin_z];
+            let (overlap, rate) = flank_overlap(self.mc, omega, sign, mesh, harmonics);
             sign * (k * overlap + c * rate)
         }));
     }

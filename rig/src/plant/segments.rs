@@ -88,6 +88,11 @@ impl Plant {
             self.u[rev2] = (2.0 * phase).cos();
             self.u[rev2 + 1] = (2.0 * phase).sin();
         }
+        if let Some(mesh) = self.layout.mesh {
+            let z_phase = self.mc.teeth * phase;
+            self.u[mesh] = z_phase.cos();
+            self.u[mesh + 1] = z_phase.sin();
+        }
         if let Some(osc) = self.layout.osc {
             let psi = self.osc_phase_rad(tau_s);
             let amplitude = self.segment.set.oscillating_load_nm;

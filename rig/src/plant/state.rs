@@ -108,6 +108,7 @@ impl Plant {
         let layout = Layout::new(
             params.gear_error_c3_nm != 0.0,
             schedule.has_oscillating_load() || ceiling.oscillating_load_hz > 0.0,
+            params.te_mesh_frequency_um != 0.0,
         );
         let alternating =
             params.mesh_pairs == MeshPairs::Alternating && geometry.double_pair_fraction() > 0.0;
@@ -176,7 +177,9 @@ impl Plant {
         let drag = self.mc.bearing_drag_nm(set.speed_rad_s());
         let [k12, k34, k45] = self.mc.shaft_stiffness_nm_per_rad;
         let b = self.mc.half_backlash_rad * (1.0 - self.mc.backlash_variation);
-        let (e, _) = self.mc.transmission_error(set.speed_rad_s(), 1.0, 0.0);
+        let (e, _) = self
+            .mc
+            .transmission_error(set.speed_rad_s(), [1.0, 0.0, 1.0, 0.0]);
         let k23 = self.mc.mesh_stiffness_nm_per_rad;
         // Torques through K12, the mesh, K34 and K45: the load and the drag behind each.
         let [t12, mesh, t34, t45] = [4.0, 3.0, 2.0, 1.0].map(|bodies| load + bodies * drag);

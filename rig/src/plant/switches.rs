@@ -66,7 +66,13 @@ impl Plant {
 
     /// Overlap of `flank` (rad, > 0 when the teeth overlap) and its rate (rad/s) now.
     pub(super) fn gap(&self, flank: Flank) -> (f64, f64) {
-        flank_gap(&self.mc, self.segment.set.speed_rad_s(), &self.u, flank)
+        flank_gap(
+            &self.mc,
+            &self.layout,
+            self.segment.set.speed_rad_s(),
+            &self.u,
+            flank,
+        )
     }
 
     pub(super) fn set_mesh(&mut self, mesh: MeshMode, tau_s: f64) {
