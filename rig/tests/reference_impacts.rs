@@ -62,3 +62,14 @@ fn impact_times_match_reference_with_gear_errors_and_no_load() {
     p.tooth_shifting = false;
     compare(p, 900.0, 0.0, 0.25);
 }
+
+#[test]
+fn impact_times_match_reference_with_transmission_errors_once_per_rev_and_per_tooth() {
+    // The errors as displacements: 40 µm once per revolution and a 6 µm profile error at
+    // mesh frequency (650 Hz at 1300 rev/min), on the preset with tooth shifting.
+    let mut p = support::thesis();
+    p.te_once_per_rev_um = 40.0;
+    p.te_mesh_frequency_um = 6.0;
+    let n = compare(p, 1300.0, 2.712, 0.25);
+    assert!(n >= 20, "only {n} impacts");
+}

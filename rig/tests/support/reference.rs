@@ -15,6 +15,8 @@ pub struct Reference {
     filter: f64,
     b0: f64,
     pitch: f64,
+    /// Pitch radius (m): the transmission errors are arcs there.
+    radius: f64,
     /// θ1..θ5 (rad), ω1..ω5 (rad/s), filtered speed (rad/s), speed-error integral (rad).
     pub y: [f64; 12],
     /// Time (s).
@@ -48,6 +50,7 @@ impl Reference {
             filter: 2.0 * PI * p.speed_feedback_filter_hz,
             b0: p.centre_distance_shift_m * p.pressure_angle_deg.to_radians().tan() / r,
             pitch,
+            radius: r,
             y,
             t: 0.0,
             next_tooth: ((y[1] / pitch).floor() + 1.0) * pitch,
@@ -63,14 +66,20 @@ impl Reference {
         self
     }
 
-    /// Overlaps (drive, back) in rad and their rates at (t, y).
+    /// Overlaps (drive, back) in rad and their rates at (t, y), the gears' relative angle
+    /// taken less the transmission error e = E cos φ + P cos zφ.
     fn overlaps(&self, t: f64, y: &[f64; 12]) -> [(f64, f64); 2] {
         let phase = self.omega * t;
         let c1 = self.p.backlash_variation_c1;
         let b = self.b0 * (1.0 - c1 * phase.cos());
         let b_rate = self.b0 * c1 * self.omega * phase.sin();
-        let d = y[2] - y[1];
-        let d_rate = y[7] - y[6];
+        let once = self.p.te_once_per_rev_um * 1e-6 / self.radius;
+        let profile = self.p.te_mesh_frequency_um * 1e-6 / self.radius;
+        let z = f64::from(self.p.teeth);
+        let e = once * phase.cos() + profile * (z * phase).cos();
+        let e_rate = -self.omega * (once * phase.sin() + z * profile * (z * phase).sin());
+        let d = y[2] - y[1] - e;
+        let d_rate = y[7] - y[6] - e_rate;
         [(-d - b, -d_rate - b_rate), (d - b, d_rate - b_rate)]
     }
 
