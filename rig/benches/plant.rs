@@ -54,6 +54,15 @@ fn preset_1300rpm_2712mnm_one_second(bencher: Bencher) {
     );
 }
 
+/// The benchmark point with a 15 µm profile error at mesh frequency: the cost of the
+/// harmonic pair at zΩ (650 Hz here) in the state, which shortens the strides.
+#[divan::bench(sample_count = 30)]
+fn profile_error_1300rpm_2712mnm_one_second(bencher: Bencher) {
+    let mut params = preset("basmaji-1983").expect("preset");
+    params.te_mesh_frequency_um = 15.0;
+    one_second(bencher, settled_plant(params, 1300.0, 2.712));
+}
+
 /// No switches at all (backlash variation and tooth shifting off, loaded at 200 rev/min):
 /// the cost of the exact step and the output alone.
 #[divan::bench(sample_count = 30)]
