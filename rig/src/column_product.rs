@@ -41,3 +41,40 @@ fn product_of<const ROWS: usize, const N: usize>(
     }
     even
 }
+
+/// A·`u` for a square A of size `len` (16, 18, 20 or 22) stored by columns in the
+/// largest shape: only the first `len` rows and columns are multiplied (a fixed shape for
+/// each), the rest of the result is zero.
+#[inline]
+pub fn square_product(
+    columns: &[[f64; Layout::MAX_LEN]; Layout::MAX_LEN],
+    u: &[f64; Layout::MAX_LEN],
+    len: usize,
+) -> [f64; Layout::MAX_LEN] {
+    match len {
+        16 => square_of::<16>(columns, u),
+        18 => square_of::<18>(columns, u),
+        20 => square_of::<20>(columns, u),
+        _ => product_of::<{ Layout::MAX_LEN }, { Layout::MAX_LEN }>(columns, u),
+    }
+}
+
+#[inline(always)]
+fn square_of<const N: usize>(
+    columns: &[[f64; Layout::MAX_LEN]; Layout::MAX_LEN],
+    u: &[f64; Layout::MAX_LEN],
+) -> [f64; Layout::MAX_LEN] {
+    let (mut even, mut odd) = ([0.0; N], [0.0; N]);
+    for (pair, weights) in columns[..N].chunks_exact(2).zip(u[..N].chunks_exact(2)) {
+        let (c0, c1) = (&pair[0][..N], &pair[1][..N]);
+        for ((e, o), (&a, &b)) in even.iter_mut().zip(odd.iter_mut()).zip(c0.iter().zip(c1)) {
+            *e = a.mul_add(weights[0], *e);
+            *o = b.mul_add(weights[1], *o);
+        }
+    }
+    let mut out = [0.0; Layout::MAX_LEN];
+    for ((r, e), o) in out.iter_mut().zip(even).zip(odd) {
+        *r = e + o;
+    }
+    out
+}

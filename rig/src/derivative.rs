@@ -5,7 +5,7 @@
 
 use nalgebra::DMatrix;
 
-use crate::column_product::product;
+use crate::column_product::square_product;
 use crate::layout::Layout;
 
 /// A·u for one mode's matrix A.
@@ -38,7 +38,7 @@ impl Derivative {
     /// inner loop.
     #[inline(always)]
     pub fn scaled(&self, u: &[f64; Layout::MAX_LEN], scale: f64, out: &mut [f64; Layout::MAX_LEN]) {
-        let product = product(&self.columns, u, self.len);
+        let product = square_product(&self.columns, u, self.len);
         for (o, p) in out.iter_mut().zip(product) {
             *o = scale * p;
         }
