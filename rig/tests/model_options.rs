@@ -71,6 +71,34 @@ fn the_brake_characteristic_is_its_slope_at_the_set_point() {
     assert!(support::std_dev(&run(reversed)) > support::std_dev(&a));
 }
 
+/// Runs `p` at `rpm` under load for `periods` of `freq_hz` (samples at `rate_hz`) and
+/// returns the phasor (rad) of the gears' relative angle X3 − X2 at `freq_hz`, with the
+/// recorded block; the teeth must stay in contact throughout.
+fn mesh_phasor(
+    p: RigParams,
+    rpm: f64,
+    freq_hz: f64,
+    periods: f64,
+    rate_hz: f64,
+) -> ((f64, f64), rig::SignalBlock) {
+    let mut plant = support::plant(p, Schedule::constant(rpm, LOAD_NM), rate_hz);
+    let block = support::record(&mut plant, periods / freq_hz);
+    assert!(block.contact.iter().all(|&c| c == 1), "the teeth separated");
+    let d = support::mesh_angle(&block);
+    (support::phasor(&block.time_s, &d, freq_hz), block)
+}
+
+/// The phasor is `amplitude_rad` cos (in phase with the set rotation's φ = 0 at the
+/// start) within 2 % in size and 0.05 rad in phase.
+fn assert_follows((re, im): (f64, f64), amplitude_rad: f64) {
+    let amplitude = re.hypot(im);
+    assert!(
+        (amplitude / amplitude_rad - 1.0).abs() < 0.02,
+        "{amplitude:e} rad vs {amplitude_rad:e} rad"
+    );
+    assert!(re > 0.0 && im.abs() < 0.05 * re, "phase: {re:e} + {im:e} i");
+}
+
 #[test]
 fn a_quasi_static_transmission_error_turns_the_driven_gear_by_the_error() {
     // At 20 rev/min (0.33 Hz, far below the 17.8 Hz fundamental) under load the teeth stay
@@ -78,27 +106,12 @@ fn a_quasi_static_transmission_error_turns_the_driven_gear_by_the_error() {
     let mut p = support::quiet();
     p.te_once_per_rev_um = 20.0;
     let e_rad = 20e-6 / GearGeometry::of(&p).pitch_radius_m;
-    let rpm = 20.0;
-    let hz = rpm / 60.0;
-    let mut plant = support::plant(p, Schedule::constant(rpm, LOAD_NM), 1024.0);
-    let block = support::record(&mut plant, 2.0 / hz);
-    assert!(block.contact.iter().all(|&c| c == 1), "the teeth separated");
-    let d = support::mesh_angle(&block);
-    let (re, im) = support::phasor(&block.time_s, &d, hz);
-    let amplitude = re.hypot(im);
-    assert!(
-        (amplitude / e_rad - 1.0).abs() < 0.02,
-        "{amplitude:e} rad vs E = {e_rad:e} rad"
-    );
-    // In phase with cos φ (φ = 0 at the start).
-    assert!(re > 0.0 && im.abs() < 0.05 * re, "phase: {re:e} + {im:e} i");
+    let (rpm, hz) = (20.0, 20.0 / 60.0);
+    assert_follows(mesh_phasor(p, rpm, hz, 2.0, 1024.0).0, e_rad);
     // The error torques C2 move the gears apart by no more than the shaft deflection they cause.
     let mut torque = support::quiet();
     torque.gear_error_c2_nm = 0.5;
-    let mut plant = support::plant(torque, Schedule::constant(rpm, LOAD_NM), 1024.0);
-    let block = support::record(&mut plant, 2.0 / hz);
-    let d = support::mesh_angle(&block);
-    let (re, im) = support::phasor(&block.time_s, &d, hz);
+    let ((re, im), _) = mesh_phasor(torque, rpm, hz, 2.0, 1024.0);
     assert!(
         re.hypot(im) < 0.01 * e_rad,
         "C2 moved the mesh by {:e} rad",
@@ -110,23 +123,13 @@ fn a_quasi_static_transmission_error_turns_the_driven_gear_by_the_error() {
 fn a_quasi_static_profile_error_turns_the_driven_gear_by_the_error_at_mesh_frequency() {
     // At 2 rev/min the mesh frequency is 30 x 1/30 Hz = 1 Hz, far below the 17.8 Hz
     // fundamental: under load the driven gear follows the driving one displaced by
-    // e = P cos zφ, tooth by tooth, and nothing moves at the once-per-revolution frequency.
+    // e = P cos zφ, tooth by tooth.
     let mut p = support::quiet();
     p.te_mesh_frequency_um = 5.0;
     let p_rad = 5e-6 / GearGeometry::of(&p).pitch_radius_m;
-    let rpm = 2.0;
-    let mesh_hz = f64::from(p.teeth) * rpm / 60.0;
-    let mut plant = support::plant(p, Schedule::constant(rpm, LOAD_NM), 256.0);
-    let block = support::record(&mut plant, 3.0 / mesh_hz);
-    assert!(block.contact.iter().all(|&c| c == 1), "the teeth separated");
-    let d = support::mesh_angle(&block);
-    let (re, im) = support::phasor(&block.time_s, &d, mesh_hz);
-    let amplitude = re.hypot(im);
-    assert!(
-        (amplitude / p_rad - 1.0).abs() < 0.02,
-        "{amplitude:e} rad vs P = {p_rad:e} rad"
-    );
-    assert!(re > 0.0 && im.abs() < 0.05 * re, "phase: {re:e} + {im:e} i");
+    let mesh_hz = f64::from(p.teeth) * 2.0 / 60.0;
+    let (phasor, block) = mesh_phasor(p, 2.0, mesh_hz, 3.0, 256.0);
+    assert_follows(phasor, p_rad);
     // The recorded mesh torque carries the load (the error moves the gears, not the torque,
     // when they follow it quasi-statically): within 1 % of the load.
     let worst = block
