@@ -318,7 +318,10 @@ fn orders_beyond_the_band_are_recorded_as_missing_and_too_short_cases_are_refuse
 fn simulate_with_its_defaults_classifies_as_the_campaign_does() {
     let dir = folder("agree");
     let out = dir.join("out");
-    campaign(&out, &["grid.rpm=[450, 600]", "grid.load_nm=[2.712, 5.424]"]);
+    campaign(
+        &out,
+        &["grid.rpm=[450, 600]", "grid.load_nm=[2.712, 5.424]"],
+    );
     let mut regimes = Vec::new();
     for row in csv_rows(&out.join("cases.csv")) {
         let (rpm, load, campaign) = (&row["rpm"], &row["load_nm"], &row["regime"]);
