@@ -62,6 +62,7 @@ impl ModelConstants {
     /// Collects the constants of `params`.
     pub fn of(params: &RigParams) -> Self {
         let (kp, ki) = params.speed_loop_gains();
+        let geometry = GearGeometry::of(params);
         Self {
             inertia_kgm2: params.inertias_kgm2(),
             shaft_stiffness_nm_per_rad: [
@@ -77,7 +78,7 @@ impl ModelConstants {
             mesh_stiffness_nm_per_rad: params.k23_mesh_nm_per_rad,
             mesh_damping_nms_per_rad: params.c23_mesh_nms_per_rad,
             double_pair_ratio: params.double_pair_stiffness_ratio,
-            half_backlash_rad: GearGeometry::of(params).half_backlash_rad,
+            half_backlash_rad: geometry.half_backlash_rad,
             backlash_variation: params.backlash_variation_c1,
             gear_error_1_nm: params.gear_error_c2_nm,
             gear_error_2_nm: params.gear_error_c3_nm,
@@ -88,9 +89,8 @@ impl ModelConstants {
             brake_slope_nms_per_rad: params.brake_speed_slope_nms_per_rad,
             bearing_drag_nms_per_rad: params.bearing_drag_nms_per_rad,
             brake_critical_rad_s: params.brake_critical_speed_rpm * std::f64::consts::PI / 30.0,
-            te_once_rad: params.te_once_per_rev_um * 1e-6 / GearGeometry::of(params).pitch_radius_m,
-            te_mesh_rad: params.te_mesh_frequency_um * 1e-6
-                / GearGeometry::of(params).pitch_radius_m,
+            te_once_rad: params.te_once_per_rev_um * 1e-6 / geometry.pitch_radius_m,
+            te_mesh_rad: params.te_mesh_frequency_um * 1e-6 / geometry.pitch_radius_m,
             teeth: f64::from(params.teeth),
         }
     }
