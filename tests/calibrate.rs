@@ -79,8 +79,14 @@ fn result_of(out: &Path) -> serde_json::Value {
         .expect("json")
 }
 
+/// The records of the search's log `evaluations.jsonl` in `out`.
 fn log(out: &Path) -> Vec<serde_json::Value> {
-    std::fs::read_to_string(out.join("evaluations.jsonl"))
+    log_named(out, "evaluations.jsonl")
+}
+
+/// The records of the log `name` in `out`, one JSON line each.
+fn log_named(out: &Path, name: &str) -> Vec<serde_json::Value> {
+    std::fs::read_to_string(out.join(name))
         .expect("log")
         .lines()
         .map(|l| serde_json::from_str(l).expect("json line"))
@@ -284,16 +290,9 @@ fn shards_search_independently_and_the_report_takes_the_best_of_all_logs() {
     for shard in ["0/2", "1/2"] {
         calibrate(&file, &out, &["--shard", shard]);
     }
-    let read = |name: &str| -> Vec<serde_json::Value> {
-        std::fs::read_to_string(out.join(name))
-            .expect("shard log")
-            .lines()
-            .map(|l| serde_json::from_str(l).expect("json line"))
-            .collect()
-    };
     let (a, b) = (
-        read("evaluations-0-of-2.jsonl"),
-        read("evaluations-1-of-2.jsonl"),
+        log_named(&out, "evaluations-0-of-2.jsonl"),
+        log_named(&out, "evaluations-1-of-2.jsonl"),
     );
     // Each stream has its own seed: the same start, different samples.
     assert!(!a.is_empty() && !b.is_empty());
