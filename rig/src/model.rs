@@ -189,17 +189,31 @@ pub fn system_matrix(
     add_brake(&mut a, mc, layout, freq.brake_characteristic_nms_per_rad);
     add_bearing_drag(&mut a, mc, freq.rotation_rad_s);
     add_motor(&mut a, mc, mode.motor);
-    add_rotation(&mut a, REV, freq.rotation_rad_s);
-    if let Some(rev2) = layout.rev2 {
-        add_rotation(&mut a, rev2, 2.0 * freq.rotation_rad_s);
-    }
-    if let Some(osc) = layout.osc {
-        add_rotation(&mut a, osc, freq.oscillating_load_rad_s);
-    }
-    if let Some(mesh) = layout.mesh {
-        add_rotation(&mut a, mesh, mc.teeth * freq.rotation_rad_s);
+    for (index, w) in harmonic_pairs(mc, layout, freq) {
+        add_rotation(&mut a, index, w);
     }
     a
+}
+
+/// The harmonic pairs of `layout` with the angular frequency each turns at (rad/s):
+/// (index of the cos state, ω) for φ, 2φ, the oscillating load's ψ and zφ.
+pub fn harmonic_pairs(
+    mc: &ModelConstants,
+    layout: &Layout,
+    freq: Frequencies,
+) -> Vec<(usize, f64)> {
+    let optional = [
+        (layout.rev2, 2.0 * freq.rotation_rad_s),
+        (layout.osc, freq.oscillating_load_rad_s),
+        (layout.mesh, mc.teeth * freq.rotation_rad_s),
+    ];
+    std::iter::once((REV, freq.rotation_rad_s))
+        .chain(
+            optional
+                .into_iter()
+                .filter_map(|(index, w)| index.map(|i| (i, w))),
+        )
+        .collect()
 }
 
 /// A spring k and damper c between bodies i and j.

@@ -2,10 +2,10 @@
 //! the forcing frequencies change.
 
 use crate::events::{EventFlags, mode_events};
-use crate::layout::{Layout, REV};
+use crate::layout::Layout;
 use crate::matrix_exp::spectral_radius;
 use crate::mode::{MeshMode, Mode, MotorMode, PairZone};
-use crate::model::{Frequencies, ModelConstants, system_matrix};
+use crate::model::{Frequencies, ModelConstants, harmonic_pairs, system_matrix};
 use crate::options::ContactLaw;
 use crate::propagator::ModeSystem;
 use crate::schedule::LiveCeiling;
@@ -86,16 +86,7 @@ impl SystemCache {
         self.frequencies = frequencies;
         self.systems.iter_mut().for_each(|s| *s = None);
         let h = self.step_s;
-        let mut rotations = vec![(REV, frequencies.rotation_rad_s)];
-        if let Some(rev2) = self.layout.rev2 {
-            rotations.push((rev2, 2.0 * frequencies.rotation_rad_s));
-        }
-        if let Some(osc) = self.layout.osc {
-            rotations.push((osc, frequencies.oscillating_load_rad_s));
-        }
-        if let Some(mesh) = self.layout.mesh {
-            rotations.push((mesh, self.mc.teeth * frequencies.rotation_rad_s));
-        }
+        let rotations = harmonic_pairs(&self.mc, &self.layout, frequencies);
         self.rotations = (1..=MAX_STRIDE)
             .map(|k| {
                 let span_s = k as f64 * h;
