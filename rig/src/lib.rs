@@ -27,6 +27,7 @@ pub mod error;
 mod events;
 mod fused_step;
 pub mod geometry;
+pub mod judge;
 mod jump_response;
 mod layout;
 mod matrix_exp;
@@ -54,6 +55,7 @@ mod jump_response_tests;
 
 pub use error::RigError;
 pub use geometry::GearGeometry;
+pub use judge::{JudgeInput, Judgement, Motion, judge};
 pub use modal::{Chain, NaturalMode, RigChains};
 pub use mode::{MeshMode, Mode, MotorMode, PairZone};
 pub use options::{ContactLaw, MeshPairs};

@@ -3,6 +3,7 @@
 use serde::Serialize;
 
 use crate::error::RigError;
+use crate::judge::{JudgeInput, Judgement, judge};
 use crate::plant::Plant;
 use crate::records::{Impact, RevolutionSample};
 use crate::regime::{Regime, RegimeCriteria, classify_scaled, impacts_per_tooth};
@@ -10,6 +11,9 @@ use crate::signals::{INTERMEDIATE_SHAFT, SignalBlock};
 
 /// Samples advanced per call while measuring.
 const BLOCK: usize = 8192;
+/// Most samples of the output-shaft torque a window keeps for the judge (the latest):
+/// 2^22, 410 s at 10240 Hz, 32 MiB.
+const JUDGED_SAMPLES_MAX: usize = 1 << 22;
 
 /// What a settled run shows (the measuring window only).
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -36,6 +40,8 @@ pub struct SteadySummary {
     pub torque_ac_rms_nm: f64,
     /// Revolutions of the driving gear in the window.
     pub revolutions: usize,
+    /// The physics judge's verdict on the output-shaft torque, with its numbers.
+    pub motion: Judgement,
 }
 
 /// What a measuring window accumulates, block by block, with memory bounded by the
@@ -51,6 +57,8 @@ pub struct SteadyWindow {
     impacts_per_tooth: Vec<u64>,
     revolutions: Vec<RevolutionSample>,
     step_s: f64,
+    torque_nm: Vec<f64>,
+    running_hz: f64,
 }
 
 impl SteadyWindow {
@@ -66,15 +74,20 @@ impl SteadyWindow {
             impacts_per_tooth: vec![0; teeth as usize],
             revolutions: Vec::new(),
             step_s,
+            torque_nm: Vec::new(),
+            running_hz: 0.0,
         }
     }
 
     /// Adds a block of true signals; speeds are taken about `set_speed_rad_s`.
     pub fn add_block(&mut self, block: &SignalBlock, set_speed_rad_s: f64) {
-        for &torque in &block.shaft_torque_nm[INTERMEDIATE_SHAFT] {
+        let torques = &block.shaft_torque_nm[INTERMEDIATE_SHAFT];
+        for &torque in torques {
             self.sum += torque;
             self.sum_sq += torque * torque;
         }
+        self.keep_torque(torques);
+        self.running_hz = set_speed_rad_s / std::f64::consts::TAU;
         self.apart += block.contact.iter().filter(|&&c| c == 0).count();
         for (moments, speeds) in self.speed_moments.iter_mut().zip(&block.speed_rad_s) {
             for &w in speeds {
@@ -84,6 +97,37 @@ impl SteadyWindow {
             }
         }
         self.samples += block.len();
+    }
+
+    /// Keeps the latest [`JUDGED_SAMPLES_MAX`] torque samples (dropping the oldest half
+    /// at a time, so the cost per sample stays constant).
+    fn keep_torque(&mut self, torques: &[f64]) {
+        self.torque_nm.extend_from_slice(torques);
+        if self.torque_nm.len() > 2 * JUDGED_SAMPLES_MAX {
+            let excess = self.torque_nm.len() - JUDGED_SAMPLES_MAX;
+            self.torque_nm.drain(..excess);
+        }
+    }
+
+    /// The judge's verdict on the torque kept and the revolutions of the same stretch.
+    pub fn judgement(&self) -> Judgement {
+        let kept = self.torque_nm.len().min(JUDGED_SAMPLES_MAX);
+        let torque_nm = &self.torque_nm[self.torque_nm.len() - kept..];
+        // The revolutions of the kept stretch: those within its length of the last one.
+        let kept_s = self.step_s * kept as f64;
+        let last_s = self.revolutions.last().map_or(0.0, |r| r.time_s);
+        let revolution_torque_nm: Vec<f64> = self
+            .revolutions
+            .iter()
+            .filter(|r| last_s - r.time_s < kept_s)
+            .map(|r| r.shaft_torque_nm)
+            .collect();
+        judge(&JudgeInput {
+            torque_nm,
+            rate_hz: 1.0 / self.step_s,
+            running_hz: self.running_hz,
+            revolution_torque_nm: &revolution_torque_nm,
+        })
     }
 
     /// Adds contact starts of the window.
@@ -124,6 +168,7 @@ impl SteadyWindow {
             torque_rms_nm: (self.sum_sq / count).sqrt(),
             torque_ac_rms_nm: (self.sum_sq / count - mean * mean).max(0.0).sqrt(),
             revolutions,
+            motion: self.judgement(),
         }
     }
 }

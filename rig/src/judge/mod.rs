@@ -1,0 +1,13 @@
+//! The physics judge of a settled motion: from the plant's own signals, whether it is
+//! periodic (and with which period in revolutions), quasi-periodic, chaotic or at rest,
+//! with the numbers that decide it. See `verdict.rs` for the thresholds and their reasons.
+
+mod order_lines;
+mod spread;
+mod verdict;
+mod zero_one;
+
+pub use order_lines::{OrderSpectrum, subharmonic_height_db};
+pub use spread::section_spread;
+pub use verdict::{JudgeInput, Judgement, Motion, judge};
+pub use zero_one::zero_one_k;

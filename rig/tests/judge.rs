@@ -1,0 +1,132 @@
+//! The physics judge on signals whose answer is known: synthetic period-2 and
+//! quasi-periodic torques, a chaotic sequence from the logistic map, a still rig, and the
+//! plant itself in its linear regime and in the thesis's period-2 motion.
+
+mod support;
+
+use std::f64::consts::TAU;
+
+use rig::{JudgeInput, Judgement, Motion, RegimeCriteria, Schedule, judge, run_steady};
+
+const RATE_HZ: f64 = 5120.0;
+const RUNNING_HZ: f64 = 1300.0 / 60.0;
+
+/// Judges `torque(t, revolution)` sampled at [`RATE_HZ`] for `revolutions` turns at
+/// [`RUNNING_HZ`], with the once-per-revolution samples at the turn marks.
+fn judge_signal(revolutions: usize, torque: impl Fn(f64, usize) -> f64) -> Judgement {
+    let period_s = 1.0 / RUNNING_HZ;
+    let samples = (revolutions as f64 * period_s * RATE_HZ) as usize;
+    let torque_nm: Vec<f64> = (0..samples)
+        .map(|i| {
+            let t = i as f64 / RATE_HZ;
+            torque(t, (t / period_s) as usize)
+        })
+        .collect();
+    let revolution_torque_nm: Vec<f64> = (0..revolutions)
+        .map(|n| torque(n as f64 * period_s, n))
+        .collect();
+    judge(&JudgeInput {
+        torque_nm: &torque_nm,
+        rate_hz: RATE_HZ,
+        running_hz: RUNNING_HZ,
+        revolution_torque_nm: &revolution_torque_nm,
+    })
+}
+
+#[test]
+fn a_synthetic_period_two_torque_is_period_two_with_a_clear_half_order_line() {
+    let w = TAU * RUNNING_HZ;
+    let j = judge_signal(600, |t, _| {
+        2.712 + (w * t).sin() + 0.6 * (0.5 * w * t + 0.4).sin() + 0.05 * (30.0 * w * t).cos()
+    });
+    assert_eq!(j.motion, Motion::Periodic(2), "{j:?}");
+    assert!(j.spread[0].unwrap() > 0.1, "every revolution differs: {j:?}");
+    assert!(j.spread[1].unwrap() < 1e-6, "every two revolutions repeat: {j:?}");
+    assert!(j.line_fraction[0].unwrap() < 0.8, "{j:?}");
+    assert!(j.line_fraction[1].unwrap() > 0.999, "{j:?}");
+    assert!(j.half_order_clear(), "{j:?}");
+    assert!(j.third_order_db.unwrap() < 20.0, "no third order: {j:?}");
+    assert!(j.chaos_k.unwrap() < 0.2, "{j:?}");
+}
+
+#[test]
+fn a_period_two_torque_buried_in_broadband_motion_is_not_period_two() {
+    // The same lines with a random revolution-to-revolution amplitude on top: the
+    // half-order line is there, but the motion does not repeat.
+    let w = TAU * RUNNING_HZ;
+    let mut x = 0.3;
+    let kicks: Vec<f64> = (0..700)
+        .map(|_| {
+            x = 4.0 * x * (1.0 - x);
+            x - 0.5
+        })
+        .collect();
+    let j = judge_signal(600, |t, n| {
+        (w * t).sin() + 0.3 * (0.5 * w * t).sin() + kicks[n] * (3.7 * w * t).sin()
+    });
+    assert_eq!(j.motion, Motion::Chaotic, "{j:?}");
+    assert!(j.spread[1].unwrap() > 0.1, "{j:?}");
+}
+
+#[test]
+fn a_chaotic_map_sampled_once_per_revolution_is_chaotic() {
+    let w = TAU * RUNNING_HZ;
+    let mut x = 0.3;
+    let amplitudes: Vec<f64> = (0..700)
+        .map(|_| {
+            x = 4.0 * x * (1.0 - x);
+            x
+        })
+        .collect();
+    let j = judge_signal(600, |t, n| amplitudes[n] * (1.0 + (w * t).sin()));
+    assert_eq!(j.motion, Motion::Chaotic, "{j:?}");
+    assert!(j.chaos_k.unwrap() > 0.8, "{j:?}");
+    assert!((1..=8).all(|k| j.spread[k - 1].unwrap() > 0.1), "{j:?}");
+}
+
+#[test]
+fn an_incommensurate_second_frequency_is_quasi_periodic() {
+    let w = TAU * RUNNING_HZ;
+    let j = judge_signal(600, |t, _| (w * t).sin() + 0.5 * (w * t * 0.5 * 5f64.sqrt()).sin());
+    assert_eq!(j.motion, Motion::QuasiPeriodic, "{j:?}");
+}
+
+#[test]
+fn a_still_torque_is_at_rest() {
+    let j = judge_signal(200, |_, _| 2.712);
+    assert_eq!(j.motion, Motion::AtRest, "{j:?}");
+}
+
+fn plant_judgement(params: rig::RigParams, rpm: f64, load_nm: f64) -> Judgement {
+    let mut plant = support::plant(params, Schedule::constant(rpm, load_nm), RATE_HZ);
+    let summary = run_steady(&mut plant, 40.0, 20.0, &RegimeCriteria::default(), |_| {
+        Ok::<(), rig::RigError>(())
+    })
+    .expect("runs");
+    summary.motion
+}
+
+#[test]
+fn the_plant_in_its_linear_regime_is_period_one() {
+    // Teeth never part: no backlash variation, no tooth shifting, a small once-per-rev
+    // error torque under a heavy load. The linear plant forced once per revolution can
+    // only answer at the running speed and its harmonics.
+    let params = rig::RigParams {
+        backlash_variation_c1: 0.0,
+        tooth_shifting: false,
+        gear_error_c2_nm: 0.2,
+        ..support::thesis()
+    };
+    let j = plant_judgement(params, 700.0, 5.424);
+    assert_eq!(j.motion, Motion::Periodic(1), "{j:?}");
+    assert!(j.line_fraction[0].unwrap() > 0.999, "{j:?}");
+    assert!(j.spread[0].unwrap() < 1e-3, "{j:?}");
+}
+
+#[test]
+fn the_thesis_rig_at_1300_rpm_is_cleanly_period_two() {
+    let j = plant_judgement(support::thesis(), 1300.0, 2.712);
+    assert_eq!(j.motion, Motion::Periodic(2), "{j:?}");
+    assert!(j.half_order_clear(), "{j:?}");
+    assert!(j.chaos_k.unwrap() < 0.2, "{j:?}");
+}
