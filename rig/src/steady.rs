@@ -130,6 +130,15 @@ impl SteadyWindow {
         })
     }
 
+    /// The output-shaft torque of the last `count` revolution samples (N m).
+    pub fn last_revolution_torques_nm(&self, count: usize) -> Vec<f64> {
+        let from = self.revolutions.len().saturating_sub(count);
+        self.revolutions[from..]
+            .iter()
+            .map(|r| r.shaft_torque_nm)
+            .collect()
+    }
+
     /// Adds contact starts of the window.
     pub fn add_impacts(&mut self, impacts: &[Impact]) {
         self.impacts += impacts.len();
@@ -147,7 +156,18 @@ impl SteadyWindow {
         self.revolutions.extend_from_slice(revolutions);
     }
 
-    /// The summary of everything added.
+    /// The regime of the once-per-revolution samples alone: cheap enough for a paced
+    /// thread (no spectrum, unlike [`Self::summary`]'s judge).
+    pub fn regime(&self, criteria: &RegimeCriteria) -> Regime {
+        let count = self.samples.max(1) as f64;
+        classify_scaled(
+            &self.revolutions,
+            &vibration_scale(&self.speed_moments, count),
+            criteria,
+        )
+    }
+
+    /// The summary of everything added, the judge's verdict included.
     pub fn summary(&self, criteria: &RegimeCriteria) -> SteadySummary {
         let count = self.samples.max(1) as f64;
         let mean = self.sum / count;
@@ -157,11 +177,7 @@ impl SteadyWindow {
             impacts: self.impacts,
             impacts_per_rev: self.impacts as f64 / revolutions.max(1) as f64,
             impacts_per_tooth: self.impacts_per_tooth.clone(),
-            regime: classify_scaled(
-                &self.revolutions,
-                &vibration_scale(&self.speed_moments, count),
-                criteria,
-            ),
+            regime: self.regime(criteria),
             separates: self.apart > 0 || self.impacts > 0,
             apart_fraction: self.apart as f64 / count,
             torque_mean_nm: mean,

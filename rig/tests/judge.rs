@@ -40,8 +40,14 @@ fn a_synthetic_period_two_torque_is_period_two_with_a_clear_half_order_line() {
         2.712 + (w * t).sin() + 0.6 * (0.5 * w * t + 0.4).sin() + 0.05 * (30.0 * w * t).cos()
     });
     assert_eq!(j.motion, Motion::Periodic(2), "{j:?}");
-    assert!(j.spread[0].unwrap() > 0.1, "every revolution differs: {j:?}");
-    assert!(j.spread[1].unwrap() < 1e-6, "every two revolutions repeat: {j:?}");
+    assert!(
+        j.spread[0].unwrap() > 0.1,
+        "every revolution differs: {j:?}"
+    );
+    assert!(
+        j.spread[1].unwrap() < 1e-6,
+        "every two revolutions repeat: {j:?}"
+    );
     assert!(j.line_fraction[0].unwrap() < 0.8, "{j:?}");
     assert!(j.line_fraction[1].unwrap() > 0.999, "{j:?}");
     assert!(j.half_order_clear(), "{j:?}");
@@ -87,7 +93,9 @@ fn a_chaotic_map_sampled_once_per_revolution_is_chaotic() {
 #[test]
 fn an_incommensurate_second_frequency_is_quasi_periodic() {
     let w = TAU * RUNNING_HZ;
-    let j = judge_signal(600, |t, _| (w * t).sin() + 0.5 * (w * t * 0.5 * 5f64.sqrt()).sin());
+    let j = judge_signal(600, |t, _| {
+        (w * t).sin() + 0.5 * (w * t * 0.5 * 5f64.sqrt()).sin()
+    });
     assert_eq!(j.motion, Motion::QuasiPeriodic, "{j:?}");
 }
 

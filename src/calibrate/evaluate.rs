@@ -1,6 +1,7 @@
 //! Evaluating candidates: every target point from every approach, in parallel over all
 //! candidates of a generation.
 
+use crate::sweep::Direction;
 use rayon::prelude::*;
 use rig::{RigChains, RigParams};
 use serde::{Deserialize, Serialize};
@@ -49,6 +50,8 @@ fn case_of(
         params: params.clone(),
         seed: case_seed(plan.sweep.seed, point.index),
         approach,
+        direction: Direction::Static,
+        series: None,
     }
 }
 

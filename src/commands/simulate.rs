@@ -112,6 +112,20 @@ fn print_text(r: &Report) {
         s.measured_s, r.settle_s, s.revolutions
     );
     println!("regime           {}", s.regime);
+    let m = &s.motion;
+    let number =
+        |v: Option<f64>, unit: &str| v.map_or("–".to_string(), |v| format!("{v:.3}{unit}"));
+    println!(
+        "motion (judge)   {} (0-1 test for chaos K {})\n  samples every k revolutions scatter by k=1 {}, k=2 {} of the AC RMS\n  band power on the lines of period k=1 {}, k=2 {}\n  half order {} and third order {} over the floor",
+        m.motion,
+        number(m.chaos_k, ""),
+        number(m.spread[0], ""),
+        number(m.spread[1], ""),
+        number(m.line_fraction[0], ""),
+        number(m.line_fraction[1], ""),
+        number(m.half_order_db, " dB"),
+        number(m.third_order_db, " dB"),
+    );
     println!(
         "impacts          {} ({:.3} per revolution)",
         s.impacts, s.impacts_per_rev

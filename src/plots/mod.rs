@@ -1,6 +1,7 @@
 //! Plots as the thesis draws them, as PNG and SVG (plotters with an embedded font, so no
 //! system font libraries are needed).
 
+pub mod bifurcation;
 pub mod canvas;
 pub mod convergence;
 pub mod frequency_map;
@@ -10,6 +11,7 @@ pub mod spectrum;
 pub mod survey;
 pub mod waterfall;
 
+pub use bifurcation::{SectionColumn, write_bifurcation};
 pub use convergence::{SearchPoint, write_convergence};
 pub use frequency_map::{SpeedLines, write_frequency_map};
 pub use regime_map::{RegimeCell, write_regime_map};

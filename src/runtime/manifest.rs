@@ -80,6 +80,7 @@ pub fn write_manifest(
         "overrun_times_s": p.overrun_times_s,
         "impacts": p.impacts,
         "regime": p.steady.regime,
+        "motion": p.steady.motion,
         "regime_window_s": p.steady.measured_s,
         "separates": p.steady.separates,
         "impacts_per_rev": p.steady.impacts_per_rev,

@@ -41,7 +41,7 @@ impl RollingRegime {
         if self.filled_s < REGIME_WINDOW_S {
             return None;
         }
-        let regime = self.window.summary(&RegimeCriteria::default()).regime;
+        let regime = self.window.regime(&RegimeCriteria::default());
         self.window = SteadyWindow::new(self.teeth, self.step_s);
         self.filled_s = 0.0;
         self.last = Some(regime);

@@ -2,11 +2,14 @@
 //! chain (one thread, stage after stage) into the analyser.
 
 use instruments::{Adc, Analyser, Line};
-use rig::{Plant, PlantConfig, Regime, RegimeCriteria, SignalBlock, SteadySummary, SteadyWindow};
+use rig::{
+    Judgement, Plant, PlantConfig, Regime, RegimeCriteria, SignalBlock, SteadySummary, SteadyWindow,
+};
 use serde::{Deserialize, Serialize};
 
 use super::lines::{OrderLine, order_line, peaks};
 use super::plan::{Case, SweepPlan};
+use super::sequence::Direction;
 use crate::runtime::frame::{Frame, SignalNames};
 use crate::runtime::plant_source::REGIME_WINDOW_S;
 
@@ -14,6 +17,9 @@ use crate::runtime::plant_source::REGIME_WINDOW_S;
 const CHAIN_LEAD_S: f64 = 1.0;
 /// Samples per block.
 const BLOCK: usize = 4096;
+/// Once-per-revolution torque samples a case keeps (the last of its window), for the
+/// bifurcation diagram.
+const KEPT_REVOLUTIONS: usize = 64;
 
 /// What one case shows.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -28,8 +34,17 @@ pub struct CaseResult {
     pub values: Vec<String>,
     /// The case's seed.
     pub seed: u64,
+    /// How the case was reached: static start, or the speed stepped up or down from the
+    /// case before it.
+    #[serde(default)]
+    pub direction: Direction,
     /// Period-k or aperiodic (`period-k` or `aperiodic` in JSON).
     pub regime: Regime,
+    /// The physics judge's verdict on the output-shaft torque over the window.
+    pub motion: Judgement,
+    /// The output-shaft torque once per revolution of the driving gear, the last of the
+    /// window (N m).
+    pub revolution_torque_nm: Vec<f64>,
     /// Power of the half-order line (V² rms at the amplifier output).
     #[serde(deserialize_with = "null_as_nan")]
     pub half_order: f64,
@@ -69,17 +84,42 @@ fn null_as_nan<'de, D: serde::Deserializer<'de>>(d: D) -> Result<f64, D::Error> 
     Option::<f64>::deserialize(d).map(|v| v.unwrap_or(f64::NAN))
 }
 
-/// Runs `case` of `plan`.
-pub fn run_case(plan: &SweepPlan, case: &Case) -> anyhow::Result<CaseResult> {
-    let config = PlantConfig {
+/// The plant configuration of every case of `plan`.
+pub fn plant_config(plan: &SweepPlan) -> PlantConfig {
+    PlantConfig {
         output_rate_hz: plan.rate_hz,
         ..PlantConfig::default()
-    };
+    }
+}
+
+/// Chain time run before the measured window (s): the filters settle over it.
+pub fn chain_lead_s(plan: &SweepPlan) -> f64 {
+    CHAIN_LEAD_S.min(plan.settle_s)
+}
+
+/// Samples [`measure_case`] advances the plant by: the chain's lead and the window.
+pub fn measured_samples(plan: &SweepPlan) -> usize {
+    (chain_lead_s(plan) * plan.rate_hz).round() as usize
+        + (plan.measure_s * plan.rate_hz).round() as usize
+}
+
+/// Runs `case` of `plan` on a plant of its own.
+pub fn run_case(plan: &SweepPlan, case: &Case) -> anyhow::Result<CaseResult> {
     let schedule = case.approach.schedule(case.rpm, case.load_nm);
-    let mut plant = Plant::new(case.params.clone(), schedule, config)?;
-    let lead = CHAIN_LEAD_S.min(plan.settle_s);
-    let settle_s = case.approach.lead_in_s() + plan.settle_s - lead;
+    let mut plant = Plant::new(case.params.clone(), schedule, plant_config(plan))?;
+    let settle_s = case.approach.lead_in_s() + plan.settle_s - chain_lead_s(plan);
     plant.skip((settle_s * plan.rate_hz).round() as usize)?;
+    measure_case(plan, case, &mut plant)
+}
+
+/// Measures `case` on `plant`, which stands [`chain_lead_s`] before the case's window:
+/// the chain runs over the lead, then the window is measured through it.
+pub fn measure_case(
+    plan: &SweepPlan,
+    case: &Case,
+    plant: &mut Plant,
+) -> anyhow::Result<CaseResult> {
+    let lead = chain_lead_s(plan);
     plant.drain_impacts();
     plant.drain_revolutions();
     let mut chain = plan.chain.stages.clone();
@@ -97,7 +137,7 @@ pub fn run_case(plan: &SweepPlan, case: &Case) -> anyhow::Result<CaseResult> {
     // The regime from the last stretch only, as `testrig simulate` and `testrig run` take it.
     let mut late = SteadyWindow::new(case.params.teeth, plant.output_step_s());
     let lead_samples = (lead * plan.rate_hz).round() as usize;
-    let total = lead_samples + (plan.measure_s * plan.rate_hz).round() as usize;
+    let total = measured_samples(plan);
     let late_from =
         total - (REGIME_WINDOW_S.min(plan.measure_s / 2.0) * plan.rate_hz).round() as usize;
     let mut block = SignalBlock::default();
@@ -144,14 +184,16 @@ pub fn run_case(plan: &SweepPlan, case: &Case) -> anyhow::Result<CaseResult> {
     }
     let criteria = RegimeCriteria::default();
     let mut summary = window.summary(&criteria);
-    summary.regime = late.summary(&criteria).regime;
-    Ok(result(
+    summary.regime = late.regime(&criteria);
+    let mut result = result(
         plan,
         case,
         &summary,
         &analyser.display(),
         analyser.average_count(),
-    ))
+    );
+    result.revolution_torque_nm = window.last_revolution_torques_nm(KEPT_REVOLUTIONS);
+    Ok(result)
 }
 
 fn result(
@@ -176,7 +218,10 @@ fn result(
         load_nm: case.load_nm,
         values: case.values.clone(),
         seed: case.seed,
+        direction: case.direction,
         regime: s.regime,
+        motion: s.motion.clone(),
+        revolution_torque_nm: Vec::new(),
         half_order: half.power,
         first_order: order(1.0).power,
         second_order: order(2.0).power,

@@ -6,6 +6,7 @@ use std::collections::BTreeMap;
 use serde::Deserialize;
 use toml::Spanned;
 
+use super::sequence::Sequence;
 use crate::scenario::file::{AnalyserFile, ChainFile, RigFile};
 use crate::scenario::values::{LoadNm, Positive, SpeedRpm};
 
@@ -69,6 +70,11 @@ pub struct CaseFile {
     pub settle_s: Spanned<Positive>,
     /// Simulated time measured (s): the regime window and the analyser's averages.
     pub measure_s: Spanned<Positive>,
+    /// `static` (default): every point from rest; `up-and-down`: the lab's run, at each
+    /// load the speeds stepped up and back down on one rig, each point settling from the
+    /// state the one before it left.
+    #[serde(default)]
+    pub sequence: Sequence,
 }
 
 /// `[detect]`.

@@ -8,6 +8,7 @@ pub mod lines;
 pub mod plan;
 pub mod report;
 pub mod run;
+pub mod sequence;
 pub mod shard;
 pub mod table;
 
@@ -15,4 +16,5 @@ pub use approach::Approach;
 pub use case::{CaseResult, run_case};
 pub use plan::{Case, SweepPlan, build_sweep};
 pub use run::{Assembled, SweepMeta, SweepOptions, SweepOutcome, assemble, read_meta, run_sweep};
+pub use sequence::{Direction, Sequence};
 pub use shard::Shard;

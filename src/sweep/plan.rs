@@ -11,7 +11,8 @@ use crate::scenario::values::{check_load_within_motor, check_simulated_s};
 use crate::scenario::{AnalyserPlan, ChainPlan, ScenarioSource};
 
 use super::approach::Approach;
-use super::file::{CaseFile, SweepFile};
+use super::file::{CaseFile, GridFile, SweepFile};
+use super::sequence::{Direction, Sequence};
 
 /// Everything a sweep needs, checked.
 #[derive(Clone, Debug)]
@@ -28,6 +29,8 @@ pub struct SweepPlan {
     pub settle_s: f64,
     /// Measured time per case (s).
     pub measure_s: f64,
+    /// How the points are reached: each from rest, or the lab's run up and down.
+    pub sequence: Sequence,
     /// The chain (slip-ring seed replaced per case).
     pub chain: ChainPlan,
     /// The analyser.
@@ -57,6 +60,10 @@ pub struct Case {
     pub seed: u64,
     /// How the case reaches its operating point.
     pub approach: Approach,
+    /// Which way the speed came to it.
+    pub direction: Direction,
+    /// The series it is run in, in order, on one plant (`None`: on a plant of its own).
+    pub series: Option<usize>,
 }
 
 /// Checks `file` (read from `src`) and expands its grid.
@@ -110,23 +117,34 @@ pub fn build_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<Swe
             }),
         )?;
     }
+    let sequence = file.case.sequence;
     let mut cases = Vec::new();
     for (values, params) in &variants {
-        for rpm in &grid.rpm {
-            for load in &grid.load_nm {
-                check_load_within_motor(load.0, params)
-                    .map_err(|message| src.error(0..0, "grid.load_nm", message))?;
-                let index = cases.len();
-                cases.push(Case {
-                    index,
-                    rpm: rpm.0,
-                    load_nm: load.0,
-                    values: values.clone(),
-                    params: params.clone(),
-                    seed: case_seed(file.seed, index),
-                    approach: Approach::Static,
-                });
-            }
+        for load in &grid.load_nm {
+            check_load_within_motor(load.0, params)
+                .map_err(|message| src.error(0..0, "grid.load_nm", message))?;
+        }
+        let points = match sequence {
+            Sequence::Static => static_points(grid),
+            Sequence::UpAndDown => up_and_down_points(grid),
+        };
+        let series_base = cases
+            .last()
+            .and_then(|c: &Case| c.series)
+            .map_or(0, |s| s + 1);
+        for (rpm, load_nm, direction, series) in points {
+            let index = cases.len();
+            cases.push(Case {
+                index,
+                rpm,
+                load_nm,
+                values: values.clone(),
+                params: params.clone(),
+                seed: case_seed(file.seed, index),
+                approach: Approach::Static,
+                direction,
+                series: series.map(|s| series_base + s),
+            });
         }
     }
     Ok(SweepPlan {
@@ -136,12 +154,47 @@ pub fn build_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<Swe
         preset,
         settle_s,
         measure_s,
+        sequence,
         chain,
         analyser,
         line_db: file.detect.line_db.0,
         swept,
         cases,
     })
+}
+
+/// The grid's points from rest: speed outer, load inner, as the file lists them.
+fn static_points(grid: &GridFile) -> Vec<(f64, f64, Direction, Option<usize>)> {
+    grid.rpm
+        .iter()
+        .flat_map(|rpm| {
+            grid.load_nm
+                .iter()
+                .map(move |load| (rpm.0, load.0, Direction::Static, None))
+        })
+        .collect()
+}
+
+/// The lab's run: one series per load, the speeds up in ascending order, then down from
+/// the one below the top (the top is measured once, on the way up).
+fn up_and_down_points(grid: &GridFile) -> Vec<(f64, f64, Direction, Option<usize>)> {
+    let mut speeds: Vec<f64> = grid.rpm.iter().map(|r| r.0).collect();
+    speeds.sort_by(f64::total_cmp);
+    speeds.dedup();
+    let down: Vec<f64> = speeds.iter().rev().skip(1).copied().collect();
+    let mut points = Vec::new();
+    for (series, load) in grid.load_nm.iter().enumerate() {
+        points.extend(
+            speeds
+                .iter()
+                .map(|&r| (r, load.0, Direction::Up, Some(series))),
+        );
+        points.extend(
+            down.iter()
+                .map(|&r| (r, load.0, Direction::Down, Some(series))),
+        );
+    }
+    points
 }
 
 /// The settling and measured times (s) of `case`, checked: each a simulated time the

@@ -5,8 +5,11 @@
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
+use rig::Motion;
+
 use super::case::CaseResult;
 use super::run::SweepMeta;
+use super::sequence::Direction;
 use crate::recording::PartialFile;
 
 /// Speed from which the thesis saw the half-order line (rev/min).
@@ -37,6 +40,48 @@ pub const RESONANCE_TOLERANCE: f64 = 0.12;
 /// with or without load, except with 5.424 N m from 1900 rev/min up.
 pub fn thesis_expects_half_order(rpm: f64, load_nm: f64) -> bool {
     rpm >= HALF_ORDER_FROM_RPM && !(load_nm >= HEAVY_LOAD_NM - 1e-6 && rpm >= VANISHES_FROM_RPM)
+}
+
+/// The motion the thesis saw at `rpm` and `load_nm`, as issue 26 decides the campaign's
+/// points: period 1 below 1000 rev/min (only running-speed harmonics, Figs 4.34–4.35),
+/// period 2 from 1100 rev/min up (the half-order line, a time trace repeating every two
+/// revolutions, Fig 4.39) except with 5.424 N m from 1900 rev/min (line gone: period 1);
+/// `None` at 1000 rev/min and between 1000 and 1100, where the thesis says "about".
+pub fn thesis_motion(rpm: f64, load_nm: f64) -> Option<Motion> {
+    if rpm < PERIOD_ONE_BELOW_RPM {
+        Some(Motion::Periodic(1))
+    } else if rpm < HALF_ORDER_FROM_RPM {
+        None
+    } else if thesis_expects_half_order(rpm, load_nm) {
+        Some(Motion::Periodic(2))
+    } else {
+        Some(Motion::Periodic(1))
+    }
+}
+
+/// Below this speed the thesis saw only the running speed and its multiples (rev/min).
+pub const PERIOD_ONE_BELOW_RPM: f64 = 1000.0;
+
+/// Whether the judge's motion at a case is the thesis's there: the same period, and for
+/// period 2 a half-order line standing clear of the broadband floor.
+pub fn physics_match(c: &CaseResult) -> bool {
+    match thesis_motion(c.rpm, c.load_nm) {
+        None => false,
+        Some(Motion::Periodic(2)) => {
+            c.motion.motion == Motion::Periodic(2) && c.motion.half_order_clear()
+        }
+        Some(expected) => c.motion.motion == expected,
+    }
+}
+
+/// Decided points whose judged motion matches the thesis, of the decided points.
+pub fn physics_score(cases: &[CaseResult]) -> (usize, usize) {
+    let decided: Vec<&CaseResult> = cases
+        .iter()
+        .filter(|c| thesis_motion(c.rpm, c.load_nm).is_some())
+        .collect();
+    let hits = decided.iter().filter(|c| physics_match(c)).count();
+    (hits, decided.len())
 }
 
 /// Points whose half-order verdict matches the thesis, of all points.
@@ -74,6 +119,7 @@ pub fn write_report(
         md,
         "{total} points, held against {THESIS}, ch. IV (Figs 4.34–4.72). A half-order line counts as present when it stands 10 dB above the lines around it in the averaged spectrum of the output-shaft strain (the thesis's chain: gauges, bridge, carrier amplifier, slip rings, anti-alias filter, 5451C). Score of the points against the thesis (half order present from {HALF_ORDER_FROM_RPM} rev/min up at every load, absent below, absent with {HEAVY_LOAD_NM} N m from {VANISHES_FROM_RPM} rev/min): {score}.\n"
     );
+    physics(&mut md, cases);
     findings(&mut md, meta, cases);
     table(&mut md, cases);
     let _ = writeln!(md, "\n## Plots\n");
@@ -88,6 +134,135 @@ pub fn write_report(
         let _ = writeln!(md, "![{name}]({name})\n");
     }
     PartialFile::write_whole(&dir.join("report.md"), md)
+}
+
+/// The physics judge's score and its table: each point's motion against the thesis's.
+fn physics(md: &mut String, cases: &[CaseResult]) {
+    let _ = writeln!(md, "## The motion, judged as physics\n");
+    let _ = writeln!(
+        md,
+        "The thesis's motion: period 1 below {PERIOD_ONE_BELOW_RPM} rev/min, period 2 with a half-order line ≥ 20 dB over the broadband floor from {HALF_ORDER_FROM_RPM} rev/min (period 1 with {HEAVY_LOAD_NM} N m from {VANISHES_FROM_RPM} rev/min); 1000 rev/min is not decided. The judge (`rig::judge`) reads the true output-shaft torque: once-per-revolution samples taken every k revolutions within 5 % of its AC RMS and ≥ 95 % of the band's power on the period's lines make period k; otherwise the 0-1 test for chaos (K ≥ 0.5) tells chaotic from quasi-periodic.\n"
+    );
+    let mut directions: Vec<Direction> = cases.iter().map(|c| c.direction).collect();
+    directions.sort_by_key(|d| *d as u8);
+    directions.dedup();
+    for direction in &directions {
+        let these: Vec<CaseResult> = cases
+            .iter()
+            .filter(|c| c.direction == *direction)
+            .cloned()
+            .collect();
+        let (hits, total) = physics_score(&these);
+        let share = if total == 0 {
+            0.0
+        } else {
+            100.0 * hits as f64 / total as f64
+        };
+        let _ = writeln!(
+            md,
+            "- {direction}: **{hits} of {total} decided points ({share:.0} %)** move as the thesis saw (target 90 %)."
+        );
+    }
+    hysteresis(md, cases);
+    let _ = writeln!(
+        md,
+        "\nEach cell: the judged motion, the half-order height over the floor (dB), the 0-1 test's K; ✓ where it is the thesis's motion, ✗ where not, blank where the thesis decides nothing.\n"
+    );
+    motion_table(md, cases);
+}
+
+/// Speeds where the run-up and the run-down settle to different motions.
+fn hysteresis(md: &mut String, cases: &[CaseResult]) {
+    let mut lines = Vec::new();
+    for up in cases.iter().filter(|c| c.direction == Direction::Up) {
+        let down = cases.iter().find(|d| {
+            d.direction == Direction::Down
+                && d.rpm == up.rpm
+                && d.load_nm == up.load_nm
+                && d.values == up.values
+        });
+        if let Some(down) = down.filter(|d| coexist(up, d)) {
+            lines.push(format!(
+                "{} rev/min, {} N m: {} ({:.2} N m AC RMS) going up, {} ({:.2} N m) coming down",
+                up.rpm,
+                up.load_nm,
+                up.motion.motion,
+                up.motion.ac_rms_nm,
+                down.motion.motion,
+                down.motion.ac_rms_nm
+            ));
+        }
+    }
+    if cases.iter().any(|c| c.direction == Direction::Up) {
+        let _ = writeln!(
+            md,
+            "- Hysteresis (the run-up and the run-down settle to different motions): {}.",
+            if lines.is_empty() {
+                "none".to_string()
+            } else {
+                lines.join("; ")
+            }
+        );
+    }
+}
+
+/// Whether two cases at one point settled to different motions: another kind, or the
+/// same kind with AC RMS torques more than [`COEXIST_RMS_RATIO`] apart.
+fn coexist(a: &CaseResult, b: &CaseResult) -> bool {
+    let (x, y) = (a.motion.ac_rms_nm, b.motion.ac_rms_nm);
+    a.motion.motion != b.motion.motion || x.max(y) > COEXIST_RMS_RATIO * x.min(y)
+}
+
+/// Ratio of AC RMS torques that tells two motions of one kind apart.
+const COEXIST_RMS_RATIO: f64 = 1.2;
+
+fn motion_table(md: &mut String, cases: &[CaseResult]) {
+    let mut columns: Vec<(Direction, f64)> =
+        cases.iter().map(|c| (c.direction, c.load_nm)).collect();
+    columns.sort_by(|a, b| {
+        (a.0 as u8, a.1)
+            .partial_cmp(&(b.0 as u8, b.1))
+            .unwrap_or(std::cmp::Ordering::Equal)
+    });
+    columns.dedup();
+    let header: Vec<String> = columns
+        .iter()
+        .map(|(d, l)| match d {
+            Direction::Static => format!("{l} N m"),
+            _ => format!("{l} N m {d}"),
+        })
+        .collect();
+    let _ = writeln!(md, "| rev/min | {} |", header.join(" | "));
+    let _ = writeln!(md, "|---|{}", "---|".repeat(columns.len()));
+    let mut speeds: Vec<f64> = cases.iter().map(|c| c.rpm).collect();
+    speeds.sort_by(f64::total_cmp);
+    speeds.dedup();
+    for rpm in speeds {
+        let cells: Vec<String> = columns
+            .iter()
+            .map(|&(d, l)| {
+                cases
+                    .iter()
+                    .find(|c| c.rpm == rpm && c.load_nm == l && c.direction == d)
+                    .map_or("–".into(), motion_cell)
+            })
+            .collect();
+        let _ = writeln!(md, "| {rpm} | {} |", cells.join(" | "));
+    }
+}
+
+fn motion_cell(c: &CaseResult) -> String {
+    let mark = match thesis_motion(c.rpm, c.load_nm) {
+        None => "",
+        Some(_) if physics_match(c) => " ✓",
+        Some(_) => " ✗",
+    };
+    let height = c
+        .motion
+        .half_order_db
+        .map_or("–".into(), |h| format!("{h:.0} dB"));
+    let k = c.motion.chaos_k.map_or("–".into(), |k| format!("{k:.2}"));
+    format!("{}, {height}, K {k}{mark}", c.motion.motion)
 }
 
 /// The verdict on a finding that `matched` of the grid's `points` for it reproduce.

@@ -10,12 +10,15 @@ use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 use super::case::{CaseResult, run_case};
-use super::plan::SweepPlan;
+use super::plan::{Case, SweepPlan};
 use super::report::write_report;
+use super::sequence::Direction;
+use super::sequence::run_series;
 use super::shard::Shard;
 use super::table::{CASES_DIR, case_path, read_cases, write_case, write_table};
 use crate::plots::{
-    RegimeCell, SpeedLines, WaterfallTrace, write_frequency_map, write_regime_map, write_waterfall,
+    RegimeCell, SectionColumn, SpeedLines, WaterfallTrace, write_bifurcation, write_frequency_map,
+    write_regime_map, write_waterfall,
 };
 use crate::recording::{PartialFile, remove_files_with_extension};
 
@@ -76,17 +79,17 @@ pub fn run_sweep(
         .with_context(|| format!("--out {}: cannot create the output folder", dir.display()))?;
     clear_other_sweep(dir, meta, options.resume)?;
     write_meta(dir, meta)?;
-    let mine: Vec<_> = plan
-        .cases
-        .iter()
-        .filter(|c| options.shard.has(c.index))
+    let units = work_units(plan, options.shard);
+    let finished = |c: &&Case| options.resume && case_path(dir, c.index).exists();
+    let mine: usize = units.iter().map(Vec::len).sum();
+    // A series is run whole unless every case of it is finished (its cases depend on
+    // the ones before them).
+    let todo: Vec<Vec<&Case>> = units
+        .into_iter()
+        .filter(|unit| !unit.iter().all(finished))
         .collect();
-    let todo: Vec<_> = mine
-        .iter()
-        .filter(|c| !(options.resume && case_path(dir, c.index).exists()))
-        .copied()
-        .collect();
-    let bar = progress_bar(todo.len() as u64, options.progress);
+    let count: usize = todo.iter().map(Vec::len).sum();
+    let bar = progress_bar(count as u64, options.progress);
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(options.jobs.unwrap_or(0))
         .build()
@@ -94,10 +97,16 @@ pub fn run_sweep(
     let started = Instant::now();
     let failed: Vec<(usize, String)> = pool.install(|| {
         todo.par_iter()
-            .filter_map(|case| {
-                let done = run_case(plan, case).and_then(|r| write_case(dir, &r));
-                bar.inc(1);
-                done.err().map(|e| (case.index, format!("{e:#}")))
+            .flat_map_iter(|unit| {
+                let results = match unit.as_slice() {
+                    [case] if case.series.is_none() => vec![(case.index, run_case(plan, case))],
+                    series => run_series(plan, series),
+                };
+                results.into_iter().filter_map(|(index, result)| {
+                    let done = result.and_then(|r| write_case(dir, &r));
+                    bar.inc(1);
+                    done.err().map(|e| (index, format!("{e:#}")))
+                })
             })
             .collect()
     });
@@ -105,12 +114,30 @@ pub fn run_sweep(
     let wall_s = started.elapsed().as_secs_f64();
     let files = assemble(std::slice::from_ref(dir), dir)?.files;
     Ok(SweepOutcome {
-        ran: todo.len(),
-        skipped: mine.len() - todo.len(),
+        ran: count,
+        skipped: mine - count,
         failed,
         wall_s,
         files,
     })
+}
+
+/// This shard's work: each case of its own, or each series whole (a series belongs to
+/// the shard of its number), in index order.
+fn work_units(plan: &SweepPlan, shard: Shard) -> Vec<Vec<&Case>> {
+    let mut units: Vec<Vec<&Case>> = Vec::new();
+    for case in &plan.cases {
+        match case.series {
+            None if shard.has(case.index) => units.push(vec![case]),
+            None => {}
+            Some(series) if shard.has(series) => match units.last_mut() {
+                Some(unit) if unit[0].series == Some(series) => unit.push(case),
+                _ => units.push(vec![case]),
+            },
+            Some(_) => {}
+        }
+    }
+    units
 }
 
 /// A folder holding the cases of another sweep (its `sweep.json` differs) has them removed,
@@ -216,6 +243,9 @@ fn groups(cases: &[CaseResult]) -> Vec<(String, Vec<&CaseResult>)> {
     for c in cases {
         let mut label: Vec<String> = c.values.clone();
         label.push(format!("{} N m", c.load_nm));
+        if c.direction != Direction::Static {
+            label.push(format!("{}", c.direction));
+        }
         let label = label.join(", ");
         match groups.iter_mut().find(|(l, _)| *l == label) {
             Some((_, members)) => members.push(c),
@@ -275,6 +305,7 @@ fn plots(out: &Path, meta: &SweepMeta, cases: &[CaseResult]) -> anyhow::Result<V
             &traces,
         )?);
     }
+    files.extend(bifurcation_plots(out, meta, cases)?);
     let mut variants: Vec<Vec<String>> = cases.iter().map(|c| c.values.clone()).collect();
     variants.dedup();
     for values in variants {
@@ -302,6 +333,64 @@ fn plots(out: &Path, meta: &SweepMeta, cases: &[CaseResult]) -> anyhow::Result<V
             &out.join(format!("regime-map{tag}")),
             &title,
             &cells,
+        )?);
+    }
+    Ok(files)
+}
+
+/// One bifurcation diagram per parameter variant and load, each direction a series.
+fn bifurcation_plots(
+    out: &Path,
+    meta: &SweepMeta,
+    cases: &[CaseResult],
+) -> anyhow::Result<Vec<PathBuf>> {
+    let mut keys: Vec<(Vec<String>, f64)> = Vec::new();
+    for c in cases {
+        let key = (c.values.clone(), c.load_nm);
+        if !keys.contains(&key) {
+            keys.push(key);
+        }
+    }
+    let mut files = Vec::new();
+    for (values, load) in keys {
+        let mut label = values.clone();
+        label.push(format!("{load} N m"));
+        let label = label.join(", ");
+        let series: Vec<(String, Vec<SectionColumn>)> =
+            [Direction::Static, Direction::Up, Direction::Down]
+                .into_iter()
+                .map(|d| {
+                    let columns: Vec<SectionColumn> = cases
+                        .iter()
+                        .filter(|c| c.values == values && c.load_nm == load && c.direction == d)
+                        .map(|c| SectionColumn {
+                            rpm: c.rpm,
+                            torque_nm: c.revolution_torque_nm.clone(),
+                        })
+                        .collect();
+                    (
+                        match d {
+                            Direction::Static => "from rest",
+                            Direction::Up => "run-up",
+                            Direction::Down => "run-down",
+                        }
+                        .to_string(),
+                        columns,
+                    )
+                })
+                .filter(|(_, columns)| columns.iter().any(|c| !c.torque_nm.is_empty()))
+                .collect();
+        if series.is_empty() {
+            continue;
+        }
+        let title = format!(
+            "{}: once-per-revolution torque against speed, {label}",
+            meta.name
+        );
+        files.extend(write_bifurcation(
+            &out.join(format!("bifurcation-{}", file_label(&label))),
+            &title,
+            &series,
         )?);
     }
     Ok(files)

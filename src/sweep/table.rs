@@ -6,6 +6,7 @@ use std::path::{Path, PathBuf};
 use anyhow::Context;
 
 use super::case::CaseResult;
+use super::report::{physics_match, thesis_motion};
 use crate::recording::{CsvRecorder, PartialFile};
 
 /// Folder of the per-case files inside a sweep's output folder.
@@ -72,6 +73,22 @@ pub fn write_table(dir: &Path, swept: &[String], cases: &[CaseResult]) -> anyhow
             "torque_ac_rms_nm",
             "averages",
             "seed",
+            "direction",
+            "motion",
+            "motion_period",
+            "spread_1rev",
+            "spread_2rev",
+            "spread_3rev",
+            "spread_4rev",
+            "line_fraction_1",
+            "line_fraction_2",
+            "line_fraction_3",
+            "line_fraction_4",
+            "half_order_floor_db",
+            "third_order_floor_db",
+            "chaos_k",
+            "thesis_motion",
+            "physics_match",
         ]
         .map(String::from),
     );
@@ -111,7 +128,32 @@ pub fn write_table(dir: &Path, swept: &[String], cases: &[CaseResult]) -> anyhow
             c.averages.to_string(),
             c.seed.to_string(),
         ]);
+        row.extend(judge_columns(c));
         csv.write_row(&row)?;
     }
     csv.finish()
+}
+
+/// The judge's columns of a case: direction, motion, its numbers, the thesis's motion at
+/// the point and whether they match (empty where the thesis decides nothing).
+fn judge_columns(c: &CaseResult) -> Vec<String> {
+    let m = &c.motion;
+    let number =
+        |v: Option<f64>, digits: usize| v.map_or(String::new(), |v| format!("{v:.digits$}"));
+    let mut row = vec![
+        c.direction.to_string(),
+        m.motion.to_string(),
+        m.motion.period().unwrap_or(0).to_string(),
+    ];
+    row.extend((0..4).map(|k| number(m.spread.get(k).copied().flatten(), 6)));
+    row.extend((0..4).map(|k| number(m.line_fraction.get(k).copied().flatten(), 6)));
+    row.extend([
+        number(m.half_order_db, 2),
+        number(m.third_order_db, 2),
+        number(m.chaos_k, 4),
+    ]);
+    let expected = thesis_motion(c.rpm, c.load_nm);
+    row.push(expected.map_or(String::new(), |e| e.to_string()));
+    row.push(expected.map_or(String::new(), |_| physics_match(c).to_string()));
+    row
 }

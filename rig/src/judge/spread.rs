@@ -25,7 +25,9 @@ mod tests {
 
     #[test]
     fn a_period_two_sequence_scatters_every_revolution_but_not_every_two() {
-        let samples: Vec<f64> = (0..40).map(|n| if n % 2 == 0 { 1.0 } else { -1.0 }).collect();
+        let samples: Vec<f64> = (0..40)
+            .map(|n| if n % 2 == 0 { 1.0 } else { -1.0 })
+            .collect();
         assert!((section_spread(&samples, 1).unwrap() - 1.0).abs() < 1e-12);
         assert!(section_spread(&samples, 2).unwrap() < 1e-12);
         assert!(section_spread(&samples, 4).unwrap() < 1e-12);

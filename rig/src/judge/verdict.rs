@@ -19,8 +19,9 @@
 //! [`SUBHARMONIC_CLEAR_DB`] (20 dB).
 
 use std::fmt;
+use std::str::FromStr;
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use super::order_lines::{OrderSpectrum, subharmonic_height_db};
 use super::spread::section_spread;
@@ -38,6 +39,9 @@ pub const CHAOS_K_MIN: f64 = 0.5;
 pub const REST_AC_RMS_NM: f64 = 1e-4;
 /// Height over the floor (dB) at which a subharmonic line stands clear.
 pub const SUBHARMONIC_CLEAR_DB: f64 = 20.0;
+/// Scatter of once-per-revolution samples (fraction of the AC RMS) below which the section
+/// is a fixed point and K is 0 without testing.
+const FIXED_POINT_SPREAD: f64 = 1e-3;
 /// The spectrum's band, in orders of the running speed (the mesh frequency, 30 orders,
 /// and its first sidebands lie inside).
 const BAND_ORDERS: f64 = 40.0;
@@ -92,14 +96,45 @@ impl fmt::Display for Motion {
     }
 }
 
+impl FromStr for Motion {
+    type Err = String;
+
+    fn from_str(text: &str) -> Result<Self, String> {
+        match text {
+            "at-rest" => Ok(Self::AtRest),
+            "quasi-periodic" => Ok(Self::QuasiPeriodic),
+            "chaotic" => Ok(Self::Chaotic),
+            "undecided" => Ok(Self::Undecided),
+            _ => text
+                .strip_prefix("period-")
+                .and_then(|k| k.parse().ok())
+                .filter(|&k| k >= 1)
+                .map(Self::Periodic)
+                .ok_or_else(|| {
+                    format!(
+                        "`{text}` is not a motion: period-k (k ≥ 1), quasi-periodic, chaotic, at-rest or undecided"
+                    )
+                }),
+        }
+    }
+}
+
 impl Serialize for Motion {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         s.collect_str(self)
     }
 }
 
+impl<'de> Deserialize<'de> for Motion {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        String::deserialize(d)?
+            .parse()
+            .map_err(serde::de::Error::custom)
+    }
+}
+
 /// The verdict with the numbers behind it.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Judgement {
     /// The kind of motion.
     pub motion: Motion,
@@ -122,13 +157,28 @@ pub struct Judgement {
 impl Judgement {
     /// Whether the half-order line stands [`SUBHARMONIC_CLEAR_DB`] over its floor.
     pub fn half_order_clear(&self) -> bool {
-        self.half_order_db.is_some_and(|h| h >= SUBHARMONIC_CLEAR_DB)
+        self.half_order_db
+            .is_some_and(|h| h >= SUBHARMONIC_CLEAR_DB)
     }
 }
+
+/// Fewest torque samples judged: below it the verdict is undecided.
+const MIN_SAMPLES: usize = 64;
 
 /// Judges the motion in `input`.
 pub fn judge(input: &JudgeInput) -> Judgement {
     let ac_rms_nm = ac_rms(input.torque_nm);
+    if input.torque_nm.len() < MIN_SAMPLES || input.running_hz.is_nan() || input.running_hz <= 0.0 {
+        return Judgement {
+            motion: Motion::Undecided,
+            ac_rms_nm,
+            spread: vec![None; MAX_PERIOD],
+            line_fraction: vec![None; MAX_PERIOD],
+            half_order_db: None,
+            third_order_db: None,
+            chaos_k: None,
+        };
+    }
     let spectrum = OrderSpectrum::new(
         input.torque_nm,
         input.rate_hz,
@@ -142,7 +192,14 @@ pub fn judge(input: &JudgeInput) -> Judgement {
     let line_fraction: Vec<Option<f64>> = (1..=MAX_PERIOD)
         .map(|k| spectrum.line_fraction(k))
         .collect();
-    let chaos_k = zero_one_k(input.revolution_torque_nm);
+    // A section that does not move (a fixed point of the once-per-revolution map) is
+    // regular by definition: the 0-1 test on its rounding and its last transient says
+    // nothing.
+    let chaos_k = if spread[0].is_some_and(|s| s < FIXED_POINT_SPREAD) {
+        Some(0.0)
+    } else {
+        zero_one_k(input.revolution_torque_nm)
+    };
     let period = (1..=MAX_PERIOD).find(|&k| {
         spread[k - 1].is_some_and(|s| s <= SPREAD_MAX)
             && line_fraction[k - 1].is_some_and(|f| f >= LINE_FRACTION_MIN)
