@@ -198,6 +198,12 @@ fn bad_commands_are_refused_and_change_nothing() {
 
 #[test]
 fn the_python_example_finds_the_half_order_line_at_1300_rpm() {
+    if !common::python_has(
+        "the_python_example_finds_the_half_order_line_at_1300_rpm",
+        &["requests", "websocket", "numpy"],
+    ) {
+        return;
+    }
     let out = folder("panel-python");
     let panel = Panel::start(&out, &["--pace", "20"]);
     let script = format!("{}/examples/panel_client.py", env!("CARGO_MANIFEST_DIR"));

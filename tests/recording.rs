@@ -1,5 +1,7 @@
 //! Recorders: WAV with its sidecar, and UFF58 read back by pyuff (installed by .ci/run).
 
+mod common;
+
 use std::process::Command;
 
 use testrig::recording::{ChannelInfo, Uff58Abscissa, Uff58Record, WavRecorder, write_uff58};
@@ -61,6 +63,9 @@ fn a_wav_recording_holds_scaled_frames_and_its_sidecar_says_how() {
 
 #[test]
 fn pyuff_reads_our_dataset_58() {
+    if !common::python_has("pyuff_reads_our_dataset_58", &["pyuff", "numpy"]) {
+        return;
+    }
     let dir = folder("uff");
     let path = dir.join("strain.uff");
     let values: Vec<f64> = (0..37)

@@ -250,6 +250,12 @@ fn ctrl_c_and_sigterm_close_every_file_with_the_samples_up_to_the_stop() {
 
 #[test]
 fn a_run_records_uff58_that_pyuff_reads_and_24_bit_wav_at_its_full_scale() {
+    if !common::python_has(
+        "a_run_records_uff58_that_pyuff_reads_and_24_bit_wav_at_its_full_scale",
+        &["pyuff"],
+    ) {
+        return;
+    }
     let (out, manifest) = run_ok(
         "uff",
         &scenario("aliasing-windowing"),

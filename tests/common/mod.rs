@@ -130,3 +130,38 @@ pub fn sets<'a>(items: &[&'a str], extra: &[&'a str]) -> Vec<&'a str> {
     args.extend(extra);
     args
 }
+
+/// Set (to anything) to turn a test skipped for a missing tool into a failure: `.ci/run`
+/// sets it, so that CI runs every test.
+pub const REQUIRE_ALL: &str = "TESTRIG_REQUIRE_ALL";
+
+/// Whether `python3` can import every one of `modules`. Where it cannot, `test` is
+/// skipped: it says so on the terminal (past the test harness's capture), with the modules
+/// missing and the command that installs them, and this returns false. With
+/// [`REQUIRE_ALL`] set, a missing module fails the test instead.
+pub fn python_has(test: &str, modules: &[&str]) -> bool {
+    let probe = Command::new("python3")
+        .args(["-c", &format!("import {}", modules.join(", "))])
+        .output();
+    let missing = match probe {
+        Ok(out) if out.status.success() => return true,
+        Ok(out) => String::from_utf8_lossy(&out.stderr)
+            .lines()
+            .last()
+            .unwrap_or("an import failed")
+            .to_string(),
+        Err(e) => format!("python3 does not run: {e}"),
+    };
+    let why = format!(
+        "needs the Python modules {} ({missing}); install them with `python3 -m pip install -r tests/requirements.txt`",
+        modules.join(", ")
+    );
+    assert!(
+        std::env::var_os(REQUIRE_ALL).is_none(),
+        "{test} cannot run: {why} ({REQUIRE_ALL} is set: no test may be skipped)"
+    );
+    let message = format!("SKIPPED {test}: {why}");
+    use std::io::Write as _;
+    writeln!(std::io::stderr(), "{message}").ok();
+    false
+}
