@@ -7,13 +7,14 @@ use std::time::Instant;
 
 use anyhow::{Context, bail};
 use rig::{
-    COLUMN_NAMES, Impact, Plant, PlantConfig, RegimeCriteria, Schedule, SignalBlock, SteadySummary,
-    run_steady,
+    COLUMN_NAMES, Flank, Impact, Plant, PlantConfig, RegimeCriteria, Schedule, SignalBlock,
+    SteadySummary, run_steady,
 };
 use serde::Serialize;
 
 use crate::cli::SimulateArgs;
 use crate::rig_setup::params_from;
+use testrig::plots::{RasterImpact, write_impact_raster};
 use testrig::scenario::values::{
     check_load_nm, check_load_within_motor, check_simulated_s, check_speed_rpm,
 };
@@ -75,6 +76,7 @@ pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
     if let (Some(dir), Some(w)) = (&args.out, writer) {
         w.finish()?;
         write_impacts(&dir.join("impacts.csv"), plant.impacts())?;
+        write_raster(dir, &report, plant.impacts(), plant.params().teeth)?;
         let path = dir.join("summary.json");
         std::fs::write(&path, serde_json::to_string_pretty(&report)?)
             .with_context(|| format!("writing {}", path.display()))?;
@@ -181,6 +183,31 @@ impl SignalWriter {
         Ok(())
     }
 }
+
+/// The impact raster of the measuring window (at most its first [`RASTER_REVOLUTIONS`]
+/// revolutions, so that the pattern stays legible): `impact-raster.png` and `.svg`.
+fn write_raster(dir: &Path, report: &Report, impacts: &[Impact], teeth: u32) -> anyhow::Result<()> {
+    let running_hz = report.rpm / 60.0;
+    let start_s = report.settle_s;
+    let points: Vec<RasterImpact> = impacts
+        .iter()
+        .map(|i| RasterImpact {
+            revolution: (i.time_s - start_s) * running_hz,
+            tooth: i.tooth,
+            drive_flank: i.flank == Flank::Drive,
+        })
+        .filter(|p| (0.0..RASTER_REVOLUTIONS).contains(&p.revolution))
+        .collect();
+    let title = format!(
+        "impacts by tooth: {} rev/min, {} N m, {}",
+        report.rpm, report.load_nm, report.summary.motion.motion
+    );
+    write_impact_raster(&dir.join("impact-raster"), &title, teeth, &points)?;
+    Ok(())
+}
+
+/// Revolutions the impact raster shows.
+const RASTER_REVOLUTIONS: f64 = 40.0;
 
 fn write_impacts(path: &Path, impacts: &[Impact]) -> anyhow::Result<()> {
     let mut csv =
