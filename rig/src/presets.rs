@@ -10,6 +10,7 @@ pub const PRESET_NAMES: &[&str] = &[
     "basmaji-1983",
     "basmaji-1983-calibrated",
     "basmaji-1983-hand",
+    "basmaji-1983-rig",
 ];
 
 /// 2 hp (W).
@@ -23,6 +24,7 @@ pub fn preset(name: &str) -> Result<RigParams, RigError> {
         "basmaji-1983" => Ok(basmaji_1983()),
         "basmaji-1983-calibrated" => Ok(basmaji_1983_calibrated()),
         "basmaji-1983-hand" => Ok(basmaji_1983_hand()),
+        "basmaji-1983-rig" => Ok(basmaji_1983_rig()),
         _ => Err(RigError::UnknownPreset {
             name: name.to_string(),
             known: PRESET_NAMES.join(", "),
@@ -126,6 +128,35 @@ pub fn basmaji_1983_hand() -> RigParams {
     RigParams {
         brake_drag_nm: 0.3,
         gear_error_c2_nm: 0.5,
+        centre_distance_shift_m: centre_distance_shift_m(&thesis, EXPERIMENT_BACKLASH_M),
+        ..thesis
+    }
+}
+
+/// The thesis's rig chosen by its motion (`docs/physics.md`): the thesis's inertias,
+/// stiffnesses, mesh and backlash variation, with three changes each chosen by physical
+/// reasoning and checked on the lab's run of the campaign by the physics judge, one at a
+/// time, before any search:
+/// - no numerical tooth shifting: handing a pair's deflection back at every tooth pass is
+///   the thesis's numerical device (§5.4.5), not something the gears do;
+/// - a residual drag of 0.6 N m at the brake (bearings, seals, slip rings, windage and
+///   the brake's remanence at a dial of 0 lbf ft), so that the teeth stay on the drive
+///   flank at "0 N m" as on a real rig;
+/// - joint damping in the shafts' keyed hubs: 0.6 N m s/rad in the input shaft and
+///   1.0 N m s/rad in the intermediate shaft (the fundamental's damping ratio 2.1 %
+///   instead of the thesis's 0.2 %, within the 1-5 % usual for assembled drive lines).
+///
+/// It keeps the calculated fundamental of 17.84 Hz: with the backlash its once-per-
+/// revolution resonance falls at 750-850 rev/min, the rig's "measured fundamental" of
+/// 13.33 Hz; shafts softened to put the linear fundamental at 13.33 Hz move the
+/// half-order band down to 750-1500 rev/min (`docs/physics.md`).
+pub fn basmaji_1983_rig() -> RigParams {
+    let thesis = basmaji_1983();
+    RigParams {
+        tooth_shifting: false,
+        brake_drag_nm: 0.6,
+        c12_input_shaft_nms_per_rad: 0.6,
+        c34_intermediate_shaft_nms_per_rad: 1.0,
         centre_distance_shift_m: centre_distance_shift_m(&thesis, EXPERIMENT_BACKLASH_M),
         ..thesis
     }
