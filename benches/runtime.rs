@@ -5,8 +5,10 @@
 //! - pacing: a run at pace 1 for 60 s with the full chain: overruns, lateness p50/p99/max,
 //!   CPU share of one core.
 //!
-//! - campaign: `testrig sweep scenarios/thesis-campaign.toml` (78 points, each 10 s
-//!   settling + 30 s measured, ten-average spectra) on every core: wall time, median of 3.
+//! - campaign: `testrig sweep` on `scenarios/thesis-campaign.toml` (78 points from rest)
+//!   and `scenarios/thesis-campaign-lab.toml` (153 cases, up and down at each load), each
+//!   case 60 s settling + 30 s measured with ten-average spectra, on every core: wall time,
+//!   median of 3.
 //!
 //! - soak (only when asked, `TESTRIG_BENCH=soak`): the same chain at pace 1 for 30 minutes
 //!   (`TESTRIG_SOAK_S` to change) recording a WAV: overruns, lateness, the process's
@@ -101,29 +103,28 @@ fn pacing(dir: &Path) {
 }
 
 fn campaign(dir: &Path) {
-    let file = format!(
-        "{}/scenarios/thesis-campaign.toml",
-        env!("CARGO_MANIFEST_DIR")
-    );
-    let mut walls: Vec<f64> = (0..3)
-        .map(|k| {
-            let out = dir.join(format!("campaign-{k}"));
-            let started = std::time::Instant::now();
-            let status = Command::new(env!("CARGO_BIN_EXE_testrig"))
-                .args(["sweep", &file, "--out", out.to_str().expect("utf-8")])
-                .stdout(std::process::Stdio::null())
-                .status()
-                .expect("testrig runs");
-            assert!(status.success());
-            std::fs::remove_dir_all(&out).ok();
-            started.elapsed().as_secs_f64()
-        })
-        .collect();
-    walls.sort_by(f64::total_cmp);
-    println!(
-        "campaign: 78 points in {:.2} s wall (median of 3; range {:.2}-{:.2} s; target ≤ 10 s)",
-        walls[1], walls[0], walls[2]
-    );
+    for (name, points) in [("thesis-campaign", 78), ("thesis-campaign-lab", 153)] {
+        let file = format!("{}/scenarios/{name}.toml", env!("CARGO_MANIFEST_DIR"));
+        let mut walls: Vec<f64> = (0..3)
+            .map(|k| {
+                let out = dir.join(format!("{name}-{k}"));
+                let started = std::time::Instant::now();
+                let status = Command::new(env!("CARGO_BIN_EXE_testrig"))
+                    .args(["sweep", &file, "--out", out.to_str().expect("utf-8")])
+                    .stdout(std::process::Stdio::null())
+                    .status()
+                    .expect("testrig runs");
+                assert!(status.success());
+                std::fs::remove_dir_all(&out).ok();
+                started.elapsed().as_secs_f64()
+            })
+            .collect();
+        walls.sort_by(f64::total_cmp);
+        println!(
+            "{name}: {points} cases in {:.2} s wall (median of 3; range {:.2}-{:.2} s)",
+            walls[1], walls[0], walls[2]
+        );
+    }
 }
 
 /// Resident memory of process `pid` (MiB), from /proc.

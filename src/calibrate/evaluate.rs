@@ -1,17 +1,19 @@
 //! Evaluating candidates: every target point from every approach, in parallel over all
 //! candidates of a generation.
 
-use crate::sweep::Direction;
 use rayon::prelude::*;
-use rig::{RigChains, RigParams};
+use rig::{Judgement, RigChains, RigParams};
 use serde::{Deserialize, Serialize};
 
 use crate::sweep::plan::case_seed;
-use crate::sweep::{Approach, Case, run_case};
+use crate::sweep::{Approach, Case, Direction, run_case};
 
 use super::free_param::params_at;
-use super::objective::{FAILED_LOSS_DB, PointOutcome, hinge_db, natural_loss_db, verdict_matches};
-use super::plan::{ApproachKind, CalibrationPlan, Expect, TargetPoint};
+use super::objective::{
+    FAILED_LOSS_DB, LOSS_CAP_DB, PointOutcome, hinge_db, motion_loss_db, motion_matches,
+    natural_loss_db, verdict_matches,
+};
+use super::plan::{ApproachKind, CalibrationPlan, Expect, Scoring, TargetPoint};
 
 /// One candidate's result.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -80,7 +82,11 @@ pub fn evaluate_all(
         .map(|&(candidate, rig, point, approach)| {
             let case = case_of(plan, &points[point], plan.approaches[approach], rig);
             let result = run_case(&plan.sweep, &case)
-                .map(|r| (r.half_order_db, r.regime.to_string()))
+                .map(|r| CaseSeen {
+                    height_db: r.half_order_db,
+                    regime: r.regime.to_string(),
+                    motion: r.motion,
+                })
                 .map_err(|e| {
                     let p = &points[point];
                     format!("{} rev/min, {} N m: {e:#}", p.rpm, p.load_nm)
@@ -106,12 +112,20 @@ pub fn evaluate_all(
         .collect()
 }
 
-/// One case of one candidate: its half-order height (dB) and regime, or why it failed.
+/// One case of one candidate: what it showed, or why it failed.
 struct CaseOutcome {
     candidate: usize,
     point: usize,
     approach: usize,
-    result: Result<(f64, String), String>,
+    result: Result<CaseSeen, String>,
+}
+
+/// What a case showed: the half-order line's height (dB), the regime and the judge's
+/// motion.
+struct CaseSeen {
+    height_db: f64,
+    regime: String,
+    motion: Judgement,
 }
 
 /// One candidate's evaluation from its cases' results.
@@ -129,16 +143,41 @@ fn assemble(
     for (p, point) in points.iter().enumerate() {
         let mut heights = vec![f64::NAN; plan.approaches.len()];
         let mut regimes = vec![String::new(); plan.approaches.len()];
+        let mut motions: Vec<Option<&Judgement>> = vec![None; plan.approaches.len()];
         for case in cases.iter().filter(|c| c.point == p) {
-            if let Ok((h, regime)) = &case.result {
-                heights[case.approach] = *h;
-                regimes[case.approach] = regime.clone();
+            if let Ok(seen) = &case.result {
+                heights[case.approach] = seen.height_db;
+                regimes[case.approach] = match plan.scoring {
+                    Scoring::Line => seen.regime.clone(),
+                    Scoring::Motion => seen.motion.motion.to_string(),
+                };
+                motions[case.approach] = Some(&seen.motion);
             }
         }
-        let loss = heights
-            .iter()
-            .map(|&h| hinge_db(point.expect, h, line_db, plan.margin_db))
-            .fold(0.0, f64::max);
+        let (loss, matched) = match plan.scoring {
+            Scoring::Line => (
+                heights
+                    .iter()
+                    .map(|&h| hinge_db(point.expect, h, line_db, plan.margin_db))
+                    .fold(0.0, f64::max),
+                heights
+                    .iter()
+                    .all(|&h| verdict_matches(point.expect, h, line_db)),
+            ),
+            Scoring::Motion => (
+                motions
+                    .iter()
+                    .map(|m| {
+                        m.map_or(LOSS_CAP_DB, |m| {
+                            motion_loss_db(point.expect, m, plan.margin_db)
+                        })
+                    })
+                    .fold(0.0, f64::max),
+                motions
+                    .iter()
+                    .all(|m| m.is_some_and(|m| motion_matches(point.expect, m))),
+            ),
+        };
         outcomes.push(PointOutcome {
             index: point.index,
             rpm: point.rpm,
@@ -150,9 +189,7 @@ fn assemble(
                 .collect(),
             regimes,
             loss_db: point.weight * loss,
-            matched: heights
-                .iter()
-                .all(|&h| verdict_matches(point.expect, h, line_db)),
+            matched,
         });
     }
     let weights: f64 = points.iter().map(|p| p.weight).sum();

@@ -65,6 +65,11 @@ pub struct SearchFile {
     /// Length of the ramp (s).
     #[serde(default = "default_ramp")]
     pub ramp_s: Spanned<Positive>,
+    /// What a point is scored on: `line` (the half-order line's height in the chain's
+    /// spectrum) or `motion` (the physics judge's motion: period 2 with a clear half
+    /// order where the line is expected, period 1 where it is not).
+    #[serde(default = "default_objective")]
+    pub objective: Spanned<String>,
 }
 
 impl Default for SearchFile {
@@ -77,6 +82,7 @@ impl Default for SearchFile {
             approaches: default_approaches(),
             approach_rpm: default_delta(),
             ramp_s: default_ramp(),
+            objective: default_objective(),
         }
     }
 }
@@ -96,6 +102,10 @@ fn default_approaches() -> Spanned<Vec<String>> {
 fn default_delta() -> Spanned<Positive> {
     Spanned::new(0..0, Positive(100.0))
 }
+fn default_objective() -> Spanned<String> {
+    Spanned::new(0..0, "line".into())
+}
+
 fn default_ramp() -> Spanned<Positive> {
     Spanned::new(0..0, Positive(5.0))
 }

@@ -50,6 +50,15 @@ pub struct NaturalTarget {
     pub weight: f64,
 }
 
+/// What each point is scored on.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Scoring {
+    /// The half-order line's height in the chain's averaged spectrum.
+    Line,
+    /// The physics judge's motion from the true output-shaft torque.
+    Motion,
+}
+
 /// Which approaches each point is run from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ApproachKind {
@@ -92,6 +101,8 @@ pub struct CalibrationPlan {
     pub approach_rpm: f64,
     /// Ramp length (s).
     pub ramp_s: f64,
+    /// What each point is scored on.
+    pub scoring: Scoring,
 }
 
 /// Checks `file`, read from `src`; the campaign is read relative to it.
@@ -147,6 +158,17 @@ pub fn build_calibration(
         ));
     }
     let approaches = approaches(src, file)?;
+    let scoring = match search.objective.get_ref().as_str() {
+        "line" => Scoring::Line,
+        "motion" => Scoring::Motion,
+        other => {
+            return Err(src.error(
+                search.objective.span(),
+                "search.objective",
+                format!("`{other}`: `line` or `motion`"),
+            ));
+        }
+    };
     Ok(CalibrationPlan {
         name: file.name.clone(),
         seed: file.seed,
@@ -162,6 +184,7 @@ pub fn build_calibration(
         approaches,
         approach_rpm: search.approach_rpm.get_ref().0,
         ramp_s: search.ramp_s.get_ref().0,
+        scoring,
     })
 }
 

@@ -3,6 +3,7 @@
 
 pub mod approach;
 pub mod case;
+pub mod facts;
 pub mod file;
 pub mod lines;
 pub mod plan;

@@ -8,6 +8,7 @@ use std::path::{Path, PathBuf};
 use rig::Motion;
 
 use super::case::CaseResult;
+use super::facts::facts;
 use super::run::SweepMeta;
 use super::sequence::Direction;
 use crate::recording::PartialFile;
@@ -120,6 +121,7 @@ pub fn write_report(
         "{total} points, held against {THESIS}, ch. IV (Figs 4.34–4.72). A half-order line counts as present when it stands 10 dB above the lines around it in the averaged spectrum of the output-shaft strain (the thesis's chain: gauges, bridge, carrier amplifier, slip rings, anti-alias filter, 5451C). Score of the points against the thesis (half order present from {HALF_ORDER_FROM_RPM} rev/min up at every load, absent below, absent with {HEAVY_LOAD_NM} N m from {VANISHES_FROM_RPM} rev/min): {score}.\n"
     );
     physics(&mut md, cases);
+    facts(&mut md, cases);
     findings(&mut md, meta, cases);
     table(&mut md, cases);
     let _ = writeln!(md, "\n## Plots\n");

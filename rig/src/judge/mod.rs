@@ -9,5 +9,8 @@ mod zero_one;
 
 pub use order_lines::{OrderSpectrum, subharmonic_height_db};
 pub use spread::section_spread;
-pub use verdict::{JudgeInput, Judgement, Motion, judge};
+pub use verdict::{
+    CHAOS_K_MIN, JudgeInput, Judgement, LINE_FRACTION_MIN, MAX_PERIOD, Motion, REST_AC_RMS_NM,
+    SPREAD_MAX, SUBHARMONIC_CLEAR_DB, judge,
+};
 pub use zero_one::zero_one_k;
