@@ -40,6 +40,9 @@ pub struct PanelState {
     pub impacts: u64,
     /// Regime of the last full 10 s (`period-k`, `aperiodic`), if one has passed.
     pub regime: Option<String>,
+    /// The physics judge's motion of the last full 10 s (`period-k`, `quasi-periodic`,
+    /// `chaotic`, `at-rest`), if one has passed.
+    pub motion: Option<String>,
     /// Whether the recorder is writing.
     pub recording: bool,
     /// The analyser's display.
@@ -72,6 +75,7 @@ impl PanelState {
             lateness_ms: status.lateness_s * 1e3,
             impacts: status.impacts,
             regime: status.regime.map(|r| r.to_string()),
+            motion: status.motion.map(|m| m.to_string()),
             recording: status.recording,
             spectrum: status.spectrum.clone(),
             trace: status.trace.clone(),

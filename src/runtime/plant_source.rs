@@ -87,7 +87,7 @@ pub fn run_plant(mut job: PlantJob, out: Sender<Frame>) -> PlantReport {
     let mut rolling = job
         .inbox
         .is_live()
-        .then(|| RollingRegime::new(job.plant.params().teeth, step_s));
+        .then(|| RollingRegime::new(job.plant.params().teeth, step_s, job.status.clone()));
     while report.samples < job.total_samples && !job.stop.load(Ordering::Relaxed) {
         let n = (job.total_samples - report.samples).min(job.block_samples as u64) as usize;
         let commands = take_commands(&mut job, report.samples, report.samples as f64 * step_s);
@@ -112,11 +112,8 @@ pub fn run_plant(mut job: PlantJob, out: Sender<Frame>) -> PlantReport {
             window.add_impacts(&impacts);
             window.add_revolutions(&revolutions);
         }
-        let regime = rolling
-            .as_mut()
-            .and_then(|r| r.add(&block, speed_rad_s, &impacts, &revolutions));
-        if let Some(regime) = regime {
-            job.status.update(|s| s.regime = Some(regime));
+        if let Some(rolling) = rolling.as_mut() {
+            rolling.add(&block, speed_rad_s, &impacts, &revolutions);
         }
         let frame = Frame::of_block(seq, report.samples, &block, impacts)
             .with_commands(commands, job.plant.set_points());

@@ -33,6 +33,8 @@ pub struct Status {
     pub impacts: u64,
     /// Regime of the last full 10 s window (live runs).
     pub regime: Option<rig::Regime>,
+    /// The physics judge's motion of the last full 10 s window (live runs).
+    pub motion: Option<rig::Motion>,
 }
 
 /// A handle every thread can update.
