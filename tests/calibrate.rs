@@ -49,8 +49,16 @@ scale = "log"
 
 /// The campaign with a stiff intermediate shaft (15 000 N m/rad): the search starts there.
 fn campaign(dir: &Path) -> PathBuf {
+    stiff_campaign(dir, "thesis-campaign.toml")
+}
+
+/// The shipped campaign `name` with a stiff intermediate shaft (15 000 N m/rad), written
+/// into `dir`.
+fn stiff_campaign(dir: &Path, name: &str) -> PathBuf {
     let text = std::fs::read_to_string(
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios/thesis-campaign.toml"),
+        Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("scenarios")
+            .join(name),
     )
     .expect("campaign")
     .replace(
@@ -342,16 +350,7 @@ fn each_file_given_to_the_wrong_command_is_refused_with_the_right_one() {
 #[test]
 fn a_search_on_the_judged_motion_finds_the_half_order_motion() {
     let dir = folder("calibrate-motion");
-    let text = std::fs::read_to_string(
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios/thesis-campaign-lab.toml"),
-    )
-    .expect("campaign")
-    .replace(
-        "backlash_mm = 0.73",
-        "backlash_mm = 0.73\nset = { k34_intermediate_shaft_nm_per_rad = 15000 }",
-    );
-    let campaign = dir.join("campaign.toml");
-    std::fs::write(&campaign, text).expect("campaign");
+    let campaign = stiff_campaign(&dir, "thesis-campaign-lab.toml");
     let file = dir.join("motion.toml");
     let search = calibration(&campaign, 12)
         .replace("sigma = 0.3", "sigma = 0.3\nobjective = \"motion\"")

@@ -33,6 +33,17 @@ fn judge_signal(revolutions: usize, torque: impl Fn(f64, usize) -> f64) -> Judge
     })
 }
 
+/// `count` iterates of the logistic map at r = 4 (chaotic), from 0.3.
+fn logistic_map(count: usize) -> Vec<f64> {
+    let mut x = 0.3;
+    (0..count)
+        .map(|_| {
+            x = 4.0 * x * (1.0 - x);
+            x
+        })
+        .collect()
+}
+
 #[test]
 fn a_synthetic_period_two_torque_is_period_two_with_a_clear_half_order_line() {
     let w = TAU * RUNNING_HZ;
@@ -60,15 +71,9 @@ fn a_period_two_torque_buried_in_broadband_motion_is_not_period_two() {
     // The same lines with a random revolution-to-revolution amplitude on top: the
     // half-order line is there, but the motion does not repeat.
     let w = TAU * RUNNING_HZ;
-    let mut x = 0.3;
-    let kicks: Vec<f64> = (0..700)
-        .map(|_| {
-            x = 4.0 * x * (1.0 - x);
-            x - 0.5
-        })
-        .collect();
+    let kicks = logistic_map(700);
     let j = judge_signal(600, |t, n| {
-        (w * t).sin() + 0.3 * (0.5 * w * t).sin() + kicks[n] * (3.7 * w * t).sin()
+        (w * t).sin() + 0.3 * (0.5 * w * t).sin() + (kicks[n] - 0.5) * (3.7 * w * t).sin()
     });
     assert_eq!(j.motion, Motion::Chaotic, "{j:?}");
     assert!(j.spread[1].unwrap() > 0.1, "{j:?}");
@@ -77,13 +82,7 @@ fn a_period_two_torque_buried_in_broadband_motion_is_not_period_two() {
 #[test]
 fn a_chaotic_map_sampled_once_per_revolution_is_chaotic() {
     let w = TAU * RUNNING_HZ;
-    let mut x = 0.3;
-    let amplitudes: Vec<f64> = (0..700)
-        .map(|_| {
-            x = 4.0 * x * (1.0 - x);
-            x
-        })
-        .collect();
+    let amplitudes = logistic_map(700);
     let j = judge_signal(600, |t, n| amplitudes[n] * (1.0 + (w * t).sin()));
     assert_eq!(j.motion, Motion::Chaotic, "{j:?}");
     assert!(j.chaos_k.unwrap() > 0.8, "{j:?}");

@@ -227,14 +227,31 @@ fn motion_table(md: &mut String, cases: &[CaseResult]) {
             .unwrap_or(std::cmp::Ordering::Equal)
     });
     columns.dedup();
-    let header: Vec<String> = columns
-        .iter()
-        .map(|(d, l)| match d {
-            Direction::Static => format!("{l} N m"),
-            _ => format!("{l} N m {d}"),
+    let columns: Vec<(String, _)> = columns
+        .into_iter()
+        .map(|(d, l)| {
+            let header = match d {
+                Direction::Static => format!("{l} N m"),
+                _ => format!("{l} N m {d}"),
+            };
+            (header, move |c: &CaseResult| {
+                c.load_nm == l && c.direction == d
+            })
         })
         .collect();
-    let _ = writeln!(md, "| rev/min | {} |", header.join(" | "));
+    speed_table(md, &columns, cases, motion_cell);
+}
+
+/// A table of `cases` with a row per speed and the given `columns` (a header and which
+/// case of a row is the column's), each cell drawn by `cell` ("–" where there is none).
+fn speed_table(
+    md: &mut String,
+    columns: &[(String, impl Fn(&CaseResult) -> bool)],
+    cases: &[CaseResult],
+    cell: impl Fn(&CaseResult) -> String,
+) {
+    let headers: Vec<&str> = columns.iter().map(|(h, _)| h.as_str()).collect();
+    let _ = writeln!(md, "| rev/min | {} |", headers.join(" | "));
     let _ = writeln!(md, "|---|{}", "---|".repeat(columns.len()));
     let mut speeds: Vec<f64> = cases.iter().map(|c| c.rpm).collect();
     speeds.sort_by(f64::total_cmp);
@@ -242,11 +259,11 @@ fn motion_table(md: &mut String, cases: &[CaseResult]) {
     for rpm in speeds {
         let cells: Vec<String> = columns
             .iter()
-            .map(|&(d, l)| {
+            .map(|(_, here)| {
                 cases
                     .iter()
-                    .find(|c| c.rpm == rpm && c.load_nm == l && c.direction == d)
-                    .map_or("–".into(), motion_cell)
+                    .find(|c| c.rpm == rpm && here(c))
+                    .map_or("–".into(), &cell)
             })
             .collect();
         let _ = writeln!(md, "| {rpm} | {} |", cells.join(" | "));
@@ -413,31 +430,17 @@ fn table(md: &mut String, cases: &[CaseResult]) {
         md,
         "Each cell: height of the half-order line above the floor (dB), the regime; ✓ where the verdict matches the thesis, ✗ where not.\n"
     );
-    let header: Vec<String> = loads.iter().map(|l| format!("{l} N m")).collect();
-    let _ = writeln!(md, "| rev/min | {} |", header.join(" | "));
-    let _ = writeln!(md, "|---|{}", "---|".repeat(loads.len()));
-    let mut speeds: Vec<f64> = cases.iter().map(|c| c.rpm).collect();
-    speeds.sort_by(f64::total_cmp);
-    speeds.dedup();
-    for rpm in speeds {
-        let cells: Vec<String> = loads
-            .iter()
-            .map(|&l| {
-                cases
-                    .iter()
-                    .find(|c| c.rpm == rpm && c.load_nm == l)
-                    .map_or("–".into(), |c| {
-                        let ok =
-                            c.half_order_present == thesis_expects_half_order(c.rpm, c.load_nm);
-                        format!(
-                            "{:.0} dB, {} {}",
-                            c.half_order_db,
-                            c.regime,
-                            if ok { "✓" } else { "✗" }
-                        )
-                    })
-            })
-            .collect();
-        let _ = writeln!(md, "| {rpm} | {} |", cells.join(" | "));
-    }
+    let columns: Vec<(String, _)> = loads
+        .into_iter()
+        .map(|l| (format!("{l} N m"), move |c: &CaseResult| c.load_nm == l))
+        .collect();
+    speed_table(md, &columns, cases, |c| {
+        let ok = c.half_order_present == thesis_expects_half_order(c.rpm, c.load_nm);
+        format!(
+            "{:.0} dB, {} {}",
+            c.half_order_db,
+            c.regime,
+            if ok { "✓" } else { "✗" }
+        )
+    });
 }
