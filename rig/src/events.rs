@@ -154,6 +154,14 @@ pub fn mode_events(
             force.extend([(mesh, flank * k * p), (mesh + 1, -flank * c * p_rate)]);
         }
     }
+    // The spacing error s of the pair in mesh, a displacement like the others (constant
+    // between tooth passes: no rate).
+    if let Some(spacing) = layout.spacing {
+        gap_drive.push((spacing, 1.0));
+        gap_back.push((spacing, -1.0));
+        force_drive.push((spacing, k));
+        force_back.push((spacing, -k));
+    }
     let limit = mc.torque_limit_nm;
     let (kp, ki) = (mc.kp_nms_per_rad, mc.ki_nm_per_rad);
     let over_high = [(VF, -kp), (Z, ki), (UNIT, -limit)];
@@ -219,8 +227,9 @@ pub fn mode_events(
         list.push((EventKind::ZoneEnd, SparseRow::new(&angle), 1.0));
         list.push((EventKind::ZoneStart, SparseRow::new(&angle).negated(), -1.0));
     }
-    // Apart, a tooth pass changes nothing: the plant catches up with it at the next contact.
-    if flags.tooth_shifting && mode.mesh != MeshMode::Apart {
+    // Apart, a tooth pass changes nothing unless the pairs differ in spacing: without
+    // spacing errors the plant catches up with it at the next contact.
+    if flags.spacing_errors || (flags.tooth_shifting && mode.mesh != MeshMode::Apart) {
         list.push((EventKind::ToothPass, SparseRow::new(&angle), 1.0));
     }
     list.push((EventKind::Revolution, SparseRow::new(&angle), 1.0));
@@ -258,8 +267,10 @@ fn flank_events(
 pub struct EventFlags {
     /// Pair-zone boundaries (contact ratio > 1).
     pub alternating_pairs: bool,
-    /// Tooth-pass instants (numerical tooth shifting).
+    /// Tooth-pass instants while the teeth touch (numerical tooth shifting).
     pub tooth_shifting: bool,
+    /// Tooth-pass instants in every mode (the spacing error of the pair in mesh changes).
+    pub spacing_errors: bool,
 }
 
 /// Evaluates a polynomial Σ c_k s^k and its derivative at `s` (Horner).

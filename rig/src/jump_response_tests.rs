@@ -13,7 +13,7 @@ use crate::{MeshMode, Mode, MotorMode, PairZone, preset};
 fn worst_mismatch(mesh: MeshMode) -> f64 {
     let params = preset("basmaji-1983").expect("preset");
     let mc = ModelConstants::of(&params);
-    let layout = Layout::new(true, false, false);
+    let layout = Layout::new(true, false, false, false);
     let mode = Mode {
         mesh,
         pairs: PairZone::ONE,

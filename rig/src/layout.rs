@@ -5,7 +5,7 @@
 //! (rad/s), z the integral of the speed error (rad). The forcing part holds what drives
 //! the equations: a unit constant, the brake load torque (N m), and harmonic pairs
 //! (cos, sin) of the set rotation's phase, its double, its tooth multiple and the
-//! oscillating load.
+//! oscillating load, and the spacing error of the pair in mesh.
 
 /// Index of X1; X_i is at `X0 + i`.
 pub const X0: usize = 0;
@@ -34,14 +34,17 @@ pub struct Layout {
     /// Index of cos zφ (sin zφ follows, z the teeth), if the profile error at mesh
     /// frequency is on.
     pub mesh: Option<usize>,
+    /// Index of the spacing error of the pair in mesh (rad; constant between tooth
+    /// passes, set at each), if tooth spacing errors are on.
+    pub spacing: Option<usize>,
     /// Length of the augmented state.
     pub len: usize,
 }
 
 impl Layout {
-    /// Lays out the states: the twice-per-rev pair, the oscillating-load pair and the
-    /// mesh-frequency pair only when used.
-    pub fn new(with_rev2: bool, with_osc: bool, with_mesh: bool) -> Self {
+    /// Lays out the states: the twice-per-rev pair, the oscillating-load pair, the
+    /// mesh-frequency pair and the spacing error only when used.
+    pub fn new(with_rev2: bool, with_osc: bool, with_mesh: bool, with_spacing: bool) -> Self {
         let mut len = REV + 2;
         let mut place = |used: bool| {
             used.then(|| {
@@ -52,14 +55,19 @@ impl Layout {
         let rev2 = place(with_rev2);
         let osc = place(with_osc);
         let mesh = place(with_mesh);
+        let spacing = with_spacing.then(|| {
+            len += 1;
+            len - 1
+        });
         Self {
             rev2,
             osc,
             mesh,
+            spacing,
             len,
         }
     }
 
     /// Largest augmented length any layout has.
-    pub const MAX_LEN: usize = REV + 8;
+    pub const MAX_LEN: usize = REV + 9;
 }

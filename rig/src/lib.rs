@@ -45,6 +45,7 @@ pub mod records;
 pub mod regime;
 pub mod schedule;
 pub mod signals;
+pub mod spacing;
 pub mod steady;
 mod stride;
 mod system_cache;

@@ -7,6 +7,7 @@ use crate::geometry::GearGeometry;
 use crate::layout::{LOAD, Layout, REV, UNIT, V0, VF, X0, Z};
 use crate::mode::{Engagement, Mode, MotorMode, PairZone};
 use crate::params::RigParams;
+use crate::spacing::spacing_errors_rad;
 
 /// The plant's constants in the form the equations use (SI units).
 #[derive(Clone, Debug, PartialEq)]
@@ -53,6 +54,9 @@ pub struct ModelConstants {
     pub te_mesh_rad: f64,
     /// Teeth z on each gear: the mesh frequency is zΩ.
     pub teeth: f64,
+    /// Spacing error of each tooth pair (rad about the gear axis), pair i in mesh while
+    /// the driving gear's tooth i is; empty when off (`spacing::spacing_errors_rad`).
+    pub spacing_rad: Vec<f64>,
 }
 
 /// Spring and damper pairs of the shafts: (body i, body j) for K12, K34, K45.
@@ -92,7 +96,13 @@ impl ModelConstants {
             te_once_rad: params.te_once_per_rev_um * 1e-6 / geometry.pitch_radius_m,
             te_mesh_rad: params.te_mesh_frequency_um * 1e-6 / geometry.pitch_radius_m,
             teeth: f64::from(params.teeth),
+            spacing_rad: spacing_errors_rad(params),
         }
+    }
+
+    /// Spacing error (rad) of the pair whose driving tooth is `tooth`; 0 when off.
+    pub fn spacing_of_tooth(&self, tooth: u32) -> f64 {
+        self.spacing_rad.get(tooth as usize).copied().unwrap_or(0.0)
     }
 
     /// Slope (N m s/rad) of the eddy-current brake's torque with its speed at the set
@@ -268,6 +278,10 @@ fn add_mesh(
             let p = mc.te_mesh_rad;
             a[(V0 + body, mesh)] += k * p * scale;
             a[(V0 + body, mesh + 1)] -= c * p * mc.teeth * rotation_rad_s * scale;
+        }
+        // The spacing error s of the pair in mesh: K s, constant over the pair's pitch.
+        if let Some(spacing) = layout.spacing {
+            a[(V0 + body, spacing)] += k * scale;
         }
     }
 }

@@ -143,6 +143,8 @@ param_specs! {
     brake_critical_speed_rpm, "rev/min", "eddy-current brake critical speed, T ~ 2x/(1+x^2), x = w/wc, set load at set speed (Wouterse 1991; thesis: constant torque, 0 = off)";
     te_once_per_rev_um, "um", "once-per-rev transmission error as a mesh displacement, arc at the pitch circle (thesis: none, 0)";
     te_mesh_frequency_um, "um", "profile error at mesh frequency (teeth x rev) as a mesh displacement, arc at the pitch circle (thesis: none, 0)";
+    tooth_spacing_error_um, "um", "RMS of the tooth-pair spacing errors, each pair displaced by its own error while in mesh, arc at the pitch circle (thesis: none, 0; it cites them as why impacts skip teeth)";
+    tooth_spacing_seed, "1", "seed of the tooth-pair spacing errors (normal, made zero-mean, scaled to the RMS)";
 }
 
 /// Looks a parameter up by name.

@@ -98,6 +98,16 @@ pub struct RigParams {
     /// added to the once-per-revolution one and acting like it on both flanks. 0 in the
     /// thesis.
     pub te_mesh_frequency_um: f64,
+    /// RMS of the tooth-pair spacing errors (µm of arc at the pitch circle, ≥ 0; 0 off):
+    /// each of the `teeth` pairs (with a 1:1 ratio tooth i always meets tooth i) sits
+    /// displaced by its own error while it is in mesh, a mesh displacement constant over
+    /// the pair's pitch and acting on both flanks. Drawn from a normal distribution
+    /// seeded by `tooth_spacing_seed`, made zero-mean and scaled to this RMS. 0 in the
+    /// thesis, which cites random spacing errors (Harris; Gregory) as why impacts skip
+    /// teeth.
+    pub tooth_spacing_error_um: f64,
+    /// Seed of the tooth-pair spacing errors.
+    pub tooth_spacing_seed: u32,
 }
 
 impl RigParams {
@@ -200,6 +210,12 @@ impl RigParams {
         ] {
             require(name, value, true, "must be a finite number")?;
         }
+        require(
+            "tooth_spacing_error_um",
+            self.tooth_spacing_error_um,
+            self.tooth_spacing_error_um >= 0.0,
+            "must be a finite RMS ≥ 0 µm (0: off)",
+        )?;
         require(
             "brake_drag_nm",
             self.brake_drag_nm,

@@ -77,6 +77,8 @@ pub fn basmaji_1983() -> RigParams {
         brake_critical_speed_rpm: 0.0,
         te_once_per_rev_um: 0.0,
         te_mesh_frequency_um: 0.0,
+        tooth_spacing_error_um: 0.0,
+        tooth_spacing_seed: 1983,
     }
 }
 

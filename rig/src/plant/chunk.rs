@@ -12,22 +12,33 @@ use super::segment::Segment;
 /// Most samples a run of the fast path stores before they are turned into signals.
 pub(super) const CHUNK: usize = 128;
 
-/// Stored per sample: the 12 mechanical states, then cos φ and sin φ.
-const STORED: usize = N_MECH + 2;
+/// Stored per sample: the 12 mechanical states, then cos φ, sin φ and the spacing error
+/// of the pair in mesh.
+const STORED: usize = N_MECH + 3;
 const COS: usize = N_MECH;
 const SIN: usize = N_MECH + 1;
+const SPACING: usize = N_MECH + 2;
 
 /// States of up to [`CHUNK`] consecutive samples, one array per state.
 pub(super) struct StateChunk {
     columns: [[f64; CHUNK]; STORED],
+    /// Where the state holds the spacing error, if it does.
+    spacing_index: Option<usize>,
 }
 
 impl StateChunk {
-    /// A zeroed chunk.
-    pub(super) fn new() -> Box<Self> {
+    /// A zeroed chunk for states laid out with the spacing error at `spacing_index`.
+    pub(super) fn new(spacing_index: Option<usize>) -> Box<Self> {
         Box::new(Self {
             columns: [[0.0; CHUNK]; STORED],
+            spacing_index,
         })
+    }
+
+    /// The spacing error (rad) the state `u` holds; 0 without spacing errors.
+    #[inline(always)]
+    pub(super) fn spacing_of(&self, u: &[f64; Layout::MAX_LEN]) -> f64 {
+        self.spacing_index.map_or(0.0, |i| u[i])
     }
 
     /// Stores the state `u` as sample `k`.
@@ -35,17 +46,26 @@ impl StateChunk {
     pub(super) fn store(&mut self, k: usize, u: &[f64; Layout::MAX_LEN]) {
         let mut mechanical = [0.0; N_MECH];
         mechanical.copy_from_slice(&u[..N_MECH]);
-        self.store_parts(k, &mechanical, u[REV], u[REV + 1]);
+        let spacing = self.spacing_of(u);
+        self.store_parts(k, &mechanical, u[REV], u[REV + 1], spacing);
     }
 
-    /// Stores sample `k` from its mechanical states and cos φ, sin φ.
+    /// Stores sample `k` from its mechanical states, cos φ, sin φ and the spacing error.
     #[inline(always)]
-    pub(super) fn store_parts(&mut self, k: usize, mechanical: &[f64; N_MECH], cos: f64, sin: f64) {
+    pub(super) fn store_parts(
+        &mut self,
+        k: usize,
+        mechanical: &[f64; N_MECH],
+        cos: f64,
+        sin: f64,
+        spacing: f64,
+    ) {
         for (column, &value) in self.columns[..N_MECH].iter_mut().zip(mechanical) {
             column[k] = value;
         }
         self.columns[COS][k] = cos;
         self.columns[SIN][k] = sin;
+        self.columns[SPACING][k] = spacing;
     }
 
     fn column(&self, index: usize, count: usize) -> &[f64] {
@@ -146,7 +166,7 @@ impl SampleFrame<'_> {
             column(V0 + 1),
             column(V0 + 2),
         );
-        let (cos, sin) = (column(COS), column(SIN));
+        let (cos, sin, spacing) = (column(COS), column(SIN), column(SPACING));
         let profile = self.mc.te_mesh_rad != 0.0;
         out.mesh_torque_nm.extend((0..count).map(|n| {
             let (sin_z, cos_z) = if profile {
@@ -156,7 +176,7 @@ impl SampleFrame<'_> {
             };
             let mesh = [x2[n], x3[n], v2[n], v3[n]];
             let harmonics = [cos[n], sin[n], cos_z, sin_z];
-            let (overlap, rate) = flank_overlap(self.mc, omega, sign, mesh, harmonics);
+            let (overlap, rate) = flank_overlap(self.mc, omega, sign, mesh, harmonics, spacing[n]);
             sign * (k * overlap + c * rate)
         }));
     }

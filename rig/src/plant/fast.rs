@@ -79,10 +79,13 @@ impl Plant {
                         samples += 1;
                         k += per_sample;
                     }
+                    // No tooth pass inside a stride: one spacing error for all of it.
+                    let spacing = self.chunk.spacing_of(&u);
                     while k < m {
                         if RECORD {
                             let (c, s) = rotated(&u, self.cache.phase_rotation_by(k));
-                            self.chunk.store_parts(samples, &stride.sample(k, &u), c, s);
+                            self.chunk
+                                .store_parts(samples, &stride.sample(k, &u), c, s, spacing);
                         }
                         samples += 1;
                         k += per_sample;

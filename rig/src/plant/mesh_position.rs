@@ -4,9 +4,9 @@
 use crate::model::ModelConstants;
 
 /// Overlap (rad) and its rate (rad/s) of the flank with `sign` (+1 drive, −1 back), from
-/// `mesh` = [X2, X3, V2, V3] and `harmonics` = [cos φ, sin φ, cos zφ, sin zφ]:
-/// ∓(X3 − X2 − e) − B with B = B₀(1 − C1 cos φ) and the transmission error
-/// e = E cos φ + P cos zφ.
+/// `mesh` = [X2, X3, V2, V3], `harmonics` = [cos φ, sin φ, cos zφ, sin zφ] and the
+/// spacing error `spacing_rad` of the pair in mesh: ∓(X3 − X2 − e) − B with
+/// B = B₀(1 − C1 cos φ) and the transmission error e = E cos φ + P cos zφ + s.
 #[inline(always)]
 pub(super) fn flank_overlap(
     mc: &ModelConstants,
@@ -14,6 +14,7 @@ pub(super) fn flank_overlap(
     sign: f64,
     mesh: [f64; 4],
     harmonics: [f64; 4],
+    spacing_rad: f64,
 ) -> (f64, f64) {
     let [x2, x3, v2, v3] = mesh;
     let [cos, sin, _, _] = harmonics;
@@ -22,6 +23,7 @@ pub(super) fn flank_overlap(
     let b = b0 * (1.0 - c1 * cos);
     let b_rate = b0 * c1 * speed_rad_s * sin;
     let (e, e_rate) = mc.transmission_error(speed_rad_s, harmonics);
+    let e = e + spacing_rad;
     (
         -sign * (x3 - x2 - e) - b,
         -sign * (v3 - v2 - e_rate) - b_rate,

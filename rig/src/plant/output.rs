@@ -121,7 +121,7 @@ pub(super) fn within_bounds(u: &[f64; Layout::MAX_LEN]) -> bool {
 
 /// Overlap of `flank` (rad, > 0 when the teeth overlap) and its rate (rad/s) in state `u`,
 /// whose harmonic states hold cos φ and sin φ (and cos zφ, sin zφ where `layout` has
-/// them) of that instant.
+/// them) of that instant, and the spacing error of the pair in mesh where it has one.
 #[inline]
 pub(super) fn flank_gap(
     mc: &ModelConstants,
@@ -133,5 +133,6 @@ pub(super) fn flank_gap(
     let mesh = [u[X0 + 1], u[X0 + 2], u[V0 + 1], u[V0 + 2]];
     let (cos_z, sin_z) = layout.mesh.map_or((0.0, 0.0), |m| (u[m], u[m + 1]));
     let harmonics = [u[REV], u[REV + 1], cos_z, sin_z];
-    flank_overlap(mc, speed_rad_s, flank.sign(), mesh, harmonics)
+    let spacing = layout.spacing.map_or(0.0, |s| u[s]);
+    flank_overlap(mc, speed_rad_s, flank.sign(), mesh, harmonics, spacing)
 }

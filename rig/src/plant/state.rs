@@ -109,12 +109,14 @@ impl Plant {
             params.gear_error_c3_nm != 0.0,
             schedule.has_oscillating_load() || ceiling.oscillating_load_hz > 0.0,
             params.te_mesh_frequency_um != 0.0,
+            params.tooth_spacing_error_um != 0.0,
         );
         let alternating =
             params.mesh_pairs == MeshPairs::Alternating && geometry.double_pair_fraction() > 0.0;
         let flags = EventFlags {
             alternating_pairs: alternating && geometry.double_pair_fraction() < 1.0,
             tooth_shifting: params.tooth_shifting,
+            spacing_errors: params.tooth_spacing_error_um != 0.0,
         };
         let zones = PairZones::new(
             geometry.double_pair_fraction(),
@@ -160,7 +162,7 @@ impl Plant {
             next_rev_rad: 0.0,
             taylor: Box::new([[0.0; Layout::MAX_LEN]; TAYLOR_ORDER + 1]),
             edge: None,
-            chunk: StateChunk::new(),
+            chunk: StateChunk::new(layout.spacing),
             impacts: Vec::new(),
             revolutions: Vec::new(),
             switch_count: 0,
@@ -180,6 +182,8 @@ impl Plant {
         let (e, _) = self
             .mc
             .transmission_error(set.speed_rad_s(), [1.0, 0.0, 1.0, 0.0]);
+        // The driving gear starts at angle 0: the pair of tooth 0 is in mesh.
+        let e = e + self.mc.spacing_of_tooth(0);
         let k23 = self.mc.mesh_stiffness_nm_per_rad;
         // Torques through K12, the mesh, K34 and K45: the load and the drag behind each.
         let [t12, mesh, t34, t45] = [4.0, 3.0, 2.0, 1.0].map(|bodies| load + bodies * drag);
@@ -226,6 +230,9 @@ impl Plant {
     pub(super) fn reset_angle_targets(&mut self) {
         let theta2 = self.driving_gear_angle_rad(0.0);
         let pitch = self.geometry.tooth_pitch_rad;
+        if let Some(index) = self.layout.spacing {
+            self.u[index] = self.mc.spacing_of_tooth(self.tooth_at(theta2));
+        }
         self.next_tooth_rad = ((theta2 / pitch).floor() + 1.0) * pitch;
         self.next_rev_rad = ((theta2 / TAU).floor() + 1.0) * TAU;
         self.set_zone_from_angle(0.0);

@@ -38,8 +38,14 @@ impl Plant {
     }
 
     pub(super) fn touch(&mut self, flank: Flank, tau_s: f64) {
-        let (gap, closing) = self.gap(flank);
-        debug_assert!(gap.abs() < 1e-9);
+        debug_assert!(self.gap(flank).0.abs() < 1e-9);
+        self.engage(flank, tau_s);
+    }
+
+    /// A contact start on `flank` now: logged as an impact with its closing speed, and
+    /// the mesh engaged.
+    fn engage(&mut self, flank: Flank, tau_s: f64) {
+        let (_, closing) = self.gap(flank);
         let theta2 = self.driving_gear_angle_rad(tau_s);
         self.impacts.push(Impact {
             time_s: self.time_at(tau_s),
@@ -80,25 +86,44 @@ impl Plant {
         self.set_zone_from_angle(tau_s);
     }
 
-    /// Thesis §5.4.5: at each tooth pass a loaded pair hands its deflection back, so that
+    /// A tooth pass: the next pair comes into mesh. With spacing errors its error
+    /// replaces the last pair's (the flanks' overlap jumps by the difference: a pair that
+    /// stands proud strikes at once, one that stands back lets go). With the thesis's
+    /// numerical tooth shifting (§5.4.5) a loaded pair hands its deflection back, so that
     /// the new pair starts undeflected (X2, X3 each move by half the overlap).
     pub(super) fn tooth_pass(&mut self, tau_s: f64) {
-        self.next_tooth_rad += self.geometry.tooth_pitch_rad;
+        let pitch = self.geometry.tooth_pitch_rad;
+        let entering = self.tooth_at(self.next_tooth_rad + 0.5 * pitch);
+        self.next_tooth_rad += pitch;
+        if let Some(index) = self.layout.spacing {
+            self.u[index] = self.mc.spacing_of_tooth(entering);
+        }
         let flank = match self.mode.mesh {
             MeshMode::Drive | MeshMode::DriveClipped => Flank::Drive,
             MeshMode::Back | MeshMode::BackClipped => Flank::Back,
-            MeshMode::Apart => return,
+            MeshMode::Apart => return self.engage_if_overlapping(tau_s),
         };
-        let (overlap, _) = self.gap(flank);
-        let half = 0.5 * overlap.max(0.0);
-        let sign = if flank == Flank::Drive { 1.0 } else { -1.0 };
-        self.u[X0 + 2] += sign * half;
-        self.u[X0 + 1] -= sign * half;
-        let (_, closing) = self.gap(flank);
-        let force = closing * self.mc.mesh_spring(self.mode.pairs).1;
+        let (overlap, rate) = self.gap(flank);
+        let (still_touching, force) = if self.flags.tooth_shifting {
+            let half = 0.5 * overlap.max(0.0);
+            let sign = if flank == Flank::Drive { 1.0 } else { -1.0 };
+            self.u[X0 + 2] += sign * half;
+            self.u[X0 + 1] -= sign * half;
+            let (_, closing) = self.gap(flank);
+            (
+                closing > 0.0,
+                closing * self.mc.mesh_spring(self.mode.pairs).1,
+            )
+        } else {
+            let (k, c) = self.mc.mesh_spring(self.mode.pairs);
+            (
+                overlap > 0.0 || (overlap == 0.0 && rate > 0.0),
+                k * overlap + c * rate,
+            )
+        };
         let mesh = match (
             flank,
-            closing > 0.0,
+            still_touching,
             self.law == ContactLaw::NoPull && force <= 0.0,
         ) {
             (_, false, _) => MeshMode::Apart,
@@ -108,6 +133,15 @@ impl Plant {
             (Flank::Back, true, true) => MeshMode::BackClipped,
         };
         self.set_mesh(mesh, tau_s);
+    }
+
+    /// Apart at a tooth pass whose new pair stands proud of a flank: it strikes now.
+    fn engage_if_overlapping(&mut self, tau_s: f64) {
+        for flank in [Flank::Drive, Flank::Back] {
+            if self.gap(flank).0 > 0.0 {
+                return self.engage(flank, tau_s);
+            }
+        }
     }
 
     /// Puts the speed controller in the mode its command calls for after a jump (a speed

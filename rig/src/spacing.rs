@@ -1,0 +1,67 @@
+//! Tooth-pair spacing errors: with a 1:1 pair, tooth i of the driving gear always meets
+//! tooth i of the driven gear, so each of the `teeth` pairs has one combined error, the
+//! displacement of the mesh while that pair is in mesh.
+
+use rand::{RngExt, SeedableRng};
+use rand_pcg::Pcg64Mcg;
+
+use crate::geometry::GearGeometry;
+use crate::params::RigParams;
+
+/// The spacing error of each tooth pair (rad of relative rotation, arc at the pitch
+/// circle over the pitch radius): normal draws from `tooth_spacing_seed` (PCG 64,
+/// Box–Muller), made zero-mean and scaled to an RMS of `tooth_spacing_error_um`. Empty
+/// when the RMS is 0.
+pub fn spacing_errors_rad(params: &RigParams) -> Vec<f64> {
+    if params.tooth_spacing_error_um == 0.0 {
+        return Vec::new();
+    }
+    let mut rng = Pcg64Mcg::seed_from_u64(u64::from(params.tooth_spacing_seed));
+    let mut draws: Vec<f64> = (0..params.teeth)
+        .map(|_| {
+            let u1 = 1.0 - rng.random::<f64>();
+            let u2 = rng.random::<f64>();
+            (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
+        })
+        .collect();
+    let mean = draws.iter().sum::<f64>() / draws.len() as f64;
+    let rms = (draws.iter().map(|d| (d - mean).powi(2)).sum::<f64>() / draws.len() as f64).sqrt();
+    let scale = params.tooth_spacing_error_um * 1e-6
+        / GearGeometry::of(params).pitch_radius_m
+        / rms.max(f64::MIN_POSITIVE);
+    for d in &mut draws {
+        *d = (*d - mean) * scale;
+    }
+    draws
+}
+
+#[cfg(test)]
+mod tests {
+    use super::spacing_errors_rad;
+    use crate::presets::basmaji_1983;
+
+    #[test]
+    fn the_errors_have_the_rms_asked_for_a_zero_mean_and_follow_the_seed() {
+        let mut params = basmaji_1983();
+        assert!(spacing_errors_rad(&params).is_empty());
+        params.tooth_spacing_error_um = 10.0;
+        let errors = spacing_errors_rad(&params);
+        assert_eq!(errors.len(), 30);
+        let mean = errors.iter().sum::<f64>() / 30.0;
+        let rms = (errors.iter().map(|e| e * e).sum::<f64>() / 30.0).sqrt();
+        assert!(mean.abs() < 1e-15, "{mean}");
+        // 10 µm at the 75 mm pitch radius.
+        assert!((rms - 10e-6 / 0.075).abs() < 1e-12, "{rms}");
+        assert_eq!(
+            spacing_errors_rad(&params),
+            errors,
+            "the same seed, the same errors"
+        );
+        params.tooth_spacing_seed += 1;
+        assert_ne!(
+            spacing_errors_rad(&params),
+            errors,
+            "another seed, other errors"
+        );
+    }
+}
