@@ -63,6 +63,15 @@ fn profile_error_1300rpm_2712mnm_one_second(bencher: Bencher) {
     one_second(bencher, settled_plant(params, 1300.0, 2.712));
 }
 
+/// The benchmark point with 10 µm tooth-pair spacing errors: the cost of a tooth pass
+/// as an event in every mode and of the jumps it makes.
+#[divan::bench(sample_count = 30)]
+fn spacing_error_1300rpm_2712mnm_one_second(bencher: Bencher) {
+    let mut params = preset("basmaji-1983").expect("preset");
+    params.tooth_spacing_error_um = 10.0;
+    one_second(bencher, settled_plant(params, 1300.0, 2.712));
+}
+
 /// No switches at all (backlash variation and tooth shifting off, loaded at 200 rev/min):
 /// the cost of the exact step and the output alone.
 #[divan::bench(sample_count = 30)]

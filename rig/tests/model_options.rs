@@ -240,3 +240,25 @@ fn each_tooth_pair_displaces_the_mesh_by_its_own_spacing_error() {
         "the pairs do not differ"
     );
 }
+
+/// The plant's state has room for three of the four optional forcings; all four at once
+/// are refused, naming the spacing error, never a panic.
+#[test]
+fn spacing_errors_with_every_other_forcing_at_once_are_refused_by_name() {
+    let mut p = support::quiet();
+    p.tooth_spacing_error_um = 5.0;
+    p.gear_error_c3_nm = 0.1;
+    p.te_mesh_frequency_um = 2.0;
+    let mut schedule = Schedule::constant(600.0, LOAD_NM);
+    schedule.oscillating_load_nm = rig::Track::hold(0.5);
+    schedule.oscillating_load_hz = rig::Track::hold(10.0);
+    let config = rig::PlantConfig::default();
+    let refused = rig::Plant::new(p.clone(), schedule.clone(), config);
+    let message = refused.err().map(|e| e.to_string()).unwrap_or_default();
+    assert!(message.contains("tooth_spacing_error_um"), "{message}");
+    p.gear_error_c3_nm = 0.0;
+    assert!(
+        rig::Plant::new(p, schedule, config).is_ok(),
+        "three of four fit"
+    );
+}

@@ -65,7 +65,10 @@ impl StateChunk {
         }
         self.columns[COS][k] = cos;
         self.columns[SIN][k] = sin;
-        self.columns[SPACING][k] = spacing;
+        // Without spacing errors the column stays zero from the start.
+        if self.spacing_index.is_some() {
+            self.columns[SPACING][k] = spacing;
+        }
     }
 
     fn column(&self, index: usize, count: usize) -> &[f64] {
@@ -167,18 +170,26 @@ impl SampleFrame<'_> {
             column(V0 + 2),
         );
         let (cos, sin, spacing) = (column(COS), column(SIN), column(SPACING));
-        let profile = self.mc.te_mesh_rad != 0.0;
-        out.mesh_torque_nm.extend((0..count).map(|n| {
-            let (sin_z, cos_z) = if profile {
-                (self.mc.teeth * phase[n]).sin_cos()
-            } else {
-                (0.0, 0.0)
-            };
-            let mesh = [x2[n], x3[n], v2[n], v3[n]];
-            let harmonics = [cos[n], sin[n], cos_z, sin_z];
-            let (overlap, rate) = flank_overlap(self.mc, omega, sign, mesh, harmonics, spacing[n]);
-            sign * (k * overlap + c * rate)
-        }));
+        let torque = MeshTorque {
+            mc: self.mc,
+            omega,
+            sign,
+            spring: (k, c),
+        };
+        // Two loops, so that the sine of zφ is only ever computed with a profile error.
+        if self.mc.te_mesh_rad != 0.0 {
+            let teeth = self.mc.teeth;
+            out.mesh_torque_nm.extend((0..count).map(|n| {
+                let (sin_z, cos_z) = (teeth * phase[n]).sin_cos();
+                let mesh = [x2[n], x3[n], v2[n], v3[n]];
+                torque.at(mesh, [cos[n], sin[n], cos_z, sin_z], spacing[n])
+            }));
+        } else {
+            out.mesh_torque_nm.extend((0..count).map(|n| {
+                let mesh = [x2[n], x3[n], v2[n], v3[n]];
+                torque.at(mesh, [cos[n], sin[n], 0.0, 0.0], spacing[n])
+            }));
+        }
     }
 
     /// Motor torque on M1 (N m): the controller's command, or the limit it is held at.
@@ -196,6 +207,24 @@ impl SampleFrame<'_> {
             MotorMode::LimitLow => -limit,
         };
         out.motor_torque_nm.extend(std::iter::repeat_n(held, count));
+    }
+}
+
+/// The engaged flank's mesh torque K δ + C δ' (N m), signed by flank.
+struct MeshTorque<'a> {
+    mc: &'a ModelConstants,
+    omega: f64,
+    sign: f64,
+    spring: (f64, f64),
+}
+
+impl MeshTorque<'_> {
+    /// At the gears' `mesh` = [X2, X3, V2, V3], the `harmonics` and the pair's spacing error.
+    #[inline(always)]
+    fn at(&self, mesh: [f64; 4], harmonics: [f64; 4], spacing_rad: f64) -> f64 {
+        let (overlap, rate) =
+            flank_overlap(self.mc, self.omega, self.sign, mesh, harmonics, spacing_rad);
+        self.sign * (self.spring.0 * overlap + self.spring.1 * rate)
     }
 }
 

@@ -111,6 +111,13 @@ impl Plant {
             params.te_mesh_frequency_um != 0.0,
             params.tooth_spacing_error_um != 0.0,
         );
+        if !layout.fits() {
+            return Err(RigError::InvalidParameter {
+                name: "tooth_spacing_error_um".into(),
+                value: params.tooth_spacing_error_um.to_string(),
+                allowed: "not with gear_error_c3_nm, an oscillating load and te_mesh_frequency_um all on at once (the plant's state has room for three of the four)".into(),
+            });
+        }
         let alternating =
             params.mesh_pairs == MeshPairs::Alternating && geometry.double_pair_fraction() > 0.0;
         let flags = EventFlags {
