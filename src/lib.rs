@@ -27,11 +27,11 @@
 
 pub mod calibrate;
 pub mod chain;
-pub mod live;
+pub mod panel;
 pub mod plots;
 pub mod recording;
 pub mod runtime;
 pub mod scenario;
-pub mod signal_catalog;
 pub mod sweep;
+pub mod vocabulary;
 pub mod wav_input;

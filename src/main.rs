@@ -2,7 +2,6 @@
 
 mod cli;
 mod commands;
-mod rig_setup;
 
 use clap::Parser;
 

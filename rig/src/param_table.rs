@@ -1,6 +1,7 @@
 //! Named access to every parameter: list, read and override by name.
 
 use crate::error::RigError;
+use crate::geometry::{GearGeometry, centre_distance_shift_m};
 use crate::options::{ContactLaw, MeshPairs};
 use crate::params::RigParams;
 
@@ -147,10 +148,29 @@ param_specs! {
     tooth_spacing_seed, "1", "seed of the tooth-pair spacing errors (normal, made zero-mean, scaled to the RMS)";
 }
 
-/// Looks a parameter up by name.
+/// Parameters derived from others that can be set by name too: each sets the stored
+/// parameter it is derived from. `backlash_mm` is the total circular backlash 2B₁ at the
+/// pitch circle, set through the centre-distance shift (2B₁ = 2 ΔC tan α, rig-spec §1).
+pub static DERIVED_SPECS: &[ParamSpec] = &[ParamSpec {
+    name: "backlash_mm",
+    unit: "mm",
+    meaning: "total circular backlash 2B1 at the pitch circle, > 0; sets centre_distance_shift_m (experiments: 1.0 mm)",
+    get: |p| format!("{}", GearGeometry::of(p).circular_backlash_m * 1e3),
+    set: |p, text| {
+        let backlash_mm = f64::parse_text(text)?;
+        if backlash_mm <= 0.0 {
+            return Err(format!("`{text}`: a circular backlash > 0 (mm)"));
+        }
+        p.centre_distance_shift_m = centre_distance_shift_m(p, backlash_mm * 1e-3);
+        Ok(())
+    },
+}];
+
+/// Looks a parameter up by name, stored ([`PARAM_SPECS`]) or derived ([`DERIVED_SPECS`]).
 pub fn param_spec(name: &str) -> Result<&'static ParamSpec, RigError> {
     PARAM_SPECS
         .iter()
+        .chain(DERIVED_SPECS)
         .find(|spec| spec.name == name)
         .ok_or_else(|| RigError::UnknownParameter {
             name: name.to_string(),

@@ -46,6 +46,12 @@ pub const COLUMN_NAMES: [&str; 18] = [
     "tooth",
 ];
 
+/// Units of the columns, in the order of [`COLUMN_NAMES`] ("1": a number without unit).
+pub const COLUMN_UNITS: [&str; 18] = [
+    "s", "rad", "rad", "rad", "rad", "rad", "rad/s", "rad/s", "rad/s", "rad/s", "rad/s", "N m",
+    "N m", "N m", "N m", "N m", "1", "1",
+];
+
 impl SignalBlock {
     /// Number of samples held.
     pub fn len(&self) -> usize {

@@ -2,15 +2,17 @@
 //! full scale, inputs, how it is built), one table of the rig's standard stages, and the
 //! builder that the scenario check, the threaded run and the sweeps' inline chain share.
 
+pub mod chain_stages;
 pub mod instrument;
-pub mod signal_names;
 pub mod stage;
+pub mod stage_commands;
 pub mod stage_plan;
 pub mod standard;
 pub mod voltmeters;
 
+pub use chain_stages::{ChainStages, WiringError};
 pub use instrument::Instrument;
-pub use stage::{NamedStage, Stage};
-pub use stage_plan::{ChainStages, StagePlan, WiringError};
+pub use stage::Stage;
+pub use stage_plan::{NamedStage, StagePlan};
 pub use standard::{StandardChain, standard_stages};
 pub use voltmeters::{DvmSettings, MeterSettings};

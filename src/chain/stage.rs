@@ -1,41 +1,13 @@
 //! An instrument at work on frames: it reads channels of each frame and writes one more.
 
-use instruments::{Block, InstrumentError, SlipRing};
+use instruments::{Block, SlipRing};
 
-use super::instrument::Instrument;
-use super::stage_plan::StagePlan;
-
-use crate::runtime::frame::Frame;
+use crate::vocabulary::frame::Frame;
 
 /// One instrument working on frames.
 pub trait Stage: Send {
     /// Writes the stage's output for `frame` into `out` (the frame's length).
     fn process(&mut self, frame: &Frame, out: &mut [f64]);
-}
-
-/// A stage with the name of the signal it adds, and what it was built from (so that a
-/// command can rebuild it with new settings).
-pub struct NamedStage {
-    /// Output signal name.
-    pub output: String,
-    /// The instrument at work.
-    pub stage: Box<dyn Stage>,
-    /// Its description.
-    pub plan: StagePlan,
-    /// The channels it reads.
-    pub inputs: Vec<usize>,
-    /// The stream rate (Hz).
-    pub rate_hz: f64,
-}
-
-impl NamedStage {
-    /// Rebuilds the stage as `instrument` (its state starts afresh); refused, with the
-    /// stage unchanged, when the instrument refuses the settings.
-    pub fn rebuild(&mut self, instrument: Instrument) -> Result<(), InstrumentError> {
-        self.stage = instrument.build(self.rate_hz, &self.inputs)?;
-        self.plan.instrument = instrument;
-        Ok(())
-    }
 }
 
 /// A [`Block`] reading channel `input`.

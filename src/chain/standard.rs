@@ -5,12 +5,12 @@
 use instruments::{CarrierSettings, LowPassSpec, ShaftStrain, SlipRingSettings, StrainBridge};
 
 use super::instrument::Instrument;
-use super::signal_names::{
+use super::stage_plan::StagePlan;
+use super::voltmeters::{DvmSettings, MeterSettings};
+use crate::vocabulary::signal_names::{
     AMPLIFIER_V, BRIDGE_V, CARRIER_V, DVM_V, FILTER_V, METER_V, MOTOR_SPEED_RAD_S, SHAFT_TORQUE_NM,
     SLIP_RING_SPEED_RAD_S, SLIP_RING_V, STRAIN, TACHO_V,
 };
-use super::stage_plan::StagePlan;
-use super::voltmeters::{DvmSettings, MeterSettings};
 
 /// The standard stages' settings.
 #[derive(Clone, Debug)]

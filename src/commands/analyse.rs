@@ -10,7 +10,7 @@ use instruments::{
 use crate::cli::AnalyseArgs;
 use testrig::plots::{SpectrumPlot, write_spectrum_plots};
 use testrig::recording::{ALIAS_COLUMN, Metadata, write_spectrum_csv};
-use testrig::scenario::choices::SamplingChoice;
+use testrig::vocabulary::choices::SamplingChoice;
 use testrig::wav_input::{WavSignal, read_signal};
 
 pub fn run(args: &AnalyseArgs) -> anyhow::Result<()> {

@@ -4,10 +4,10 @@ use rig::{Chain, RigChains};
 use serde_json::json;
 
 use crate::cli::ModesArgs;
-use crate::rig_setup::params_from;
+use testrig::scenario::preset_file::preset_with_overrides;
 
 pub fn run(args: &ModesArgs) -> anyhow::Result<()> {
-    let params = params_from(&args.rig)?;
+    let params = preset_with_overrides(&args.rig.preset, &args.rig.overrides)?;
     let chains = RigChains::of(&params);
     let named = [
         (

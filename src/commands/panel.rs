@@ -7,16 +7,16 @@ use std::process::ExitCode;
 
 use anyhow::{Context, bail};
 use rig::LiveCeiling;
-use testrig::live::ControlHandle;
-use testrig::live::server::{PanelInfo, PanelServer};
-use testrig::live::session::Session;
+use testrig::panel::server::{PanelInfo, PanelServer};
+use testrig::panel::session::Session;
 use testrig::runtime::manifest::Ending;
 use testrig::runtime::previous_run::clear_previous_run;
 use testrig::runtime::run::run_with_status;
 use testrig::runtime::status::SharedStatus;
 use testrig::runtime::{Pace, RunOptions, StopSignals, write_manifest};
-use testrig::scenario::values::MAX_SIMULATED_S;
 use testrig::scenario::{CommandLine, Plan, ScenarioSource, apply_override, build};
+use testrig::vocabulary::ControlHandle;
+use testrig::vocabulary::limits::MAX_SIMULATED_S;
 
 use crate::cli::PanelArgs;
 

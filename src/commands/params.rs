@@ -1,13 +1,13 @@
 //! `testrig params`: every parameter with value, unit and meaning.
 
-use rig::{GearGeometry, PARAM_SPECS};
+use rig::{DERIVED_SPECS, GearGeometry, PARAM_SPECS};
 use serde_json::json;
 
 use crate::cli::ParamsArgs;
-use crate::rig_setup::params_from;
+use testrig::scenario::preset_file::preset_with_overrides;
 
 pub fn run(args: &ParamsArgs) -> anyhow::Result<()> {
-    let params = params_from(&args.rig)?;
+    let params = preset_with_overrides(&args.rig.preset, &args.rig.overrides)?;
     let geometry = GearGeometry::of(&params);
     let (kp, ki) = params.speed_loop_gains();
     let derived = [
@@ -57,15 +57,29 @@ pub fn run(args: &ParamsArgs) -> anyhow::Result<()> {
             .iter()
             .map(|(n, v, u, m)| json!({"name": n, "value": v, "unit": u, "meaning": m}))
             .collect();
+        let settable: Vec<_> = DERIVED_SPECS
+            .iter()
+            .map(|s| json!({"name": s.name, "value": s.value(&params), "unit": s.unit, "meaning": s.meaning}))
+            .collect();
         println!(
             "{}",
-            json!({"preset": args.rig.preset, "parameters": list, "derived": derived})
+            json!({"preset": args.rig.preset, "parameters": list, "derived_settable": settable, "derived": derived})
         );
         return Ok(());
     }
     println!("preset {}", args.rig.preset);
     println!("{:<36} {:>14} {:<10} meaning", "name", "value", "unit");
     for spec in PARAM_SPECS {
+        println!(
+            "{:<36} {:>14} {:<10} {}",
+            spec.name,
+            spec.value(&params),
+            spec.unit,
+            spec.meaning
+        );
+    }
+    println!("\nderived, settable by name");
+    for spec in DERIVED_SPECS {
         println!(
             "{:<36} {:>14} {:<10} {}",
             spec.name,

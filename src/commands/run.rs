@@ -7,8 +7,8 @@ use anyhow::{Context, bail};
 use testrig::runtime::manifest::Ending;
 use testrig::runtime::previous_run::clear_previous_run;
 use testrig::runtime::{Pace, RunOptions, RunResult, StopSignals, run as run_plan, write_manifest};
-use testrig::scenario::values::check_simulated_s;
 use testrig::scenario::{CommandLine, ScenarioSource, build, measurement_warnings};
+use testrig::vocabulary::limits::check_simulated_s;
 
 use crate::cli::RunArgs;
 

@@ -13,9 +13,9 @@ use rig::{
 use serde::Serialize;
 
 use crate::cli::SimulateArgs;
-use crate::rig_setup::params_from;
 use testrig::plots::{RasterImpact, write_impact_raster};
-use testrig::scenario::values::{
+use testrig::scenario::preset_file::preset_with_overrides;
+use testrig::vocabulary::limits::{
     check_load_nm, check_load_within_motor, check_simulated_s, check_speed_rpm,
 };
 
@@ -35,7 +35,7 @@ struct Report<'a> {
 
 pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
     check_inputs(args)?;
-    let params = params_from(&args.rig)?;
+    let params = preset_with_overrides(&args.rig.preset, &args.rig.overrides)?;
     check_load_within_motor(args.load, &params)
         .map_err(|e| anyhow::anyhow!("--load {}: {e}", args.load))?;
     let config = PlantConfig {

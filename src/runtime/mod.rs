@@ -2,7 +2,6 @@
 //! threads joined by crossbeam channels, and the run's manifest.
 
 pub mod console;
-pub mod frame;
 pub mod manifest;
 pub mod pacing;
 pub mod plant_source;

@@ -7,16 +7,14 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use crossbeam_channel::{Sender, TrySendError};
 use rig::{Plant, RegimeCriteria, RigParams, SetPoints, SignalBlock, SteadySummary, SteadyWindow};
 
-use super::frame::Frame;
 use super::pacing::{LatenessHistogram, Pace, Pacer};
-use super::rolling_regime::RollingRegime;
+use super::rolling_regime::{REGIME_WINDOW_S, RollingRegime};
 use super::status::SharedStatus;
-use crate::live::{Command, CommandInbox, Pending};
 use crate::scenario::Overflow;
-use crate::scenario::values::{check_load_nm, check_load_within_motor, check_speed_rpm};
+use crate::vocabulary::frame::Frame;
+use crate::vocabulary::limits::{check_load_nm, check_load_within_motor, check_speed_rpm};
+use crate::vocabulary::{Command, CommandInbox, Pending};
 
-/// Longest stretch at the end of a run whose once-per-revolution samples decide the regime (s).
-pub const REGIME_WINDOW_S: f64 = 10.0;
 /// Overrun times kept (the count goes on beyond).
 const OVERRUN_TIMES_KEPT: usize = 1000;
 

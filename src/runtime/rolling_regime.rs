@@ -5,8 +5,10 @@
 
 use rig::{Impact, RegimeCriteria, RevolutionSample, SignalBlock, SteadyWindow};
 
-use super::plant_source::REGIME_WINDOW_S;
 use super::status::SharedStatus;
+
+/// Longest stretch at the end of a run whose once-per-revolution samples decide the regime (s).
+pub const REGIME_WINDOW_S: f64 = 10.0;
 
 /// The window being filled; the shared status receives each full window's verdicts.
 pub struct RollingRegime {

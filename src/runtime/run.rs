@@ -10,7 +10,6 @@ use anyhow::Context;
 use rig::{Plant, PlantConfig};
 
 use super::console::Console;
-use super::frame::SignalNames;
 use super::pacing::Pace;
 use super::plant_source::{PlantJob, PlantReport, run_plant};
 use super::process_usage::cpu_s_and_peak_rss_mib;
@@ -22,10 +21,11 @@ use super::sinks::{Sink, SinkReport};
 use super::status::SharedStatus;
 use super::wiring::{channel, run_sink, run_stage};
 use crate::chain::NamedStage;
-use crate::chain::signal_names::{AMPLIFIER_V, FILTER_V};
-use crate::live::control::refusals;
-use crate::live::{CommandInbox, Request, Target};
 use crate::scenario::Plan;
+use crate::vocabulary::control::refusals;
+use crate::vocabulary::frame::SignalNames;
+use crate::vocabulary::signal_names::{AMPLIFIER_V, FILTER_V};
+use crate::vocabulary::{CommandInbox, Request, Target};
 
 /// How to run.
 #[derive(Clone, Debug)]

@@ -2,7 +2,7 @@
 
 use std::sync::{Arc, Mutex, PoisonError};
 
-use crate::live::{LiveSpectrum, LiveTrace};
+use crate::vocabulary::{LiveSpectrum, LiveTrace};
 
 /// The rack as the experimenter reads it.
 #[derive(Clone, Debug, Default, PartialEq)]

@@ -6,10 +6,10 @@ use std::sync::{Arc, Mutex, PoisonError};
 
 use crossbeam_channel::{Receiver, Sender, bounded};
 
-use super::frame::Frame;
 use super::sinks::{Sink, SinkReport};
 use crate::chain::NamedStage;
-use crate::live::stage_commands::apply_to_stage;
+use crate::chain::stage_commands::apply_to_stage;
+use crate::vocabulary::frame::Frame;
 
 /// Runs a stage: each frame in, the frame with the stage's output added, out to every
 /// listener; ends when its input closes or no one listens.

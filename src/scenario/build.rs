@@ -2,11 +2,13 @@
 
 use super::chain_part::{analyser_plan, chain_plan, record_plan};
 use super::file::ScenarioFile;
-use super::plan::{Plan, RecordPlan, WavFormat};
+use super::plan::{Plan, RecordPlan};
 use super::rig_part::{rig_params, schedule_and_measures};
 use super::source::ScenarioSource;
 use super::stage_part::read_signal;
-use super::values::{Positive, check_load_within_motor, check_simulated_s};
+use super::values::Positive;
+use crate::vocabulary::choices::WavFormat;
+use crate::vocabulary::limits::{check_load_within_motor, check_simulated_s};
 
 /// Run-time choices from the command line that override the file.
 #[derive(Clone, Copy, Debug, Default)]

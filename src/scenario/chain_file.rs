@@ -4,10 +4,10 @@
 use serde::Deserialize;
 use toml::Spanned;
 
-use super::choices::{
+use super::values::{Finite, NonNegative, Positive};
+use crate::vocabulary::choices::{
     ArrangementChoice, DetectorChoice, FilterChoice, SamplingChoice, SlopeChoice, WindowChoice,
 };
-use super::values::{Finite, NonNegative, Positive};
 
 /// `[chain]`: the measuring chain. Stages left out take their defaults; slip rings and the
 /// scope are wired only when their table is present.

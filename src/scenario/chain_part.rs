@@ -2,20 +2,22 @@
 
 use instruments::{
     AcCoupling, Adc, AdcSettings, AliasTruth, Analyser, AnalyserSettings, Averaging,
-    BridgeArrangement, CarrierSettings, LowPassSpec, Sampling, Scope, ScopeSettings, ShaftStrain,
+    BridgeArrangement, CarrierSettings, Sampling, Scope, ScopeSettings, ShaftStrain,
     SlipRingSettings, Slope, Spectrum, StrainBridge, SweepMode,
 };
 use toml::Spanned;
 
-use super::chain_file::{AmplifierFile, DEFAULT_CUTOFF_HZ, FilterFile, MeterFile};
-use super::choices::RecordFormatChoice;
+use super::chain_file::AmplifierFile;
 use super::file::{AnalyserFile, ChainFile, RecordFile};
-use super::plan::{AnalyserPlan, ChainPlan, RecordPlan, ScopePlan, WavFormat};
+use super::instrument_part::{filter_spec, meter_settings};
+use super::plan::{AnalyserPlan, ChainPlan, RecordPlan, ScopePlan};
 use super::source::ScenarioSource;
 use super::stage_part::{read_signal, wired_stages};
-use super::values::check_averages;
-use crate::chain::signal_names::{AMPLIFIER_V, FILTER_V};
-use crate::chain::{ChainStages, DvmSettings, MeterSettings, StandardChain};
+use crate::chain::{ChainStages, DvmSettings, StandardChain};
+use crate::vocabulary::choices::RecordFormatChoice;
+use crate::vocabulary::choices::WavFormat;
+use crate::vocabulary::limits::check_averages;
+use crate::vocabulary::signal_names::{AMPLIFIER_V, FILTER_V};
 
 /// Carrier frequency when the scenario gives none and the stream allows it (Hz).
 pub const DEFAULT_CARRIER_HZ: f64 = 10_000.0;
@@ -94,51 +96,6 @@ fn carrier_settings(a: &AmplifierFile, bridge: &StrainBridge, rate_hz: f64) -> C
             a.calibration_v.0,
             bridge.output_v(1.0),
         ),
-    }
-}
-
-/// A low-pass filter's spec (`None`: none), written at `field`; its cut-off defaults to
-/// `band_hz` and must lie below the stream's Nyquist frequency.
-pub fn filter_spec(
-    src: &ScenarioSource,
-    f: &FilterFile,
-    field: &str,
-    rate_hz: f64,
-    band_hz: Option<f64>,
-) -> anyhow::Result<Option<LowPassSpec>> {
-    let Some(kind) = f.kind.kind() else {
-        return Ok(None);
-    };
-    let (cutoff, span, origin) = match &f.cutoff_hz {
-        Some(c) => (c.get_ref().0, c.span(), ""),
-        None => match band_hz {
-            Some(band) => (band, 0..0, " (left out: the analyser's fmax_hz)"),
-            None => (DEFAULT_CUTOFF_HZ, 0..0, " (left out: the default)"),
-        },
-    };
-    if cutoff >= rate_hz / 2.0 {
-        return Err(src.error(
-            span,
-            &format!("{field}.cutoff_hz"),
-            format!(
-                "{cutoff} Hz{origin} is at or above the analogue Nyquist rate {} Hz (half of rate_hz); a cut-off below it is allowed",
-                rate_hz / 2.0
-            ),
-        ));
-    }
-    Ok(Some(LowPassSpec {
-        kind,
-        order: *f.order.get_ref(),
-        cutoff_hz: cutoff,
-    }))
-}
-
-/// An RMS meter's settings.
-pub fn meter_settings(m: &MeterFile) -> MeterSettings {
-    MeterSettings {
-        detector: m.detector.into(),
-        tau_s: m.tau_s.0,
-        ac_coupling_hz: m.ac_coupling_hz.get_ref().0,
     }
 }
 

@@ -7,9 +7,9 @@ use serde::Deserialize;
 use toml::Spanned;
 
 pub use super::chain_file::{AnalyserFile, ChainFile};
-use super::choices::{RecordFormatChoice, WavFormatChoice};
 use super::values::{LoadNm, NonNegative, Positive, SpeedRpm};
-use crate::live::TimedCommand;
+use crate::vocabulary::TimedCommand;
+use crate::vocabulary::choices::{RecordFormatChoice, WavFormatChoice};
 
 /// The whole file.
 #[derive(Debug, Deserialize)]

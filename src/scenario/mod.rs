@@ -3,9 +3,10 @@
 pub mod build;
 pub mod chain_file;
 pub mod chain_part;
-pub mod choices;
+
 pub mod coverage;
 pub mod file;
+pub mod instrument_part;
 pub mod overrides;
 pub mod plan;
 pub mod preset_file;
@@ -18,5 +19,5 @@ pub use build::{CommandLine, build};
 pub use coverage::measurement_warnings;
 pub use file::Overflow;
 pub use overrides::apply_override;
-pub use plan::{AnalyserPlan, ChainPlan, Measure, Plan, RecordPlan, ScopePlan, WavFormat};
+pub use plan::{AnalyserPlan, ChainPlan, Measure, Plan, RecordPlan, ScopePlan};
 pub use source::ScenarioSource;

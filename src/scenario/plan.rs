@@ -1,5 +1,6 @@
 //! A scenario checked and turned into settings the runtime uses directly.
 
+use crate::vocabulary::choices::WavFormat;
 use instruments::{AdcSettings, AnalyserSettings, ScopeSettings};
 use rig::{RigParams, Schedule};
 
@@ -46,7 +47,7 @@ pub struct Plan {
     /// The ceiling of live set points the plant is built for (`None`: the schedule's).
     pub live_ceiling: Option<rig::LiveCeiling>,
     /// Commands at their virtual times.
-    pub commands: Vec<crate::live::TimedCommand>,
+    pub commands: Vec<crate::vocabulary::TimedCommand>,
 }
 
 /// One reading of the rack.
@@ -95,15 +96,6 @@ pub struct AnalyserPlan {
     pub settings: AnalyserSettings,
     /// ADC settings (ratio from the stream rate).
     pub adc: AdcSettings,
-}
-
-/// How WAV samples are stored.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum WavFormat {
-    /// 32-bit IEEE float, sample = value / scale.
-    Float32,
-    /// 24-bit integer, full scale = scale.
-    Int24,
 }
 
 /// What to record.

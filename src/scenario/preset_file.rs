@@ -12,6 +12,7 @@
 use std::collections::BTreeMap;
 use std::path::Path;
 
+use anyhow::{Context, bail};
 use rig::RigParams;
 use serde::Deserialize;
 use toml::Spanned;
@@ -55,5 +56,25 @@ pub fn preset_params(name: &str, dir: &Path) -> anyhow::Result<RigParams> {
     params
         .validate()
         .map_err(|e| source.error(0..0, "set", e))?;
+    Ok(params)
+}
+
+/// The parameters of preset `name` (as [`preset_params`], relative to the working folder)
+/// with every `NAME=VALUE` override applied in order, as `--set` gives them. The names
+/// are those of `testrig params` (stored or derived, such as `backlash_mm`), also in the
+/// scenario forms `rig.set.NAME` and `rig.NAME`.
+pub fn preset_with_overrides(name: &str, overrides: &[String]) -> anyhow::Result<RigParams> {
+    let mut params = preset_params(name, Path::new(".")).context("--preset")?;
+    for item in overrides {
+        let Some((key, value)) = item.split_once('=') else {
+            bail!("--set {item}: expected NAME=VALUE (`testrig params` lists the names)");
+        };
+        let key = key.trim();
+        let key = key
+            .strip_prefix("rig.set.")
+            .or_else(|| key.strip_prefix("rig."))
+            .unwrap_or(key);
+        rig::set_param(&mut params, key, value.trim()).with_context(|| format!("--set {item}"))?;
+    }
     Ok(params)
 }

@@ -1,6 +1,5 @@
 //! The rig, the schedule and the measurements of a scenario.
 
-use rig::geometry::centre_distance_shift_m;
 use rig::{RigParams, Schedule, Track};
 use toml::Spanned;
 
@@ -22,8 +21,9 @@ pub fn rig_params(src: &ScenarioSource, rig: &RigFile) -> anyhow::Result<(String
     let mut params =
         preset_params(&name, dir).map_err(|e| src.error(span, "rig.preset", format!("{e:#}")))?;
     if let Some(backlash) = &rig.backlash_mm {
-        params.centre_distance_shift_m =
-            centre_distance_shift_m(&params, backlash.get_ref().0 * 1e-3);
+        let text = backlash.get_ref().0.to_string();
+        rig::set_param(&mut params, "backlash_mm", &text)
+            .map_err(|e| src.error(backlash.span(), "rig.backlash_mm", e))?;
     }
     for (key, value) in &rig.set {
         let text = match value.get_ref() {

@@ -7,15 +7,15 @@ use std::ops::Range;
 use toml::Spanned;
 
 use super::chain_file::{ChainFile, StageFile};
-use super::chain_part::{filter_spec, meter_settings};
+use super::instrument_part::{filter_spec, meter_settings};
 use super::source::ScenarioSource;
-use crate::chain::signal_names::{
-    AMPLIFIER_V, BRIDGE_V, CARRIER_V, DVM_V, FILTER_V, METER_V, SLIP_RING_V, STRAIN, TACHO_V,
-};
 use crate::chain::{
     ChainStages, Instrument, StagePlan, StandardChain, WiringError, standard_stages,
 };
-use crate::runtime::frame::SignalNames;
+use crate::vocabulary::frame::SignalNames;
+use crate::vocabulary::signal_names::{
+    AMPLIFIER_V, BRIDGE_V, CARRIER_V, DVM_V, FILTER_V, METER_V, SLIP_RING_V, STRAIN, TACHO_V,
+};
 
 /// Where a stage is written: its table's field and lines (settings, and the input when
 /// the file names it).

@@ -3,8 +3,7 @@
 
 use serde::Deserialize;
 
-/// Highest motor speed set point a scenario accepts (rev/min), the plant's own limit.
-pub const MAX_SPEED_RPM: f64 = rig::schedule::MAX_SPEED_RPM;
+use crate::vocabulary::limits::{check_load_nm, check_speed_rpm};
 
 /// A finite number.
 #[derive(Clone, Copy, Debug, Deserialize, PartialEq, PartialOrd)]
@@ -20,24 +19,6 @@ pub struct NonNegative(pub f64);
 #[derive(Clone, Copy, Debug, Deserialize, PartialEq, PartialOrd)]
 #[serde(try_from = "f64")]
 pub struct Positive(pub f64);
-
-/// Longest simulated time a run, a simulation or a sweep case accepts (s): 10⁶ s, about
-/// 11.6 days (half an hour unpaced); beyond it the sample count loses meaning.
-pub const MAX_SIMULATED_S: f64 = 1.0e6;
-
-/// A simulated length (s) as an input accepts it: finite, > 0 (or ≥ 0 where `zero_ok`),
-/// at most [`MAX_SIMULATED_S`].
-pub fn check_simulated_s(value: f64, zero_ok: bool) -> Result<f64, String> {
-    let low_ok = if zero_ok { value >= 0.0 } else { value > 0.0 };
-    if value.is_finite() && low_ok && value <= MAX_SIMULATED_S {
-        Ok(value)
-    } else {
-        let low = if zero_ok { "≥ 0" } else { "> 0" };
-        Err(format!(
-            "{value} s is not allowed: a simulated time {low} and at most {MAX_SIMULATED_S} s"
-        ))
-    }
-}
 
 /// A brake load set point (N m): finite and ≥ 0, since an eddy-current brake only
 /// resists the rotation (it cannot drive the rig).
@@ -90,60 +71,9 @@ impl TryFrom<f64> for LoadNm {
     }
 }
 
-/// A brake load (N m) as an input accepts it: finite and ≥ 0 (an eddy-current brake only
-/// resists the rotation); the error says why not.
-pub fn check_load_nm(value: f64) -> Result<f64, String> {
-    if value.is_finite() && value >= 0.0 {
-        Ok(value)
-    } else {
-        Err(format!(
-            "{value} N m is not allowed: an eddy-current brake's load is a finite torque ≥ 0 (it resists the rotation, it cannot drive it)"
-        ))
-    }
-}
-
-/// A brake load (N m) the rig of `params` can run against: at most the motor's torque
-/// limit. Beyond it the 2 hp motor cannot hold any speed, and the model's constant-torque
-/// brake would then drive the rig backwards, which an eddy-current brake cannot (its
-/// torque falls to zero with the speed).
-pub fn check_load_within_motor(load_nm: f64, params: &rig::RigParams) -> Result<(), String> {
-    let limit = params.motor_torque_limit_nm;
-    if load_nm <= limit {
-        Ok(())
-    } else {
-        Err(format!(
-            "{load_nm} N m is more than the motor can hold (motor_torque_limit_nm = {limit:.3} N m): the rig would stop, and an eddy-current brake cannot drive it backwards"
-        ))
-    }
-}
-
-/// A motor speed set point (rev/min) as an input accepts it: finite, in [0, 10 000].
-pub fn check_speed_rpm(value: f64) -> Result<f64, String> {
-    SpeedRpm::try_from(value).map(|s| s.0)
-}
-
 impl TryFrom<f64> for SpeedRpm {
     type Error = String;
     fn try_from(value: f64) -> Result<Self, String> {
-        if value.is_finite() && (0.0..=MAX_SPEED_RPM).contains(&value) && !value.is_subnormal() {
-            Ok(Self(value))
-        } else {
-            Err(format!(
-                "{value} rev/min is not allowed: a speed set point lies in [0, {MAX_SPEED_RPM}] rev/min (and is 0 or a normal number, ≥ 2.2e-308)"
-            ))
-        }
-    }
-}
-
-/// Most spectra an average takes: the ground truth keeps the analogue signal behind a
-/// whole average (at 51.2 kHz and the thesis's 2.56 s blocks, 1000 averages hold 1 GiB).
-pub const MAX_AVERAGES: usize = 1000;
-
-/// An analyser's number of averages, 1 to [`MAX_AVERAGES`].
-pub fn check_averages(averages: usize) -> Result<usize, String> {
-    if (1..=MAX_AVERAGES).contains(&averages) {
-        Ok(averages)
-    } else {
-        Err(format!("{averages} averages: from 1 to {MAX_AVERAGES}"))
+        check_speed_rpm(value).map(Self)
     }
 }

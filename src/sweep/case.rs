@@ -10,8 +10,8 @@ use serde::{Deserialize, Serialize};
 use super::lines::{OrderLine, order_line, peaks};
 use super::plan::{Case, SweepPlan};
 use super::sequence::Direction;
-use crate::runtime::frame::{Frame, SignalNames};
-use crate::runtime::plant_source::REGIME_WINDOW_S;
+use crate::runtime::rolling_regime::REGIME_WINDOW_S;
+use crate::vocabulary::frame::{Frame, SignalNames};
 
 /// Chain time run before the analyser starts, so the filters have settled (s).
 const CHAIN_LEAD_S: f64 = 1.0;

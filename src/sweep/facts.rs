@@ -8,7 +8,7 @@ use rig::Motion;
 use rig::judge::SUBHARMONIC_CLEAR_DB;
 
 use super::case::CaseResult;
-use super::report::HEAVY_LOAD_NM;
+use super::thesis::HEAVY_LOAD_NM;
 
 /// Impacts per revolution if the teeth struck every fourth tooth (30 / 4): the thesis's
 /// explanation of the half order.

@@ -1,14 +1,13 @@
 //! A sweep file checked and expanded into its cases.
 
 use rig::RigParams;
-use rig::geometry::centre_distance_shift_m;
 
 use crate::scenario::build::stream_rate_hz;
 use crate::scenario::chain_part::{analyser_plan, chain_plan};
 use crate::scenario::rig_part::rig_params;
 use crate::scenario::stage_part::read_signal;
-use crate::scenario::values::{check_load_within_motor, check_simulated_s};
 use crate::scenario::{AnalyserPlan, ChainPlan, ScenarioSource};
+use crate::vocabulary::limits::{check_load_within_motor, check_simulated_s};
 
 use super::approach::Approach;
 use super::file::{CaseFile, GridFile, SweepFile};
@@ -88,10 +87,12 @@ pub fn build_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<Swe
             variants,
             grid.backlash_mm.iter().map(|b| {
                 let text = b.0.to_string();
-                (text, move |p: &mut RigParams| -> anyhow::Result<()> {
-                    p.centre_distance_shift_m = centre_distance_shift_m(p, b.0 * 1e-3);
-                    Ok(())
-                })
+                (
+                    text.clone(),
+                    move |p: &mut RigParams| -> anyhow::Result<()> {
+                        Ok(rig::set_param(p, "backlash_mm", &text)?)
+                    },
+                )
             }),
         )?;
     }

@@ -7,20 +7,20 @@ use std::time::Instant;
 use anyhow::Context;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rayon::prelude::*;
-use serde::{Deserialize, Serialize};
 
 use super::case::{CaseResult, run_case};
+use super::meta::{SweepMeta, read_meta, write_meta};
 use super::plan::{Case, SweepPlan};
 use super::report::write_report;
 use super::sequence::Direction;
-use super::sequence::run_series;
+use super::series::run_series;
 use super::shard::Shard;
 use super::table::{CASES_DIR, case_path, read_cases, write_case, write_table};
 use crate::plots::{
     RegimeCell, SectionColumn, SpeedLines, WaterfallTrace, write_bifurcation, write_frequency_map,
     write_regime_map, write_waterfall,
 };
-use crate::recording::{PartialFile, remove_files_with_extension};
+use crate::recording::remove_files_with_extension;
 
 /// How to run.
 #[derive(Clone, Debug)]
@@ -50,22 +50,6 @@ pub struct SweepOutcome {
     pub wall_s: f64,
     /// Files written by the assembly.
     pub files: Vec<PathBuf>,
-}
-
-/// What the table and plots need besides the cases (`sweep.json`, so that `merge` can
-/// assemble shards without the sweep file).
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct SweepMeta {
-    /// Sweep name.
-    pub name: String,
-    /// Swept parameter columns.
-    pub swept: Vec<String>,
-    /// Natural frequencies of the rig (Hz), for the frequency map.
-    pub natural_hz: Vec<f64>,
-    /// Top of the analysed band (Hz).
-    pub fmax_hz: f64,
-    /// Number of cases in the whole grid.
-    pub cases: usize,
 }
 
 /// Runs this shard's cases of `plan` and assembles what is finished.
@@ -173,25 +157,6 @@ fn progress_bar(len: u64, visible: bool) -> ProgressBar {
         bar.set_style(style);
     }
     bar
-}
-
-fn write_meta(dir: &Path, meta: &SweepMeta) -> anyhow::Result<()> {
-    let file = PartialFile::new(&dir.join("sweep.json"));
-    let mut out = file.create()?;
-    serde_json::to_writer_pretty(&mut out, meta)?;
-    std::io::Write::flush(&mut out)?;
-    drop(out);
-    file.commit()?;
-    Ok(())
-}
-
-/// Reads `sweep.json` of a sweep folder.
-pub fn read_meta(dir: &Path) -> anyhow::Result<SweepMeta> {
-    let path = dir.join("sweep.json");
-    let text = std::fs::read_to_string(&path)
-        .with_context(|| format!("{}: cannot read", path.display()))?;
-    serde_json::from_str(&text)
-        .with_context(|| format!("{}: not a sweep description", path.display()))
 }
 
 /// What [`assemble`] wrote, and which cases of the grid it did not find.

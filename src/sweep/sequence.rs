@@ -1,17 +1,7 @@
-//! The campaign as the lab ran it: at each load the speed stepped up through the grid and
-//! back down, each point starting from the state the previous one left (no restart from
-//! rest), settled, then measured. Where the rig has more than one motion at a speed, the
-//! run-up and the run-down show which it keeps (hysteresis).
+//! How a sweep reaches its points ([`Sequence`]: each on its own, or as the lab ran them,
+//! up and down) and which way the speed came to a case ([`Direction`]).
 
-use rig::{Plant, Schedule, Track};
 use serde::{Deserialize, Serialize};
-
-use super::case::{CaseResult, chain_lead_s, measure_case, measured_samples, plant_config};
-use super::plan::{Case, SweepPlan};
-
-/// Time over which the speed knob is turned from one point to the next (s): the
-/// operator's few seconds; the speed loop (0.5 Hz) follows within about as long.
-pub const STEP_RAMP_S: f64 = 5.0;
 
 /// How the grid's points are reached.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
@@ -46,64 +36,4 @@ impl std::fmt::Display for Direction {
             Self::Down => "down",
         })
     }
-}
-
-/// The speed set point of a series: held at each case's speed for its settling and
-/// measuring, ramped over [`STEP_RAMP_S`] between cases. Case i's hold starts at
-/// `i · (ramp + settle + measure)`.
-fn series_schedule(plan: &SweepPlan, series: &[&Case]) -> Schedule {
-    let hold_s = plan.settle_s + plan.measure_s;
-    let mut speed = Track::hold(series[0].rpm);
-    for (i, case) in series.iter().enumerate().skip(1) {
-        let ramp_end_s = i as f64 * (STEP_RAMP_S + hold_s);
-        speed = speed.ramp_to(ramp_end_s - STEP_RAMP_S, ramp_end_s, case.rpm);
-    }
-    Schedule {
-        speed_rpm: speed,
-        ..Schedule::constant(series[0].rpm, series[0].load_nm)
-    }
-}
-
-/// Runs the cases of one series in order on one plant; a failure ends the series (the
-/// cases after it are reported failed with it).
-pub fn run_series(plan: &SweepPlan, series: &[&Case]) -> Vec<(usize, anyhow::Result<CaseResult>)> {
-    let mut out = Vec::with_capacity(series.len());
-    let mut plant = match Plant::new(
-        series[0].params.clone(),
-        series_schedule(plan, series),
-        plant_config(plan),
-    ) {
-        Ok(plant) => plant,
-        Err(e) => {
-            let message = format!("{e}");
-            return series
-                .iter()
-                .map(|c| (c.index, Err(anyhow::anyhow!("{message}"))))
-                .collect();
-        }
-    };
-    let hold_s = plan.settle_s + plan.measure_s;
-    let mut failed: Option<String> = None;
-    let mut position = 0usize;
-    for (i, case) in series.iter().enumerate() {
-        if let Some(why) = &failed {
-            out.push((
-                case.index,
-                Err(anyhow::anyhow!("the series stopped: {why}")),
-            ));
-            continue;
-        }
-        let window_from_s = i as f64 * (STEP_RAMP_S + hold_s) + plan.settle_s;
-        let lead_from = ((window_from_s - chain_lead_s(plan)) * plan.rate_hz).round() as usize;
-        let result = plant
-            .skip(lead_from.saturating_sub(position))
-            .map_err(anyhow::Error::from)
-            .and_then(|()| measure_case(plan, case, &mut plant));
-        position = lead_from.max(position) + measured_samples(plan);
-        if let Err(e) = &result {
-            failed = Some(format!("case {}: {e:#}", case.index));
-        }
-        out.push((case.index, result));
-    }
-    out
 }

@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use anyhow::Context;
 
 use super::case::CaseResult;
-use super::report::{physics_match, thesis_motion};
+use super::thesis::{physics_match, thesis_motion};
 use crate::recording::{CsvRecorder, PartialFile};
 
 /// Folder of the per-case files inside a sweep's output folder.

@@ -9,15 +9,15 @@ use instruments::{Adc, AliasTruth, Analyser, Spectrum};
 
 use super::measure_clock::MeasureClock;
 use super::{Sink, SinkReport};
-use crate::live::Command;
 use crate::plots::{SpectrumPlot, write_spectrum_plots};
 use crate::recording::{
     ALIAS_COLUMN, Metadata, PartialFile, Uff58Abscissa, Uff58Record, write_spectrum_csv,
     write_uff58,
 };
-use crate::runtime::frame::Frame;
 use crate::runtime::status::SharedStatus;
 use crate::scenario::{AnalyserPlan, Measure, Plan};
+use crate::vocabulary::Command;
+use crate::vocabulary::frame::Frame;
 
 /// The analyser with its ADC and the alias truth.
 pub struct AnalyserSink {

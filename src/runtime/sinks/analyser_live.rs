@@ -6,10 +6,10 @@ use std::sync::Arc;
 use instruments::{Adc, AdcSettings, AliasTruth, Analyser};
 
 use super::analyser::AnalyserSink;
-use crate::live::{Command, LiveSpectrum};
-use crate::runtime::frame::Frame;
 use crate::scenario::Measure;
-use crate::scenario::values::check_averages;
+use crate::vocabulary::frame::Frame;
+use crate::vocabulary::limits::check_averages;
+use crate::vocabulary::{Command, LiveSpectrum};
 
 impl AnalyserSink {
     /// Publishes the display on the panel after every block averaged.

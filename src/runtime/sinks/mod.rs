@@ -10,8 +10,8 @@ pub mod scope_live;
 
 use std::path::PathBuf;
 
-use super::frame::Frame;
-use crate::live::Command;
+use crate::vocabulary::Command;
+use crate::vocabulary::frame::Frame;
 
 /// A consumer of frames.
 pub trait Sink: Send {

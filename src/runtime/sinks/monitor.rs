@@ -11,12 +11,12 @@ use serde::Serialize;
 
 use super::measure_clock::MeasureClock;
 use super::{Sink, SinkReport};
-use crate::chain::signal_names::{DVM_V, METER_V, SHAFT_TORQUE_NM};
 use crate::plots::{SurveyPoint, write_survey_plots};
 use crate::recording::CsvRecorder;
-use crate::runtime::frame::{Frame, SignalNames};
 use crate::runtime::status::SharedStatus;
 use crate::scenario::{Measure, Plan};
+use crate::vocabulary::frame::{Frame, SignalNames};
+use crate::vocabulary::signal_names::{DVM_V, METER_V, SHAFT_TORQUE_NM};
 
 /// Length of the truth window before each reading (s).
 pub const TRUTH_WINDOW_S: f64 = 1.0;

@@ -6,15 +6,16 @@ use std::path::{Path, PathBuf};
 use rig::Impact;
 
 use super::{Sink, SinkReport};
-use crate::chain::signal_names::STRAIN;
-use crate::live::Command;
 use crate::recording::{
     ChannelInfo, CsvFrames, CsvRecorder, FrameWriter, Uff58Channel, Uff58Recorder, WavRecorder,
     WavSamples, Written,
 };
-use crate::runtime::frame::{Frame, SignalNames};
 use crate::runtime::status::SharedStatus;
-use crate::scenario::{Plan, RecordPlan, WavFormat};
+use crate::scenario::{Plan, RecordPlan};
+use crate::vocabulary::Command;
+use crate::vocabulary::choices::WavFormat;
+use crate::vocabulary::frame::{Frame, SignalNames};
+use crate::vocabulary::signal_names::STRAIN;
 
 /// Writes every recorded frame.
 pub struct RecorderSink {

@@ -9,21 +9,22 @@ use instruments::{AcCoupling, Block, Scope, ScopeSettings};
 use super::measure_clock::MeasureClock;
 use super::scope_live::LiveScope;
 use super::{Sink, SinkReport};
-use crate::live::Command;
 use crate::plots::write_scope_plots;
 use crate::recording::CsvRecorder;
-use crate::runtime::frame::Frame;
+use crate::runtime::status::SharedStatus;
 use crate::scenario::{Measure, Plan, ScopePlan};
+use crate::vocabulary::Command;
+use crate::vocabulary::frame::Frame;
 
 /// The scope.
 pub struct ScopeSink {
-    pub(super) settings: ScopeSettings,
-    pub(super) rate_hz: f64,
+    settings: ScopeSettings,
+    rate_hz: f64,
     input: usize,
-    pub(super) signal: String,
-    pub(super) dir: PathBuf,
+    signal: String,
+    dir: PathBuf,
     scenario: String,
-    pub(super) measures: Vec<Measure>,
+    measures: Vec<Measure>,
     clock: MeasureClock,
     armed: Option<(usize, Scope)>,
     coupling: Option<AcCoupling>,
@@ -31,7 +32,7 @@ pub struct ScopeSink {
     files: Vec<PathBuf>,
     untriggered: Vec<usize>,
     /// Live runs: the panel's scope, sweeping as set, and its latest trace published.
-    pub(super) live: Option<LiveScope>,
+    live: Option<LiveScope>,
 }
 
 impl ScopeSink {
@@ -67,6 +68,77 @@ impl ScopeSink {
         })
     }
 
+    /// Puts a live scope on the panel (sweeping on every trigger).
+    pub fn go_live(&mut self, status: SharedStatus) -> anyhow::Result<()> {
+        self.live = Some(LiveScope::new(self.settings, self.rate_hz, status)?);
+        Ok(())
+    }
+
+    /// Carries out `command` (at `frame`'s start) if it is the scope's. Saving the
+    /// displays is answered by the analyser; the scope saves its trace beside it.
+    fn carry_out(&mut self, command: &Command, frame: &Frame) -> Option<Result<(), String>> {
+        match command {
+            Command::SetScope { .. } => Some(self.set_scales(command)),
+            Command::ArmScope => Some(self.arm_now(frame)),
+            Command::SaveDisplays => {
+                if let Err(e) = self.save() {
+                    eprintln!("testrig: the scope's trace was not saved: {e:#}");
+                }
+                None
+            }
+            _ => None,
+        }
+    }
+
+    fn set_scales(&mut self, command: &Command) -> Result<(), String> {
+        let Command::SetScope {
+            volts_per_div,
+            seconds_per_div,
+            trigger_v,
+            mode,
+        } = command
+        else {
+            return Err("not a scope setting".into());
+        };
+        let settings = ScopeSettings {
+            volts_per_div: volts_per_div.unwrap_or(self.settings.volts_per_div),
+            seconds_per_div: seconds_per_div.unwrap_or(self.settings.seconds_per_div),
+            trigger_v: trigger_v.unwrap_or(self.settings.trigger_v),
+            ..self.settings
+        };
+        match &mut self.live {
+            Some(live) => live.rescale(settings, *mode, self.rate_hz),
+            None => Scope::new(settings, self.rate_hz).map(|_| ()),
+        }
+        .map_err(|e| e.to_string())?;
+        self.settings = settings;
+        Ok(())
+    }
+
+    /// Arms a stored sweep now (and re-arms the live scope in single mode).
+    fn arm_now(&mut self, frame: &Frame) -> Result<(), String> {
+        if let Some(live) = &mut self.live {
+            live.rearm();
+        }
+        let index = self.measures.len();
+        self.measures.push(Measure {
+            at_s: frame.start_sample as f64 / self.rate_hz,
+            label: format!("sweep {}", index + 1),
+            speed_rpm: frame.set_points.map_or(0.0, |s| s.speed_rpm),
+            load_nm: frame.set_points.map_or(0.0, |s| s.load_nm),
+        });
+        self.arm(index).map_err(|e| format!("{e:#}"))
+    }
+
+    /// Saves the live scope's trace on screen beside the analyser's saved displays.
+    fn save(&mut self) -> anyhow::Result<()> {
+        let Some(saved) = self.live.as_mut().and_then(LiveScope::next_saved) else {
+            return Ok(());
+        };
+        let base = self.dir.join(format!("saved-{:02}-scope", saved.number));
+        self.write_trace(&base, "saved", &saved.trace, saved.settings)
+    }
+
     fn watch(&mut self, x: &[f64]) -> anyhow::Result<()> {
         let Some((index, scope)) = &mut self.armed else {
             return Ok(());
@@ -81,7 +153,7 @@ impl ScopeSink {
         Ok(())
     }
 
-    pub(super) fn arm(&mut self, index: usize) -> anyhow::Result<()> {
+    fn arm(&mut self, index: usize) -> anyhow::Result<()> {
         if let Some((previous, _)) = self.armed.take() {
             self.untriggered.push(previous + 1);
         }
@@ -96,7 +168,7 @@ impl ScopeSink {
     }
 
     /// Writes `trace` (at `settings`) as `base` CSV, PNG and SVG, titled with `label`.
-    pub(super) fn write_trace(
+    fn write_trace(
         &mut self,
         base: &std::path::Path,
         label: &str,
@@ -142,8 +214,8 @@ impl Sink for ScopeSink {
             }
             None => Arc::clone(raw),
         };
-        if self.live.is_some() {
-            self.watch_live(&x);
+        if let Some(live) = &mut self.live {
+            live.watch(&x, &self.signal);
         }
         let mut offset = 0;
         while let Some((at, index)) = self.clock.next_within(frame.start_sample, x.len()) {

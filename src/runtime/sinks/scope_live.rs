@@ -1,20 +1,27 @@
 //! The scope operated live: a second scope sweeping as the panel sets it (auto or
-//! single), its latest trace published; commands change its scales, arm a stored sweep
-//! (written as a file, as at a measurement) or save the trace on screen.
+//! single), its latest trace published on the panel. The storage scope (`scope.rs`)
+//! owns it and routes the panel's scope commands to it.
 
 use std::sync::Arc;
 
-use instruments::{Block, Scope, ScopeSettings, SweepMode};
+use instruments::{Block, InstrumentError, Scope, ScopeSettings, SweepMode};
 
-use super::scope::ScopeSink;
-use crate::live::command::ScopeMode;
-use crate::live::{Command, LiveTrace};
-use crate::runtime::frame::Frame;
 use crate::runtime::status::SharedStatus;
-use crate::scenario::Measure;
+use crate::vocabulary::LiveTrace;
+use crate::vocabulary::command::ScopeMode;
 
 /// Most points of a trace sent to the panel (every k-th sample beyond).
 const PANEL_POINTS: usize = 2000;
+
+/// A trace the panel asked to save.
+pub struct SavedTrace {
+    /// Its number among the saves (1, 2, …).
+    pub number: usize,
+    /// (time from the trigger (s), divisions) of each point.
+    pub trace: Vec<(f64, f64)>,
+    /// The scope's settings it was taken at.
+    pub settings: ScopeSettings,
+}
 
 /// The panel's scope.
 pub struct LiveScope {
@@ -27,149 +34,99 @@ pub struct LiveScope {
     status: SharedStatus,
 }
 
-impl ScopeSink {
-    /// Puts a live scope on the panel (sweeping on every trigger).
-    pub fn go_live(&mut self, status: SharedStatus) -> anyhow::Result<()> {
-        let settings = ScopeSettings {
-            mode: SweepMode::Repeat,
-            ..self.settings
-        };
-        self.live = Some(LiveScope {
-            scope: Scope::new(settings, self.rate_hz)?,
+impl LiveScope {
+    /// A live scope at `settings` on a stream at `rate_hz`, sweeping on every trigger
+    /// (auto), publishing to `status`.
+    pub fn new(
+        settings: ScopeSettings,
+        rate_hz: f64,
+        status: SharedStatus,
+    ) -> Result<Self, InstrumentError> {
+        Ok(Self {
+            scope: Scope::new(sweep_settings(settings, ScopeMode::Auto), rate_hz)?,
             mode: ScopeMode::Auto,
             seen: 0,
             last: None,
             saved: 0,
             scratch: Vec::new(),
             status,
-        });
-        Ok(())
+        })
     }
 
-    /// Feeds the live scope; a new sweep goes on the panel.
-    pub(super) fn watch_live(&mut self, x: &[f64]) {
-        let signal = self.signal.clone();
-        let Some(live) = &mut self.live else {
-            return;
-        };
-        live.scratch.resize(x.len(), 0.0);
-        live.scope.process(x, &mut live.scratch);
-        if live.scope.sweeps() == live.seen {
+    /// Feeds the samples `x` of `signal`; a new sweep goes on the panel.
+    pub fn watch(&mut self, x: &[f64], signal: &str) {
+        self.scratch.resize(x.len(), 0.0);
+        self.scope.process(x, &mut self.scratch);
+        if self.scope.sweeps() == self.seen {
             return;
         }
-        live.seen = live.scope.sweeps();
-        live.last = live.scope.trace();
-        publish(live, signal);
+        self.seen = self.scope.sweeps();
+        self.last = self.scope.trace();
+        self.publish(signal);
     }
 
-    /// Carries out `command` (at `frame`'s start) if it is the scope's. Saving the
-    /// displays is answered by the analyser; the scope saves its trace beside it.
-    pub(super) fn carry_out(
+    /// Re-sets the scope to `settings` in `mode` (its present mode if `None`), on a
+    /// stream at `rate_hz`; the present scope stays if the settings are refused.
+    pub fn rescale(
         &mut self,
-        command: &Command,
-        frame: &Frame,
-    ) -> Option<Result<(), String>> {
-        match command {
-            Command::SetScope { .. } => Some(self.set_scales(command)),
-            Command::ArmScope => Some(self.arm_now(frame)),
-            Command::SaveDisplays => {
-                if let Err(e) = self.save() {
-                    eprintln!("testrig: the scope's trace was not saved: {e:#}");
-                }
-                None
-            }
-            _ => None,
-        }
-    }
-
-    fn set_scales(&mut self, command: &Command) -> Result<(), String> {
-        let Command::SetScope {
-            volts_per_div,
-            seconds_per_div,
-            trigger_v,
-            mode,
-        } = command
-        else {
-            return Err("not a scope setting".into());
-        };
-        let settings = ScopeSettings {
-            volts_per_div: volts_per_div.unwrap_or(self.settings.volts_per_div),
-            seconds_per_div: seconds_per_div.unwrap_or(self.settings.seconds_per_div),
-            trigger_v: trigger_v.unwrap_or(self.settings.trigger_v),
-            ..self.settings
-        };
-        let Some(live) = &mut self.live else {
-            Scope::new(settings, self.rate_hz).map_err(|e| e.to_string())?;
-            self.settings = settings;
-            return Ok(());
-        };
-        let mode = mode.unwrap_or(live.mode);
-        let sweep_mode = match mode {
-            ScopeMode::Auto => SweepMode::Repeat,
-            ScopeMode::Single => SweepMode::Single,
-        };
-        let scope = Scope::new(
-            ScopeSettings {
-                mode: sweep_mode,
-                ..settings
-            },
-            self.rate_hz,
-        )
-        .map_err(|e| e.to_string())?;
-        live.scope = scope;
-        live.mode = mode;
-        live.seen = 0;
-        self.settings = settings;
+        settings: ScopeSettings,
+        mode: Option<ScopeMode>,
+        rate_hz: f64,
+    ) -> Result<(), InstrumentError> {
+        let mode = mode.unwrap_or(self.mode);
+        self.scope = Scope::new(sweep_settings(settings, mode), rate_hz)?;
+        self.mode = mode;
+        self.seen = 0;
         Ok(())
     }
 
-    /// Arms a stored sweep now (and re-arms the live scope in single mode).
-    fn arm_now(&mut self, frame: &Frame) -> Result<(), String> {
-        if let Some(live) = &mut self.live {
-            live.scope.reset();
-            live.seen = 0;
-        }
-        let index = self.measures.len();
-        self.measures.push(Measure {
-            at_s: frame.start_sample as f64 / self.rate_hz,
-            label: format!("sweep {}", index + 1),
-            speed_rpm: frame.set_points.map_or(0.0, |s| s.speed_rpm),
-            load_nm: frame.set_points.map_or(0.0, |s| s.load_nm),
-        });
-        self.arm(index).map_err(|e| format!("{e:#}"))
+    /// Re-arms the scope (a single sweep starts waiting for its trigger again).
+    pub fn rearm(&mut self) {
+        self.scope.reset();
+        self.seen = 0;
     }
 
-    fn save(&mut self) -> anyhow::Result<()> {
-        let Some(live) = &mut self.live else {
-            return Ok(());
+    /// The trace on screen to save; `None` (the number still counted) if no sweep has
+    /// been shown yet.
+    pub fn next_saved(&mut self) -> Option<SavedTrace> {
+        self.saved += 1;
+        Some(SavedTrace {
+            number: self.saved,
+            trace: self.last.clone()?,
+            settings: self.scope.settings(),
+        })
+    }
+
+    fn publish(&self, signal: &str) {
+        let Some(trace) = &self.last else {
+            return;
         };
-        live.saved += 1;
-        let Some(trace) = live.last.clone() else {
-            return Ok(());
+        let s = self.scope.settings();
+        let stride = trace.len().div_ceil(PANEL_POINTS).max(1);
+        let shown = LiveTrace {
+            time_s: trace.iter().step_by(stride).map(|p| p.0).collect(),
+            divisions: trace.iter().step_by(stride).map(|p| p.1).collect(),
+            volts_per_div: s.volts_per_div,
+            seconds_per_div: s.seconds_per_div,
+            trigger_v: s.trigger_v,
+            mode: match self.mode {
+                ScopeMode::Auto => "auto".into(),
+                ScopeMode::Single => "single".into(),
+            },
+            signal: signal.to_string(),
         };
-        let base = self.dir.join(format!("saved-{:02}-scope", live.saved));
-        let settings = live.scope.settings();
-        self.write_trace(&base, "saved", &trace, settings)
+        self.status.update(|st| st.trace = Some(Arc::new(shown)));
     }
 }
 
-fn publish(live: &LiveScope, signal: String) {
-    let Some(trace) = &live.last else {
-        return;
+/// `settings` sweeping as `mode` asks: auto repeats, single stops after one sweep.
+fn sweep_settings(settings: ScopeSettings, mode: ScopeMode) -> ScopeSettings {
+    let sweep_mode = match mode {
+        ScopeMode::Auto => SweepMode::Repeat,
+        ScopeMode::Single => SweepMode::Single,
     };
-    let s = live.scope.settings();
-    let stride = trace.len().div_ceil(PANEL_POINTS).max(1);
-    let shown = LiveTrace {
-        time_s: trace.iter().step_by(stride).map(|p| p.0).collect(),
-        divisions: trace.iter().step_by(stride).map(|p| p.1).collect(),
-        volts_per_div: s.volts_per_div,
-        seconds_per_div: s.seconds_per_div,
-        trigger_v: s.trigger_v,
-        mode: match live.mode {
-            ScopeMode::Auto => "auto".into(),
-            ScopeMode::Single => "single".into(),
-        },
-        signal,
-    };
-    live.status.update(|st| st.trace = Some(Arc::new(shown)));
+    ScopeSettings {
+        mode: sweep_mode,
+        ..settings
+    }
 }

@@ -1,5 +1,7 @@
-//! Names of the signals the standard chain reads and produces, so that no file spells
-//! them by hand.
+//! The signals' names and units, in one place: the plant's columns (names and units from
+//! `rig`'s table) and the names of the signals the standard chain reads and produces, so
+//! that no file spells them by hand. The chain's own units come from its stages
+//! (`chain::Instrument`).
 
 /// Torque in the intermediate (output) shaft, under the gauges (N m); a plant signal.
 pub const SHAFT_TORQUE_NM: &str = "torque_intermediate_shaft_nm";
@@ -25,3 +27,21 @@ pub const METER_V: &str = "meter_v";
 pub const TACHO_V: &str = "tacho_v";
 /// Digital voltmeter reading of the tacho (V).
 pub const DVM_V: &str = "dvm_v";
+
+/// Unit of plant signal `name`, from `rig`'s table of columns; `None` if the plant has no
+/// such signal.
+pub fn plant_unit(name: &str) -> Option<&'static str> {
+    let column = rig::COLUMN_NAMES.iter().position(|&c| c == name)?;
+    Some(rig::COLUMN_UNITS[column])
+}
+
+/// Full scale of a plant signal of unit `unit`, for integer recordings (in that unit).
+pub fn plant_full_scale(unit: &str) -> f64 {
+    match unit {
+        "rad/s" => 1_000.0,
+        "rad" => 1.0e6,
+        "N m" => 100.0,
+        "s" => 1.0e5,
+        _ => 100.0,
+    }
+}

@@ -5,7 +5,7 @@ use std::sync::Arc;
 
 use rig::{Impact, SetPoints, SignalBlock};
 
-use crate::live::Pending;
+use crate::vocabulary::Pending;
 
 /// One block of samples. Channels are shared (`Arc`), so a stage that adds its output
 /// copies only pointers; channel `i` is named by the run's [`SignalNames`] entry `i`.

@@ -6,8 +6,6 @@
 use instruments::{BridgeArrangement, Detector, FilterKind, Sampling, Slope, Window};
 use serde::{Deserialize, Serialize};
 
-use super::plan::WavFormat;
-
 /// `chain.gauges.arrangement`.
 #[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
 #[serde(rename_all = "kebab-case")]
@@ -203,4 +201,13 @@ pub enum RecordFormatChoice {
     Csv,
     /// UFF58 time histories.
     Uff58,
+}
+
+/// How WAV samples are stored.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum WavFormat {
+    /// 32-bit IEEE float, sample = value / scale.
+    Float32,
+    /// 24-bit integer, full scale = scale.
+    Int24,
 }

@@ -3,8 +3,8 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::chain::signal_names::{AMPLIFIER_V, FILTER_V};
-use crate::scenario::choices::{FilterChoice, WindowChoice};
+use crate::vocabulary::choices::{FilterChoice, WindowChoice};
+use crate::vocabulary::signal_names::{AMPLIFIER_V, FILTER_V};
 
 /// One command.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]

@@ -4,8 +4,8 @@
 
 use instruments::LowPassSpec;
 
-use super::command::{Command, Target};
 use crate::chain::{Instrument, NamedStage};
+use crate::vocabulary::command::{Command, Target};
 
 /// Highest carrier amplifier gain accepted (V/V): far beyond the 3C66's.
 const MAX_GAIN: f64 = 1.0e6;

@@ -6,8 +6,8 @@ use std::sync::Arc;
 use instruments::CROMPTON_PARKINSON_V_PER_RPM;
 use serde::Serialize;
 
-use super::display::{LiveSpectrum, LiveTrace};
 use crate::runtime::status::Status;
+use crate::vocabulary::display::{LiveSpectrum, LiveTrace};
 
 /// One snapshot of the panel.
 #[derive(Clone, Debug, Serialize)]

@@ -12,10 +12,10 @@ use std::time::Duration;
 use serde::Serialize;
 use tiny_http::{Header, Request, Response, Server, StatusCode};
 
-use super::command::{Command, Reply};
-use super::control::ControlHandle;
 use super::state::PanelState;
 use crate::runtime::status::SharedStatus;
+use crate::vocabulary::command::{Command, Reply};
+use crate::vocabulary::control::ControlHandle;
 
 /// How often the stream sends the state (s).
 pub const STREAM_PERIOD_S: f64 = 0.1;

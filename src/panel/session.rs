@@ -6,8 +6,8 @@ use anyhow::Context;
 use rig::LiveCeiling;
 use serde::Serialize;
 
-use super::command::TimedCommand;
 use crate::scenario::apply_override;
+use crate::vocabulary::command::TimedCommand;
 
 /// What a session ran.
 #[derive(Clone, Debug)]

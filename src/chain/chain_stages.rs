@@ -1,0 +1,175 @@
+//! The chain as a list of described stages: each names its output and the signals it
+//! reads. The list is put in an order where every input is produced before it is read,
+//! and built into running stages; the scenario check, `testrig run` and the sweeps'
+//! inline chain all build it here.
+
+use instruments::InstrumentError;
+
+use super::stage_plan::{NamedStage, StagePlan};
+use crate::vocabulary::frame::SignalNames;
+use crate::vocabulary::signal_names::{plant_full_scale, plant_unit};
+
+/// Why a chain cannot be wired or built; each names the stage by its output.
+#[derive(Debug, thiserror::Error)]
+pub enum WiringError {
+    /// An input no plant signal or stage provides (or only a stage that depends on this).
+    #[error("`{output}` reads `{input}`, which is not a signal before it; known: {known}")]
+    UnknownInput {
+        /// The stage's output.
+        output: String,
+        /// The input not found.
+        input: String,
+        /// The signals there are.
+        known: String,
+    },
+    /// Two stages, or a stage and a plant signal, with one name.
+    #[error("`{output}` is already a signal of the run; give the stage another name")]
+    DuplicateOutput {
+        /// The name.
+        output: String,
+    },
+    /// The instrument refuses its settings on this stream.
+    #[error("{source}")]
+    Instrument {
+        /// The stage's output.
+        output: String,
+        /// What it said.
+        source: InstrumentError,
+    },
+}
+
+impl WiringError {
+    /// The output of the stage at fault.
+    pub fn output(&self) -> &str {
+        match self {
+            Self::UnknownInput { output, .. }
+            | Self::DuplicateOutput { output }
+            | Self::Instrument { output, .. } => output,
+        }
+    }
+}
+
+/// The stages in running order (every input before it is read).
+#[derive(Clone, Debug, Default)]
+pub struct ChainStages(Vec<StagePlan>);
+
+impl ChainStages {
+    /// Puts `stages` in running order: stages keep their given order except where one
+    /// reads a later one's output. Every input must be a plant signal or another stage's
+    /// output, and every output a new name.
+    pub fn ordered(stages: Vec<StagePlan>) -> Result<Self, WiringError> {
+        let mut known = SignalNames::plant();
+        for s in &stages {
+            if known.index(&s.output).is_some() {
+                return Err(WiringError::DuplicateOutput {
+                    output: s.output.clone(),
+                });
+            }
+            known.push(&s.output);
+        }
+        let mut available = SignalNames::plant();
+        let mut pending = stages;
+        let mut ordered = Vec::with_capacity(pending.len());
+        while !pending.is_empty() {
+            let ready = pending
+                .iter()
+                .position(|s| s.inputs.iter().all(|i| available.index(i).is_some()));
+            let Some(ready) = ready else {
+                return Err(unresolved(&pending, &available));
+            };
+            let stage = pending.remove(ready);
+            available.push(&stage.output);
+            ordered.push(stage);
+        }
+        Ok(Self(ordered))
+    }
+
+    /// The stages in running order.
+    pub fn stages(&self) -> &[StagePlan] {
+        &self.0
+    }
+
+    /// The stage writing `name`.
+    pub fn producing(&self, name: &str) -> Option<&StagePlan> {
+        self.0.iter().find(|s| s.output == name)
+    }
+
+    /// Unit of signal `name`, a plant signal or a stage's output.
+    pub fn unit_of(&self, name: &str) -> Option<&'static str> {
+        match self.producing(name) {
+            Some(s) => Some(s.instrument.unit()),
+            None => plant_unit(name),
+        }
+    }
+
+    /// Full scale of signal `name` for integer recordings (in its unit).
+    pub fn full_scale_of(&self, name: &str) -> Option<f64> {
+        match self.producing(name) {
+            Some(s) => Some(s.instrument.full_scale()),
+            None => plant_unit(name).map(plant_full_scale),
+        }
+    }
+
+    /// Every signal of the run: the plant's, then the stages' outputs.
+    pub fn signal_names(&self) -> SignalNames {
+        let mut names = SignalNames::plant();
+        for s in &self.0 {
+            names.push(&s.output);
+        }
+        names
+    }
+
+    /// Gives every seeded instrument `seed`.
+    pub fn reseed(&mut self, seed: u64) {
+        for s in &mut self.0 {
+            s.instrument.reseed(seed);
+        }
+    }
+
+    /// Builds the stages on a stream at `rate_hz`; `names` holds the plant's channels on
+    /// entry and every stage's output on return.
+    pub fn build(
+        &self,
+        rate_hz: f64,
+        names: &mut SignalNames,
+    ) -> Result<Vec<NamedStage>, WiringError> {
+        let mut built = Vec::with_capacity(self.0.len());
+        for s in &self.0 {
+            let inputs: Vec<usize> = s.inputs.iter().filter_map(|n| names.index(n)).collect();
+            if inputs.len() != s.instrument.input_count() {
+                return Err(unresolved(std::slice::from_ref(s), names));
+            }
+            let stage =
+                s.instrument
+                    .build(rate_hz, &inputs)
+                    .map_err(|source| WiringError::Instrument {
+                        output: s.output.clone(),
+                        source,
+                    })?;
+            names.push(&s.output);
+            built.push(NamedStage {
+                output: s.output.clone(),
+                stage,
+                plan: s.clone(),
+                inputs,
+                rate_hz,
+            });
+        }
+        Ok(built)
+    }
+}
+
+fn unresolved(pending: &[StagePlan], available: &SignalNames) -> WiringError {
+    let s = &pending[0];
+    let input = s
+        .inputs
+        .iter()
+        .find(|i| available.index(i).is_none())
+        .cloned()
+        .unwrap_or_else(|| format!("{} inputs", s.instrument.input_count()));
+    WiringError::UnknownInput {
+        output: s.output.clone(),
+        input,
+        known: available.names().join(", "),
+    }
+}
