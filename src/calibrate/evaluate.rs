@@ -5,8 +5,8 @@ use rayon::prelude::*;
 use rig::{Judgement, RigChains, RigParams};
 use serde::{Deserialize, Serialize};
 
-use crate::sweep::plan::case_seed;
 use crate::sweep::{Approach, Case, Direction, run_case};
+use crate::vocabulary::seeds::case_seed;
 
 use super::free_param::params_at;
 use super::objective::{

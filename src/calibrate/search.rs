@@ -13,7 +13,7 @@ use super::evaluate::{Evaluation, evaluate_all};
 use super::log::{EvaluationRecord, append, log_path, read_log, start_log};
 use super::plan::{CalibrationPlan, TargetPoint};
 use crate::sweep::Shard;
-use crate::sweep::plan::case_seed;
+use crate::vocabulary::seeds::case_seed;
 
 /// Which points the search sees.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

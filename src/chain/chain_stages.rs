@@ -58,7 +58,13 @@ impl ChainStages {
     /// reads a later one's output. Every input must be a plant signal or another stage's
     /// output, and every output a new name.
     pub fn ordered(stages: Vec<StagePlan>) -> Result<Self, WiringError> {
-        let mut known = SignalNames::plant();
+        Self::ordered_on(stages, &SignalNames::plant())
+    }
+
+    /// As [`Self::ordered`], on the signals `sources` instead of the plant's (a chain
+    /// on a recording's channels).
+    pub fn ordered_on(stages: Vec<StagePlan>, sources: &SignalNames) -> Result<Self, WiringError> {
+        let mut known = sources.clone();
         for s in &stages {
             if known.index(&s.output).is_some() {
                 return Err(WiringError::DuplicateOutput {
@@ -67,7 +73,7 @@ impl ChainStages {
             }
             known.push(&s.output);
         }
-        let mut available = SignalNames::plant();
+        let mut available = sources.clone();
         let mut pending = stages;
         let mut ordered = Vec::with_capacity(pending.len());
         while !pending.is_empty() {

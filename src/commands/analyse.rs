@@ -3,64 +3,87 @@
 
 use anyhow::{Context, bail};
 use instruments::{
-    Adc, AdcSettings, AliasTruth, Analyser, AnalyserSettings, AntiAliasFilter, Averaging, Block,
-    FilterKind, KeyboardProgram, LowPassSpec, Sampling, Spectrum, Window,
+    Adc, Analyser, AnalyserSettings, Averaging, FilterKind, KeyboardProgram, LowPassSpec, Sampling,
+    Spectrum, Window,
 };
 
 use crate::cli::AnalyseArgs;
+use testrig::chain::analyser_setup::{AdcChoice, AnalyserSetting, AnalyserSetup, set_up_analyser};
+use testrig::chain::spectrum_metadata::{SpectrumFacts, spectrum_metadata};
+use testrig::chain::{ChainStages, InlineChain, Instrument, StagePlan};
 use testrig::plots::{SpectrumPlot, write_spectrum_plots};
-use testrig::recording::{ALIAS_COLUMN, Metadata, write_spectrum_csv};
+use testrig::recording::{Metadata, write_spectrum_csv};
 use testrig::vocabulary::choices::SamplingChoice;
+use testrig::vocabulary::frame::{Frame, SignalNames};
+use testrig::vocabulary::signal_names::FILTER_V;
 use testrig::wav_input::{WavSignal, read_signal};
+
+/// Name of the file's channel as the filter stage reads it.
+const INPUT: &str = "input";
 
 pub fn run(args: &AnalyseArgs) -> anyhow::Result<()> {
     let settings = analyser_settings(args)?;
     let wav = read_signal(&args.file, &args.channel, args.start, args.length)?;
-    let ratio = wav.rate_hz / settings.sample_rate_hz();
-    if ratio < 1.0 {
-        bail!(
-            "--fmax {}: the ADC rate {} Hz exceeds the file's rate {} Hz",
-            args.fmax,
-            settings.sample_rate_hz(),
-            wav.rate_hz
-        );
-    }
-    let filter_spec = filter_spec(&args.filter, args.cutoff.unwrap_or(args.fmax))?;
-    let mut filter = AntiAliasFilter::new(filter_spec, wav.rate_hz).context("--filter/--cutoff")?;
-    let mut analogue = vec![0.0; wav.samples.len()];
-    filter.process(&wav.samples, &mut analogue);
     let range = adc_range(args.range, &wav)?;
-    let mut adc = Adc::new(AdcSettings {
-        ratio,
+    let adc = AdcChoice {
         bits: args.bits,
         range_v: range.value,
         dither_seed: None,
-    })
-    .context("--bits/--range")?;
+    };
+    let mut setup = set_up_analyser(settings, adc, wav.rate_hz).map_err(|e| {
+        let flag = match e.setting() {
+            AnalyserSetting::Block => format!("--block {}", args.block),
+            AnalyserSetting::FmaxHz => format!("--fmax {}", args.fmax),
+            AnalyserSetting::Averages => format!("--averages {}", args.averages),
+            AnalyserSetting::OverlapPct => format!("--overlap {}", args.overlap),
+            AnalyserSetting::Adc => format!("--bits {}", args.bits),
+        };
+        anyhow::anyhow!("{flag}: {e}")
+    })?;
+    let filter_spec = filter_spec(&args.filter, args.cutoff.unwrap_or(args.fmax))?;
+    let analogue = anti_alias(filter_spec, &wav)?;
+    let ratio = setup.adc_settings.ratio;
     let mut samples = Vec::with_capacity((analogue.len() as f64 / ratio) as usize + 1);
-    adc.convert(&analogue, &mut samples);
+    setup.adc.convert(&analogue, &mut samples);
     std::fs::create_dir_all(&args.out)
         .with_context(|| format!("--out {}: cannot create the folder", args.out.display()))?;
     let done = match &args.program {
         Some(program) => run_program(args, program, &settings, &samples),
-        None => run_analyser(args, &settings, &wav, &analogue, &samples, &adc, &range),
+        None => run_analyser(args, &mut setup, &wav, &analogue, &samples, &range),
     };
-    warn_of_overloads(&adc, &range, &wav.unit);
+    warn_of_overloads(&setup.adc, &range, &wav.unit);
     done
+}
+
+/// The signal through the anti-alias filter (`None`: as it is): a chain of one stage on
+/// the file's channel.
+fn anti_alias(spec: Option<LowPassSpec>, wav: &WavSignal) -> anyhow::Result<Vec<f64>> {
+    let stage = StagePlan {
+        output: FILTER_V.to_string(),
+        inputs: vec![INPUT.to_string()],
+        instrument: Instrument::LowPass(spec),
+    };
+    let mut names = SignalNames::of(&[INPUT]);
+    let stages = ChainStages::ordered_on(vec![stage], &names)?
+        .build(wav.rate_hz, &mut names)
+        .context("--filter/--cutoff")?;
+    let frame = InlineChain::new(stages).process(Frame::of_channels(vec![wav.samples.clone()]));
+    Ok(frame.channels[1].to_vec())
 }
 
 /// The averaged spectrum of the ADC samples with the alias truth: spectrum.csv and plots.
 fn run_analyser(
     args: &AnalyseArgs,
-    settings: &AnalyserSettings,
+    setup: &mut AnalyserSetup,
     wav: &WavSignal,
     analogue: &[f64],
     samples: &[f64],
-    adc: &Adc,
     range: &AdcRange,
 ) -> anyhow::Result<()> {
-    let ratio = wav.rate_hz / settings.sample_rate_hz();
-    let mut analyser = Analyser::new(*settings).context("--block/--fmax/--averages/--overlap")?;
+    let settings = setup.settings;
+    let ratio = setup.adc_settings.ratio;
+    let analyser = &mut setup.analyser;
+    let adc = &setup.adc;
     analyser.push(samples);
     let count = analyser.average_count();
     if count == 0 {
@@ -76,15 +99,15 @@ fn run_analyser(
             args.block as f64 * ratio / wav.rate_hz
         );
     }
-    let mut truth = AliasTruth::new(args.block, ratio, wav.rate_hz, settings.window)?;
+    let truth = &mut setup.truth;
     truth.add_blocks(analogue, count, settings.hop());
     let lines = analyser.display();
     let floor = adc.quantisation_line_power(analyser.enbw_hz(), settings.sample_rate_hz());
     let alias_of = truth.flags(lines.len(), floor);
     let metadata = metadata(
         args,
-        settings,
-        &analyser,
+        &settings,
+        analyser,
         wav,
         count,
         adc.overloads(),
@@ -287,7 +310,7 @@ fn metadata(
     range: &AdcRange,
 ) -> Metadata {
     let section_s = wav.samples.len() as f64 / wav.rate_hz;
-    vec![
+    let head = vec![
         ("file", args.file.display().to_string()),
         (
             "channel",
@@ -301,39 +324,23 @@ fn metadata(
             format!("{} to {}", args.start, args.start + section_s),
         ),
         ("file_rate_hz", wav.rate_hz.to_string()),
-        ("fs_hz", settings.sample_rate_hz().to_string()),
-        ("n", settings.block.to_string()),
-        ("fmax_hz", settings.fmax_hz.to_string()),
-        ("sampling", args.sampling.clone()),
-        ("window", settings.window.name().to_string()),
-        ("enbw_hz", analyser.enbw_hz().to_string()),
-        (
-            "averages",
-            format!(
-                "{count} of {} requested, linear (sum then divide)",
-                settings.averages
-            ),
-        ),
-        ("overlap_pct", args.overlap.to_string()),
-        (
-            "filter",
-            format!(
+    ];
+    spectrum_metadata(
+        head,
+        SpectrumFacts {
+            settings,
+            enbw_hz: analyser.enbw_hz(),
+            averages_done: count,
+            filter: format!(
                 "{} cut-off {} Hz",
                 args.filter,
                 args.cutoff.unwrap_or(args.fmax)
             ),
-        ),
-        (
-            "adc",
-            format!(
+            adc: format!(
                 "{} bits over +-{} {} ({}), {overloads} overloads",
                 args.bits, range.value, wav.unit, range.source
             ),
-        ),
-        (
-            "scaling",
-            Spectrum::Power.scaling().replace("unit", &wav.unit),
-        ),
-        ("alias_of_hz", ALIAS_COLUMN.to_string()),
-    ]
+            unit: &wav.unit,
+        },
+    )
 }

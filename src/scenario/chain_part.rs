@@ -1,9 +1,8 @@
 //! The measuring chain, the analyser and the recordings of a scenario.
 
 use instruments::{
-    AcCoupling, Adc, AdcSettings, AliasTruth, Analyser, AnalyserSettings, Averaging,
-    BridgeArrangement, CarrierSettings, Sampling, Scope, ScopeSettings, ShaftStrain,
-    SlipRingSettings, Slope, Spectrum, StrainBridge, SweepMode,
+    AcCoupling, AnalyserSettings, Averaging, BridgeArrangement, CarrierSettings, Sampling, Scope,
+    ScopeSettings, ShaftStrain, SlipRingSettings, Slope, Spectrum, StrainBridge, SweepMode,
 };
 use toml::Spanned;
 
@@ -13,10 +12,11 @@ use super::instrument_part::{filter_spec, meter_settings};
 use super::plan::{AnalyserPlan, ChainPlan, RecordPlan, ScopePlan};
 use super::source::ScenarioSource;
 use super::stage_part::{read_signal, wired_stages};
+use crate::chain::analyser_setup::{AdcChoice, AnalyserSetting, set_up_analyser};
 use crate::chain::{ChainStages, DvmSettings, StandardChain};
 use crate::vocabulary::choices::RecordFormatChoice;
 use crate::vocabulary::choices::WavFormat;
-use crate::vocabulary::limits::check_averages;
+use crate::vocabulary::seeds::NoiseSource;
 use crate::vocabulary::signal_names::{AMPLIFIER_V, FILTER_V};
 
 /// Carrier frequency when the scenario gives none and the stream allows it (Hz).
@@ -59,7 +59,7 @@ fn standard_chain(
         broadband_rms: s.broadband_rms.0,
         per_rev_amplitude: s.per_rev_amplitude.0,
         contact_noise_v_rms: s.contact_noise_v_rms.0,
-        seed: seed.wrapping_add(1),
+        seed: NoiseSource::SlipRings.seed(seed),
     });
     let input = |i: &Option<Spanned<String>>| i.as_ref().map(|i| i.get_ref().clone());
     let t = &chain.tacho;
@@ -143,53 +143,42 @@ pub fn analyser_plan(
     rate_hz: f64,
     seed: u64,
 ) -> anyhow::Result<AnalyserPlan> {
-    let window = file.window.0;
-    let sampling = Sampling::from(file.sampling);
-    check_averages(*file.averages.get_ref())
-        .map_err(|e| src.error(file.averages.span(), "analyser.averages", e))?;
-    let overlap = file.overlap_pct.as_ref().map_or(0.0, |o| o.get_ref().0);
-    if overlap >= 100.0 {
-        let span = file.overlap_pct.as_ref().map_or(0..0, Spanned::span);
-        return Err(src.error(span, "analyser.overlap_pct", "must lie in [0, 100)"));
-    }
+    let overlap_pct = file.overlap_pct.as_ref().map_or(0.0, |o| o.get_ref().0);
     let settings = AnalyserSettings {
         block: *file.block.get_ref(),
         fmax_hz: file.fmax_hz.get_ref().0,
-        sampling,
-        window,
+        sampling: Sampling::from(file.sampling),
+        window: file.window.0,
         spectrum: Spectrum::Power,
         averaging: Averaging::Linear,
         averages: *file.averages.get_ref(),
-        overlap: overlap / 100.0,
+        overlap: overlap_pct / 100.0,
     };
-    Analyser::new(settings).map_err(|e| src.error(file.block.span(), "analyser", e))?;
-    let ratio = rate_hz / settings.sample_rate_hz();
-    if ratio < 1.0 {
-        return Err(src.error(
-            file.fmax_hz.span(),
-            "analyser.fmax_hz",
-            format!(
-                "needs an ADC rate of {} Hz, above the stream rate {rate_hz} Hz",
-                settings.sample_rate_hz()
-            ),
-        ));
-    }
-    let adc = AdcSettings {
-        ratio,
+    let adc = AdcChoice {
         bits: *file.bits.get_ref(),
         range_v: file.range_v.0,
-        dither_seed: file.dither.then_some(seed.wrapping_add(2)),
+        dither_seed: file.dither.then_some(NoiseSource::AdcDither.seed(seed)),
     };
-    Adc::new(adc).map_err(|e| src.error(file.bits.span(), "analyser.bits", e))?;
-    AliasTruth::new(settings.block, ratio, rate_hz, window)
-        .map_err(|e| src.error(file.fmax_hz.span(), "analyser.fmax_hz", e))?;
+    let setup = set_up_analyser(settings, adc, rate_hz).map_err(|e| {
+        let (span, field) = match e.setting() {
+            AnalyserSetting::Block => (file.block.span(), "analyser"),
+            AnalyserSetting::FmaxHz => (file.fmax_hz.span(), "analyser.fmax_hz"),
+            AnalyserSetting::Averages => (file.averages.span(), "analyser.averages"),
+            AnalyserSetting::OverlapPct => (
+                file.overlap_pct.as_ref().map_or(0..0, Spanned::span),
+                "analyser.overlap_pct",
+            ),
+            AnalyserSetting::Adc => (file.bits.span(), "analyser.bits"),
+        };
+        src.error(span, field, e)
+    })?;
     Ok(AnalyserPlan {
         input: file
             .input
             .as_ref()
             .map_or(FILTER_V.to_string(), |i| i.get_ref().clone()),
         settings,
-        adc,
+        adc: setup.adc_settings,
     })
 }
 

@@ -10,8 +10,10 @@ use serde::{Deserialize, Serialize};
 use super::lines::{OrderLine, order_line, peaks};
 use super::plan::{Case, SweepPlan};
 use super::sequence::Direction;
+use crate::chain::InlineChain;
 use crate::runtime::rolling_regime::REGIME_WINDOW_S;
 use crate::vocabulary::frame::{Frame, SignalNames};
+use crate::vocabulary::seeds::NoiseSource;
 
 /// Chain time run before the analyser starts, so the filters have settled (s).
 const CHAIN_LEAD_S: f64 = 1.0;
@@ -122,15 +124,17 @@ pub fn measure_case(
     let lead = chain_lead_s(plan);
     plant.drain_impacts();
     plant.drain_revolutions();
-    let mut chain = plan.chain.stages.clone();
-    chain.reseed(case.seed);
+    let mut stage_plans = plan.chain.stages.clone();
+    stage_plans.reseed(NoiseSource::SlipRings.case_seed(case.seed));
     let mut names = SignalNames::plant();
-    let mut stages = chain.build(plan.rate_hz, &mut names)?;
+    let mut chain = InlineChain::new(stage_plans.build(plan.rate_hz, &mut names)?);
     let input = names
         .index(&plan.analyser.input)
         .ok_or_else(|| anyhow::anyhow!("internal wiring: no {}", plan.analyser.input))?;
     let mut adc_settings = plan.analyser.adc;
-    adc_settings.dither_seed = adc_settings.dither_seed.map(|_| case.seed ^ 1);
+    adc_settings.dither_seed = adc_settings
+        .dither_seed
+        .map(|_| NoiseSource::AdcDither.case_seed(case.seed));
     let mut adc = Adc::new(adc_settings)?;
     let mut analyser = Analyser::new(plan.analyser.settings)?;
     let mut window = SteadyWindow::new(case.params.teeth, plant.output_step_s());
@@ -154,12 +158,7 @@ pub fn measure_case(
         let n = BLOCK.min(until - done);
         block.clear();
         plant.run(n, &mut block)?;
-        let mut frame = Frame::of_block(0, done as u64, &block, Vec::new());
-        for stage in &mut stages {
-            let mut out = vec![0.0; n];
-            stage.stage.process(&frame, &mut out);
-            frame = frame.with(out);
-        }
+        let frame = chain.process(Frame::of_block(0, done as u64, &block, Vec::new()));
         if done >= late_from {
             let (impacts, revolutions) = (plant.drain_impacts(), plant.drain_revolutions());
             late.add_block(&block, plant.set_points().speed_rad_s());

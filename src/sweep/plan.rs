@@ -12,6 +12,7 @@ use crate::vocabulary::limits::{check_load_within_motor, check_simulated_s};
 use super::approach::Approach;
 use super::file::{CaseFile, GridFile, SweepFile};
 use super::sequence::{Direction, Sequence};
+use crate::vocabulary::seeds::case_seed;
 
 /// Everything a sweep needs, checked.
 #[derive(Clone, Debug)]
@@ -239,13 +240,4 @@ fn expand<F: Fn(&mut RigParams) -> anyhow::Result<()>>(
         }
     }
     Ok(out)
-}
-
-/// Seed of case `index`: the base seed and the index mixed (SplitMix64), so neighbouring
-/// cases get unrelated noise and any shard reproduces any case.
-pub fn case_seed(base: u64, index: usize) -> u64 {
-    let mut z = base.wrapping_add((index as u64 + 1).wrapping_mul(0x9E37_79B9_7F4A_7C15));
-    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-    z ^ (z >> 31)
 }

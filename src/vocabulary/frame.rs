@@ -27,6 +27,19 @@ pub struct Frame {
 }
 
 impl Frame {
+    /// A frame of the signals `channels` from the stream's start, without impacts,
+    /// commands or set points (a recording's channels).
+    pub fn of_channels(channels: Vec<Vec<f64>>) -> Self {
+        Self {
+            seq: 0,
+            start_sample: 0,
+            channels: channels.into_iter().map(Arc::from).collect(),
+            impacts: Arc::new([]),
+            commands: Arc::new([]),
+            set_points: None,
+        }
+    }
+
     /// A frame of the plant's true signals, channels in the order of
     /// [`rig::COLUMN_NAMES`].
     pub fn of_block(
@@ -97,6 +110,11 @@ impl Frame {
 pub struct SignalNames(Vec<String>);
 
 impl SignalNames {
+    /// The signals `names`, in order (a chain on other signals than the plant's).
+    pub fn of(names: &[&str]) -> Self {
+        Self(names.iter().map(|n| n.to_string()).collect())
+    }
+
     /// The plant's channels, in the order of [`rig::COLUMN_NAMES`].
     pub fn plant() -> Self {
         Self(rig::COLUMN_NAMES.iter().map(|n| n.to_string()).collect())

@@ -10,6 +10,7 @@ pub mod control;
 pub mod display;
 pub mod frame;
 pub mod limits;
+pub mod seeds;
 pub mod signal_names;
 
 pub use command::{Command, Reply, Target, TimedCommand};

@@ -5,14 +5,15 @@
 
 use std::path::{Path, PathBuf};
 
-use instruments::{Adc, AliasTruth, Analyser, Spectrum};
+use instruments::{Adc, AliasTruth, Analyser};
 
 use super::measure_clock::MeasureClock;
 use super::{Sink, SinkReport};
+use crate::chain::analyser_setup::{AdcChoice, set_up_analyser};
+use crate::chain::spectrum_metadata::{SpectrumFacts, spectrum_metadata};
 use crate::plots::{SpectrumPlot, write_spectrum_plots};
 use crate::recording::{
-    ALIAS_COLUMN, Metadata, PartialFile, Uff58Abscissa, Uff58Record, write_spectrum_csv,
-    write_uff58,
+    Metadata, PartialFile, Uff58Abscissa, Uff58Record, write_spectrum_csv, write_uff58,
 };
 use crate::runtime::status::SharedStatus;
 use crate::scenario::{AnalyserPlan, Measure, Plan};
@@ -59,14 +60,16 @@ impl AnalyserSink {
         measures: Vec<Measure>,
         status: SharedStatus,
     ) -> anyhow::Result<Self> {
-        let s = analyser.settings;
+        let setup = set_up_analyser(
+            analyser.settings,
+            AdcChoice::of(&analyser.adc),
+            plan.rate_hz,
+        )?;
         let filter = plan
             .chain
             .stages
             .producing(&analyser.input)
             .map_or("none".into(), |s| s.instrument.describe());
-        let adc = Adc::new(analyser.adc)?;
-        let truth = AliasTruth::new(s.block, analyser.adc.ratio, plan.rate_hz, s.window)?;
         Ok(Self {
             plan: analyser,
             input,
@@ -76,9 +79,9 @@ impl AnalyserSink {
             uff: plan.record.as_ref().is_some_and(|r| r.uff58),
             clock: MeasureClock::new(measures.iter().map(|m| m.at_s), plan.rate_hz),
             measures,
-            adc,
-            analyser: Analyser::new(s)?,
-            truth,
+            adc: setup.adc,
+            analyser: setup.analyser,
+            truth: setup.truth,
             active: None,
             analogue: Vec::new(),
             adc_out: Vec::new(),
@@ -204,9 +207,8 @@ impl AnalyserSink {
     }
 
     fn metadata(&self, measure: &Measure, count: usize) -> Metadata {
-        let s = &self.plan.settings;
         let adc = &self.plan.adc;
-        vec![
+        let head = vec![
             ("scenario", self.scenario.clone()),
             ("measurement", measure.label.clone()),
             ("started_s", measure.at_s.to_string()),
@@ -216,33 +218,23 @@ impl AnalyserSink {
                 "signal",
                 format!("{} (after {})", self.plan.input, self.filter),
             ),
-            ("fs_hz", s.sample_rate_hz().to_string()),
-            ("n", s.block.to_string()),
-            ("fmax_hz", s.fmax_hz.to_string()),
-            ("sampling", format!("{:?}", s.sampling)),
-            ("window", s.window.name().to_string()),
-            ("enbw_hz", self.analyser.enbw_hz().to_string()),
-            (
-                "averages",
-                format!(
-                    "{count} of {} requested, linear (sum then divide)",
-                    s.averages
-                ),
-            ),
-            ("overlap_pct", (100.0 * s.overlap).to_string()),
-            ("filter", self.filter.clone()),
-            (
-                "adc",
-                format!(
+        ];
+        spectrum_metadata(
+            head,
+            SpectrumFacts {
+                settings: &self.plan.settings,
+                enbw_hz: self.analyser.enbw_hz(),
+                averages_done: count,
+                filter: self.filter.clone(),
+                adc: format!(
                     "{} bits over +-{} V, {} overloads",
                     adc.bits,
                     adc.range_v,
                     self.adc.overloads()
                 ),
-            ),
-            ("scaling", Spectrum::Power.scaling().replace("unit", "V")),
-            ("alias_of_hz", ALIAS_COLUMN.to_string()),
-        ]
+                unit: "V",
+            },
+        )
     }
 }
 

@@ -3,12 +3,14 @@
 
 use std::sync::Arc;
 
-use instruments::{Adc, AdcSettings, AliasTruth, Analyser};
+use instruments::{Adc, AdcSettings, AnalyserSettings};
 
 use super::analyser::AnalyserSink;
+use crate::chain::analyser_setup::{
+    AdcChoice, AnalyserSetting, AnalyserSetupError, set_up_analyser,
+};
 use crate::scenario::Measure;
 use crate::vocabulary::frame::Frame;
-use crate::vocabulary::limits::check_averages;
 use crate::vocabulary::{Command, LiveSpectrum};
 
 impl AnalyserSink {
@@ -83,34 +85,17 @@ impl AnalyserSink {
         s.fmax_hz = fmax_hz.unwrap_or(s.fmax_hz);
         s.block = block.unwrap_or(s.block);
         s.window = window.map_or(s.window, |w| w.0);
-        s.averages = check_averages(averages.unwrap_or(s.averages))?;
-        if let Some(pct) = overlap_pct {
-            if !(0.0..100.0).contains(pct) {
-                return Err(format!("overlap_pct {pct}: must lie in [0, 100)"));
-            }
-            s.overlap = pct / 100.0;
-        }
-        let analyser = Analyser::new(s).map_err(|e| e.to_string())?;
-        let ratio = self.rate_hz / s.sample_rate_hz();
-        if ratio < 1.0 {
-            return Err(format!(
-                "fmax_hz {}: needs an ADC rate of {} Hz, above the stream rate {} Hz",
-                s.fmax_hz,
-                s.sample_rate_hz(),
-                self.rate_hz
-            ));
-        }
-        let adc = AdcSettings {
-            ratio,
-            ..self.plan.adc
-        };
-        let truth =
-            AliasTruth::new(s.block, ratio, self.rate_hz, s.window).map_err(|e| e.to_string())?;
+        s.averages = averages.unwrap_or(s.averages);
+        s.overlap = overlap_pct.map_or(s.overlap, |pct| pct / 100.0);
+        let setup = set_up_analyser(s, AdcChoice::of(&self.plan.adc), self.rate_hz)
+            .map_err(|e| live_refusal(&e, &s))?;
         let restart = self.active;
         self.close_measurement().map_err(|e| format!("{e:#}"))?;
-        self.set_adc(adc)?;
-        self.analyser = analyser;
-        self.truth = truth;
+        self.overloads += self.adc.overloads();
+        self.adc = setup.adc;
+        self.plan.adc = setup.adc_settings;
+        self.analyser = setup.analyser;
+        self.truth = setup.truth;
         self.plan.settings = s;
         if let Some(index) = restart {
             let measure = self.measures[index].clone();
@@ -164,5 +149,15 @@ impl AnalyserSink {
         };
         self.status
             .update(|st| st.spectrum = Some(Arc::new(spectrum)));
+    }
+}
+
+/// The panel's words for a refused analyser setting: the field and value at fault, then
+/// why.
+fn live_refusal(e: &AnalyserSetupError, s: &AnalyserSettings) -> String {
+    match e.setting() {
+        AnalyserSetting::FmaxHz => format!("fmax_hz {}: {e}", s.fmax_hz),
+        AnalyserSetting::OverlapPct => format!("overlap_pct {}: {e}", 100.0 * s.overlap),
+        AnalyserSetting::Averages | AnalyserSetting::Block | AnalyserSetting::Adc => e.to_string(),
     }
 }

@@ -1,0 +1,28 @@
+//! The chain on one thread: every stage in turn on a frame, each adding its output as a
+//! channel. The sweeps' cases and `testrig analyse` drive their stages here; `testrig run`
+//! and the panel give each stage a thread of its own (`runtime::wiring`).
+
+use super::stage_plan::NamedStage;
+use crate::vocabulary::frame::Frame;
+
+/// Stages in running order, driven on the caller's thread.
+pub struct InlineChain {
+    stages: Vec<NamedStage>,
+}
+
+impl InlineChain {
+    /// The stages `stages`, in running order (as [`super::ChainStages::build`] gives them).
+    pub fn new(stages: Vec<NamedStage>) -> Self {
+        Self { stages }
+    }
+
+    /// `frame` with every stage's output added, in order.
+    pub fn process(&mut self, mut frame: Frame) -> Frame {
+        for stage in &mut self.stages {
+            let mut out = vec![0.0; frame.len()];
+            stage.stage.process(&frame, &mut out);
+            frame = frame.with(out);
+        }
+        frame
+    }
+}
