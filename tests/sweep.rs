@@ -168,7 +168,7 @@ fn a_slurm_job_array_picks_its_shard_and_the_flag_wins() {
         Shard { index: 2, count: 4 }
     );
     assert_eq!(
-        Shard::choose(Some("1/3"), env).expect("valid"),
+        Shard::choose(Some(Shard::parse("1/3").expect("K/N")), env).expect("valid"),
         Shard { index: 1, count: 3 }
     );
     assert_eq!(Shard::choose(None, |_| None).expect("valid"), Shard::ALL);

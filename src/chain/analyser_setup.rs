@@ -5,7 +5,7 @@
 
 use instruments::{Adc, AdcSettings, AliasTruth, Analyser, AnalyserSettings, InstrumentError};
 
-use crate::vocabulary::limits::check_averages;
+use crate::vocabulary::limits::{LimitError, check_averages};
 
 /// The analyser's settings a user chooses, by name in their own words: a scenario's
 /// `analyser.*` keys, the panel's fields, `analyse`'s flags.
@@ -28,7 +28,7 @@ pub enum AnalyserSetting {
 pub enum AnalyserSetupError {
     /// The averages are out of range.
     #[error("{0}")]
-    Averages(String),
+    Averages(LimitError),
     /// The overlap is not a fraction in [0, 1).
     #[error("must lie in [0, 100)")]
     Overlap {

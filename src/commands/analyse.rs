@@ -3,17 +3,15 @@
 
 use anyhow::{Context, bail};
 use instruments::{
-    Adc, Analyser, AnalyserSettings, Averaging, FilterKind, KeyboardProgram, LowPassSpec, Sampling,
-    Spectrum, Window,
+    Adc, Analyser, AnalyserSettings, Averaging, KeyboardProgram, LowPassSpec, Sampling, Spectrum,
 };
 
-use crate::cli::AnalyseArgs;
+use crate::cli::{AnalyseArgs, FilterArg};
 use testrig::chain::analyser_setup::{AdcChoice, AnalyserSetting, AnalyserSetup, set_up_analyser};
 use testrig::chain::spectrum_metadata::{SpectrumFacts, spectrum_metadata};
 use testrig::chain::{ChainStages, InlineChain, Instrument, StagePlan};
 use testrig::plots::{SpectrumPlot, write_spectrum_plots};
 use testrig::recording::{Metadata, write_spectrum_csv};
-use testrig::vocabulary::choices::SamplingChoice;
 use testrig::vocabulary::frame::{Frame, SignalNames};
 use testrig::vocabulary::signal_names::FILTER_V;
 use testrig::wav_input::{WavSignal, read_signal};
@@ -40,7 +38,7 @@ pub fn run(args: &AnalyseArgs) -> anyhow::Result<()> {
         };
         anyhow::anyhow!("{flag}: {e}")
     })?;
-    let filter_spec = filter_spec(&args.filter, args.cutoff.unwrap_or(args.fmax))?;
+    let filter_spec = filter_spec(args.filter, args.cutoff.unwrap_or(args.fmax));
     let analogue = anti_alias(filter_spec, &wav)?;
     let ratio = setup.adc_settings.ratio;
     let mut samples = Vec::with_capacity((analogue.len() as f64 / ratio) as usize + 1);
@@ -242,16 +240,6 @@ fn warn_of_overloads(adc: &Adc, range: &AdcRange, unit: &str) {
 }
 
 fn analyser_settings(args: &AnalyseArgs) -> anyhow::Result<AnalyserSettings> {
-    let window = Window::parse(&args.window)
-        .with_context(|| format!("--window {}: one of {}", args.window, Window::NAMES))?;
-    let sampling = SamplingChoice::parse(&args.sampling)
-        .map(Sampling::from)
-        .with_context(|| {
-            format!(
-                "--sampling {}: thesis (fs = 2 Fmax) or 2.56 (fs = 2.56 Fmax)",
-                args.sampling
-            )
-        })?;
     if !(args.fmax.is_finite() && args.fmax > 0.0) {
         bail!(
             "--fmax {}: the top of the band, a frequency > 0 Hz",
@@ -269,8 +257,8 @@ fn analyser_settings(args: &AnalyseArgs) -> anyhow::Result<AnalyserSettings> {
     Ok(AnalyserSettings {
         block: args.block,
         fmax_hz: args.fmax,
-        sampling,
-        window,
+        sampling: Sampling::from(args.sampling),
+        window: args.window,
         spectrum: Spectrum::Power,
         averaging: Averaging::Linear,
         averages: args.averages,
@@ -278,26 +266,12 @@ fn analyser_settings(args: &AnalyseArgs) -> anyhow::Result<AnalyserSettings> {
     })
 }
 
-fn filter_spec(text: &str, cutoff_hz: f64) -> anyhow::Result<Option<LowPassSpec>> {
-    if text == "none" {
-        return Ok(None);
-    }
-    let (kind, order) = text
-        .split_once(':')
-        .with_context(|| format!("--filter {text}: none, butterworth:ORDER or bessel:ORDER"))?;
-    let kind = match kind {
-        "butterworth" => FilterKind::Butterworth,
-        "bessel" => FilterKind::Bessel,
-        other => bail!("--filter {text}: `{other}` is not butterworth or bessel"),
-    };
-    let order = order
-        .parse()
-        .with_context(|| format!("--filter {text}: the order must be a whole number"))?;
-    Ok(Some(LowPassSpec {
+fn filter_spec(filter: FilterArg, cutoff_hz: f64) -> Option<LowPassSpec> {
+    filter.kind.map(|kind| LowPassSpec {
         kind,
-        order,
+        order: filter.order,
         cutoff_hz,
-    }))
+    })
 }
 
 fn metadata(

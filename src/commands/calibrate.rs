@@ -10,7 +10,7 @@ use testrig::calibrate::{
 use testrig::scenario::ScenarioSource;
 use testrig::sweep::Shard;
 
-use crate::cli::CalibrateArgs;
+use crate::cli::{CalibrateArgs, TrainingHalf};
 
 pub fn run(args: &CalibrateArgs) -> anyhow::Result<()> {
     if args.jobs == Some(0) {
@@ -19,14 +19,14 @@ pub fn run(args: &CalibrateArgs) -> anyhow::Result<()> {
     if args.budget == Some(0) {
         bail!("--budget 0: at least one evaluation");
     }
-    let shard = Shard::choose(args.shard.as_deref(), |k| std::env::var(k).ok())?;
+    let shard = Shard::choose(args.shard, |k| std::env::var(k).ok())?;
     let source = ScenarioSource::read_with(&args.calibration, &args.overrides)?;
     let file: CalibrationFile = source.parse_calibration()?;
     let plan = build_calibration(&source, &file)?;
-    let training = match args.train_half.as_deref() {
-        Some("even") => TrainingPoints::Even,
-        Some("odd") => TrainingPoints::Odd,
-        _ => TrainingPoints::All,
+    let training = match args.train_half {
+        Some(TrainingHalf::Even) => TrainingPoints::Even,
+        Some(TrainingHalf::Odd) => TrainingPoints::Odd,
+        None => TrainingPoints::All,
     };
     std::fs::create_dir_all(&args.out)
         .with_context(|| format!("{}: cannot create the output folder", args.out.display()))?;

@@ -31,12 +31,11 @@ const DEFAULT_CEILING: LiveCeiling = LiveCeiling {
 };
 
 pub fn run(args: &PanelArgs) -> anyhow::Result<ExitCode> {
-    let pace = match Pace::parse(&args.pace) {
-        Some(Pace::Factor(f)) => Pace::Factor(f),
-        _ => bail!(
-            "--pace {}: 1 (real time) or a factor from 0.001 to 1e6; a panel is paced",
-            args.pace
-        ),
+    let pace = match args.pace {
+        Pace::Factor(f) => Pace::Factor(f),
+        Pace::Max => {
+            bail!("--pace max: 1 (real time) or a factor from 0.001 to 1e6; a panel is paced")
+        }
     };
     let (path, mut source) = scenario_source(args)?;
     let mut plan = build(&source, CommandLine::default())?;

@@ -14,7 +14,7 @@ pub fn run(args: &SweepArgs) -> anyhow::Result<()> {
     if args.jobs == Some(0) {
         bail!("--jobs 0: at least one worker");
     }
-    let shard = Shard::choose(args.shard.as_deref(), |k| std::env::var(k).ok())?;
+    let shard = Shard::choose(args.shard, |k| std::env::var(k).ok())?;
     let source = ScenarioSource::read_with(&args.sweep, &args.overrides)?;
     let file: SweepFile = source.parse_sweep()?;
     let plan = build_sweep(&source, &file)?;

@@ -3,7 +3,7 @@
 
 use serde::Deserialize;
 
-use crate::vocabulary::limits::{check_load_nm, check_speed_rpm};
+use crate::vocabulary::limits::{LimitError, check_load_nm, check_speed_rpm};
 
 /// A finite number.
 #[derive(Clone, Copy, Debug, Deserialize, PartialEq, PartialOrd)]
@@ -31,49 +31,63 @@ pub struct LoadNm(pub f64);
 #[serde(try_from = "f64")]
 pub struct SpeedRpm(pub f64);
 
+/// A number a file's field does not allow; each says what is allowed.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum NumberError {
+    /// Not finite.
+    #[error("{0} is not allowed: a finite number is")]
+    NotFinite(f64),
+    /// Negative or not finite.
+    #[error("{0} is not allowed: a finite number ≥ 0 is")]
+    NotNonNegative(f64),
+    /// Zero, negative or not finite.
+    #[error("{0} is not allowed: a finite number > 0 is")]
+    NotPositive(f64),
+}
+
 impl TryFrom<f64> for Finite {
-    type Error = String;
-    fn try_from(value: f64) -> Result<Self, String> {
+    type Error = NumberError;
+    fn try_from(value: f64) -> Result<Self, NumberError> {
         if value.is_finite() {
             Ok(Self(value))
         } else {
-            Err(format!("{value} is not allowed: a finite number is"))
+            Err(NumberError::NotFinite(value))
         }
     }
 }
 
 impl TryFrom<f64> for NonNegative {
-    type Error = String;
-    fn try_from(value: f64) -> Result<Self, String> {
+    type Error = NumberError;
+    fn try_from(value: f64) -> Result<Self, NumberError> {
         if value.is_finite() && value >= 0.0 {
             Ok(Self(value))
         } else {
-            Err(format!("{value} is not allowed: a finite number ≥ 0 is"))
+            Err(NumberError::NotNonNegative(value))
         }
     }
 }
 
 impl TryFrom<f64> for Positive {
-    type Error = String;
-    fn try_from(value: f64) -> Result<Self, String> {
+    type Error = NumberError;
+    fn try_from(value: f64) -> Result<Self, NumberError> {
         if value.is_finite() && value > 0.0 {
             Ok(Self(value))
         } else {
-            Err(format!("{value} is not allowed: a finite number > 0 is"))
+            Err(NumberError::NotPositive(value))
         }
     }
 }
 
 impl TryFrom<f64> for LoadNm {
-    type Error = String;
-    fn try_from(value: f64) -> Result<Self, String> {
+    type Error = LimitError;
+    fn try_from(value: f64) -> Result<Self, LimitError> {
         check_load_nm(value).map(Self)
     }
 }
 
 impl TryFrom<f64> for SpeedRpm {
-    type Error = String;
-    fn try_from(value: f64) -> Result<Self, String> {
+    type Error = LimitError;
+    fn try_from(value: f64) -> Result<Self, LimitError> {
         check_speed_rpm(value).map(Self)
     }
 }

@@ -37,11 +37,11 @@ impl Shard {
 
     /// From `--shard` if given, else from SLURM's job-array variables, else all cases.
     pub fn choose(
-        flag: Option<&str>,
+        flag: Option<Self>,
         env: impl Fn(&str) -> Option<String>,
     ) -> anyhow::Result<Self> {
-        if let Some(text) = flag {
-            return Self::parse(text);
+        if let Some(shard) = flag {
+            return Ok(shard);
         }
         let (Some(id), Some(count)) = (env("SLURM_ARRAY_TASK_ID"), env("SLURM_ARRAY_TASK_COUNT"))
         else {

@@ -12,27 +12,23 @@ pub const MAX_SIMULATED_S: f64 = 1.0e6;
 
 /// A simulated length (s) as an input accepts it: finite, > 0 (or ≥ 0 where `zero_ok`),
 /// at most [`MAX_SIMULATED_S`].
-pub fn check_simulated_s(value: f64, zero_ok: bool) -> Result<f64, String> {
+pub fn check_simulated_s(value: f64, zero_ok: bool) -> Result<f64, LimitError> {
     let low_ok = if zero_ok { value >= 0.0 } else { value > 0.0 };
     if value.is_finite() && low_ok && value <= MAX_SIMULATED_S {
         Ok(value)
     } else {
         let low = if zero_ok { "≥ 0" } else { "> 0" };
-        Err(format!(
-            "{value} s is not allowed: a simulated time {low} and at most {MAX_SIMULATED_S} s"
-        ))
+        Err(LimitError::SimulatedTime { value, low })
     }
 }
 
 /// A brake load (N m) as an input accepts it: finite and ≥ 0 (an eddy-current brake only
 /// resists the rotation); the error says why not.
-pub fn check_load_nm(value: f64) -> Result<f64, String> {
+pub fn check_load_nm(value: f64) -> Result<f64, LimitError> {
     if value.is_finite() && value >= 0.0 {
         Ok(value)
     } else {
-        Err(format!(
-            "{value} N m is not allowed: an eddy-current brake's load is a finite torque ≥ 0 (it resists the rotation, it cannot drive it)"
-        ))
+        Err(LimitError::Load { value })
     }
 }
 
@@ -40,25 +36,21 @@ pub fn check_load_nm(value: f64) -> Result<f64, String> {
 /// limit. Beyond it the 2 hp motor cannot hold any speed, and the model's constant-torque
 /// brake would then drive the rig backwards, which an eddy-current brake cannot (its
 /// torque falls to zero with the speed).
-pub fn check_load_within_motor(load_nm: f64, params: &rig::RigParams) -> Result<(), String> {
-    let limit = params.motor_torque_limit_nm;
-    if load_nm <= limit {
+pub fn check_load_within_motor(load_nm: f64, params: &rig::RigParams) -> Result<(), LimitError> {
+    let limit_nm = params.motor_torque_limit_nm;
+    if load_nm <= limit_nm {
         Ok(())
     } else {
-        Err(format!(
-            "{load_nm} N m is more than the motor can hold (motor_torque_limit_nm = {limit:.3} N m): the rig would stop, and an eddy-current brake cannot drive it backwards"
-        ))
+        Err(LimitError::LoadAboveMotor { load_nm, limit_nm })
     }
 }
 
 /// A motor speed set point (rev/min) as an input accepts it: finite, in [0, 10 000].
-pub fn check_speed_rpm(value: f64) -> Result<f64, String> {
+pub fn check_speed_rpm(value: f64) -> Result<f64, LimitError> {
     if value.is_finite() && (0.0..=MAX_SPEED_RPM).contains(&value) && !value.is_subnormal() {
         Ok(value)
     } else {
-        Err(format!(
-            "{value} rev/min is not allowed: a speed set point lies in [0, {MAX_SPEED_RPM}] rev/min (and is 0 or a normal number, ≥ 2.2e-308)"
-        ))
+        Err(LimitError::Speed { value })
     }
 }
 
@@ -67,10 +59,55 @@ pub fn check_speed_rpm(value: f64) -> Result<f64, String> {
 pub const MAX_AVERAGES: usize = 1000;
 
 /// An analyser's number of averages, 1 to [`MAX_AVERAGES`].
-pub fn check_averages(averages: usize) -> Result<usize, String> {
+pub fn check_averages(averages: usize) -> Result<usize, LimitError> {
     if (1..=MAX_AVERAGES).contains(&averages) {
         Ok(averages)
     } else {
-        Err(format!("{averages} averages: from 1 to {MAX_AVERAGES}"))
+        Err(LimitError::Averages { averages })
     }
+}
+
+/// A value outside the bounds an input is checked against; each says what is allowed.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum LimitError {
+    /// A simulated time out of range.
+    #[error("{value} s is not allowed: a simulated time {low} and at most {MAX_SIMULATED_S} s")]
+    SimulatedTime {
+        /// The time given (s).
+        value: f64,
+        /// The lower bound as words ("> 0" or "≥ 0").
+        low: &'static str,
+    },
+    /// A brake load that is negative or not finite.
+    #[error(
+        "{value} N m is not allowed: an eddy-current brake's load is a finite torque ≥ 0 (it resists the rotation, it cannot drive it)"
+    )]
+    Load {
+        /// The load given (N m).
+        value: f64,
+    },
+    /// A brake load beyond the motor's torque limit.
+    #[error(
+        "{load_nm} N m is more than the motor can hold (motor_torque_limit_nm = {limit_nm:.3} N m): the rig would stop, and an eddy-current brake cannot drive it backwards"
+    )]
+    LoadAboveMotor {
+        /// The load given (N m).
+        load_nm: f64,
+        /// The motor's torque limit (N m).
+        limit_nm: f64,
+    },
+    /// A speed set point out of range.
+    #[error(
+        "{value} rev/min is not allowed: a speed set point lies in [0, {MAX_SPEED_RPM}] rev/min (and is 0 or a normal number, ≥ 2.2e-308)"
+    )]
+    Speed {
+        /// The speed given (rev/min).
+        value: f64,
+    },
+    /// A number of averages out of range.
+    #[error("{averages} averages: from 1 to {MAX_AVERAGES}")]
+    Averages {
+        /// The averages given.
+        averages: usize,
+    },
 }

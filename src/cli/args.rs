@@ -1,8 +1,14 @@
-//! Command-line arguments.
+//! The commands and their arguments.
 
 use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand};
+use instruments::Window;
+use testrig::runtime::Pace;
+use testrig::sweep::Shard;
+use testrig::vocabulary::choices::SamplingChoice;
+
+use super::values::{self, FilterArg, TrainingHalf};
 
 /// A virtual test rig: F. Basmaji's 1983 geared rig with backlash.
 #[derive(Debug, Parser)]
@@ -45,8 +51,8 @@ pub struct PanelArgs {
     #[arg(long, default_value = "127.0.0.1:8080")]
     pub listen: std::net::SocketAddr,
     /// 1 for real time, or a factor.
-    #[arg(long, default_value = "1")]
-    pub pace: String,
+    #[arg(long, default_value = "1", value_parser = values::pace)]
+    pub pace: Pace,
     /// Change one scenario key (repeatable), as for `run`.
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub overrides: Vec<String>,
@@ -65,8 +71,8 @@ pub struct SweepArgs {
     pub jobs: Option<usize>,
     /// Run every N-th case from K (K/N, from 0); default from SLURM_ARRAY_TASK_ID and
     /// SLURM_ARRAY_TASK_COUNT, else all.
-    #[arg(long)]
-    pub shard: Option<String>,
+    #[arg(long, value_parser = values::shard)]
+    pub shard: Option<Shard>,
     /// Skip the cases already finished in the output folder.
     #[arg(long)]
     pub resume: bool,
@@ -95,12 +101,12 @@ pub struct CalibrateArgs {
     /// Run independent search stream K of N (K/N, from 0), each with its own seed, log and
     /// share of the budget; default from SLURM_ARRAY_TASK_ID and SLURM_ARRAY_TASK_COUNT.
     /// The report and preset come from every log in the output folder.
-    #[arg(long)]
-    pub shard: Option<String>,
+    #[arg(long, value_parser = values::shard)]
+    pub shard: Option<Shard>,
     /// Search on the target points at even (or odd) positions only and score the best on
     /// the others too (cross-validation).
-    #[arg(long, value_parser = ["even", "odd"])]
-    pub train_half: Option<String>,
+    #[arg(long, value_enum)]
+    pub train_half: Option<TrainingHalf>,
     /// Change one key of the calibration file (repeatable), e.g. --set search.budget=20.
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub overrides: Vec<String>,
@@ -126,8 +132,8 @@ pub struct RunArgs {
     /// The scenario file (TOML; see scenarios/README.md).
     pub scenario: PathBuf,
     /// 1 for real time, a factor for that many times faster, or max for unpaced.
-    #[arg(long, default_value = "1")]
-    pub pace: String,
+    #[arg(long, default_value = "1", value_parser = values::pace)]
+    pub pace: Pace,
     /// Simulated length (s), instead of the scenario's.
     #[arg(long)]
     pub duration: Option<f64>,
@@ -234,8 +240,8 @@ pub struct AnalyseArgs {
     #[arg(long, default_value_t = 1024)]
     pub block: usize,
     /// Window: uniform, hanning or flattop.
-    #[arg(long, default_value = "hanning")]
-    pub window: String,
+    #[arg(long, default_value = "hanning", value_parser = values::window)]
+    pub window: Window,
     /// Spectra to average (linear: sum, then divide).
     #[arg(long, default_value_t = 10)]
     pub averages: usize,
@@ -243,11 +249,11 @@ pub struct AnalyseArgs {
     #[arg(long, default_value_t = 0.0)]
     pub overlap: f64,
     /// Sampling convention: thesis (fs = 2 Fmax, N/2 lines) or 2.56 (fs = 2.56 Fmax).
-    #[arg(long, default_value = "thesis")]
-    pub sampling: String,
+    #[arg(long, default_value = "thesis", value_parser = values::sampling)]
+    pub sampling: SamplingChoice,
     /// Anti-alias filter: none, butterworth:ORDER or bessel:ORDER.
-    #[arg(long, default_value = "none")]
-    pub filter: String,
+    #[arg(long, default_value = "none", value_parser = values::filter)]
+    pub filter: FilterArg,
     /// Filter cut-off (Hz); default Fmax.
     #[arg(long)]
     pub cutoff: Option<f64>,
