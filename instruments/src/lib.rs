@@ -19,27 +19,27 @@
 //! # Ok::<(), instruments::InstrumentError>(())
 //! ```
 
-pub mod ac_coupling;
-pub mod adc;
-pub mod analog;
-pub mod analyser;
-pub mod biquad;
-pub mod block;
-pub mod brake_drive;
-pub mod bridge;
-pub mod carrier;
-pub mod error;
-pub mod keyboard_program;
-pub mod lowpass;
-pub mod noise;
-pub mod scope;
-pub mod slip_ring;
-pub mod spectrum;
-pub mod strain;
-pub mod tacho;
-pub mod truth;
-pub mod voltmeter;
-pub mod window;
+mod ac_coupling;
+mod adc;
+mod analog;
+mod analyser;
+mod biquad;
+mod block;
+mod brake_drive;
+mod bridge;
+mod carrier;
+mod error;
+mod keyboard_program;
+mod lowpass;
+mod noise;
+mod scope;
+mod slip_ring;
+mod spectrum;
+mod strain;
+mod tacho;
+mod truth;
+mod voltmeter;
+mod window;
 
 pub use ac_coupling::AcCoupling;
 pub use adc::{Adc, AdcSettings};
@@ -51,6 +51,7 @@ pub use carrier::{CarrierDemodulator, CarrierModulator, CarrierSettings};
 pub use error::InstrumentError;
 pub use keyboard_program::{Command, KeyboardProgram};
 pub use lowpass::{AntiAliasFilter, FilterKind, LowPassSpec};
+pub use noise::GaussianSource;
 pub use scope::{Scope, ScopeSettings, Slope, SweepMode};
 pub use slip_ring::{SlipRing, SlipRingSettings};
 pub use spectrum::{Spectrum, SpectrumEstimator};

@@ -7,7 +7,7 @@
 //! [`CmaEs::tell`] takes their objectives. So the caller evaluates in parallel, logs every
 //! evaluation and, given the same seed and the same objectives, replays a search exactly.
 
-use instruments::noise::GaussianSource;
+use instruments::GaussianSource;
 use nalgebra::{DMatrix, DVector, SymmetricEigen};
 
 /// Settings of a search.
