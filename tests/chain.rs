@@ -42,7 +42,7 @@ fn stages_run_after_the_stages_they_read_and_bad_wiring_is_named() {
     let stages = ChainStages::ordered(plans).expect("wires");
     let order: Vec<&str> = stages.stages().iter().map(|s| s.output.as_str()).collect();
     assert_eq!(order, ["a_v", "b_v", "c_v"]);
-    let mut names = testrig::vocabulary::frame::SignalNames::plant();
+    let mut names = testrig::vocabulary::SignalNames::plant();
     let built = stages.build(51_200.0, &mut names).expect("builds");
     assert_eq!(built.len(), 3);
     assert_eq!(names.index("b_v"), Some(rig::COLUMN_NAMES.len() + 1));

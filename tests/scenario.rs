@@ -1,6 +1,6 @@
 //! Scenario files: `--set` edits of the text, and the pacing statistics.
 
-use testrig::runtime::pacing::LatenessHistogram;
+use testrig::runtime::LatenessHistogram;
 use testrig::scenario::apply_override;
 
 const TEXT: &str = "name = \"t\"\nduration_s = 1\n\n[schedule]\nspeed_rpm = 600\nload_nm = 2.712\n\n[chain.filter]\nkind = \"bessel\"\n";

@@ -2,20 +2,22 @@
 //! full scale, inputs, how it is built), one table of the rig's standard stages, and the
 //! builder that the scenario check, the threaded run and the sweeps' inline chain share.
 
-pub mod analyser_setup;
-pub mod chain_stages;
-pub mod inline;
-pub mod instrument;
-pub mod spectrum_metadata;
-pub mod stage;
-pub mod stage_commands;
-pub mod stage_plan;
-pub mod standard;
-pub mod voltmeters;
+pub(crate) mod analyser_setup;
+pub(crate) mod chain_stages;
+pub(crate) mod inline;
+pub(crate) mod instrument;
+pub(crate) mod spectrum_metadata;
+pub(crate) mod stage;
+pub(crate) mod stage_commands;
+pub(crate) mod stage_plan;
+pub(crate) mod standard;
+pub(crate) mod voltmeters;
 
+pub use analyser_setup::{AdcChoice, AnalyserSetting, AnalyserSetup, set_up_analyser};
 pub use chain_stages::{ChainStages, WiringError};
 pub use inline::InlineChain;
 pub use instrument::Instrument;
+pub use spectrum_metadata::{SpectrumFacts, spectrum_metadata};
 pub use stage::Stage;
 pub use stage_plan::{NamedStage, StagePlan};
 pub use standard::{StandardChain, standard_stages};

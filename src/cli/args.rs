@@ -6,7 +6,7 @@ use clap::{Args, Parser, Subcommand};
 use instruments::Window;
 use testrig::runtime::Pace;
 use testrig::sweep::Shard;
-use testrig::vocabulary::choices::SamplingChoice;
+use testrig::vocabulary::SamplingChoice;
 
 use super::values::{self, FilterArg, TrainingHalf};
 

@@ -1,8 +1,8 @@
 //! The command line: the commands and their arguments (`args.rs`), and the typed values
 //! of the flags that are not plain numbers or paths (`values.rs`).
 
-mod args;
-mod values;
+pub(crate) mod args;
+pub(crate) mod values;
 
 pub use args::*;
 pub use values::{FilterArg, TrainingHalf};

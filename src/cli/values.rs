@@ -6,7 +6,7 @@ use clap::ValueEnum;
 use instruments::{FilterKind, Window};
 use testrig::runtime::Pace;
 use testrig::sweep::Shard;
-use testrig::vocabulary::choices::SamplingChoice;
+use testrig::vocabulary::SamplingChoice;
 
 /// `--pace`: `1` (real time), a factor from 0.001 to 10⁶, or `max`.
 pub fn pace(text: &str) -> Result<Pace, String> {

@@ -7,13 +7,13 @@ use instruments::{
 };
 
 use crate::cli::{AnalyseArgs, FilterArg};
-use testrig::chain::analyser_setup::{AdcChoice, AnalyserSetting, AnalyserSetup, set_up_analyser};
-use testrig::chain::spectrum_metadata::{SpectrumFacts, spectrum_metadata};
+use testrig::chain::{AdcChoice, AnalyserSetting, AnalyserSetup, set_up_analyser};
 use testrig::chain::{ChainStages, InlineChain, Instrument, StagePlan};
+use testrig::chain::{SpectrumFacts, spectrum_metadata};
 use testrig::plots::{SpectrumPlot, write_spectrum_plots};
 use testrig::recording::{Metadata, write_spectrum_csv};
-use testrig::vocabulary::frame::{Frame, SignalNames};
-use testrig::vocabulary::signal_names::FILTER_V;
+use testrig::vocabulary::FILTER_V;
+use testrig::vocabulary::{Frame, SignalNames};
 use testrig::wav_input::{WavSignal, read_signal};
 
 /// Name of the file's channel as the filter stage reads it.

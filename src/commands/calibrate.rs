@@ -1,8 +1,8 @@
 //! `testrig calibrate`: the search, then the best set as a preset file with its report.
 
 use anyhow::{Context, bail};
-use testrig::calibrate::log::read_all_logs;
-use testrig::calibrate::objective::PointOutcome;
+use testrig::calibrate::PointOutcome;
+use testrig::calibrate::read_all_logs;
 use testrig::calibrate::{
     CalibrationFile, CalibrationResult, SearchOptions, TrainingPoints, best_record,
     build_calibration, evaluate_all, run_search, write_outputs,

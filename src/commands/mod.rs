@@ -1,14 +1,14 @@
 //! One file per command.
 
-mod analyse;
-mod calibrate;
-mod merge;
-mod modes;
-mod panel;
-mod params;
-mod run;
-mod simulate;
-mod sweep;
+pub(crate) mod analyse;
+pub(crate) mod calibrate;
+pub(crate) mod merge;
+pub(crate) mod modes;
+pub(crate) mod panel;
+pub(crate) mod params;
+pub(crate) mod run;
+pub(crate) mod simulate;
+pub(crate) mod sweep;
 
 use std::process::ExitCode;
 

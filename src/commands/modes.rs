@@ -4,7 +4,7 @@ use rig::{Chain, RigChains};
 use serde_json::json;
 
 use crate::cli::ModesArgs;
-use testrig::scenario::preset_file::preset_with_overrides;
+use testrig::scenario::preset_with_overrides;
 
 pub fn run(args: &ModesArgs) -> anyhow::Result<()> {
     let params = preset_with_overrides(&args.rig.preset, &args.rig.overrides)?;

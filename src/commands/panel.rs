@@ -7,16 +7,16 @@ use std::process::ExitCode;
 
 use anyhow::{Context, bail};
 use rig::LiveCeiling;
-use testrig::panel::server::{PanelInfo, PanelServer};
-use testrig::panel::session::Session;
-use testrig::runtime::manifest::Ending;
-use testrig::runtime::previous_run::clear_previous_run;
-use testrig::runtime::run::run_with_status;
-use testrig::runtime::status::SharedStatus;
+use testrig::panel::Session;
+use testrig::panel::{PanelInfo, PanelServer};
+use testrig::runtime::Ending;
+use testrig::runtime::SharedStatus;
+use testrig::runtime::clear_previous_run;
+use testrig::runtime::run_with_status;
 use testrig::runtime::{Pace, RunOptions, StopSignals, write_manifest};
 use testrig::scenario::{CommandLine, Plan, ScenarioSource, apply_override, build};
 use testrig::vocabulary::ControlHandle;
-use testrig::vocabulary::limits::MAX_SIMULATED_S;
+use testrig::vocabulary::MAX_SIMULATED_S;
 
 use crate::cli::PanelArgs;
 

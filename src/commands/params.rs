@@ -4,7 +4,7 @@ use rig::{DERIVED_SPECS, GearGeometry, PARAM_SPECS};
 use serde_json::json;
 
 use crate::cli::ParamsArgs;
-use testrig::scenario::preset_file::preset_with_overrides;
+use testrig::scenario::preset_with_overrides;
 
 pub fn run(args: &ParamsArgs) -> anyhow::Result<()> {
     let params = preset_with_overrides(&args.rig.preset, &args.rig.overrides)?;

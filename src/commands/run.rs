@@ -4,11 +4,11 @@ use std::io::IsTerminal;
 use std::process::ExitCode;
 
 use anyhow::{Context, bail};
-use testrig::runtime::manifest::Ending;
-use testrig::runtime::previous_run::clear_previous_run;
+use testrig::runtime::Ending;
+use testrig::runtime::clear_previous_run;
 use testrig::runtime::{Pace, RunOptions, RunResult, StopSignals, run as run_plan, write_manifest};
 use testrig::scenario::{CommandLine, ScenarioSource, build, measurement_warnings};
-use testrig::vocabulary::limits::check_simulated_s;
+use testrig::vocabulary::check_simulated_s;
 
 use crate::cli::RunArgs;
 

@@ -14,8 +14,8 @@ use serde::Serialize;
 
 use crate::cli::SimulateArgs;
 use testrig::plots::{RasterImpact, write_impact_raster};
-use testrig::scenario::preset_file::preset_with_overrides;
-use testrig::vocabulary::limits::{
+use testrig::scenario::preset_with_overrides;
+use testrig::vocabulary::{
     check_load_nm, check_load_within_motor, check_simulated_s, check_speed_rpm,
 };
 

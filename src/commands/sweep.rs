@@ -5,7 +5,7 @@ use std::io::IsTerminal;
 use anyhow::bail;
 use rig::RigChains;
 use testrig::scenario::ScenarioSource;
-use testrig::sweep::file::SweepFile;
+use testrig::sweep::SweepFile;
 use testrig::sweep::{Shard, SweepMeta, SweepOptions, build_sweep, run_sweep};
 
 use crate::cli::SweepArgs;

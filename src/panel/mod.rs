@@ -2,6 +2,8 @@
 //! the state it shows and the session file it keeps. It sits above the runtime: it reads
 //! the run's status and sends commands through the control channel.
 
-pub mod server;
-pub mod session;
-pub mod state;
+pub(crate) mod server;
+pub(crate) mod session;
+pub(crate) mod state;
+pub use server::{PanelInfo, PanelServer};
+pub use session::Session;

@@ -1,16 +1,16 @@
 //! Plots as the thesis draws them, as PNG and SVG (plotters with an embedded font, so no
 //! system font libraries are needed).
 
-pub mod bifurcation;
-pub mod canvas;
-pub mod convergence;
-pub mod frequency_map;
-pub mod impact_raster;
-pub mod regime_map;
-pub mod scope;
-pub mod spectrum;
-pub mod survey;
-pub mod waterfall;
+pub(crate) mod bifurcation;
+pub(crate) mod canvas;
+pub(crate) mod convergence;
+pub(crate) mod frequency_map;
+pub(crate) mod impact_raster;
+pub(crate) mod regime_map;
+pub(crate) mod scope;
+pub(crate) mod spectrum;
+pub(crate) mod survey;
+pub(crate) mod waterfall;
 
 pub use bifurcation::{SectionColumn, write_bifurcation};
 pub use convergence::{SearchPoint, write_convergence};

@@ -1,14 +1,14 @@
 //! Recorders: streams of samples to files that other tools read, each written under a
 //! `.partial` name until complete.
 
-pub mod cleanup;
-pub mod csv_stream;
-pub mod frame_writer;
-pub mod partial;
-pub mod spectrum_csv;
-pub mod uff58;
-pub mod uff58_stream;
-pub mod wav;
+pub(crate) mod cleanup;
+pub(crate) mod csv_stream;
+pub(crate) mod frame_writer;
+pub(crate) mod partial;
+pub(crate) mod spectrum_csv;
+pub(crate) mod uff58;
+pub(crate) mod uff58_stream;
+pub(crate) mod wav;
 
 pub use cleanup::remove_files_with_extension;
 pub use csv_stream::CsvRecorder;

@@ -1,20 +1,22 @@
 //! The runtime of `testrig run`: the paced plant, the instrument stages and the sinks as
 //! threads joined by crossbeam channels, and the run's manifest.
 
-pub mod console;
-pub mod manifest;
-pub mod pacing;
-pub mod plant_source;
-pub mod previous_run;
-pub mod process_usage;
-pub mod rolling_regime;
-pub mod run;
-pub mod sinks;
-pub mod status;
-pub mod stop_signals;
-pub mod wiring;
+pub(crate) mod console;
+pub(crate) mod manifest;
+pub(crate) mod pacing;
+pub(crate) mod plant_source;
+pub(crate) mod previous_run;
+pub(crate) mod process_usage;
+pub(crate) mod rolling_regime;
+pub(crate) mod run;
+pub(crate) mod sinks;
+pub(crate) mod status;
+pub(crate) mod stop_signals;
+pub(crate) mod wiring;
 
-pub use manifest::write_manifest;
-pub use pacing::Pace;
-pub use run::{RunOptions, RunResult, run};
+pub use manifest::{Ending, write_manifest};
+pub use pacing::{LatenessHistogram, Pace};
+pub use previous_run::clear_previous_run;
+pub use run::{RunOptions, RunResult, run, run_with_status};
+pub use status::SharedStatus;
 pub use stop_signals::StopSignals;

@@ -2,7 +2,7 @@
 //! every sink (one bounded channel per consumer, frames shared by `Arc`).
 
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::{Arc, Mutex, PoisonError};
+use std::sync::{Mutex, PoisonError};
 
 use crossbeam_channel::{Receiver, Sender, bounded};
 
@@ -73,6 +73,3 @@ pub fn run_sink(
 pub fn channel(capacity: usize) -> (Sender<Frame>, Receiver<Frame>) {
     bounded(capacity)
 }
-
-/// A stop flag shared with a Ctrl-C handler.
-pub type StopFlag = Arc<AtomicBool>;

@@ -36,13 +36,13 @@ pub struct SpeedRpm(pub f64);
 pub enum NumberError {
     /// Not finite.
     #[error("{0} is not allowed: a finite number is")]
-    NotFinite(f64),
+    Infinite(f64),
     /// Negative or not finite.
     #[error("{0} is not allowed: a finite number ≥ 0 is")]
-    NotNonNegative(f64),
+    Negative(f64),
     /// Zero, negative or not finite.
     #[error("{0} is not allowed: a finite number > 0 is")]
-    NotPositive(f64),
+    NotAboveZero(f64),
 }
 
 impl TryFrom<f64> for Finite {
@@ -51,7 +51,7 @@ impl TryFrom<f64> for Finite {
         if value.is_finite() {
             Ok(Self(value))
         } else {
-            Err(NumberError::NotFinite(value))
+            Err(NumberError::Infinite(value))
         }
     }
 }
@@ -62,7 +62,7 @@ impl TryFrom<f64> for NonNegative {
         if value.is_finite() && value >= 0.0 {
             Ok(Self(value))
         } else {
-            Err(NumberError::NotNonNegative(value))
+            Err(NumberError::Negative(value))
         }
     }
 }
@@ -73,7 +73,7 @@ impl TryFrom<f64> for Positive {
         if value.is_finite() && value > 0.0 {
             Ok(Self(value))
         } else {
-            Err(NumberError::NotPositive(value))
+            Err(NumberError::NotAboveZero(value))
         }
     }
 }

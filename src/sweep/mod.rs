@@ -1,23 +1,24 @@
 //! Sweeps: a grid of cases (speed, load, backlash, any parameter), each run at fixed set
 //! points through the chain and the analyser, in parallel, shardable and resumable.
 
-pub mod approach;
-pub mod case;
-pub mod facts;
-pub mod file;
-pub mod lines;
-pub mod meta;
-pub mod plan;
-pub mod report;
-pub mod run;
-pub mod sequence;
-pub mod series;
-pub mod shard;
-pub mod table;
-pub mod thesis;
+pub(crate) mod approach;
+pub(crate) mod case;
+pub(crate) mod facts;
+pub(crate) mod file;
+pub(crate) mod lines;
+pub(crate) mod meta;
+pub(crate) mod plan;
+pub(crate) mod report;
+pub(crate) mod run;
+pub(crate) mod sequence;
+pub(crate) mod series;
+pub(crate) mod shard;
+pub(crate) mod table;
+pub(crate) mod thesis;
 
 pub use approach::Approach;
 pub use case::{CaseResult, run_case};
+pub use file::SweepFile;
 pub use meta::{SweepMeta, read_meta};
 pub use plan::{Case, SweepPlan, build_sweep};
 pub use run::{Assembled, SweepOptions, SweepOutcome, assemble, run_sweep};

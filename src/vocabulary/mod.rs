@@ -4,16 +4,21 @@
 //! scenario names (window, filter, WAV format…). It depends on no other module of this
 //! crate.
 
-pub mod choices;
-pub mod command;
-pub mod control;
-pub mod display;
-pub mod frame;
-pub mod limits;
-pub mod seeds;
-pub mod signal_names;
+pub(crate) mod choices;
+pub(crate) mod command;
+pub(crate) mod control;
+pub(crate) mod display;
+pub(crate) mod frame;
+pub(crate) mod limits;
+pub(crate) mod seeds;
+pub(crate) mod signal_names;
 
+pub use choices::SamplingChoice;
 pub use command::{Command, Reply, Target, TimedCommand};
 pub use control::{CommandInbox, ControlHandle, Pending, Request};
 pub use display::{LiveSpectrum, LiveTrace};
 pub use frame::{Frame, SignalNames};
+pub use limits::{
+    MAX_SIMULATED_S, check_load_nm, check_load_within_motor, check_simulated_s, check_speed_rpm,
+};
+pub use signal_names::FILTER_V;

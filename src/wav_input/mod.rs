@@ -1,8 +1,8 @@
 //! Reading a WAV file (ours, scipy's 64-bit float, any recorder's) as an analogue signal,
 //! with the units and scales of its JSON sidecar when one lies beside it.
 
-mod float64;
-mod sidecar;
-mod signal;
+pub(crate) mod float64;
+pub(crate) mod sidecar;
+pub(crate) mod signal;
 
 pub use signal::{WavSignal, read_signal};

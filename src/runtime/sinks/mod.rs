@@ -1,12 +1,12 @@
 //! The ends of the chain: each consumes every frame in its own thread and writes files.
 
-pub mod analyser;
-pub mod analyser_live;
-pub mod measure_clock;
-pub mod monitor;
-pub mod recorder;
-pub mod scope;
-pub mod scope_live;
+pub(crate) mod analyser;
+pub(crate) mod analyser_live;
+pub(crate) mod measure_clock;
+pub(crate) mod monitor;
+pub(crate) mod recorder;
+pub(crate) mod scope;
+pub(crate) mod scope_live;
 
 use std::path::PathBuf;
 
