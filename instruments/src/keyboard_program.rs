@@ -27,7 +27,7 @@ use crate::spectrum::{Spectrum, SpectrumEstimator};
 
 /// One keystroke command.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Command {
+pub enum ProgramStep {
     /// `LABEL n`.
     Label(u32),
     /// `CLEAR BLOCK b`.
@@ -68,7 +68,7 @@ pub enum Command {
 /// A parsed program.
 #[derive(Clone, Debug, PartialEq)]
 pub struct KeyboardProgram {
-    commands: Vec<Command>,
+    commands: Vec<ProgramStep>,
     /// Source line (1-based) of each command, for errors.
     source_lines: Vec<usize>,
 }
@@ -101,7 +101,7 @@ impl KeyboardProgram {
     }
 
     /// The commands in order.
-    pub fn commands(&self) -> &[Command] {
+    pub fn commands(&self) -> &[ProgramStep] {
         &self.commands
     }
 
@@ -112,62 +112,19 @@ impl KeyboardProgram {
         settings: &AnalyserSettings,
         samples: &[f64],
     ) -> Result<Vec<Vec<Line>>, InstrumentError> {
-        let mut estimator =
-            SpectrumEstimator::new(settings.block, settings.sample_rate_hz(), settings.window)?;
-        let labels: HashMap<u32, usize> = self
-            .commands
-            .iter()
-            .enumerate()
-            .filter_map(|(i, c)| {
-                if let Command::Label(n) = c {
-                    Some((*n, i))
-                } else {
-                    None
-                }
-            })
-            .collect();
-        let lines = estimator.lines();
-        let mut blocks: HashMap<u32, Vec<f64>> = HashMap::new();
-        let mut passes: HashMap<usize, u32> = HashMap::new();
-        let (mut record, mut spectrum) = (Vec::new(), vec![0.0; lines]);
-        let (mut target, mut cursor, mut transformed) = (1, 0, false);
-        let mut displays = Vec::new();
+        let labels = self.labels();
+        let mut machine = Machine::new(settings, samples)?;
         let mut pc = 0;
         for _ in 0..STEP_LIMIT {
             let Some(&command) = self.commands.get(pc) else {
-                return Ok(displays);
+                return Ok(machine.displays);
             };
             let line = self.source_lines[pc];
             pc += 1;
             match command {
-                Command::Label(_) => {}
-                Command::Clear(b) => {
-                    blocks.insert(b, vec![0.0; lines]);
-                }
-                Command::AnalogIn { block, .. } => {
-                    let end = cursor + settings.block;
-                    let Some(taken) = samples.get(cursor..end) else {
-                        return Err(program_error(line, "ANALOG IN ran out of samples"));
-                    };
-                    record = taken.to_vec();
-                    cursor = end;
-                    target = block;
-                    transformed = false;
-                }
-                Command::Fourier => transformed = !record.is_empty(),
-                Command::PowerSpectrum => {
-                    if !transformed {
-                        return Err(program_error(
-                            line,
-                            "POWER SPECTRUM needs FOURIER TRANSFORM of an ANALOG IN record",
-                        ));
-                    }
-                    estimator.spectrum(&record, Spectrum::Power, &mut spectrum);
-                    let block = blocks.entry(target).or_insert_with(|| vec![0.0; lines]);
-                    block.iter_mut().zip(&spectrum).for_each(|(b, s)| *b += s);
-                }
-                Command::CountLoop { label, times } => {
-                    let count = passes.entry(pc).or_insert(0);
+                ProgramStep::End => return Ok(machine.displays),
+                ProgramStep::CountLoop { label, times } => {
+                    let count = machine.passes.entry(pc).or_insert(0);
                     *count += 1;
                     if *count < times {
                         pc = *labels.get(&label).ok_or_else(|| {
@@ -178,43 +135,136 @@ impl KeyboardProgram {
                         })?;
                     }
                 }
-                Command::Divide { block, by } => {
-                    blocks
-                        .entry(block)
-                        .or_insert_with(|| vec![0.0; lines])
-                        .iter_mut()
-                        .for_each(|v| *v /= by);
-                    target = block;
-                }
-                Command::Log => {
-                    blocks
-                        .entry(target)
-                        .or_insert_with(|| vec![0.0; lines])
-                        .iter_mut()
-                        .for_each(|v| *v = 10.0 * v.log10());
-                }
-                Command::Display => {
-                    let block = blocks
-                        .get(&target)
-                        .cloned()
-                        .unwrap_or_else(|| vec![0.0; lines]);
-                    let df = estimator.resolution_hz();
-                    displays.push(
-                        (0..settings.displayed_lines().min(lines))
-                            .map(|k| Line {
-                                frequency_hz: k as f64 * df,
-                                value: block[k],
-                            })
-                            .collect(),
-                    );
-                }
-                Command::End => return Ok(displays),
+                other => machine.execute(other, line)?,
             }
         }
         Err(program_error(
             self.source_lines.last().copied().unwrap_or(0),
             "the program did not reach END within a million steps",
         ))
+    }
+
+    /// Each label's position in the program.
+    fn labels(&self) -> HashMap<u32, usize> {
+        self.commands
+            .iter()
+            .enumerate()
+            .filter_map(|(i, c)| match c {
+                ProgramStep::Label(n) => Some((*n, i)),
+                _ => None,
+            })
+            .collect()
+    }
+}
+
+/// The analyser's state while a program runs: the data blocks, the record taken, the
+/// block a result goes to, and the displays shown so far.
+struct Machine<'a> {
+    settings: &'a AnalyserSettings,
+    samples: &'a [f64],
+    estimator: SpectrumEstimator,
+    lines: usize,
+    blocks: HashMap<u32, Vec<f64>>,
+    passes: HashMap<usize, u32>,
+    record: Vec<f64>,
+    spectrum: Vec<f64>,
+    target: u32,
+    cursor: usize,
+    transformed: bool,
+    displays: Vec<Vec<Line>>,
+}
+
+impl<'a> Machine<'a> {
+    fn new(settings: &'a AnalyserSettings, samples: &'a [f64]) -> Result<Self, InstrumentError> {
+        let estimator =
+            SpectrumEstimator::new(settings.block, settings.sample_rate_hz(), settings.window)?;
+        let lines = estimator.lines();
+        Ok(Self {
+            settings,
+            samples,
+            estimator,
+            lines,
+            blocks: HashMap::new(),
+            passes: HashMap::new(),
+            record: Vec::new(),
+            spectrum: vec![0.0; lines],
+            target: 1,
+            cursor: 0,
+            transformed: false,
+            displays: Vec::new(),
+        })
+    }
+
+    /// The data block `b`, zeroed when first used.
+    fn block(&mut self, b: u32) -> &mut Vec<f64> {
+        let lines = self.lines;
+        self.blocks.entry(b).or_insert_with(|| vec![0.0; lines])
+    }
+
+    /// Carries out one step other than the program's flow (END, COUNT LOOP), written at
+    /// program line `line`.
+    fn execute(&mut self, command: ProgramStep, line: usize) -> Result<(), InstrumentError> {
+        match command {
+            ProgramStep::Clear(b) => {
+                self.blocks.insert(b, vec![0.0; self.lines]);
+            }
+            ProgramStep::AnalogIn { block, .. } => {
+                let end = self.cursor + self.settings.block;
+                let Some(taken) = self.samples.get(self.cursor..end) else {
+                    return Err(program_error(line, "ANALOG IN ran out of samples"));
+                };
+                self.record = taken.to_vec();
+                self.cursor = end;
+                self.target = block;
+                self.transformed = false;
+            }
+            ProgramStep::Fourier => self.transformed = !self.record.is_empty(),
+            ProgramStep::PowerSpectrum => {
+                if !self.transformed {
+                    return Err(program_error(
+                        line,
+                        "POWER SPECTRUM needs FOURIER TRANSFORM of an ANALOG IN record",
+                    ));
+                }
+                self.estimator
+                    .spectrum(&self.record, Spectrum::Power, &mut self.spectrum);
+                let spectrum = std::mem::take(&mut self.spectrum);
+                let block = self.block(self.target);
+                block.iter_mut().zip(&spectrum).for_each(|(b, s)| *b += s);
+                self.spectrum = spectrum;
+            }
+            ProgramStep::Divide { block, by } => {
+                self.block(block).iter_mut().for_each(|v| *v /= by);
+                self.target = block;
+            }
+            ProgramStep::Log => {
+                let target = self.target;
+                self.block(target)
+                    .iter_mut()
+                    .for_each(|v| *v = 10.0 * v.log10());
+            }
+            ProgramStep::Display => self.display(),
+            ProgramStep::Label(_) | ProgramStep::CountLoop { .. } | ProgramStep::End => {}
+        }
+        Ok(())
+    }
+
+    /// Shows the target block: its displayed lines.
+    fn display(&mut self) {
+        let block = self
+            .blocks
+            .get(&self.target)
+            .cloned()
+            .unwrap_or_else(|| vec![0.0; self.lines]);
+        let df = self.estimator.resolution_hz();
+        self.displays.push(
+            (0..self.settings.displayed_lines().min(self.lines))
+                .map(|k| Line {
+                    frequency_hz: k as f64 * df,
+                    value: block[k],
+                })
+                .collect(),
+        );
     }
 }
 
@@ -225,31 +275,31 @@ fn program_error(line: usize, text: &str) -> InstrumentError {
     }
 }
 
-fn parse_words(words: &[&str]) -> Option<Command> {
+fn parse_words(words: &[&str]) -> Option<ProgramStep> {
     let number = |w: &str| w.parse::<u32>().ok();
     Some(match words {
-        ["LABEL", n] => Command::Label(number(n)?),
-        ["CLEAR", "BLOCK", b] => Command::Clear(number(b)?),
-        ["ANALOG", "IN", "CHANNEL", c, "BLOCK", b] => Command::AnalogIn {
+        ["LABEL", n] => ProgramStep::Label(number(n)?),
+        ["CLEAR", "BLOCK", b] => ProgramStep::Clear(number(b)?),
+        ["ANALOG", "IN", "CHANNEL", c, "BLOCK", b] => ProgramStep::AnalogIn {
             channel: number(c)?,
             block: number(b)?,
         },
-        ["FOURIER", "TRANSFORM"] => Command::Fourier,
-        ["POWER", "SPECTRUM"] => Command::PowerSpectrum,
-        ["COUNT", "LOOP", "LABEL", n, "TIMES", k] => Command::CountLoop {
+        ["FOURIER", "TRANSFORM"] => ProgramStep::Fourier,
+        ["POWER", "SPECTRUM"] => ProgramStep::PowerSpectrum,
+        ["COUNT", "LOOP", "LABEL", n, "TIMES", k] => ProgramStep::CountLoop {
             label: number(n)?,
             times: number(k)?,
         },
-        ["DIVIDE", "BLOCK", b, "BY", k] => Command::Divide {
+        ["DIVIDE", "BLOCK", b, "BY", k] => ProgramStep::Divide {
             block: number(b)?,
             by: k
                 .parse::<f64>()
                 .ok()
                 .filter(|v| *v != 0.0 && v.is_finite())?,
         },
-        ["LOG"] => Command::Log,
-        ["DISPLAY"] => Command::Display,
-        ["END"] => Command::End,
+        ["LOG"] => ProgramStep::Log,
+        ["DISPLAY"] => ProgramStep::Display,
+        ["END"] => ProgramStep::End,
         _ => return None,
     })
 }

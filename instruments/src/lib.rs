@@ -49,7 +49,7 @@ pub use brake_drive::{BrakeDrive, BrakeDriveSettings};
 pub use bridge::{BridgeArrangement, StrainBridge};
 pub use carrier::{CarrierDemodulator, CarrierModulator, CarrierSettings};
 pub use error::InstrumentError;
-pub use keyboard_program::{Command, KeyboardProgram};
+pub use keyboard_program::{KeyboardProgram, ProgramStep};
 pub use lowpass::{AntiAliasFilter, FilterKind, LowPassSpec};
 pub use noise::GaussianSource;
 pub use scope::{Scope, ScopeSettings, Slope, SweepMode};

@@ -43,6 +43,7 @@ pub mod presets;
 mod propagator;
 pub mod records;
 pub mod regime;
+mod roots;
 pub mod schedule;
 pub mod signals;
 pub mod spacing;

@@ -138,6 +138,15 @@ impl RigParams {
 
     /// Checks every value against its physical range; the error names the parameter.
     pub fn validate(&self) -> Result<(), RigError> {
+        self.check_positive()?;
+        self.check_finite()?;
+        self.check_options()?;
+        self.check_geometry()?;
+        self.check_loop_and_mesh()
+    }
+
+    /// The inertias, stiffnesses, module, controller and torque limit: finite and > 0.
+    fn check_positive(&self) -> Result<(), RigError> {
         let positive = [
             ("j1_motor_kgm2", self.j1_motor_kgm2),
             ("j2_input_flywheel_kgm2", self.j2_input_flywheel_kgm2),
@@ -169,6 +178,11 @@ impl RigParams {
         for (name, value) in positive {
             require(name, value, value > 0.0, "must be a finite number > 0")?;
         }
+        Ok(())
+    }
+
+    /// Damping, error torques and the brake slope: finite (any sign).
+    fn check_finite(&self) -> Result<(), RigError> {
         let any_finite = [
             (
                 "c12_input_shaft_nms_per_rad",
@@ -193,6 +207,11 @@ impl RigParams {
         for (name, value) in any_finite {
             require(name, value, true, "must be a finite number")?;
         }
+        Ok(())
+    }
+
+    /// The options off at 0: drags, the brake characteristic, transmission and spacing errors, residual drag.
+    fn check_options(&self) -> Result<(), RigError> {
         for (name, value) in [
             ("bearing_drag_nms_per_rad", self.bearing_drag_nms_per_rad),
             ("brake_critical_speed_rpm", self.brake_critical_speed_rpm),
@@ -222,6 +241,11 @@ impl RigParams {
             self.brake_drag_nm >= 0.0,
             "must be a finite torque ≥ 0 N m",
         )?;
+        Ok(())
+    }
+
+    /// The gears: teeth, pressure angle, addendum, centre-distance shift.
+    fn check_geometry(&self) -> Result<(), RigError> {
         let teeth = f64::from(self.teeth);
         require(
             "teeth",
@@ -250,6 +274,11 @@ impl RigParams {
             shift >= 0.0 && shift < self.module_m,
             "must lie in [0, module_m)",
         )?;
+        Ok(())
+    }
+
+    /// The speed loop, the mesh stiffness smoothing and the backlash variation.
+    fn check_loop_and_mesh(&self) -> Result<(), RigError> {
         let loop_hz = self.speed_loop_hz;
         require(
             "speed_loop_hz",

@@ -8,12 +8,12 @@ use serde::{Deserialize, Serialize};
 use crate::sweep::{Approach, Case, Direction, run_case};
 use crate::vocabulary::seeds::case_seed;
 
+use super::calibration_plan::{ApproachKind, CalibrationPlan, Expect, Scoring, TargetPoint};
 use super::free_param::params_at;
 use super::objective::{
     FAILED_LOSS_DB, LOSS_CAP_DB, PointOutcome, hinge_db, motion_loss_db, motion_matches,
     natural_loss_db, verdict_matches,
 };
-use super::plan::{ApproachKind, CalibrationPlan, Expect, Scoring, TargetPoint};
 
 /// One candidate's result.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]

@@ -6,7 +6,7 @@ use rig::judge::{
 };
 use serde::{Deserialize, Serialize};
 
-use super::plan::{Expect, NaturalTarget};
+use super::calibration_plan::{Expect, NaturalTarget};
 
 /// Largest loss one point adds (dB): a point far off counts no more than this.
 pub const LOSS_CAP_DB: f64 = 40.0;
@@ -115,7 +115,7 @@ mod tests {
     use rig::judge::{Judgement, Motion};
 
     use super::{LOSS_CAP_DB, motion_loss_db, motion_matches};
-    use crate::calibrate::plan::Expect;
+    use crate::calibrate::calibration_plan::Expect;
 
     fn judged(
         motion: Motion,

@@ -6,11 +6,11 @@ use std::path::{Path, PathBuf};
 
 use serde::Serialize;
 
+use super::calibration_plan::{ApproachKind, CalibrationPlan};
 use super::evaluate::Evaluation;
 use super::free_param::{FreeRange, params_at};
 use super::log::EvaluationRecord;
 use super::objective::PointOutcome;
-use super::plan::{ApproachKind, CalibrationPlan};
 use crate::plots::{SearchPoint, write_convergence};
 use crate::recording::PartialFile;
 use crate::scenario::preset_file::is_preset_file;

@@ -8,10 +8,10 @@ use std::time::Instant;
 
 use anyhow::bail;
 
+use super::calibration_plan::{CalibrationPlan, TargetPoint};
 use super::cma_es::{CmaEs, CmaSettings};
 use super::evaluate::{Evaluation, evaluate_all};
 use super::log::{EvaluationRecord, append, log_path, read_log, start_log};
-use super::plan::{CalibrationPlan, TargetPoint};
 use crate::sweep::Shard;
 use crate::vocabulary::seeds::case_seed;
 

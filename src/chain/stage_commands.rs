@@ -5,19 +5,19 @@
 use instruments::LowPassSpec;
 
 use crate::chain::{Instrument, NamedStage};
-use crate::vocabulary::command::{Command, Target};
+use crate::vocabulary::command::{RigCommand, Target};
 
 /// Highest carrier amplifier gain accepted (V/V): far beyond the 3C66's.
 const MAX_GAIN: f64 = 1.0e6;
 
 /// Carries out `command` if it is for `stage`: `Some(outcome)`, else `None`.
-pub fn apply_to_stage(stage: &mut NamedStage, command: &Command) -> Option<Result<(), String>> {
+pub fn apply_to_stage(stage: &mut NamedStage, command: &RigCommand) -> Option<Result<(), String>> {
     match command.target() {
         Target::Stage(output) if output == stage.output => {}
         _ => return None,
     }
     let instrument = match command {
-        Command::SetFilter {
+        RigCommand::SetFilter {
             kind,
             order,
             cutoff_hz,
@@ -34,7 +34,7 @@ pub fn apply_to_stage(stage: &mut NamedStage, command: &Command) -> Option<Resul
                 cutoff_hz: *cutoff_hz,
             }))
         }
-        Command::SetAmplifierGain { gain } => {
+        RigCommand::SetAmplifierGain { gain } => {
             let Instrument::CarrierDemodulator(mut settings) = stage.plan.instrument.clone() else {
                 return Some(Err(format!(
                     "`{}` is not the carrier amplifier",

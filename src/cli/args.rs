@@ -16,12 +16,12 @@ use super::values::{self, FilterArg, TrainingHalf};
 pub struct Cli {
     /// What to do.
     #[command(subcommand)]
-    pub command: Command,
+    pub command: CliCommand,
 }
 
 /// The commands.
 #[derive(Debug, Subcommand)]
-pub enum Command {
+pub enum CliCommand {
     /// Natural frequencies (Hz) and mode shapes of the rig (thesis App. C).
     Modes(ModesArgs),
     /// Run the plant alone, unpaced, at a set speed and load.

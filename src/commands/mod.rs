@@ -12,21 +12,21 @@ pub(crate) mod sweep;
 
 use std::process::ExitCode;
 
-use crate::cli::Command;
+use crate::cli::CliCommand;
 
 /// Runs one command; the exit status on success (128 + the signal's number for a run
 /// stopped by SIGINT, SIGTERM or SIGHUP; 3 for a `--strict` run that ended with warnings).
-pub fn run(command: Command) -> anyhow::Result<ExitCode> {
+pub fn run(command: CliCommand) -> anyhow::Result<ExitCode> {
     let done = match command {
-        Command::Modes(args) => modes::run(&args),
-        Command::Simulate(args) => simulate::run(&args),
-        Command::Params(args) => params::run(&args),
-        Command::Analyse(args) => analyse::run(&args),
-        Command::Run(args) => return run::run(&args),
-        Command::Sweep(args) => sweep::run(&args),
-        Command::Merge(args) => merge::run(&args),
-        Command::Calibrate(args) => calibrate::run(&args),
-        Command::Panel(args) => return panel::run(&args),
+        CliCommand::Modes(args) => modes::run(&args),
+        CliCommand::Simulate(args) => simulate::run(&args),
+        CliCommand::Params(args) => params::run(&args),
+        CliCommand::Analyse(args) => analyse::run(&args),
+        CliCommand::Run(args) => return run::run(&args),
+        CliCommand::Sweep(args) => sweep::run(&args),
+        CliCommand::Merge(args) => merge::run(&args),
+        CliCommand::Calibrate(args) => calibrate::run(&args),
+        CliCommand::Panel(args) => return panel::run(&args),
     };
     done.map(|()| ExitCode::SUCCESS)
 }

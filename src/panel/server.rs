@@ -14,7 +14,7 @@ use tiny_http::{Header, Request, Response, Server, StatusCode};
 
 use super::state::PanelState;
 use crate::runtime::status::SharedStatus;
-use crate::vocabulary::command::{Command, Reply};
+use crate::vocabulary::command::{Reply, RigCommand};
 use crate::vocabulary::control::ControlHandle;
 
 /// How often the stream sends the state (s).
@@ -156,7 +156,7 @@ fn command_reply(request: &mut Request, control: &ControlHandle) -> Reply {
     let parsed = read
         .map_err(|e| format!("cannot read the body: {e}"))
         .and_then(|_| {
-            serde_json::from_str::<Command>(&body).map_err(|e| format!("not a command: {e}"))
+            serde_json::from_str::<RigCommand>(&body).map_err(|e| format!("not a command: {e}"))
         });
     match parsed {
         Ok(command) => control.send(command),

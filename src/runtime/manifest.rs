@@ -7,7 +7,7 @@ use serde_json::{Value, json};
 use sha2::{Digest, Sha256};
 
 use super::pacing::Pace;
-use super::run::RunResult;
+use super::threaded_run::RunResult;
 use crate::recording::PartialFile;
 use crate::scenario::Plan;
 

@@ -8,15 +8,15 @@ pub(crate) mod plant_source;
 pub(crate) mod previous_run;
 pub(crate) mod process_usage;
 pub(crate) mod rolling_regime;
-pub(crate) mod run;
 pub(crate) mod sinks;
 pub(crate) mod status;
 pub(crate) mod stop_signals;
+pub(crate) mod threaded_run;
 pub(crate) mod wiring;
 
 pub use manifest::{Ending, write_manifest};
 pub use pacing::{LatenessHistogram, Pace};
 pub use previous_run::clear_previous_run;
-pub use run::{RunOptions, RunResult, run, run_with_status};
 pub use status::SharedStatus;
 pub use stop_signals::StopSignals;
+pub use threaded_run::{RunOptions, RunResult, run, run_with_status};

@@ -13,7 +13,7 @@ use super::status::SharedStatus;
 use crate::scenario::Overflow;
 use crate::vocabulary::frame::Frame;
 use crate::vocabulary::limits::{check_load_nm, check_load_within_motor, check_speed_rpm};
-use crate::vocabulary::{Command, CommandInbox, Pending};
+use crate::vocabulary::{CommandInbox, Pending, RigCommand};
 
 /// Overrun times kept (the count goes on beyond).
 const OVERRUN_TIMES_KEPT: usize = 1000;
@@ -142,13 +142,13 @@ fn take_commands(job: &mut PlantJob, start_sample: u64, at_s: f64) -> Vec<Pendin
     for pending in job.inbox.due(start_sample, at_s) {
         let mut set = job.plant.set_points();
         match pending.command {
-            Command::SetSpeed { rpm } => set.speed_rpm = rpm,
-            Command::SetLoad { nm } => set.load_nm = nm,
-            Command::SetOscillatingLoad { nm, hz } => {
+            RigCommand::SetSpeed { rpm } => set.speed_rpm = rpm,
+            RigCommand::SetLoad { nm } => set.load_nm = nm,
+            RigCommand::SetOscillatingLoad { nm, hz } => {
                 set.oscillating_load_nm = nm;
                 set.oscillating_load_hz = hz;
             }
-            Command::Quit => {
+            RigCommand::Quit => {
                 job.stop.store(true, Ordering::Relaxed);
                 pending.answer(Ok(()));
                 continue;

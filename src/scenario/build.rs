@@ -1,11 +1,11 @@
 //! From a parsed scenario file to a checked [`Plan`].
 
-use super::chain_part::{analyser_plan, chain_plan, record_plan};
-use super::file::ScenarioFile;
-use super::plan::{Plan, RecordPlan};
-use super::rig_part::{rig_params, schedule_and_measures};
+use super::read_chain::{analyser_plan, chain_plan, record_plan};
+use super::read_rig::{rig_params, schedule_and_measures};
+use super::read_stages::read_signal;
+use super::run_plan::{Plan, RecordPlan};
+use super::scenario_toml::ScenarioFile;
 use super::source::ScenarioSource;
-use super::stage_part::read_signal;
 use super::values::Positive;
 use crate::vocabulary::choices::WavFormat;
 use crate::vocabulary::limits::{check_load_within_motor, check_simulated_s};

@@ -5,7 +5,7 @@
 
 use instruments::AnalyserSettings;
 
-use super::plan::Plan;
+use super::run_plan::Plan;
 
 /// Time (s) the analyser needs for its whole average: the first block and a hop
 /// for each further one.

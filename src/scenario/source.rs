@@ -6,8 +6,8 @@ use std::path::{Path, PathBuf};
 
 use anyhow::anyhow;
 
-use super::file::ScenarioFile;
 use super::overrides::{SET_MARK, apply_override};
+use super::scenario_toml::ScenarioFile;
 
 /// A scenario file as read from disk.
 #[derive(Clone, Debug)]

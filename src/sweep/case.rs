@@ -7,8 +7,8 @@ use rig::{
 };
 use serde::{Deserialize, Serialize};
 
+use super::grid::{Case, SweepPlan};
 use super::lines::{OrderLine, order_line, peaks};
-use super::plan::{Case, SweepPlan};
 use super::sequence::Direction;
 use crate::chain::InlineChain;
 use crate::runtime::rolling_regime::REGIME_WINDOW_S;

@@ -6,7 +6,7 @@
 use rig::{Plant, Schedule, Track};
 
 use super::case::{CaseResult, chain_lead_s, measure_case, measured_samples, plant_config};
-use super::plan::{Case, SweepPlan};
+use super::grid::{Case, SweepPlan};
 
 /// Time over which the speed knob is turned from one point to the next (s): the
 /// operator's few seconds; the speed loop (0.5 Hz) follows within about as long.

@@ -9,7 +9,7 @@ use crate::vocabulary::signal_names::{AMPLIFIER_V, FILTER_V};
 /// One command.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "cmd", rename_all = "snake_case", deny_unknown_fields)]
-pub enum Command {
+pub enum RigCommand {
     /// Motor speed set point (rev/min).
     SetSpeed {
         /// rev/min.
@@ -128,7 +128,7 @@ pub enum Target {
     Displays,
 }
 
-impl Command {
+impl RigCommand {
     /// Who carries it out.
     pub fn target(&self) -> Target {
         match self {
@@ -157,7 +157,7 @@ pub struct TimedCommand {
     pub at_s: f64,
     /// The command.
     #[serde(flatten)]
-    pub command: Command,
+    pub command: RigCommand,
 }
 
 /// The answer to a command.

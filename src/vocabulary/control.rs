@@ -10,7 +10,7 @@ use std::time::Duration;
 
 use crossbeam_channel::{Receiver, Sender, bounded, unbounded};
 
-use super::command::{Command, Reply, Target, TimedCommand};
+use super::command::{Reply, RigCommand, Target, TimedCommand};
 
 /// How long a sender waits for the answer (s of wall time).
 const ANSWER_WAIT_S: f64 = 10.0;
@@ -22,7 +22,7 @@ pub type Answer = (u64, Reply);
 #[derive(Clone, Debug)]
 pub struct Pending {
     /// The command.
-    pub command: Command,
+    pub command: RigCommand,
     /// Virtual time it takes effect at (s).
     pub at_s: f64,
     /// The order the plant's thread took it in.
@@ -48,7 +48,7 @@ impl Pending {
 /// A command as sent, before the plant's thread takes it.
 #[derive(Debug)]
 pub struct Request {
-    command: Command,
+    command: RigCommand,
     answer: Sender<Answer>,
 }
 
@@ -71,7 +71,7 @@ impl ControlHandle {
     }
 
     /// Sends `command` and waits for its answer; an accepted command joins the log.
-    pub fn send(&self, command: Command) -> Reply {
+    pub fn send(&self, command: RigCommand) -> Reply {
         let (answer, answers) = bounded(1);
         let request = Request {
             command: command.clone(),
@@ -122,7 +122,7 @@ fn refused(why: &str) -> Reply {
 /// the requests of scripts and pages.
 #[derive(Debug)]
 pub struct CommandInbox {
-    scheduled: VecDeque<(u64, Command)>,
+    scheduled: VecDeque<(u64, RigCommand)>,
     scheduled_answers: (Sender<Answer>, Receiver<Answer>),
     live: Option<Receiver<Request>>,
     targets: Vec<Target>,
@@ -139,7 +139,7 @@ impl CommandInbox {
         targets: Vec<Target>,
         rate_hz: f64,
     ) -> Self {
-        let mut scheduled: Vec<(u64, Command)> = scheduled
+        let mut scheduled: Vec<(u64, RigCommand)> = scheduled
             .iter()
             .map(|c| ((c.at_s * rate_hz).round() as u64, c.command.clone()))
             .collect();
@@ -223,7 +223,7 @@ pub fn refusals(answers: &Receiver<Answer>) -> Vec<String> {
 }
 
 /// The command's `cmd` name.
-pub fn command_name(command: &Command) -> String {
+pub fn command_name(command: &RigCommand) -> String {
     serde_json::to_value(command)
         .ok()
         .and_then(|v| v.get("cmd").and_then(|c| c.as_str()).map(str::to_string))

@@ -14,7 +14,7 @@ pub(crate) mod seeds;
 pub(crate) mod signal_names;
 
 pub use choices::SamplingChoice;
-pub use command::{Command, Reply, Target, TimedCommand};
+pub use command::{Reply, RigCommand, Target, TimedCommand};
 pub use control::{CommandInbox, ControlHandle, Pending, Request};
 pub use display::{LiveSpectrum, LiveTrace};
 pub use frame::{Frame, SignalNames};

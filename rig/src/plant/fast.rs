@@ -9,7 +9,7 @@ use crate::fused_step::{FUSED_ROWS, FusedRows, MAX_ROW_EVENTS};
 use crate::layout::{Layout, N_MECH};
 
 use super::output::within_bounds;
-use super::segments::rotate;
+use super::segment_start::rotate;
 use super::state::{Plant, RESYNC_STEPS};
 use super::stepping::StepEnds;
 

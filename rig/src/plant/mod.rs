@@ -13,7 +13,7 @@ mod fast;
 mod mesh_position;
 mod output;
 mod segment;
-mod segments;
+mod segment_start;
 mod state;
 mod stepping;
 mod switches;

@@ -2,14 +2,15 @@
 //! exact path that locates every switch and continues from it.
 
 use crate::error::RigError;
-use crate::events::{EventFn, EventKind, first_crossing, may_cross};
+use crate::events::{EventFn, EventKind};
 use crate::fused_step::{FUSED_ROWS, FusedRows, MAX_ROW_EVENTS};
 use crate::jump_response::GEAR_ANGLES;
 use crate::layout::{Layout, N_MECH, V0, X0};
 use crate::propagator::ModeSystem;
+use crate::roots::{first_crossing, may_cross};
 use crate::taylor::TAYLOR_ORDER;
 
-use super::segments::rotate;
+use super::segment_start::rotate;
 use super::state::{Plant, RESYNC_STEPS, SWITCH_LIMIT};
 
 impl Plant {

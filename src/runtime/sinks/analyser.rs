@@ -17,7 +17,7 @@ use crate::recording::{
 };
 use crate::runtime::status::SharedStatus;
 use crate::scenario::{AnalyserPlan, Measure, Plan};
-use crate::vocabulary::Command;
+use crate::vocabulary::RigCommand;
 use crate::vocabulary::frame::Frame;
 
 /// The analyser with its ADC and the alias truth.
@@ -268,7 +268,7 @@ fn write_spectrum_uff(
 }
 
 impl Sink for AnalyserSink {
-    fn command(&mut self, command: &Command, frame: &Frame) -> Option<Result<(), String>> {
+    fn command(&mut self, command: &RigCommand, frame: &Frame) -> Option<Result<(), String>> {
         self.carry_out(command, frame)
     }
 

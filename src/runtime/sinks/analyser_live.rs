@@ -11,7 +11,7 @@ use crate::chain::analyser_setup::{
 };
 use crate::scenario::Measure;
 use crate::vocabulary::frame::Frame;
-use crate::vocabulary::{Command, LiveSpectrum};
+use crate::vocabulary::{LiveSpectrum, RigCommand};
 
 impl AnalyserSink {
     /// Publishes the display on the panel after every block averaged.
@@ -22,18 +22,18 @@ impl AnalyserSink {
     /// Carries out `command` (at `frame`'s start) if it is the analyser's.
     pub(super) fn carry_out(
         &mut self,
-        command: &Command,
+        command: &RigCommand,
         frame: &Frame,
     ) -> Option<Result<(), String>> {
         let outcome = match command {
-            Command::StartAverage => self.start_now(frame),
-            Command::HoldAverage => self.close_measurement().map_err(|e| format!("{e:#}")),
-            Command::SetAdcRange { range_v } => self.set_adc(AdcSettings {
+            RigCommand::StartAverage => self.start_now(frame),
+            RigCommand::HoldAverage => self.close_measurement().map_err(|e| format!("{e:#}")),
+            RigCommand::SetAdcRange { range_v } => self.set_adc(AdcSettings {
                 range_v: *range_v,
                 ..self.plan.adc
             }),
-            Command::SetAnalyser { .. } => self.set_analyser(command),
-            Command::SaveDisplays => self.save().map_err(|e| format!("{e:#}")),
+            RigCommand::SetAnalyser { .. } => self.set_analyser(command),
+            RigCommand::SaveDisplays => self.save().map_err(|e| format!("{e:#}")),
             _ => return None,
         };
         if outcome.is_ok() && self.live {
@@ -70,8 +70,8 @@ impl AnalyserSink {
     }
 
     /// New analyser settings; the average under way is written and a fresh one started.
-    fn set_analyser(&mut self, command: &Command) -> Result<(), String> {
-        let Command::SetAnalyser {
+    fn set_analyser(&mut self, command: &RigCommand) -> Result<(), String> {
+        let RigCommand::SetAnalyser {
             fmax_hz,
             block,
             window,

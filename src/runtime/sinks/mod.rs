@@ -10,7 +10,7 @@ pub(crate) mod scope_live;
 
 use std::path::PathBuf;
 
-use crate::vocabulary::Command;
+use crate::vocabulary::RigCommand;
 use crate::vocabulary::frame::Frame;
 
 /// A consumer of frames.
@@ -21,7 +21,7 @@ pub trait Sink: Send {
     fn finish(self: Box<Self>) -> anyhow::Result<SinkReport>;
     /// Carries out `command` (taking effect at `frame`'s start, before its samples) if it
     /// is this sink's: `Some(outcome)`, else `None`.
-    fn command(&mut self, _command: &Command, _frame: &Frame) -> Option<Result<(), String>> {
+    fn command(&mut self, _command: &RigCommand, _frame: &Frame) -> Option<Result<(), String>> {
         None
     }
 }

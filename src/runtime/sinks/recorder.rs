@@ -12,7 +12,7 @@ use crate::recording::{
 };
 use crate::runtime::status::SharedStatus;
 use crate::scenario::{Plan, RecordPlan};
-use crate::vocabulary::Command;
+use crate::vocabulary::RigCommand;
 use crate::vocabulary::choices::WavFormat;
 use crate::vocabulary::frame::{Frame, SignalNames};
 use crate::vocabulary::signal_names::STRAIN;
@@ -202,8 +202,8 @@ fn uff_channel(plan: &Plan, name: &str, index: usize) -> Uff58Channel {
 }
 
 impl Sink for RecorderSink {
-    fn command(&mut self, command: &Command, _frame: &Frame) -> Option<Result<(), String>> {
-        let Command::Record { on } = command else {
+    fn command(&mut self, command: &RigCommand, _frame: &Frame) -> Option<Result<(), String>> {
+        let RigCommand::Record { on } = command else {
             return None;
         };
         let dir = self.dir.clone();

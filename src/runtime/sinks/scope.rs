@@ -13,7 +13,7 @@ use crate::plots::write_scope_plots;
 use crate::recording::CsvRecorder;
 use crate::runtime::status::SharedStatus;
 use crate::scenario::{Measure, Plan, ScopePlan};
-use crate::vocabulary::Command;
+use crate::vocabulary::RigCommand;
 use crate::vocabulary::frame::Frame;
 
 /// The scope.
@@ -76,11 +76,11 @@ impl ScopeSink {
 
     /// Carries out `command` (at `frame`'s start) if it is the scope's. Saving the
     /// displays is answered by the analyser; the scope saves its trace beside it.
-    fn carry_out(&mut self, command: &Command, frame: &Frame) -> Option<Result<(), String>> {
+    fn carry_out(&mut self, command: &RigCommand, frame: &Frame) -> Option<Result<(), String>> {
         match command {
-            Command::SetScope { .. } => Some(self.set_scales(command)),
-            Command::ArmScope => Some(self.arm_now(frame)),
-            Command::SaveDisplays => {
+            RigCommand::SetScope { .. } => Some(self.set_scales(command)),
+            RigCommand::ArmScope => Some(self.arm_now(frame)),
+            RigCommand::SaveDisplays => {
                 if let Err(e) = self.save() {
                     eprintln!("testrig: the scope's trace was not saved: {e:#}");
                 }
@@ -90,8 +90,8 @@ impl ScopeSink {
         }
     }
 
-    fn set_scales(&mut self, command: &Command) -> Result<(), String> {
-        let Command::SetScope {
+    fn set_scales(&mut self, command: &RigCommand) -> Result<(), String> {
+        let RigCommand::SetScope {
             volts_per_div,
             seconds_per_div,
             trigger_v,
@@ -200,7 +200,7 @@ impl ScopeSink {
 }
 
 impl Sink for ScopeSink {
-    fn command(&mut self, command: &Command, frame: &Frame) -> Option<Result<(), String>> {
+    fn command(&mut self, command: &RigCommand, frame: &Frame) -> Option<Result<(), String>> {
         self.carry_out(command, frame)
     }
 

@@ -6,11 +6,11 @@ use std::path::Path;
 use rig::RigParams;
 
 use crate::scenario::ScenarioSource;
-use crate::sweep::file::SweepFile;
-use crate::sweep::plan::case_timing;
+use crate::sweep::grid::case_timing;
+use crate::sweep::sweep_toml::SweepFile;
 use crate::sweep::{SweepPlan, build_sweep};
 
-use super::file::{CalibrationFile, FreeFile};
+use super::calibration_toml::{CalibrationFile, FreeFile};
 use super::free_param::{FreeParam, FreeRange, params_at};
 
 /// The finding expected at a point.

@@ -3,9 +3,9 @@
 use rig::{RigParams, Schedule, Track};
 use toml::Spanned;
 
-use super::file::{ChangeFile, RigFile, ScenarioFile, ScheduleFile, SurveyFile};
-use super::plan::Measure;
 use super::preset_file::preset_params;
+use super::run_plan::Measure;
+use super::scenario_toml::{ChangeFile, RigFile, ScenarioFile, ScheduleFile, SurveyFile};
 use super::source::ScenarioSource;
 
 /// Preset name when the scenario names none.
@@ -113,7 +113,7 @@ fn schedule_of(src: &ScenarioSource, file: &Spanned<ScheduleFile>) -> anyhow::Re
 
 /// Brake torque amplitude (N m) from the generator's current amplitude through the coil's
 /// first-order lag at the set frequency (the steady state; the coil's transient is left out).
-fn oscillating_torque_nm(fg: &super::file::FunctionGeneratorFile) -> f64 {
+fn oscillating_torque_nm(fg: &super::scenario_toml::FunctionGeneratorFile) -> f64 {
     let omega_tau = std::f64::consts::TAU * fg.frequency_hz.0 * fg.coil_time_constant_s.0;
     fg.amplitude_a.0 * fg.torque_per_amp.0 / (1.0 + omega_tau * omega_tau).sqrt()
 }

@@ -5,7 +5,7 @@ use serde::Deserialize;
 use toml::Spanned;
 
 use crate::scenario::values::{LoadNm, Positive, SpeedRpm};
-use crate::sweep::file::CaseFile;
+use crate::sweep::sweep_toml::CaseFile;
 
 /// The whole file.
 #[derive(Debug, Deserialize)]

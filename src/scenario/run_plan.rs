@@ -4,7 +4,7 @@ use crate::vocabulary::choices::WavFormat;
 use instruments::{AdcSettings, AnalyserSettings, ScopeSettings};
 use rig::{RigParams, Schedule};
 
-use super::file::Overflow;
+use super::scenario_toml::Overflow;
 use crate::chain::ChainStages;
 
 /// Everything a run needs, checked.

@@ -7,7 +7,7 @@ use serde::Deserialize;
 use toml::Spanned;
 
 use super::sequence::Sequence;
-use crate::scenario::file::{AnalyserFile, ChainFile, RigFile};
+use crate::scenario::scenario_toml::{AnalyserFile, ChainFile, RigFile};
 use crate::scenario::values::{LoadNm, Positive, SpeedRpm};
 
 /// The whole file.

@@ -6,8 +6,8 @@ use std::ops::Range;
 
 use toml::Spanned;
 
-use super::chain_file::{ChainFile, StageFile};
-use super::instrument_part::{filter_spec, meter_settings};
+use super::chain_toml::{ChainFile, StageFile};
+use super::read_instrument::{filter_spec, meter_settings};
 use super::source::ScenarioSource;
 use crate::chain::{
     ChainStages, Instrument, StagePlan, StandardChain, WiringError, standard_stages,

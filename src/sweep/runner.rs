@@ -9,8 +9,8 @@ use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rayon::prelude::*;
 
 use super::case::{CaseResult, run_case};
+use super::grid::{Case, SweepPlan};
 use super::meta::{SweepMeta, read_meta, write_meta};
-use super::plan::{Case, SweepPlan};
 use super::report::write_report;
 use super::sequence::Direction;
 use super::series::run_series;

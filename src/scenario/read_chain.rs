@@ -6,12 +6,12 @@ use instruments::{
 };
 use toml::Spanned;
 
-use super::chain_file::AmplifierFile;
-use super::file::{AnalyserFile, ChainFile, RecordFile};
-use super::instrument_part::{filter_spec, meter_settings};
-use super::plan::{AnalyserPlan, ChainPlan, RecordPlan, ScopePlan};
+use super::chain_toml::AmplifierFile;
+use super::read_instrument::{filter_spec, meter_settings};
+use super::read_stages::{read_signal, wired_stages};
+use super::run_plan::{AnalyserPlan, ChainPlan, RecordPlan, ScopePlan};
+use super::scenario_toml::{AnalyserFile, ChainFile, RecordFile};
 use super::source::ScenarioSource;
-use super::stage_part::{read_signal, wired_stages};
 use crate::chain::analyser_setup::{AdcChoice, AnalyserSetting, set_up_analyser};
 use crate::chain::{ChainStages, DvmSettings, StandardChain};
 use crate::vocabulary::choices::RecordFormatChoice;

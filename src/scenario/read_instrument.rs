@@ -1,9 +1,9 @@
 //! The settings of single instruments read from their tables, shared by the standard
-//! chain (`chain_part.rs`) and further stages (`stage_part.rs`).
+//! chain (`read_chain.rs`) and further stages (`read_stages.rs`).
 
 use instruments::LowPassSpec;
 
-use super::chain_file::{DEFAULT_CUTOFF_HZ, FilterFile, MeterFile};
+use super::chain_toml::{DEFAULT_CUTOFF_HZ, FilterFile, MeterFile};
 use super::source::ScenarioSource;
 use crate::chain::MeterSettings;
 

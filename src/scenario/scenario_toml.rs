@@ -6,7 +6,7 @@ use std::collections::BTreeMap;
 use serde::Deserialize;
 use toml::Spanned;
 
-pub use super::chain_file::{AnalyserFile, ChainFile};
+pub use super::chain_toml::{AnalyserFile, ChainFile};
 use super::values::{LoadNm, NonNegative, Positive, SpeedRpm};
 use crate::vocabulary::TimedCommand;
 use crate::vocabulary::choices::{RecordFormatChoice, WavFormatChoice};

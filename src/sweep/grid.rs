@@ -3,15 +3,15 @@
 use rig::RigParams;
 
 use crate::scenario::build::stream_rate_hz;
-use crate::scenario::chain_part::{analyser_plan, chain_plan};
-use crate::scenario::rig_part::rig_params;
-use crate::scenario::stage_part::read_signal;
+use crate::scenario::read_chain::{analyser_plan, chain_plan};
+use crate::scenario::read_rig::rig_params;
+use crate::scenario::read_stages::read_signal;
 use crate::scenario::{AnalyserPlan, ChainPlan, ScenarioSource};
 use crate::vocabulary::limits::{check_load_within_motor, check_simulated_s};
 
 use super::approach::Approach;
-use super::file::{CaseFile, GridFile, SweepFile};
 use super::sequence::{Direction, Sequence};
+use super::sweep_toml::{CaseFile, GridFile, SweepFile};
 use crate::vocabulary::seeds::case_seed;
 
 /// Everything a sweep needs, checked.
