@@ -1,6 +1,6 @@
 //! `testrig params`: every parameter with value, unit and meaning.
 
-use rig::{DERIVED_SPECS, GearGeometry, PARAM_SPECS};
+use rig::{DERIVED_SPECS, GearGeometry, PARAM_SPECS, ParamSpec};
 use serde_json::json;
 
 use crate::cli::ParamsArgs;
@@ -49,45 +49,36 @@ pub fn run(args: &ParamsArgs) -> anyhow::Result<()> {
         ),
     ];
     if args.json {
-        let list: Vec<_> = PARAM_SPECS
-            .iter()
-            .map(|s| json!({"name": s.name, "value": s.value(&params), "unit": s.unit, "meaning": s.meaning}))
-            .collect();
+        let as_json = |specs: &[ParamSpec]| -> Vec<_> {
+            specs
+                .iter()
+                .map(|s| json!({"name": s.name, "value": s.value(&params), "unit": s.unit, "meaning": s.meaning}))
+                .collect()
+        };
         let derived: Vec<_> = derived
             .iter()
             .map(|(n, v, u, m)| json!({"name": n, "value": v, "unit": u, "meaning": m}))
             .collect();
-        let settable: Vec<_> = DERIVED_SPECS
-            .iter()
-            .map(|s| json!({"name": s.name, "value": s.value(&params), "unit": s.unit, "meaning": s.meaning}))
-            .collect();
         println!(
             "{}",
-            json!({"preset": args.rig.preset, "parameters": list, "derived_settable": settable, "derived": derived})
+            json!({"preset": args.rig.preset, "parameters": as_json(PARAM_SPECS), "derived_settable": as_json(DERIVED_SPECS), "derived": derived})
         );
         return Ok(());
     }
     println!("preset {}", args.rig.preset);
     println!("{:<36} {:>14} {:<10} meaning", "name", "value", "unit");
-    for spec in PARAM_SPECS {
-        println!(
-            "{:<36} {:>14} {:<10} {}",
-            spec.name,
-            spec.value(&params),
-            spec.unit,
-            spec.meaning
-        );
-    }
+    let print_rows = |specs: &[ParamSpec]| {
+        for spec in specs {
+            let value = spec.value(&params);
+            println!(
+                "{:<36} {value:>14} {:<10} {}",
+                spec.name, spec.unit, spec.meaning
+            );
+        }
+    };
+    print_rows(PARAM_SPECS);
     println!("\nderived, settable by name");
-    for spec in DERIVED_SPECS {
-        println!(
-            "{:<36} {:>14} {:<10} {}",
-            spec.name,
-            spec.value(&params),
-            spec.unit,
-            spec.meaning
-        );
-    }
+    print_rows(DERIVED_SPECS);
     println!("\nderived");
     for (name, value, unit, meaning) in derived {
         println!("{name:<36} {value:>14.6e} {unit:<10} {meaning}");
