@@ -259,23 +259,43 @@ fn free_params(
     Ok(free)
 }
 
-fn free_param(f: &FreeFile) -> Result<FreeParam, String> {
+/// Why a `[[free]]` entry is not a parameter the search can vary.
+#[derive(Debug, thiserror::Error)]
+enum FreeParamError {
+    /// Not a parameter of `testrig params`.
+    #[error("{0}")]
+    Unknown(#[from] rig::RigError),
+    /// A range that is not one.
+    #[error("{0}")]
+    Range(&'static str),
+    /// A scale other than linear or log.
+    #[error("scale `{0}`: `linear` or `log`")]
+    Scale(String),
+}
+
+fn free_param(f: &FreeFile) -> Result<FreeParam, FreeParamError> {
     let name = f.name.get_ref().clone();
-    rig::param_spec(&name).map_err(|e| e.to_string())?;
+    rig::param_spec(&name)?;
     let scale = f.scale.as_ref().map(|s| s.get_ref().as_str());
     let range = match (&f.choices[..], f.min, f.max, scale) {
         ([_, _, ..], None, None, None) => FreeRange::Choice(f.choices.clone()),
-        ([_], ..) => return Err("a choice needs two values or more".into()),
+        ([_], ..) => return Err(FreeParamError::Range("a choice needs two values or more")),
         ([], Some(min), Some(max), scale) if min.is_finite() && max.is_finite() && min < max => {
             match scale {
                 None | Some("linear") => FreeRange::Linear { min, max },
                 Some("log") if min > 0.0 => FreeRange::Log { min, max },
-                Some("log") => return Err("a log scale needs min > 0".into()),
-                Some(other) => return Err(format!("scale `{other}`: `linear` or `log`")),
+                Some("log") => return Err(FreeParamError::Range("a log scale needs min > 0")),
+                Some(other) => return Err(FreeParamError::Scale(other.to_string())),
             }
         }
-        ([], Some(_), Some(_), _) => return Err("min must be below max, both finite".into()),
-        _ => return Err("give min and max (and scale), or choices".into()),
+        ([], Some(_), Some(_), _) => {
+            return Err(FreeParamError::Range("min must be below max, both finite"));
+        }
+        _ => {
+            return Err(FreeParamError::Range(
+                "give min and max (and scale), or choices",
+            ));
+        }
     };
     Ok(FreeParam { name, range })
 }

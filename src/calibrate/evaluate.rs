@@ -64,7 +64,7 @@ pub fn evaluate_all(
     candidates: &[Vec<f64>],
     points: &[TargetPoint],
 ) -> Vec<Evaluation> {
-    let params: Vec<Result<RigParams, String>> = candidates
+    let params: Vec<Result<RigParams, rig::RigError>> = candidates
         .iter()
         .map(|x| params_at(&plan.base, &plan.free, x))
         .collect();
@@ -103,7 +103,7 @@ pub fn evaluate_all(
         .iter()
         .enumerate()
         .map(|(c, rig)| match rig {
-            Err(e) => failed(e.clone()),
+            Err(e) => failed(e.to_string()),
             Ok(rig) => {
                 let mine: Vec<&CaseOutcome> = heights.iter().filter(|h| h.candidate == c).collect();
                 assemble(plan, rig, points, &mine)

@@ -1,6 +1,6 @@
 //! A free parameter: its range, mapped to the search's unit interval.
 
-use rig::RigParams;
+use rig::{RigError, RigParams};
 
 /// How a coordinate in [0, 1] maps to the parameter.
 #[derive(Clone, Debug, PartialEq)]
@@ -68,12 +68,11 @@ impl FreeParam {
 }
 
 /// `base` with every free parameter set at its coordinate in `x`, checked.
-pub fn params_at(base: &RigParams, free: &[FreeParam], x: &[f64]) -> Result<RigParams, String> {
+pub fn params_at(base: &RigParams, free: &[FreeParam], x: &[f64]) -> Result<RigParams, RigError> {
     let mut params = base.clone();
     for (p, &xi) in free.iter().zip(x) {
-        rig::set_param(&mut params, &p.name, &p.value_text(xi))
-            .map_err(|e| format!("{}: {e}", p.name))?;
+        rig::set_param(&mut params, &p.name, &p.value_text(xi))?;
     }
-    params.validate().map_err(|e| e.to_string())?;
+    params.validate()?;
     Ok(params)
 }

@@ -58,7 +58,7 @@ pub fn preset_text(
     best: &EvaluationRecord,
     result: &CalibrationResult,
 ) -> anyhow::Result<String> {
-    let params = params_at(&plan.base, &plan.free, &best.x).map_err(anyhow::Error::msg)?;
+    let params = params_at(&plan.base, &plan.free, &best.x)?;
     // A file cannot be the base of another: then the thesis's preset is.
     let base_name = if is_preset_file(&plan.sweep.preset) {
         rig::PRESET_NAMES[0]

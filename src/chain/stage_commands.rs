@@ -5,13 +5,14 @@
 use instruments::LowPassSpec;
 
 use crate::chain::{Instrument, NamedStage};
+use crate::vocabulary::Refusal;
 use crate::vocabulary::command::{RigCommand, Target};
 
 /// Highest carrier amplifier gain accepted (V/V): far beyond the 3C66's.
 const MAX_GAIN: f64 = 1.0e6;
 
 /// Carries out `command` if it is for `stage`: `Some(outcome)`, else `None`.
-pub fn apply_to_stage(stage: &mut NamedStage, command: &RigCommand) -> Option<Result<(), String>> {
+pub fn apply_to_stage(stage: &mut NamedStage, command: &RigCommand) -> Option<Result<(), Refusal>> {
     match command.target() {
         Target::Stage(output) if output == stage.output => {}
         _ => return None,
@@ -24,9 +25,9 @@ pub fn apply_to_stage(stage: &mut NamedStage, command: &RigCommand) -> Option<Re
         } => {
             let nyquist_hz = stage.rate_hz / 2.0;
             if !(cutoff_hz.is_finite() && *cutoff_hz > 0.0 && *cutoff_hz < nyquist_hz) {
-                return Some(Err(format!(
+                return Some(Err(Refusal::Setting(format!(
                     "cutoff_hz {cutoff_hz}: a cut-off lies in (0, {nyquist_hz}) Hz"
-                )));
+                ))));
             }
             Instrument::LowPass(kind.kind().map(|kind| LowPassSpec {
                 kind,
@@ -36,18 +37,20 @@ pub fn apply_to_stage(stage: &mut NamedStage, command: &RigCommand) -> Option<Re
         }
         RigCommand::SetAmplifierGain { gain } => {
             let Instrument::CarrierDemodulator(mut settings) = stage.plan.instrument.clone() else {
-                return Some(Err(format!(
+                return Some(Err(Refusal::Setting(format!(
                     "`{}` is not the carrier amplifier",
                     stage.output
-                )));
+                ))));
             };
             if !(*gain > 0.0 && *gain <= MAX_GAIN) {
-                return Some(Err(format!("gain {gain}: a gain lies in (0, {MAX_GAIN}]")));
+                return Some(Err(Refusal::Setting(format!(
+                    "gain {gain}: a gain lies in (0, {MAX_GAIN}]"
+                ))));
             }
             settings.gain = *gain;
             Instrument::CarrierDemodulator(settings)
         }
         _ => return None,
     };
-    Some(stage.rebuild(instrument).map_err(|e| e.to_string()))
+    Some(stage.rebuild(instrument).map_err(Refusal::from))
 }

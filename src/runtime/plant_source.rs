@@ -11,6 +11,7 @@ use super::pacing::{LatenessHistogram, Pace, Pacer};
 use super::rolling_regime::{REGIME_WINDOW_S, RollingRegime};
 use super::status::SharedStatus;
 use crate::scenario::Overflow;
+use crate::vocabulary::Refusal;
 use crate::vocabulary::frame::Frame;
 use crate::vocabulary::limits::{check_load_nm, check_load_within_motor, check_speed_rpm};
 use crate::vocabulary::{CommandInbox, Pending, RigCommand};
@@ -158,11 +159,8 @@ fn take_commands(job: &mut PlantJob, start_sample: u64, at_s: f64) -> Vec<Pendin
                 continue;
             }
         }
-        let outcome = check_set_points(&set, job.plant.params()).and_then(|()| {
-            job.plant
-                .set_points_from_now(set)
-                .map_err(|e| e.to_string())
-        });
+        let outcome = check_set_points(&set, job.plant.params())
+            .and_then(|()| job.plant.set_points_from_now(set).map_err(Refusal::from));
         pending.answer(outcome);
     }
     job.status
@@ -171,17 +169,20 @@ fn take_commands(job: &mut PlantJob, start_sample: u64, at_s: f64) -> Vec<Pendin
 }
 
 /// The bounds every command shares (speed, brake load), as for a scenario's set points.
-fn check_set_points(set: &SetPoints, params: &RigParams) -> Result<(), String> {
-    check_speed_rpm(set.speed_rpm).map_err(|e| format!("speed: {e}"))?;
-    check_load_nm(set.load_nm).map_err(|e| format!("load: {e}"))?;
+fn check_set_points(set: &SetPoints, params: &RigParams) -> Result<(), Refusal> {
+    let limit = |what| move |source| Refusal::Limit { what, source };
+    check_speed_rpm(set.speed_rpm).map_err(limit("speed"))?;
+    check_load_nm(set.load_nm).map_err(limit("load"))?;
     check_load_within_motor(set.load_nm + set.oscillating_load_nm, params)
-        .map_err(|e| format!("load with its oscillating part: {e}"))?;
+        .map_err(limit("load with its oscillating part"))?;
     for (value, what) in [
         (set.oscillating_load_nm, "oscillating load amplitude (N m)"),
         (set.oscillating_load_hz, "oscillating load frequency (Hz)"),
     ] {
         if !(value.is_finite() && value >= 0.0) {
-            return Err(format!("{what} {value}: must be finite and ≥ 0"));
+            return Err(Refusal::Setting(format!(
+                "{what} {value}: must be finite and ≥ 0"
+            )));
         }
     }
     Ok(())

@@ -111,12 +111,26 @@ impl Default for WindowChoice {
     }
 }
 
+/// A named choice that is not one of those allowed.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("`{text}` is not one of {allowed}")]
+pub struct ChoiceError {
+    /// What was written.
+    pub text: String,
+    /// The choices allowed, listed.
+    pub allowed: &'static str,
+}
+
 impl TryFrom<String> for WindowChoice {
-    type Error = String;
-    fn try_from(text: String) -> Result<Self, String> {
-        Window::parse(&text)
-            .map(Self)
-            .ok_or_else(|| format!("`{text}` is not one of {}", Window::NAMES))
+    type Error = ChoiceError;
+    fn try_from(text: String) -> Result<Self, ChoiceError> {
+        match Window::parse(&text) {
+            Some(window) => Ok(Self(window)),
+            None => Err(ChoiceError {
+                text,
+                allowed: Window::NAMES,
+            }),
+        }
     }
 }
 
@@ -141,13 +155,16 @@ enum TextOrNumber {
 }
 
 impl TryFrom<TextOrNumber> for SamplingChoice {
-    type Error = String;
-    fn try_from(value: TextOrNumber) -> Result<Self, String> {
+    type Error = ChoiceError;
+    fn try_from(value: TextOrNumber) -> Result<Self, ChoiceError> {
         let text = match value {
             TextOrNumber::Text(text) => text,
             TextOrNumber::Number(number) => number.to_string(),
         };
-        Self::parse(&text).ok_or_else(|| format!("`{text}` is not one of thesis, 2.56"))
+        Self::parse(&text).ok_or(ChoiceError {
+            text,
+            allowed: "thesis, 2.56",
+        })
     }
 }
 

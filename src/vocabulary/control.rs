@@ -11,6 +11,7 @@ use std::time::Duration;
 use crossbeam_channel::{Receiver, Sender, bounded, unbounded};
 
 use super::command::{Reply, RigCommand, Target, TimedCommand};
+use super::refusal::Refusal;
 
 /// How long a sender waits for the answer (s of wall time).
 const ANSWER_WAIT_S: f64 = 10.0;
@@ -32,12 +33,12 @@ pub struct Pending {
 
 impl Pending {
     /// Answers the sender (if one waits): carried out, or refused with why.
-    pub fn answer(&self, outcome: Result<(), String>) {
+    pub fn answer(&self, outcome: Result<(), Refusal>) {
         if let Some(tx) = &self.answer {
             let reply = Reply {
                 ok: outcome.is_ok(),
                 at_s: self.at_s,
-                error: outcome.err(),
+                error: outcome.err().map(|refusal| refusal.to_string()),
             };
             // The sender may have given up waiting; nothing else to do then.
             let _ = tx.send((self.order, reply));
@@ -182,11 +183,11 @@ impl CommandInbox {
             if self.targets.contains(&p.command.target()) {
                 pending.push(p);
             } else {
-                p.answer(Err(format!(
+                p.answer(Err(Refusal::NotFor(format!(
                     "this run has no {:?} to carry out `{}`",
                     p.command.target(),
                     command_name(&p.command)
-                )));
+                ))));
             }
         }
         pending

@@ -10,6 +10,7 @@ pub(crate) mod control;
 pub(crate) mod display;
 pub(crate) mod frame;
 pub(crate) mod limits;
+pub(crate) mod refusal;
 pub(crate) mod seeds;
 pub(crate) mod signal_names;
 
@@ -21,4 +22,5 @@ pub use frame::{Frame, SignalNames};
 pub use limits::{
     MAX_SIMULATED_S, check_load_nm, check_load_within_motor, check_simulated_s, check_speed_rpm,
 };
+pub use refusal::Refusal;
 pub use signal_names::FILTER_V;

@@ -17,6 +17,7 @@ use crate::recording::{
 };
 use crate::runtime::status::SharedStatus;
 use crate::scenario::{AnalyserPlan, Measure, Plan};
+use crate::vocabulary::Refusal;
 use crate::vocabulary::RigCommand;
 use crate::vocabulary::frame::Frame;
 
@@ -268,7 +269,7 @@ fn write_spectrum_uff(
 }
 
 impl Sink for AnalyserSink {
-    fn command(&mut self, command: &RigCommand, frame: &Frame) -> Option<Result<(), String>> {
+    fn command(&mut self, command: &RigCommand, frame: &Frame) -> Option<Result<(), Refusal>> {
         self.carry_out(command, frame)
     }
 

@@ -10,6 +10,7 @@ use crate::chain::analyser_setup::{
     AdcChoice, AnalyserSetting, AnalyserSetupError, set_up_analyser,
 };
 use crate::scenario::Measure;
+use crate::vocabulary::Refusal;
 use crate::vocabulary::frame::Frame;
 use crate::vocabulary::{LiveSpectrum, RigCommand};
 
@@ -24,16 +25,16 @@ impl AnalyserSink {
         &mut self,
         command: &RigCommand,
         frame: &Frame,
-    ) -> Option<Result<(), String>> {
+    ) -> Option<Result<(), Refusal>> {
         let outcome = match command {
             RigCommand::StartAverage => self.start_now(frame),
-            RigCommand::HoldAverage => self.close_measurement().map_err(|e| format!("{e:#}")),
+            RigCommand::HoldAverage => self.close_measurement().map_err(|e| Refusal::failed(&e)),
             RigCommand::SetAdcRange { range_v } => self.set_adc(AdcSettings {
                 range_v: *range_v,
                 ..self.plan.adc
             }),
             RigCommand::SetAnalyser { .. } => self.set_analyser(command),
-            RigCommand::SaveDisplays => self.save().map_err(|e| format!("{e:#}")),
+            RigCommand::SaveDisplays => self.save().map_err(|e| Refusal::failed(&e)),
             _ => return None,
         };
         if outcome.is_ok() && self.live {
@@ -44,7 +45,7 @@ impl AnalyserSink {
     }
 
     /// A fresh average from `frame`'s start, as a measurement of the session.
-    fn start_now(&mut self, frame: &Frame) -> Result<(), String> {
+    fn start_now(&mut self, frame: &Frame) -> Result<(), Refusal> {
         let set = frame.set_points.unwrap_or(rig::SetPoints {
             speed_rpm: 0.0,
             load_nm: 0.0,
@@ -58,11 +59,11 @@ impl AnalyserSink {
             speed_rpm: set.speed_rpm,
             load_nm: set.load_nm,
         });
-        self.start(index).map_err(|e| format!("{e:#}"))
+        self.start(index).map_err(|e| Refusal::failed(&e))
     }
 
-    fn set_adc(&mut self, settings: AdcSettings) -> Result<(), String> {
-        let adc = Adc::new(settings).map_err(|e| e.to_string())?;
+    fn set_adc(&mut self, settings: AdcSettings) -> Result<(), Refusal> {
+        let adc = Adc::new(settings).map_err(Refusal::from)?;
         self.overloads += self.adc.overloads();
         self.adc = adc;
         self.plan.adc = settings;
@@ -70,7 +71,7 @@ impl AnalyserSink {
     }
 
     /// New analyser settings; the average under way is written and a fresh one started.
-    fn set_analyser(&mut self, command: &RigCommand) -> Result<(), String> {
+    fn set_analyser(&mut self, command: &RigCommand) -> Result<(), Refusal> {
         let RigCommand::SetAnalyser {
             fmax_hz,
             block,
@@ -79,7 +80,7 @@ impl AnalyserSink {
             overlap_pct,
         } = command
         else {
-            return Err("not an analyser setting".into());
+            return Err(Refusal::NotFor("not an analyser setting".into()));
         };
         let mut s = self.plan.settings;
         s.fmax_hz = fmax_hz.unwrap_or(s.fmax_hz);
@@ -90,7 +91,7 @@ impl AnalyserSink {
         let setup = set_up_analyser(s, AdcChoice::of(&self.plan.adc), self.rate_hz)
             .map_err(|e| live_refusal(&e, &s))?;
         let restart = self.active;
-        self.close_measurement().map_err(|e| format!("{e:#}"))?;
+        self.close_measurement().map_err(|e| Refusal::failed(&e))?;
         self.overloads += self.adc.overloads();
         self.adc = setup.adc;
         self.plan.adc = setup.adc_settings;
@@ -101,7 +102,7 @@ impl AnalyserSink {
             let measure = self.measures[index].clone();
             self.measures.push(measure);
             self.start(self.measures.len() - 1)
-                .map_err(|e| format!("{e:#}"))?;
+                .map_err(|e| Refusal::failed(&e))?;
         }
         Ok(())
     }
@@ -154,10 +155,10 @@ impl AnalyserSink {
 
 /// The panel's words for a refused analyser setting: the field and value at fault, then
 /// why.
-fn live_refusal(e: &AnalyserSetupError, s: &AnalyserSettings) -> String {
-    match e.setting() {
+fn live_refusal(e: &AnalyserSetupError, s: &AnalyserSettings) -> Refusal {
+    Refusal::Setting(match e.setting() {
         AnalyserSetting::FmaxHz => format!("fmax_hz {}: {e}", s.fmax_hz),
         AnalyserSetting::OverlapPct => format!("overlap_pct {}: {e}", 100.0 * s.overlap),
         AnalyserSetting::Averages | AnalyserSetting::Block | AnalyserSetting::Adc => e.to_string(),
-    }
+    })
 }

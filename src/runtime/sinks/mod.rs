@@ -10,6 +10,7 @@ pub(crate) mod scope_live;
 
 use std::path::PathBuf;
 
+use crate::vocabulary::Refusal;
 use crate::vocabulary::RigCommand;
 use crate::vocabulary::frame::Frame;
 
@@ -21,7 +22,7 @@ pub trait Sink: Send {
     fn finish(self: Box<Self>) -> anyhow::Result<SinkReport>;
     /// Carries out `command` (taking effect at `frame`'s start, before its samples) if it
     /// is this sink's: `Some(outcome)`, else `None`.
-    fn command(&mut self, _command: &RigCommand, _frame: &Frame) -> Option<Result<(), String>> {
+    fn command(&mut self, _command: &RigCommand, _frame: &Frame) -> Option<Result<(), Refusal>> {
         None
     }
 }

@@ -12,6 +12,7 @@ use crate::recording::{
 };
 use crate::runtime::status::SharedStatus;
 use crate::scenario::{Plan, RecordPlan};
+use crate::vocabulary::Refusal;
 use crate::vocabulary::RigCommand;
 use crate::vocabulary::choices::WavFormat;
 use crate::vocabulary::frame::{Frame, SignalNames};
@@ -202,7 +203,7 @@ fn uff_channel(plan: &Plan, name: &str, index: usize) -> Uff58Channel {
 }
 
 impl Sink for RecorderSink {
-    fn command(&mut self, command: &RigCommand, _frame: &Frame) -> Option<Result<(), String>> {
+    fn command(&mut self, command: &RigCommand, _frame: &Frame) -> Option<Result<(), Refusal>> {
         let RigCommand::Record { on } = command else {
             return None;
         };
@@ -213,7 +214,7 @@ impl Sink for RecorderSink {
             (true, false) => Err(anyhow::anyhow!("already recording")),
             (false, true) => Err(anyhow::anyhow!("not recording")),
         };
-        Some(outcome.map_err(|e| format!("{e:#}")))
+        Some(outcome.map_err(|e| Refusal::failed(&e)))
     }
 
     fn consume(&mut self, frame: &Frame) -> anyhow::Result<()> {

@@ -13,6 +13,7 @@ use crate::plots::write_scope_plots;
 use crate::recording::CsvRecorder;
 use crate::runtime::status::SharedStatus;
 use crate::scenario::{Measure, Plan, ScopePlan};
+use crate::vocabulary::Refusal;
 use crate::vocabulary::RigCommand;
 use crate::vocabulary::frame::Frame;
 
@@ -76,7 +77,7 @@ impl ScopeSink {
 
     /// Carries out `command` (at `frame`'s start) if it is the scope's. Saving the
     /// displays is answered by the analyser; the scope saves its trace beside it.
-    fn carry_out(&mut self, command: &RigCommand, frame: &Frame) -> Option<Result<(), String>> {
+    fn carry_out(&mut self, command: &RigCommand, frame: &Frame) -> Option<Result<(), Refusal>> {
         match command {
             RigCommand::SetScope { .. } => Some(self.set_scales(command)),
             RigCommand::ArmScope => Some(self.arm_now(frame)),
@@ -90,7 +91,7 @@ impl ScopeSink {
         }
     }
 
-    fn set_scales(&mut self, command: &RigCommand) -> Result<(), String> {
+    fn set_scales(&mut self, command: &RigCommand) -> Result<(), Refusal> {
         let RigCommand::SetScope {
             volts_per_div,
             seconds_per_div,
@@ -98,7 +99,7 @@ impl ScopeSink {
             mode,
         } = command
         else {
-            return Err("not a scope setting".into());
+            return Err(Refusal::NotFor("not a scope setting".into()));
         };
         let settings = ScopeSettings {
             volts_per_div: volts_per_div.unwrap_or(self.settings.volts_per_div),
@@ -110,13 +111,13 @@ impl ScopeSink {
             Some(live) => live.rescale(settings, *mode, self.rate_hz),
             None => Scope::new(settings, self.rate_hz).map(|_| ()),
         }
-        .map_err(|e| e.to_string())?;
+        .map_err(Refusal::from)?;
         self.settings = settings;
         Ok(())
     }
 
     /// Arms a stored sweep now (and re-arms the live scope in single mode).
-    fn arm_now(&mut self, frame: &Frame) -> Result<(), String> {
+    fn arm_now(&mut self, frame: &Frame) -> Result<(), Refusal> {
         if let Some(live) = &mut self.live {
             live.rearm();
         }
@@ -127,7 +128,7 @@ impl ScopeSink {
             speed_rpm: frame.set_points.map_or(0.0, |s| s.speed_rpm),
             load_nm: frame.set_points.map_or(0.0, |s| s.load_nm),
         });
-        self.arm(index).map_err(|e| format!("{e:#}"))
+        self.arm(index).map_err(|e| Refusal::failed(&e))
     }
 
     /// Saves the live scope's trace on screen beside the analyser's saved displays.
@@ -200,7 +201,7 @@ impl ScopeSink {
 }
 
 impl Sink for ScopeSink {
-    fn command(&mut self, command: &RigCommand, frame: &Frame) -> Option<Result<(), String>> {
+    fn command(&mut self, command: &RigCommand, frame: &Frame) -> Option<Result<(), Refusal>> {
         self.carry_out(command, frame)
     }
 
