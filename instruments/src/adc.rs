@@ -168,11 +168,13 @@ impl Adc {
         sum / weights
     }
 
-    /// Drops history no future sample needs, in chunks.
+    /// Drops history no future sample needs, in chunks. The next sample may lie beyond
+    /// the samples received (a ratio above the kernel's reach): never more than is held.
     fn trim(&mut self) {
         let needed_from = ((self.next as f64 * self.settings.ratio).floor() as u64 + 1)
             .saturating_sub(LOBES as u64);
-        let drop = needed_from.saturating_sub(self.history_start) as usize;
+        let drop =
+            (needed_from.saturating_sub(self.history_start) as usize).min(self.history.len());
         if drop > 4096 {
             self.history.drain(..drop);
             self.history_start += drop as u64;

@@ -125,3 +125,41 @@ fn a_fractional_rate_samples_between_stream_samples_exactly() {
     assert_eq!(output, again);
     assert_eq!(adc.latency(), 16);
 }
+
+/// Issue 23, item 1: a 44.1 kHz stream sampled for a 200 Hz band (ratio 110.25, beyond
+/// the kernel's reach of 16 samples) panicked once the kept history was trimmed past its
+/// end. Any ratio must work: every sample comes out, right, in any split of the stream.
+#[test]
+fn a_ratio_beyond_the_kernel_reach_samples_a_long_stream() {
+    let rate_hz = 44_100.0;
+    let ratio = rate_hz / 400.0;
+    let mut adc = Adc::new(AdcSettings {
+        ratio,
+        bits: 24,
+        range_v: 2.0,
+        dither_seed: None,
+    })
+    .expect("valid");
+    let tone = |t: f64| (2.0 * PI * 50.0 * t).sin();
+    let n = 44_100 * 5;
+    let input: Vec<f64> = (0..n).map(|k| tone(k as f64 / rate_hz)).collect();
+    let mut output = Vec::new();
+    for chunk in input.chunks(4096) {
+        adc.convert(chunk, &mut output);
+    }
+    assert_eq!(
+        output.len(),
+        ((n - 1 - 16) as f64 / ratio).floor() as usize + 1
+    );
+    let worst = output
+        .iter()
+        .enumerate()
+        .skip(1)
+        .map(|(k, &v)| (v - tone(k as f64 / 400.0)).abs())
+        .fold(0.0, f64::max);
+    assert!(worst < 1e-5, "interpolation error {worst}");
+    adc.reset();
+    let mut whole = Vec::new();
+    adc.convert(&input, &mut whole);
+    assert_eq!(output, whole);
+}

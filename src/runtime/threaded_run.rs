@@ -19,7 +19,7 @@ use super::sinks::recorder::RecorderSink;
 use super::sinks::scope::ScopeSink;
 use super::sinks::{Sink, SinkReport};
 use super::status::SharedStatus;
-use super::wiring::{channel, run_sink, run_stage};
+use super::wiring::{channel, guarded, run_sink, run_stage};
 use crate::chain::NamedStage;
 use crate::scenario::Plan;
 use crate::vocabulary::control::refusals;
@@ -198,7 +198,12 @@ impl Threads<'_> {
                     (vec![tx], Some(rx))
                 };
                 let stage_input = input;
-                scope.spawn(move || run_stage(stage, stage_input, outputs));
+                let name = format!("stage {}", stage.output);
+                scope.spawn(move || {
+                    guarded(&name, self.stop, self.errors, (), || {
+                        run_stage(stage, stage_input, outputs)
+                    })
+                });
                 match next {
                     Some(rx) => input = rx,
                     None => break,
@@ -208,7 +213,11 @@ impl Threads<'_> {
                 .into_iter()
                 .zip(sink_inputs)
                 .map(|((name, sink), rx)| {
-                    scope.spawn(move || run_sink(name, sink, rx, self.stop, self.errors))
+                    scope.spawn(move || {
+                        guarded(name, self.stop, self.errors, SinkReport::default(), || {
+                            run_sink(name, sink, rx, self.stop, self.errors)
+                        })
+                    })
                 })
                 .collect();
             while !plant.is_finished() {

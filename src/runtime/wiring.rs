@@ -69,7 +69,62 @@ pub fn run_sink(
     }
 }
 
+/// Runs `work`, a stage's or a sink's thread named `name`. A panic in it fails the run
+/// as an error would: the run is stopped, the error names the thread and the panic, and
+/// `fallback` stands for what the thread would have returned. Nothing recorded so far is
+/// lost: the other threads finish and close their files.
+pub fn guarded<T>(
+    name: &str,
+    stop: &AtomicBool,
+    errors: &Mutex<Vec<String>>,
+    fallback: T,
+    work: impl FnOnce() -> T,
+) -> T {
+    match std::panic::catch_unwind(std::panic::AssertUnwindSafe(work)) {
+        Ok(value) => value,
+        Err(payload) => {
+            let what = payload
+                .downcast_ref::<&str>()
+                .map(|s| s.to_string())
+                .or_else(|| payload.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "no message".into());
+            stop.store(true, Ordering::Relaxed);
+            errors
+                .lock()
+                .unwrap_or_else(PoisonError::into_inner)
+                .push(format!("{name}: the thread failed (a panic: {what})"));
+            fallback
+        }
+    }
+}
+
 /// A bounded channel of `capacity` frames.
 pub fn channel(capacity: usize) -> (Sender<Frame>, Receiver<Frame>) {
     bounded(capacity)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A thread that panics fails the run as an error would: the run is told to stop, the
+    /// error names the thread and the panic, and the fallback stands in for its result.
+    #[test]
+    fn a_panicking_thread_stops_the_run_with_its_name_and_message() {
+        let stop = AtomicBool::new(false);
+        let errors = Mutex::new(Vec::new());
+        let value = guarded("analyser", &stop, &errors, 7, || -> i32 {
+            panic!("range end index 4174 out of range")
+        });
+        assert_eq!(value, 7);
+        assert!(stop.load(Ordering::Relaxed));
+        let errors = errors.into_inner().expect("no poison");
+        assert_eq!(errors.len(), 1);
+        assert!(
+            errors[0].starts_with("analyser: ") && errors[0].contains("4174 out of range"),
+            "{errors:?}"
+        );
+        let calm = guarded("scope", &stop, &Mutex::new(Vec::new()), 0, || 3);
+        assert_eq!(calm, 3);
+    }
 }

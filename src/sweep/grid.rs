@@ -12,6 +12,7 @@ use crate::vocabulary::limits::{check_load_within_motor, check_simulated_s};
 use super::approach::Approach;
 use super::sequence::{Direction, Sequence};
 use super::sweep_toml::{CaseFile, GridFile, SweepFile};
+use crate::vocabulary::limits::MAX_SWEEP_CASES;
 use crate::vocabulary::seeds::case_seed;
 
 /// Everything a sweep needs, checked.
@@ -80,6 +81,7 @@ pub fn build_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<Swe
     if grid.rpm.is_empty() || grid.load_nm.is_empty() {
         return Err(src.error(0..0, "grid", "rpm and load_nm each need at least one value"));
     }
+    check_case_count(src, grid, file.case.sequence)?;
     let mut swept = Vec::new();
     let mut variants: Vec<(Vec<String>, RigParams)> = vec![(Vec::new(), base)];
     if !grid.backlash_mm.is_empty() {
@@ -179,6 +181,33 @@ fn static_points(grid: &GridFile) -> Vec<(f64, f64, Direction, Option<usize>)> {
 
 /// The lab's run: one series per load, the speeds up in ascending order, then down from
 /// the one below the top (the top is measured once, on the way up).
+/// Counts the grid's cases before any is made, and refuses more than
+/// [`MAX_SWEEP_CASES`], naming the count and its factors.
+fn check_case_count(
+    src: &ScenarioSource,
+    grid: &GridFile,
+    sequence: Sequence,
+) -> anyhow::Result<()> {
+    let speeds = match sequence {
+        Sequence::Static => grid.rpm.len() as u128,
+        Sequence::UpAndDown => 2 * grid.rpm.len() as u128 - 1,
+    };
+    let factors = [grid.load_nm.len(), grid.backlash_mm.len().max(1)]
+        .into_iter()
+        .chain(grid.set.values().map(|v| v.get_ref().len().max(1)));
+    let count = factors.fold(speeds, |n, f| n.saturating_mul(f as u128));
+    if count > u128::from(MAX_SWEEP_CASES) {
+        return Err(src.error(
+            0..0,
+            "grid",
+            format!(
+                "{count} cases: more than {MAX_SWEEP_CASES} in one sweep; split the grid into several sweep files (or use --set), each run as its own job"
+            ),
+        ));
+    }
+    Ok(())
+}
+
 fn up_and_down_points(grid: &GridFile) -> Vec<(f64, f64, Direction, Option<usize>)> {
     let mut speeds: Vec<f64> = grid.rpm.iter().map(|r| r.0).collect();
     speeds.sort_by(f64::total_cmp);

@@ -54,6 +54,11 @@ pub fn check_speed_rpm(value: f64) -> Result<f64, LimitError> {
     }
 }
 
+/// Most cases one sweep file may hold: a plan of about 350 MB and, at about 0.2 s of
+/// one core a case, some 2½ core-days of work; a larger campaign is several sweep files
+/// (or `--set` on one), each run as its own job.
+pub const MAX_SWEEP_CASES: u64 = 1_000_000;
+
 /// Most spectra an average takes: the ground truth keeps the analogue signal behind a
 /// whole average (at 51.2 kHz and the thesis's 2.56 s blocks, 1000 averages hold 1 GiB).
 pub const MAX_AVERAGES: usize = 1000;

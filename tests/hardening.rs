@@ -1,0 +1,132 @@
+//! Regressions of the hardening issue (23): inputs that once crashed or silently failed
+//! the rig. Each test failed before its fix.
+
+mod common;
+
+use common::{folder, read_manifest, run_ok, scenario, testrig};
+
+/// A 44.1 kHz recording analysed for a 200 Hz band: the ADC samples at a ratio of
+/// 110.25 stream samples, which panicked (exit 101). It now shows the recording's 50 Hz
+/// tone where it is.
+#[test]
+fn a_recording_at_any_rate_is_analysed() {
+    let dir = folder("adc-ratio");
+    let wav = dir.join("tone-44100.wav");
+    let spec = hound::WavSpec {
+        channels: 1,
+        sample_rate: 44_100,
+        bits_per_sample: 32,
+        sample_format: hound::SampleFormat::Float,
+    };
+    let mut writer = hound::WavWriter::create(&wav, spec).expect("writable");
+    for k in 0..44_100 * 30 {
+        let t = k as f64 / 44_100.0;
+        writer
+            .write_sample((0.5 * (std::f64::consts::TAU * 50.0 * t).sin()) as f32)
+            .expect("sample");
+    }
+    writer.finalize().expect("finalised");
+    let out = dir.join("out");
+    let output = testrig(&[
+        "analyse",
+        wav.to_str().expect("utf-8"),
+        "--fmax",
+        "200",
+        "--out",
+        out.to_str().expect("utf-8"),
+    ]);
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let lines = common::spectrum(&out.join("spectrum.csv"));
+    let peak = lines
+        .iter()
+        .max_by(|a, b| a.1.total_cmp(&b.1))
+        .expect("lines");
+    let resolution_hz = lines[1].0 - lines[0].0;
+    assert!(
+        (peak.0 - 50.0).abs() <= resolution_hz,
+        "peak at {} Hz",
+        peak.0
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// The run's analyser at an fmax whose ADC rate does not divide the stream's (150 Hz:
+/// 300 Hz from 51.2 kHz) panicked in its thread while the run exited 0 with no spectrum.
+/// The spectrum is now written and the run completes.
+#[test]
+fn a_run_whose_adc_rate_does_not_divide_the_stream_writes_its_spectrum() {
+    let (out, manifest) = run_ok(
+        "adc-ratio-run",
+        &scenario("subharmonic-2712nm"),
+        &[
+            "--duration",
+            "21",
+            "--set",
+            "analyser.fmax_hz=150",
+            "--set",
+            "analyser.averages=4",
+        ],
+    );
+    assert_eq!(manifest["ending"], "completed", "{manifest}");
+    let lines = common::spectrum(&out.join("spectrum-01.csv"));
+    let top_hz = lines.last().expect("lines").0;
+    assert!((top_hz - 150.0).abs() < 1.0, "band ends at {top_hz} Hz");
+    assert!(
+        read_manifest(&out)["errors"]
+            .as_array()
+            .is_some_and(Vec::is_empty)
+    );
+    std::fs::remove_dir_all(&out).ok();
+}
+
+/// A sweep file whose grid is `rpm` speeds by `loads` loads (and the tooth counts given).
+fn huge_sweep(rpm: usize, loads: usize, teeth: &str) -> String {
+    let speeds: Vec<String> = (0..rpm).map(|i| format!("{}", 100 + i % 2900)).collect();
+    let loads: Vec<String> = (0..loads).map(|i| format!("{}", i % 5)).collect();
+    format!(
+        "name = \"huge\"\nrate_hz = 10240\n\n[grid]\nrpm = [{}]\nload_nm = [{}]\nset = {{ teeth = [{teeth}] }}\n\n[case]\nsettle_s = 1\nmeasure_s = 2\n\n[analyser]\nfmax_hz = 200\nblock = 512\naverages = 1\n",
+        speeds.join(", "),
+        loads.join(", ")
+    )
+}
+
+/// A grid of 10⁷ points allocated 3.5 GB before running anything, and 10¹¹ aborted. The
+/// cases are now counted first: above a million the sweep is refused at once, naming the
+/// file, the count and the limit, with nothing written.
+#[test]
+fn a_sweep_of_more_cases_than_the_limit_is_refused_before_it_starts() {
+    let dir = folder("huge-sweep");
+    for (rpm, loads, teeth, count) in [
+        (1000, 1001, "30", "1001000 cases"),
+        (10_000, 10_000, "29, 30, 31", "300000000 cases"),
+    ] {
+        let file = dir.join("huge.toml");
+        std::fs::write(&file, huge_sweep(rpm, loads, teeth)).expect("sweep file");
+        let out = dir.join("out");
+        let started = std::time::Instant::now();
+        let output = testrig(&[
+            "sweep",
+            file.to_str().expect("utf-8"),
+            "--out",
+            out.to_str().expect("utf-8"),
+        ]);
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert_eq!(output.status.code(), Some(1), "{stderr}");
+        assert!(
+            stderr.contains("huge.toml") && stderr.contains("grid") && stderr.contains(count),
+            "{stderr}"
+        );
+        assert!(stderr.contains("more than 1000000"), "{stderr}");
+        assert!(!out.join("cases.csv").exists());
+        assert!(
+            started.elapsed().as_secs() < 60,
+            "refused only after {:?}",
+            started.elapsed()
+        );
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
