@@ -96,15 +96,30 @@ fn shards_merged_equal_the_unsharded_sweep_and_resume_skips_finished_cases() {
     assert!(merged.join("regime-map-30.svg").exists() && merged.join("regime-map-31.svg").exists());
     // A shard's own table has its cases only.
     assert_eq!(table(&dir.join("shard1")).lines().count(), 1 + 3);
-    // Merging without shard 1 warns of its cases (1, 4 and 7 of the grid).
+    // Merging without shard 1 is refused, naming its cases (1, 4 and 7 of the grid);
+    // with --partial it merges what there is and warns of them.
     let partial = dir.join("partial");
-    let output = testrig(&[
-        "merge",
-        &shards[0],
-        &shards[2],
-        "--out",
-        partial.to_str().expect("utf-8"),
-    ]);
+    let merge = |extra: &[&str]| {
+        let mut args = vec![
+            "merge",
+            &shards[0],
+            &shards[2],
+            "--out",
+            partial.to_str().expect("utf-8"),
+        ];
+        args.extend(extra);
+        testrig(&args)
+    };
+    let refused = merge(&[]);
+    let stderr = String::from_utf8_lossy(&refused.stderr);
+    assert_eq!(refused.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains("3 cases of the grid are in none of the folders")
+            && stderr.contains(": 1, 4, 7;"),
+        "{stderr}"
+    );
+    assert!(!partial.join("cases.csv").exists());
+    let output = merge(&["--partial"]);
     let stderr = String::from_utf8_lossy(&output.stderr);
     assert!(output.status.success(), "{stderr}");
     assert!(
@@ -375,6 +390,46 @@ fn a_sweep_into_the_folder_of_another_sweep_replaces_its_cases() {
     assert!(
         stderr.contains("holds the cases of another sweep"),
         "{stderr}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// Issue 23, item 7: shards of different sweeps (here another seed) merged silently, a
+/// folder given twice was accepted, and `--resume` ran on. Every folder's sweep.json now
+/// holds a fingerprint of what decides the results; merge and resume refuse a mismatch,
+/// and a case found in two folders.
+#[test]
+fn shards_of_different_sweeps_and_duplicated_cases_are_refused() {
+    let dir = folder("mismatch");
+    sweep(&dir, "shard0", &["--shard", "0/2", "--jobs", "1"]);
+    sweep(
+        &dir,
+        "shard1",
+        &["--shard", "1/2", "--jobs", "1", "--set", "seed=6"],
+    );
+    let path = |name: &str| dir.join(name).display().to_string();
+    let merged = path("merged");
+    let refused = |args: &[&str], expected: &str| {
+        let output = testrig(args);
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert_eq!(output.status.code(), Some(1), "{args:?}: {stderr}");
+        assert!(stderr.contains(expected), "{args:?}: {stderr}");
+    };
+    let (shard0, shard1) = (path("shard0"), path("shard1"));
+    refused(
+        &["merge", &shard0, &shard1, "--out", &merged],
+        "hold different sweeps (their sweep.json differ: another grid, seed",
+    );
+    refused(
+        &["merge", &shard0, &shard0, "--out", &merged, "--partial"],
+        "each case belongs to one folder",
+    );
+    let file = dir.join("small.toml").display().to_string();
+    refused(
+        &[
+            "sweep", &file, "--shard", "1/2", "--resume", "--out", &shard0, "--set", "seed=6",
+        ],
+        "holds the cases of another sweep",
     );
     std::fs::remove_dir_all(&dir).ok();
 }

@@ -124,6 +124,10 @@ pub struct MergeArgs {
     /// Folder for the merged table, cases and plots.
     #[arg(long)]
     pub out: PathBuf,
+    /// Merge even if cases of the grid are in none of the folders (they are listed);
+    /// without it such a merge is refused.
+    #[arg(long)]
+    pub partial: bool,
 }
 
 /// `testrig run`.

@@ -6,7 +6,7 @@ use anyhow::bail;
 use rig::RigChains;
 use testrig::scenario::ScenarioSource;
 use testrig::sweep::SweepFile;
-use testrig::sweep::{Shard, SweepMeta, SweepOptions, build_sweep, run_sweep};
+use testrig::sweep::{Shard, SweepMeta, SweepOptions, build_sweep, fingerprint, run_sweep};
 
 use crate::cli::SweepArgs;
 
@@ -35,6 +35,7 @@ pub fn run(args: &SweepArgs) -> anyhow::Result<()> {
         natural_hz,
         fmax_hz: plan.analyser.settings.fmax_hz,
         cases: plan.cases.len(),
+        fingerprint: fingerprint(&source.text, &plan),
     };
     let options = SweepOptions {
         jobs: args.jobs,

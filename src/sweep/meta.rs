@@ -6,6 +6,9 @@ use std::path::Path;
 use anyhow::Context;
 use serde::{Deserialize, Serialize};
 
+use sha2::{Digest, Sha256};
+
+use super::grid::SweepPlan;
 use crate::recording::PartialFile;
 
 /// What the table and plots need besides the cases (`sweep.json`, so that `merge` can
@@ -22,6 +25,26 @@ pub struct SweepMeta {
     pub fmax_hz: f64,
     /// Number of cases in the whole grid.
     pub cases: usize,
+    /// SHA-256 of everything that decides the cases' results ([`fingerprint`]): shards
+    /// and resumed runs of one sweep share it; `merge` and `--resume` refuse others.
+    #[serde(default)]
+    pub fingerprint: String,
+}
+
+/// The fingerprint of a sweep: SHA-256 over the sweep file's text as run (with its
+/// `--set` edits: grid, seed, case timing, chain, analyser), the first case's rig
+/// parameters (a preset file's values included) and the program's version.
+pub fn fingerprint(source_text: &str, plan: &SweepPlan) -> String {
+    let base = plan.cases.first().map(|c| format!("{:?}", c.params));
+    let mut hasher = Sha256::new();
+    hasher.update(source_text.as_bytes());
+    hasher.update(base.unwrap_or_default().as_bytes());
+    hasher.update(env!("CARGO_PKG_VERSION").as_bytes());
+    hasher
+        .finalize()
+        .iter()
+        .map(|b| format!("{b:02x}"))
+        .collect()
 }
 
 /// Writes `dir/sweep.json` whole (under a temporary name until complete).

@@ -172,18 +172,7 @@ pub struct Assembled {
 /// cases themselves when `out` is not among `dirs`). The folders must hold shards of one
 /// sweep (the same `sweep.json`).
 pub fn assemble(dirs: &[PathBuf], out: &Path) -> anyhow::Result<Assembled> {
-    let first = dirs.first().context("no sweep folder given")?;
-    let meta = read_meta(first)?;
-    for dir in &dirs[1..] {
-        let other = read_meta(dir)?;
-        if other != meta {
-            anyhow::bail!(
-                "{} and {} hold different sweeps (their sweep.json differ): merge shards of one sweep",
-                first.display(),
-                dir.display()
-            );
-        }
-    }
+    let meta = same_sweep(dirs)?;
     let cases = read_cases(dirs)?;
     let found: std::collections::BTreeSet<usize> = cases.iter().map(|c| c.index).collect();
     let missing = (0..meta.cases).filter(|i| !found.contains(i)).collect();
@@ -200,6 +189,38 @@ pub fn assemble(dirs: &[PathBuf], out: &Path) -> anyhow::Result<Assembled> {
     let report = write_report(out, &meta, &cases, &files)?;
     files.push(report);
     Ok(Assembled { files, missing })
+}
+
+/// The sweep description the folders `dirs` share; refused if they hold different
+/// sweeps.
+fn same_sweep(dirs: &[PathBuf]) -> anyhow::Result<SweepMeta> {
+    let first = dirs.first().context("no sweep folder given")?;
+    let meta = read_meta(first)?;
+    for dir in &dirs[1..] {
+        let other = read_meta(dir)?;
+        if other != meta {
+            anyhow::bail!(
+                "{} and {} hold different sweeps (their sweep.json differ{}): merge shards of one sweep",
+                first.display(),
+                dir.display(),
+                if other.fingerprint != meta.fingerprint {
+                    ": another grid, seed, case timing, chain, analyser, rig or program"
+                } else {
+                    ""
+                }
+            );
+        }
+    }
+    Ok(meta)
+}
+
+/// Indices of the grid's cases that none of the folders `dirs` (shards of one sweep)
+/// holds finished.
+pub fn missing_cases(dirs: &[PathBuf]) -> anyhow::Result<Vec<usize>> {
+    let meta = same_sweep(dirs)?;
+    let found: std::collections::BTreeSet<usize> =
+        read_cases(dirs)?.iter().map(|c| c.index).collect();
+    Ok((0..meta.cases).filter(|i| !found.contains(i)).collect())
 }
 
 /// One group per swept-parameter variant and load: its label and cases in speed order.

@@ -31,7 +31,7 @@ pub fn write_case(dir: &Path, result: &CaseResult) -> anyhow::Result<()> {
 /// Every finished case in the `cases/` folders of `dirs`, sorted by index (a case found in
 /// two folders is taken once).
 pub fn read_cases(dirs: &[PathBuf]) -> anyhow::Result<Vec<CaseResult>> {
-    let mut all: Vec<CaseResult> = Vec::new();
+    let mut all: Vec<(CaseResult, &PathBuf)> = Vec::new();
     for dir in dirs {
         let folder = dir.join(CASES_DIR);
         let entries = std::fs::read_dir(&folder)
@@ -42,13 +42,20 @@ pub fn read_cases(dirs: &[PathBuf]) -> anyhow::Result<Vec<CaseResult>> {
                 let text = std::fs::read_to_string(&path)?;
                 let case: CaseResult = serde_json::from_str(&text)
                     .with_context(|| format!("{}: not a case result", path.display()))?;
-                all.push(case);
+                all.push((case, dir));
             }
         }
     }
-    all.sort_by_key(|c| c.index);
-    all.dedup_by_key(|c| c.index);
-    Ok(all)
+    all.sort_by_key(|(c, _)| c.index);
+    if let Some(pair) = all.windows(2).find(|w| w[0].0.index == w[1].0.index) {
+        anyhow::bail!(
+            "case {} is in {} and in {}: each case belongs to one folder (a folder given twice, or shards of different splits)",
+            pair[0].0.index,
+            pair[0].1.display(),
+            pair[1].1.display()
+        );
+    }
+    Ok(all.into_iter().map(|(c, _)| c).collect())
 }
 
 /// Writes `dir/cases.csv`: index, rpm, load_nm, the swept parameters, then the results.
