@@ -19,6 +19,10 @@ const ANSWER_WAIT_S: f64 = 10.0;
 /// An answer: the order the plant's thread took the command in, and the reply.
 pub type Answer = (u64, Reply);
 
+/// The session's log: each accepted live command with the order the plant's thread took
+/// it in.
+type SessionLog = Arc<Mutex<Vec<(u64, TimedCommand)>>>;
+
 /// A command on its way to its target.
 #[derive(Clone, Debug)]
 pub struct Pending {
@@ -29,11 +33,23 @@ pub struct Pending {
     /// The order the plant's thread took it in.
     pub order: u64,
     answer: Option<Sender<Answer>>,
+    log: Option<SessionLog>,
 }
 
 impl Pending {
-    /// Answers the sender (if one waits): carried out, or refused with why.
+    /// Answers the sender (if one waits): carried out, or refused with why. A live
+    /// command carried out joins the session's log here, as it takes effect, whether or
+    /// not its sender still waits.
     pub fn answer(&self, outcome: Result<(), Refusal>) {
+        if let (Ok(()), Some(log)) = (&outcome, &self.log) {
+            let timed = TimedCommand {
+                at_s: self.at_s,
+                command: self.command.clone(),
+            };
+            log.lock()
+                .unwrap_or_else(PoisonError::into_inner)
+                .push((self.order, timed));
+        }
         if let Some(tx) = &self.answer {
             let reply = Reply {
                 ok: outcome.is_ok(),
@@ -51,13 +67,15 @@ impl Pending {
 pub struct Request {
     command: RigCommand,
     answer: Sender<Answer>,
+    log: SessionLog,
 }
 
 /// Where scripts and pages send commands; clones share the session's log.
 #[derive(Clone, Debug)]
 pub struct ControlHandle {
     requests: Sender<Request>,
-    log: Arc<Mutex<Vec<(u64, TimedCommand)>>>,
+    log: SessionLog,
+    wait: Duration,
 }
 
 impl ControlHandle {
@@ -67,35 +85,33 @@ impl ControlHandle {
         let handle = Self {
             requests,
             log: Arc::default(),
+            wait: Duration::from_secs_f64(ANSWER_WAIT_S),
         };
         (handle, inbox)
     }
 
-    /// Sends `command` and waits for its answer; an accepted command joins the log.
+    /// The same handle waiting at most `wait` for each answer.
+    pub fn waiting(self, wait: Duration) -> Self {
+        Self { wait, ..self }
+    }
+
+    /// Sends `command` and waits for its answer. The command joins the session's log
+    /// when it is carried out (see [`Pending::answer`]), even after the wait has ended.
     pub fn send(&self, command: RigCommand) -> Reply {
         let (answer, answers) = bounded(1);
         let request = Request {
-            command: command.clone(),
+            command,
             answer,
+            log: Arc::clone(&self.log),
         };
         if self.requests.send(request).is_err() {
             return refused("the run has ended");
         }
-        match answers.recv_timeout(Duration::from_secs_f64(ANSWER_WAIT_S)) {
-            Ok((order, reply)) => {
-                if reply.ok {
-                    let timed = TimedCommand {
-                        at_s: reply.at_s,
-                        command,
-                    };
-                    self.log
-                        .lock()
-                        .unwrap_or_else(PoisonError::into_inner)
-                        .push((order, timed));
-                }
-                reply
-            }
-            Err(_) => refused("no answer from the rig (it has ended, or its queues are full)"),
+        match answers.recv_timeout(self.wait) {
+            Ok((_, reply)) => reply,
+            Err(_) => refused(
+                "no answer from the rig yet (it has ended, or its queues are full); if it is carried out later it still joins the session",
+            ),
         }
     }
 
@@ -165,19 +181,23 @@ impl CommandInbox {
             .is_some_and(|(at, _)| *at <= start_sample)
         {
             if let Some((_, command)) = self.scheduled.pop_front() {
-                due.push((command, Some(self.scheduled_answers.0.clone())));
+                due.push((command, Some(self.scheduled_answers.0.clone()), None));
             }
         }
         if let Some(live) = &self.live {
-            due.extend(live.try_iter().map(|r| (r.command, Some(r.answer))));
+            due.extend(
+                live.try_iter()
+                    .map(|r| (r.command, Some(r.answer), Some(r.log))),
+            );
         }
         let mut pending = Vec::with_capacity(due.len());
-        for (command, answer) in due {
+        for (command, answer, log) in due {
             let p = Pending {
                 command,
                 at_s,
                 order: self.next_order,
                 answer,
+                log,
             };
             self.next_order += 1;
             if self.targets.contains(&p.command.target()) {
@@ -229,4 +249,37 @@ pub fn command_name(command: &RigCommand) -> String {
         .ok()
         .and_then(|v| v.get("cmd").and_then(|c| c.as_str()).map(str::to_string))
         .unwrap_or_default()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Issue 23, item 4: a command answered "no answer" after its sender's wait still
+    /// took effect but was left out of the session, so the replay differed. It joins the
+    /// session when it is carried out; a refused one never does.
+    #[test]
+    fn a_command_carried_out_after_its_sender_gave_up_still_joins_the_session() {
+        let (handle, requests) = ControlHandle::new();
+        let handle = handle.waiting(Duration::from_millis(20));
+        let mut inbox = CommandInbox::new(&[], Some(requests), vec![Target::Plant], 51_200.0);
+        let late = RigCommand::SetSpeed { rpm: 1300.0 };
+        let refused_one = RigCommand::SetSpeed { rpm: -5.0 };
+        for command in [late.clone(), refused_one] {
+            let reply = handle.send(command);
+            assert!(!reply.ok, "nobody answered within the wait");
+        }
+        assert!(handle.session().is_empty(), "nothing carried out yet");
+        let pending = inbox.due(76_800, 1.5);
+        assert_eq!(pending.len(), 2);
+        pending[0].answer(Ok(()));
+        pending[1].answer(Err(Refusal::Setting("speed -5: below 0".into())));
+        assert_eq!(
+            handle.session(),
+            vec![TimedCommand {
+                at_s: 1.5,
+                command: late
+            }]
+        );
+    }
 }
