@@ -130,3 +130,66 @@ fn a_sweep_of_more_cases_than_the_limit_is_refused_before_it_starts() {
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// Slip-ring fluctuations of 1e308 gave an all-NaN recording without a word. They are
+/// relative fluctuations of the contact resistance, at most 1; beyond it the scenario is
+/// refused at its line, naming the field.
+#[test]
+fn slip_ring_noise_beyond_any_contact_is_refused_by_name() {
+    let dir = folder("slip-nan");
+    let out = dir.join("out");
+    let output = testrig(&[
+        "run",
+        &scenario("subharmonic-2712nm"),
+        "--pace",
+        "max",
+        "--set",
+        "chain.slip_rings.broadband_rms=1e308",
+        "--out",
+        out.to_str().expect("utf-8"),
+    ]);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains("subharmonic-2712nm.toml")
+            && stderr.contains("broadband_rms")
+            && stderr.contains("[0, 1]"),
+        "{stderr}"
+    );
+    assert!(!out.join("recording.wav").exists());
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// At `--pace 0.001` a block is due seconds away, and SIGTERM waited for it: 18 s to
+/// stop. The paced wait now looks at the stop flag every 50 ms: the run stops within a
+/// second, its files complete and the manifest saying it was interrupted.
+#[test]
+fn a_stop_signal_ends_a_slowly_paced_run_within_a_second() {
+    let out = folder("slow-stop");
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_testrig"))
+        .args([
+            "run",
+            &scenario("subharmonic-2712nm"),
+            "--pace",
+            "0.001",
+            "--out",
+            out.to_str().expect("utf-8"),
+        ])
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("starts");
+    std::thread::sleep(std::time::Duration::from_millis(1500));
+    let signalled = std::time::Instant::now();
+    let killed = std::process::Command::new("kill")
+        .args(["-TERM", &child.id().to_string()])
+        .status()
+        .expect("kill runs");
+    assert!(killed.success());
+    let status = child.wait().expect("ends");
+    let took = signalled.elapsed();
+    assert!(took.as_secs_f64() < 1.0, "stopped after {took:?}");
+    assert_eq!(status.code(), Some(128 + 15), "{status:?}");
+    assert_eq!(read_manifest(&out)["ending"], "interrupted");
+    std::fs::remove_dir_all(&out).ok();
+}

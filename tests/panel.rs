@@ -169,6 +169,19 @@ fn bad_commands_are_refused_and_change_nothing() {
     }
     let (status, _) = panel.get("/api/nothing");
     assert_eq!(status, 404);
+    // A known path asked with another method: 405 with the methods it takes (issue 23).
+    for (method, path, allow) in [
+        ("HEAD", "/api/state", "GET"),
+        ("OPTIONS", "/api/command", "POST"),
+        ("GET", "/api/command", "POST"),
+        ("POST", "/", "GET"),
+    ] {
+        let response = panel_support::http_response(panel.address, method, path, "");
+        assert!(
+            response.starts_with("HTTP/1.1 405") && response.contains(&format!("Allow: {allow}")),
+            "{method} {path}: {response}"
+        );
+    }
     let after = panel.state();
     assert_eq!(before["speed_set_rpm"], after["speed_set_rpm"]);
     assert_eq!(before["load_set_nm"], after["load_set_nm"]);

@@ -11,7 +11,7 @@
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64Mcg;
 
-use crate::error::{InstrumentError, require_positive};
+use crate::error::InstrumentError;
 
 /// Lobes each side of the interpolation kernel.
 const LOBES: usize = 16;
@@ -45,7 +45,8 @@ pub struct Adc {
 }
 
 impl Adc {
-    /// A converter; ratio ≥ 1, 2 ≤ bits ≤ 24, range finite and > 0.
+    /// A converter; ratio ≥ 1, 2 ≤ bits ≤ 24, range in [1e-9, 1e9] (a step of a
+    /// normal number, so that every code is finite).
     pub fn new(settings: AdcSettings) -> Result<Self, InstrumentError> {
         const NAME: &str = "ADC";
         if !(settings.ratio.is_finite() && settings.ratio >= 1.0) {
@@ -64,7 +65,14 @@ impl Adc {
                 "must lie in 2..=24",
             ));
         }
-        require_positive(NAME, "range", settings.range_v)?;
+        if !(MIN_RANGE..=MAX_RANGE).contains(&settings.range_v) {
+            return Err(InstrumentError::setting(
+                NAME,
+                "range",
+                settings.range_v,
+                "the ± full scale must lie in [1e-9, 1e9] (in the signal's unit)",
+            ));
+        }
         let rounded = settings.ratio.round();
         let mut adc = Self {
             settings,
@@ -195,6 +203,11 @@ impl Adc {
         clipped * self.step_v
     }
 }
+
+/// Smallest ± full scale accepted (in the signal's unit).
+const MIN_RANGE: f64 = 1e-9;
+/// Largest ± full scale accepted (in the signal's unit).
+const MAX_RANGE: f64 = 1e9;
 
 /// Kaiser window shape β.
 const KAISER_BETA: f64 = 12.0;

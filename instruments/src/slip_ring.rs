@@ -9,6 +9,10 @@ use crate::block::Block;
 use crate::error::InstrumentError;
 use crate::noise::GaussianSource;
 
+/// Largest RMS contact noise accepted (V): far beyond any slip ring (microvolts), yet
+/// bounded so that every sample stays finite.
+const MAX_CONTACT_NOISE_V: f64 = 1000.0;
+
 /// Slip-ring settings.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SlipRingSettings {
@@ -40,17 +44,25 @@ impl SlipRing {
         rate_hz: f64,
         rotation_hz: f64,
     ) -> Result<Self, InstrumentError> {
-        let values = [
-            settings.broadband_rms,
-            settings.per_rev_amplitude,
-            settings.contact_noise_v_rms,
-        ];
-        if values.iter().any(|v| !(v.is_finite() && *v >= 0.0)) {
+        let relative = [settings.broadband_rms, settings.per_rev_amplitude];
+        if relative
+            .iter()
+            .any(|v| !(v.is_finite() && (0.0..=1.0).contains(v)))
+        {
             return Err(InstrumentError::setting(
                 "slip rings",
-                "noise levels",
-                format!("{values:?}"),
-                "must be finite and ≥ 0",
+                "broadband_rms and per_rev_amplitude",
+                format!("{:?} and {:?}", relative[0], relative[1]),
+                "relative fluctuations of the contact resistance: each in [0, 1] (1 = 100 %)",
+            ));
+        }
+        let noise = settings.contact_noise_v_rms;
+        if !(noise.is_finite() && (0.0..=MAX_CONTACT_NOISE_V).contains(&noise)) {
+            return Err(InstrumentError::setting(
+                "slip rings",
+                "contact_noise_v_rms",
+                noise,
+                "must lie in [0, 1000] V",
             ));
         }
         if !(rate_hz.is_finite() && rate_hz > 0.0 && rotation_hz.is_finite()) {

@@ -163,3 +163,26 @@ fn a_ratio_beyond_the_kernel_reach_samples_a_long_stream() {
     adc.convert(&input, &mut whole);
     assert_eq!(output, whole);
 }
+
+/// Issue 23: a range of 5e-324 (the panel's `set_adc_range`) was accepted, giving a step
+/// of 0 and codes of ±inf·0. The range must keep the step a normal number.
+#[test]
+fn a_range_too_small_or_too_large_for_finite_codes_is_refused() {
+    for range_v in [5e-324, 1e-12, 1e12, f64::INFINITY] {
+        let refused = Adc::new(AdcSettings {
+            range_v,
+            ..settings(12)
+        });
+        let message = refused.err().map(|e| e.to_string()).unwrap_or_default();
+        assert!(message.contains("range"), "{range_v}: {message}");
+    }
+    for range_v in [1e-9, 1e9] {
+        assert!(
+            Adc::new(AdcSettings {
+                range_v,
+                ..settings(24)
+            })
+            .is_ok()
+        );
+    }
+}

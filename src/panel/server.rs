@@ -133,6 +133,18 @@ fn handle(mut request: Request, shared: &Shared) {
             json(if reply.ok { 200 } else { 400 }, &reply)
         }
         ("GET", "/api/stream") => return stream(request, shared),
+        (_, path) if allowed_methods(path).is_some() => {
+            let allowed = allowed_methods(path).unwrap_or_default();
+            json(
+                405,
+                &Reply {
+                    ok: false,
+                    at_s: f64::NAN,
+                    error: Some(format!("{method} {path}: only {allowed}; see docs/api.md")),
+                },
+            )
+            .with_header(header("Allow", allowed))
+        }
         _ => json(
             404,
             &Reply {
@@ -144,6 +156,17 @@ fn handle(mut request: Request, shared: &Shared) {
     };
     // The client may have gone; nothing is owed to it then.
     let _ = request.respond(response);
+}
+
+/// The methods a known path answers (for `Allow`); `None` for an unknown path.
+fn allowed_methods(path: &str) -> Option<&'static str> {
+    match path {
+        "/" | "/index.html" | "/panel.js" | "/api/info" | "/api/state" | "/api/stream" => {
+            Some("GET")
+        }
+        "/api/command" => Some("POST"),
+        _ => None,
+    }
 }
 
 /// Parses the body as a command and sends it; a malformed body is refused unsent.

@@ -1,6 +1,7 @@
 //! Pacing: blocks released at wall-clock deadlines t0 + k·period/pace, and a fixed-size
 //! histogram of how late each release was.
 
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
 /// How fast simulated time runs against the wall clock.
@@ -38,6 +39,9 @@ impl Pace {
     }
 }
 
+/// Longest a paced wait goes without looking at the stop flag (s).
+pub const STOP_CHECK_S: f64 = 0.05;
+
 /// Wall-clock deadlines of a paced run.
 #[derive(Clone, Copy, Debug)]
 pub struct Pacer {
@@ -56,11 +60,17 @@ impl Pacer {
 
     /// Waits until the block ending at sample `end_sample` is due (its last sample's
     /// simulated time, scaled by the pace) and returns how late the release is (s, ≥ 0).
-    pub fn wait_for(&self, end_sample: u64) -> f64 {
+    /// The wait ends early, within [`STOP_CHECK_S`], once `stop` is set: a slow pace
+    /// (a block may be due seconds away) never holds up a stop signal.
+    pub fn wait_for(&self, end_sample: u64, stop: &AtomicBool) -> f64 {
         let due = self.start + Duration::from_secs_f64(end_sample as f64 * self.seconds_per_sample);
-        let now = Instant::now();
-        if now < due {
-            std::thread::sleep(due - now);
+        let slice = Duration::from_secs_f64(STOP_CHECK_S);
+        loop {
+            let now = Instant::now();
+            if now >= due || stop.load(Ordering::Relaxed) {
+                break;
+            }
+            std::thread::sleep((due - now).min(slice));
         }
         Instant::now().saturating_duration_since(due).as_secs_f64()
     }

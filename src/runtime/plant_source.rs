@@ -119,7 +119,7 @@ pub fn run_plant(mut job: PlantJob, out: Sender<Frame>) -> PlantReport {
         report.samples += n as u64;
         seq += 1;
         if let Some(pacer) = &pacer {
-            let lateness_s = pacer.wait_for(report.samples);
+            let lateness_s = pacer.wait_for(report.samples, &job.stop);
             report.lateness.add(lateness_s);
             job.status.update(|s| s.lateness_s = lateness_s);
         }

@@ -106,8 +106,22 @@ impl Drop for Panel {
     }
 }
 
-/// One HTTP/1.1 request, the connection closed after it.
+/// One HTTP/1.1 request, the connection closed after it: status and body.
 pub fn http(address: SocketAddr, method: &str, path: &str, body: &str) -> (u16, String) {
+    let response = http_response(address, method, path, body);
+    let status = response
+        .split_whitespace()
+        .nth(1)
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(0);
+    let body = response
+        .split_once("\r\n\r\n")
+        .map_or(String::new(), |(_, b)| b.to_string());
+    (status, body)
+}
+
+/// One HTTP/1.1 request, the connection closed after it: the whole response as text.
+pub fn http_response(address: SocketAddr, method: &str, path: &str, body: &str) -> String {
     let mut stream = TcpStream::connect(address).expect("connects");
     stream
         .set_read_timeout(Some(Duration::from_secs(30)))
@@ -120,13 +134,5 @@ pub fn http(address: SocketAddr, method: &str, path: &str, body: &str) -> (u16, 
     .expect("sends");
     let mut response = String::new();
     stream.read_to_string(&mut response).expect("reads");
-    let status = response
-        .split_whitespace()
-        .nth(1)
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(0);
-    let body = response
-        .split_once("\r\n\r\n")
-        .map_or(String::new(), |(_, b)| b.to_string());
-    (status, body)
+    response
 }
