@@ -287,3 +287,81 @@ rpm = 2000
     assert!(warnings.contains("at most 1300 rev/min"), "{warnings}");
     assert!(!warnings.contains("at t = 1 s"), "{warnings}");
 }
+
+/// Issue 23, item 2: a page of another site could set the speed (a no-cors POST), and the
+/// stream answered any Origin and Host (DNS rebinding). On loopback the panel now answers
+/// only its own Host, refuses another Origin on commands and the stream, and takes
+/// commands only as JSON; nothing refused reaches the rig.
+#[test]
+fn requests_from_other_sites_are_refused_on_loopback() {
+    let out = folder("panel-guard");
+    let panel = Panel::start(&out, &["--pace", "20"]);
+    let address = panel.address;
+    let host = format!("Host: {address}\r\n");
+    let set_speed = r#"{"cmd": "set_speed", "rpm": 2222}"#;
+    let status = |response: &str| response.split_whitespace().nth(1).unwrap_or("").to_string();
+    let cases = [
+        (
+            "GET",
+            "/api/state",
+            "Host: rebound.example:80\r\n".to_string(),
+            "403",
+        ),
+        (
+            "POST",
+            "/api/command",
+            format!("{host}Origin: http://evil.example\r\nContent-Type: application/json\r\n"),
+            "403",
+        ),
+        (
+            "POST",
+            "/api/command",
+            format!("{host}Content-Type: text/plain\r\n"),
+            "415",
+        ),
+        (
+            "GET",
+            "/api/stream",
+            format!(
+                "{host}Origin: http://evil.example\r\nUpgrade: websocket\r\nConnection: Upgrade\r\nSec-WebSocket-Key: dGhlIHNhbXBsZSBub25jZQ==\r\nSec-WebSocket-Version: 13\r\n"
+            ),
+            "403",
+        ),
+    ];
+    for (method, path, headers, expected) in cases {
+        let response = panel_support::http_with(address, method, path, &headers, set_speed);
+        assert_eq!(
+            status(&response),
+            expected,
+            "{method} {path} {headers}: {response}"
+        );
+    }
+    assert_ne!(
+        panel.state()["speed_set_rpm"],
+        2222.0,
+        "a refused command acted"
+    );
+    let own = format!("{host}Origin: http://{address}\r\nContent-Type: application/json\r\n");
+    let response = panel_support::http_with(address, "POST", "/api/command", &own, set_speed);
+    assert_eq!(status(&response), "200", "{response}");
+    std::fs::remove_dir_all(&out).ok();
+}
+
+/// Bound beyond loopback the panel prints a URL with a fresh token, and its API answers
+/// only requests that carry it; the page itself is served to anyone.
+#[test]
+fn beyond_loopback_the_api_answers_only_with_the_printed_token() {
+    let out = folder("panel-token");
+    let panel = Panel::start_on("0.0.0.0:0", &out, &["--pace", "20"]);
+    let token = panel.token.clone().expect("a token in the URL");
+    assert_eq!(token.len(), 32, "{token}");
+    let (status, _) = panel.get("/api/state");
+    assert_eq!(status, 401);
+    let (status, _) = panel.get("/");
+    assert_eq!(status, 200);
+    let (status, body) = panel.get(&format!("/api/state?token={token}"));
+    assert_eq!(status, 200, "{body}");
+    let (status, _) = panel.get("/api/state?token=00000000000000000000000000000000");
+    assert_eq!(status, 401);
+    std::fs::remove_dir_all(&out).ok();
+}

@@ -43,12 +43,6 @@ pub fn run(args: &PanelArgs) -> anyhow::Result<ExitCode> {
     // Runs until Quit or a signal: as long as any run may be.
     plan.duration_s = MAX_SIMULATED_S;
     source.text = plan.text.clone();
-    if !args.listen.ip().is_loopback() {
-        eprintln!(
-            "warning: --listen {}: the panel and its API are open to every machine that can reach this address; anyone there can operate the rig",
-            args.listen
-        );
-    }
     clear_previous_run(&args.out)?;
     let (control, requests) = ControlHandle::new();
     let status = SharedStatus::default();
@@ -58,10 +52,22 @@ pub fn run(args: &PanelArgs) -> anyhow::Result<ExitCode> {
         status.clone(),
         info(&plan, ceiling, pace),
     )?;
-    println!(
-        "testrig panel: http://{}/ (Quit on the page, or Ctrl-C, ends the session)",
-        server.address
-    );
+    match &server.token {
+        None => println!(
+            "testrig panel: http://{}/ (Quit on the page, or Ctrl-C, ends the session)",
+            server.address
+        ),
+        Some(token) => {
+            println!(
+                "testrig panel: http://{}/?token={token} (Quit on the page, or Ctrl-C, ends the session)",
+                server.address
+            );
+            eprintln!(
+                "warning: --listen {}: the panel is reachable from other machines; the API answers only with the token in the URL above, over plain HTTP (docs/security.md)",
+                args.listen
+            );
+        }
+    }
     let signals = StopSignals::install().context("cannot install the signal handlers")?;
     let options = RunOptions {
         pace,

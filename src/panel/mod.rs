@@ -2,6 +2,7 @@
 //! the state it shows and the session file it keeps. It sits above the runtime: it reads
 //! the run's status and sends commands through the control channel.
 
+pub(crate) mod guard;
 pub(crate) mod server;
 pub(crate) mod session;
 pub(crate) mod state;

@@ -12,6 +12,7 @@ use std::time::Duration;
 use serde::Serialize;
 use tiny_http::{Header, Request, Response, Server, StatusCode};
 
+use super::guard::Guard;
 use super::state::PanelState;
 use crate::runtime::status::SharedStatus;
 use crate::vocabulary::command::{Reply, RigCommand};
@@ -51,6 +52,7 @@ pub struct PanelInfo {
 /// What the server's threads share.
 #[derive(Clone)]
 struct Shared {
+    guard: Guard,
     control: ControlHandle,
     status: SharedStatus,
     info: Arc<PanelInfo>,
@@ -61,6 +63,8 @@ struct Shared {
 pub struct PanelServer {
     /// The address it listens on.
     pub address: SocketAddr,
+    /// The token API requests must carry, when bound beyond loopback.
+    pub token: Option<String>,
     stop: Arc<AtomicBool>,
     thread: Option<JoinHandle<()>>,
 }
@@ -80,7 +84,11 @@ impl PanelServer {
             .to_ip()
             .ok_or_else(|| anyhow::anyhow!("--listen {address}: not an IP address"))?;
         let stop = Arc::new(AtomicBool::new(false));
+        let guard = Guard::new(address)
+            .map_err(|e| anyhow::anyhow!("cannot draw the panel's token: {e}"))?;
+        let token = guard.token().map(str::to_string);
         let shared = Shared {
+            guard,
             control,
             status,
             info: Arc::new(info),
@@ -89,6 +97,7 @@ impl PanelServer {
         let thread = std::thread::spawn(move || serve(&server, &shared));
         Ok(Self {
             address,
+            token,
             stop,
             thread: Some(thread),
         })
@@ -123,6 +132,15 @@ fn handle(mut request: Request, shared: &Shared) {
     let path = request.url().split('?').next().unwrap_or("").to_string();
     let method = request.method().as_str().to_string();
     let rate_hz = shared.info.rate_hz;
+    if let Err((status, why)) = shared.guard.check(&request, &path) {
+        let refusal = Reply {
+            ok: false,
+            at_s: f64::NAN,
+            error: Some(why),
+        };
+        let _ = request.respond(json(status, &refusal));
+        return;
+    }
     let response = match (method.as_str(), path.as_str()) {
         ("GET", "/" | "/index.html") => text(PAGE_HTML, "text/html; charset=utf-8"),
         ("GET", "/panel.js") => text(PAGE_JS, "text/javascript; charset=utf-8"),

@@ -13,6 +13,8 @@ pub struct Panel {
     pub child: Child,
     /// Where it serves.
     pub address: SocketAddr,
+    /// The token its URL carries (bound beyond loopback).
+    pub token: Option<String>,
     /// Its standard output after the first line (kept open: the panel prints at the end).
     stdout: BufReader<std::process::ChildStdout>,
 }
@@ -20,8 +22,13 @@ pub struct Panel {
 impl Panel {
     /// Starts a panel on a free loopback port with `args` besides `--listen` and `--out`.
     pub fn start(out: &Path, args: &[&str]) -> Self {
+        Self::start_on("127.0.0.1:0", out, args)
+    }
+
+    /// Starts a panel listening on `listen` with `args` besides `--listen` and `--out`.
+    pub fn start_on(listen: &str, out: &Path, args: &[&str]) -> Self {
         let mut child = Command::new(env!("CARGO_BIN_EXE_testrig"))
-            .args(["panel", "--listen", "127.0.0.1:0", "--out"])
+            .args(["panel", "--listen", listen, "--out"])
             .arg(out)
             .args(args)
             .stdout(Stdio::piped())
@@ -38,9 +45,15 @@ impl Panel {
             .and_then(|rest| rest.split('/').next())
             .and_then(|a| a.parse().ok())
             .unwrap_or_else(|| panic!("no address in {line:?}"));
+        let token = line
+            .split("?token=")
+            .nth(1)
+            .and_then(|rest| rest.split_whitespace().next())
+            .map(str::to_string);
         Self {
             child,
             address,
+            token,
             stdout,
         }
     }
@@ -122,13 +135,26 @@ pub fn http(address: SocketAddr, method: &str, path: &str, body: &str) -> (u16, 
 
 /// One HTTP/1.1 request, the connection closed after it: the whole response as text.
 pub fn http_response(address: SocketAddr, method: &str, path: &str, body: &str) -> String {
+    let headers = format!("Host: {address}\r\nContent-Type: application/json\r\n");
+    http_with(address, method, path, &headers, body)
+}
+
+/// One HTTP/1.1 request with the header lines `headers` (each ending in CRLF): the whole
+/// response as text.
+pub fn http_with(
+    address: SocketAddr,
+    method: &str,
+    path: &str,
+    headers: &str,
+    body: &str,
+) -> String {
     let mut stream = TcpStream::connect(address).expect("connects");
     stream
         .set_read_timeout(Some(Duration::from_secs(30)))
         .expect("timeout");
     write!(
         stream,
-        "{method} {path} HTTP/1.1\r\nHost: {address}\r\nContent-Type: application/json\r\nContent-Length: {}\r\nConnection: close\r\n\r\n{body}",
+        "{method} {path} HTTP/1.1\r\n{headers}Content-Length: {}\r\nConnection: close\r\n\r\n{body}",
         body.len()
     )
     .expect("sends");

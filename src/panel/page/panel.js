@@ -6,9 +6,12 @@ const $ = (id) => document.getElementById(id);
 let state = null;
 let info = null;
 let marker = null; // index of the marked spectrum line
+// Bound beyond loopback, the panel's URL carries a token every API request must repeat.
+const TOKEN = new URLSearchParams(location.search).get("token");
+const api = (path) => (TOKEN ? `${path}?token=${encodeURIComponent(TOKEN)}` : path);
 
 async function send(command) {
-  const response = await fetch("/api/command", {
+  const response = await fetch(api("/api/command"), {
     method: "POST",
     headers: { "Content-Type": "application/json" },
     body: JSON.stringify(command),
@@ -181,9 +184,9 @@ function show() {
 }
 
 async function connect() {
-  info = await (await fetch("/api/info")).json();
+  info = await (await fetch(api("/api/info"))).json();
   $("scenario").textContent = info.scenario;
-  const ws = new WebSocket(`ws://${location.host}/api/stream`);
+  const ws = new WebSocket(`ws://${location.host}${api("/api/stream")}`);
   ws.onmessage = (m) => { state = JSON.parse(m.data); show(); };
   ws.onclose = () => { $("status").textContent = "disconnected: the session has ended"; };
 }
