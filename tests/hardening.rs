@@ -193,3 +193,31 @@ fn a_stop_signal_ends_a_slowly_paced_run_within_a_second() {
     assert_eq!(read_manifest(&out)["ending"], "interrupted");
     std::fs::remove_dir_all(&out).ok();
 }
+
+/// `set_analyser` with a block of 2²⁰ took the memory to 3 GB and the plant 1.2 s late.
+/// Blocks are bounded to 16 384 samples, refused naming the block, as every analyser
+/// setting (panel, scenario, `analyse`) comes through one check.
+#[test]
+fn an_analyser_block_beyond_the_limit_is_refused_by_name() {
+    let settings = instruments::AnalyserSettings {
+        block: 1 << 20,
+        ..instruments::AnalyserSettings::thesis(1024, 200.0)
+    };
+    let adc = testrig::chain::AdcChoice {
+        bits: 12,
+        range_v: 5.0,
+        dither_seed: None,
+    };
+    let refused = testrig::chain::set_up_analyser(settings, adc, 51_200.0);
+    let error = refused.err().expect("refused");
+    assert_eq!(error.setting(), testrig::chain::AnalyserSetting::Block);
+    assert!(
+        error.to_string().contains("block 1048576: at most 16384"),
+        "{error}"
+    );
+    let largest = instruments::AnalyserSettings {
+        block: 16_384,
+        ..settings
+    };
+    assert!(testrig::chain::set_up_analyser(largest, adc, 51_200.0).is_ok());
+}

@@ -5,7 +5,7 @@
 
 use instruments::{Adc, AdcSettings, AliasTruth, Analyser, AnalyserSettings, InstrumentError};
 
-use crate::vocabulary::limits::{LimitError, check_averages};
+use crate::vocabulary::limits::{LimitError, check_averages, check_block};
 
 /// The analyser's settings a user chooses, by name in their own words: a scenario's
 /// `analyser.*` keys, the panel's fields, `analyse`'s flags.
@@ -35,6 +35,9 @@ pub enum AnalyserSetupError {
         /// The overlap asked for (%).
         pct: f64,
     },
+    /// The block is larger than the rig allows.
+    #[error("{0}")]
+    Block(LimitError),
     /// The analyser refuses its settings (block size, band).
     #[error("{0}")]
     Analyser(InstrumentError),
@@ -60,7 +63,7 @@ impl AnalyserSetupError {
         match self {
             Self::Averages(_) => AnalyserSetting::Averages,
             Self::Overlap { .. } => AnalyserSetting::OverlapPct,
-            Self::Analyser(_) => AnalyserSetting::Block,
+            Self::Analyser(_) | Self::Block(_) => AnalyserSetting::Block,
             Self::AdcAboveStream { .. } | Self::Truth(_) => AnalyserSetting::FmaxHz,
             Self::Adc(_) => AnalyserSetting::Adc,
         }
@@ -100,6 +103,7 @@ pub fn set_up_analyser(
     stream_hz: f64,
 ) -> Result<AnalyserSetup, AnalyserSetupError> {
     check_averages(settings.averages).map_err(AnalyserSetupError::Averages)?;
+    check_block(settings.block).map_err(AnalyserSetupError::Block)?;
     if !(0.0..1.0).contains(&settings.overlap) {
         return Err(AnalyserSetupError::Overlap {
             pct: 100.0 * settings.overlap,

@@ -102,6 +102,13 @@ pub fn run(args: &PanelArgs) -> anyhow::Result<ExitCode> {
         session_path.display(),
         args.out.display()
     );
+    if control.refused_busy() > 0 {
+        eprintln!(
+            "warning: {} commands were refused because {} already waited for the rig (a flood)",
+            control.refused_busy(),
+            testrig::vocabulary::MAX_QUEUED_COMMANDS
+        );
+    }
     if failed {
         let all = result.failures();
         bail!("{}", all.join("; "));

@@ -5,16 +5,21 @@
 //! session's log.
 
 use std::collections::VecDeque;
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Mutex, PoisonError};
 use std::time::Duration;
 
-use crossbeam_channel::{Receiver, Sender, bounded, unbounded};
+use crossbeam_channel::{Receiver, Sender, TrySendError, bounded, unbounded};
 
 use super::command::{Reply, RigCommand, Target, TimedCommand};
 use super::refusal::Refusal;
 
 /// How long a sender waits for the answer (s of wall time).
 const ANSWER_WAIT_S: f64 = 10.0;
+
+/// Most commands waiting for the plant's thread; more are refused at once as busy (the
+/// plant takes them at every block, so only a flood fills the queue).
+pub const MAX_QUEUED_COMMANDS: usize = 256;
 
 /// An answer: the order the plant's thread took the command in, and the reply.
 pub type Answer = (u64, Reply);
@@ -76,16 +81,18 @@ pub struct ControlHandle {
     requests: Sender<Request>,
     log: SessionLog,
     wait: Duration,
+    busy: Arc<AtomicU64>,
 }
 
 impl ControlHandle {
     /// A handle and the receiving end the run's plant thread reads.
     pub fn new() -> (Self, Receiver<Request>) {
-        let (requests, inbox) = unbounded();
+        let (requests, inbox) = bounded(MAX_QUEUED_COMMANDS);
         let handle = Self {
             requests,
             log: Arc::default(),
             wait: Duration::from_secs_f64(ANSWER_WAIT_S),
+            busy: Arc::default(),
         };
         (handle, inbox)
     }
@@ -104,8 +111,15 @@ impl ControlHandle {
             answer,
             log: Arc::clone(&self.log),
         };
-        if self.requests.send(request).is_err() {
-            return refused("the run has ended");
+        match self.requests.try_send(request) {
+            Ok(()) => {}
+            Err(TrySendError::Full(_)) => {
+                self.busy.fetch_add(1, Ordering::Relaxed);
+                return refused(&format!(
+                    "the rig is busy: {MAX_QUEUED_COMMANDS} commands wait for it; send again"
+                ));
+            }
+            Err(TrySendError::Disconnected(_)) => return refused("the run has ended"),
         }
         match answers.recv_timeout(self.wait) {
             Ok((_, reply)) => reply,
@@ -113,6 +127,11 @@ impl ControlHandle {
                 "no answer from the rig yet (it has ended, or its queues are full); if it is carried out later it still joins the session",
             ),
         }
+    }
+
+    /// Commands refused so far because the queue was full.
+    pub fn refused_busy(&self) -> u64 {
+        self.busy.load(Ordering::Relaxed)
     }
 
     /// The accepted commands in the order they took effect.
@@ -281,5 +300,24 @@ mod tests {
                 command: late
             }]
         );
+    }
+
+    /// Issue 23, item 5: a command flood grew the memory without bound. At most
+    /// [`MAX_QUEUED_COMMANDS`] wait; the rest are refused at once as busy and counted.
+    #[test]
+    fn a_flood_of_commands_fills_a_bounded_queue_and_the_rest_are_refused_as_busy() {
+        let (handle, requests) = ControlHandle::new();
+        let handle = handle.waiting(Duration::ZERO);
+        let extra = 44;
+        let replies: Vec<Reply> = (0..MAX_QUEUED_COMMANDS + extra)
+            .map(|_| handle.send(RigCommand::SetSpeed { rpm: 600.0 }))
+            .collect();
+        assert_eq!(requests.len(), MAX_QUEUED_COMMANDS);
+        assert_eq!(handle.refused_busy(), extra as u64);
+        let busy = replies
+            .iter()
+            .filter(|r| r.error.as_deref().is_some_and(|e| e.contains("busy")))
+            .count();
+        assert_eq!(busy, extra);
     }
 }

@@ -59,6 +59,21 @@ pub fn check_speed_rpm(value: f64) -> Result<f64, LimitError> {
 /// (or `--set` on one), each run as its own job.
 pub const MAX_SWEEP_CASES: u64 = 1_000_000;
 
+/// Largest analyser block (samples): twice the HP 5451C's largest transform (the thesis
+/// used 1024). Beyond it one block and its alias truth take the memory and the time of
+/// a whole run (a block of 2²⁰ at 51.2 kHz took 3 GB and made the plant 1.2 s late).
+pub const MAX_BLOCK: usize = 16_384;
+
+/// An analyser's block size, at most [`MAX_BLOCK`] (its power of two is the analyser's
+/// own check).
+pub fn check_block(block: usize) -> Result<usize, LimitError> {
+    if block <= MAX_BLOCK {
+        Ok(block)
+    } else {
+        Err(LimitError::Block { block })
+    }
+}
+
 /// Most spectra an average takes: the ground truth keeps the analogue signal behind a
 /// whole average (at 51.2 kHz and the thesis's 2.56 s blocks, 1000 averages hold 1 GiB).
 pub const MAX_AVERAGES: usize = 1000;
@@ -108,6 +123,12 @@ pub enum LimitError {
     Speed {
         /// The speed given (rev/min).
         value: f64,
+    },
+    /// A block larger than [`MAX_BLOCK`].
+    #[error("block {block}: at most {MAX_BLOCK} samples")]
+    Block {
+        /// The block given.
+        block: usize,
     },
     /// A number of averages out of range.
     #[error("{averages} averages: from 1 to {MAX_AVERAGES}")]

@@ -16,7 +16,7 @@ pub(crate) mod signal_names;
 
 pub use choices::SamplingChoice;
 pub use command::{Reply, RigCommand, Target, TimedCommand};
-pub use control::{CommandInbox, ControlHandle, Pending, Request};
+pub use control::{CommandInbox, ControlHandle, MAX_QUEUED_COMMANDS, Pending, Request};
 pub use display::{LiveSpectrum, LiveTrace};
 pub use frame::{Frame, SignalNames};
 pub use limits::{
