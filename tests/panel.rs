@@ -136,6 +136,14 @@ fn bad_commands_are_refused_and_change_nothing() {
         (r#"{"cmd": "record", "on": false}"#, "not recording"),
         (r#"{"cmd": "set_adc_range", "range_v": 0}"#, "range"),
         (
+            r#"{"cmd": "set_adc_range", "range_v": 5e-324}"#,
+            "[1e-9, 1e9]",
+        ),
+        (
+            r#"{"cmd": "set_analyser", "block": 1048576}"#,
+            "at most 16384",
+        ),
+        (
             r#"{"cmd": "set_oscillating_load", "nm": 8, "hz": 10}"#,
             "oscillating part",
         ),
@@ -166,6 +174,8 @@ fn bad_commands_are_refused_and_change_nothing() {
         assert_eq!(reply["ok"], false);
         let error = reply["error"].as_str().unwrap_or("");
         assert!(error.contains(expected), "{body}: {error}");
+        // In the user's words: no Rust structure printed (issue 23).
+        assert!(!error.contains(" { "), "{body}: {error}");
     }
     let (status, _) = panel.get("/api/nothing");
     assert_eq!(status, 404);

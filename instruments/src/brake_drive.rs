@@ -46,7 +46,10 @@ impl BrakeDrive {
             return Err(InstrumentError::setting(
                 "brake drive",
                 "settings",
-                format!("{s:?}"),
+                format!(
+                    "coil time constant {} s, AC {} A at {} Hz, {} N m/A",
+                    s.coil_time_constant_s, s.ac_amplitude_a, s.ac_frequency_hz, s.torque_per_amp
+                ),
                 "time constant > 0, amplitude and frequency ≥ 0",
             ));
         }

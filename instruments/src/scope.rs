@@ -75,7 +75,10 @@ impl Scope {
             return Err(InstrumentError::setting(
                 "oscilloscope",
                 "scales",
-                format!("{settings:?} at {rate_hz} Hz"),
+                format!(
+                    "{} V/div, {} s/div, trigger {} V, a sweep of {sweep} samples at {rate_hz} Hz",
+                    settings.volts_per_div, settings.seconds_per_div, settings.trigger_v
+                ),
                 "V/div > 0, s/div in (0, 5], a sweep of 2 to 16 Mi samples",
             ));
         }
