@@ -15,6 +15,9 @@ pub struct Float64Wav {
     pub channels: usize,
     /// Frames per second (Hz).
     pub rate_hz: f64,
+    /// When the file is cut short: the `data` chunk's declared and held bytes (the
+    /// whole frames held are read).
+    pub cut_short: Option<(usize, usize)>,
 }
 
 /// WAVE_FORMAT_IEEE_FLOAT.
@@ -48,7 +51,8 @@ pub fn read_float64(path: &Path) -> anyhow::Result<Option<Float64Wav>> {
                 if tag != IEEE_FLOAT || bits != 64 {
                     return Ok(None);
                 }
-                let samples = body
+                let whole = body.len() / (8 * channels) * (8 * channels);
+                let samples = body[..whole]
                     .chunks_exact(8)
                     .map(|b| f64::from_le_bytes(b.try_into().unwrap_or([0; 8])))
                     .collect();
@@ -56,6 +60,7 @@ pub fn read_float64(path: &Path) -> anyhow::Result<Option<Float64Wav>> {
                     samples,
                     channels,
                     rate_hz,
+                    cut_short: (body.len() < size).then_some((size, body.len())),
                 }));
             }
             _ => {}

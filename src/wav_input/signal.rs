@@ -70,7 +70,16 @@ fn read_interleaved(path: &Path) -> anyhow::Result<(Vec<f64>, usize, f64, bool)>
         Ok(reader) => reader,
         Err(error) => {
             return match read_float64(path) {
-                Ok(Some(wav)) => Ok((wav.samples, wav.channels, wav.rate_hz, false)),
+                Ok(Some(wav)) => {
+                    if let Some((declared, held)) = wav.cut_short {
+                        eprintln!(
+                            "warning: {}: the file is cut short: its data chunk declares {declared} bytes and holds {held}; the {} whole frames there are read",
+                            path.display(),
+                            wav.samples.len() / wav.channels
+                        );
+                    }
+                    Ok((wav.samples, wav.channels, wav.rate_hz, false))
+                }
                 Ok(None) => bail!("{}: {error}; this reader takes {FORMATS}", path.display()),
                 Err(e) => Err(e.context(format!("this reader takes WAV files of {FORMATS}"))),
             };
