@@ -221,3 +221,43 @@ fn an_analyser_block_beyond_the_limit_is_refused_by_name() {
     };
     assert!(testrig::chain::set_up_analyser(largest, adc, 51_200.0).is_ok());
 }
+
+/// A full disk (here a file-size limit, `ulimit -f`, which fails writes the same way)
+/// gave an error naming no file, a truncated file under its final name and no manifest.
+/// Now the error names the file, the manifest records the failure, and every file with
+/// a final name is complete: the recording that could not be finished keeps its partial
+/// name.
+#[test]
+fn a_write_that_fails_names_its_file_and_leaves_no_truncated_file() {
+    let out = folder("full-disk");
+    let command = format!(
+        "ulimit -f 2000; exec '{}' run '{}' --pace max --out '{}'",
+        env!("CARGO_BIN_EXE_testrig"),
+        scenario("subharmonic-2712nm"),
+        out.display()
+    );
+    let output = std::process::Command::new("sh")
+        .args(["-c", &command])
+        .output()
+        .expect("sh runs");
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("recording.wav"), "{stderr}");
+    let manifest = read_manifest(&out);
+    assert_eq!(manifest["ending"], "failed", "{manifest}");
+    let errors = manifest["errors"].to_string();
+    assert!(
+        errors.contains("recording.wav") && errors.contains("too large"),
+        "{errors}"
+    );
+    assert!(
+        !out.join("recording.wav").exists(),
+        "a truncated recording kept its name"
+    );
+    assert!(out.join("recording.wav.partial").exists());
+    for listed in manifest["files"].as_array().expect("files") {
+        let name = listed["path"].as_str().or(listed.as_str()).unwrap_or("");
+        assert!(!name.contains("partial"), "{name} listed as a result");
+    }
+    std::fs::remove_dir_all(&out).ok();
+}

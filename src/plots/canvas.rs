@@ -4,6 +4,7 @@ use std::path::{Path, PathBuf};
 
 use std::ops::Range;
 
+use anyhow::Context;
 use plotters::chart::MeshStyle;
 use plotters::coord::Shift;
 use plotters::coord::types::RangedCoordf64;
@@ -14,7 +15,9 @@ const FONT: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
 /// Plot size (pixels; SVG user units).
 pub const SIZE: (u32, u32) = (1024, 640);
 
-/// Draws the same picture into `base.png` and `base.svg`, returning both paths.
+/// Draws the same picture into `base.png` and `base.svg`, returning both paths. Each is
+/// drawn under a partial name (`base.partial.png`, so that the format still shows) and
+/// given its final name only when complete; a failure names the file.
 pub fn png_and_svg(
     base: &Path,
     draw_png: impl Fn(DrawingArea<BitMapBackend, Shift>) -> anyhow::Result<()>,
@@ -23,11 +26,23 @@ pub fn png_and_svg(
     plotters::style::register_font("sans-serif", FontStyle::Normal, FONT)
         .map_err(|_| anyhow::anyhow!("the embedded font cannot be read"))?;
     // Appended, not `with_extension`: a base such as `waterfall-2.712_N_m` keeps its dot.
-    let png = PathBuf::from(format!("{}.png", base.display()));
-    let svg = PathBuf::from(format!("{}.svg", base.display()));
-    draw_png(BitMapBackend::new(&png, SIZE).into_drawing_area())?;
-    draw_svg(SVGBackend::new(&svg, SIZE).into_drawing_area())?;
+    let named = |extension: &str| PathBuf::from(format!("{}.{extension}", base.display()));
+    let partial =
+        |extension: &str| PathBuf::from(format!("{}.partial.{extension}", base.display()));
+    let (png, svg) = (named("png"), named("svg"));
+    let (png_partial, svg_partial) = (partial("png"), partial("svg"));
+    draw_png(BitMapBackend::new(&png_partial, SIZE).into_drawing_area())
+        .with_context(|| format!("cannot write {}", png.display()))?;
+    commit(&png_partial, &png)?;
+    draw_svg(SVGBackend::new(&svg_partial, SIZE).into_drawing_area())
+        .with_context(|| format!("cannot write {}", svg.display()))?;
+    commit(&svg_partial, &svg)?;
     Ok(vec![png, svg])
+}
+
+/// Gives the finished drawing `partial` its final name `path`.
+fn commit(partial: &Path, path: &Path) -> anyhow::Result<()> {
+    std::fs::rename(partial, path).with_context(|| format!("cannot name {}", path.display()))
 }
 
 /// A plotters error as an anyhow error naming what was drawn.

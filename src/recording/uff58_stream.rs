@@ -87,7 +87,8 @@ impl Uff58Recorder {
             body.pending.push(v);
             body.count += 1;
             if body.pending.len() == 4 {
-                write_uff58_values(&mut body.writer, &body.pending).context("writing UFF58")?;
+                write_uff58_values(&mut body.writer, &body.pending)
+                    .with_context(|| format!("writing {}", body.path.display()))?;
                 body.pending.clear();
             }
         }
@@ -118,11 +119,13 @@ impl Uff58Recorder {
             };
             write_uff58_header(&mut out, &header, body.count)?;
             let mut reader = BufReader::new(File::open(&body.path)?);
-            std::io::copy(&mut reader, &mut out).context("assembling the UFF58 file")?;
+            std::io::copy(&mut reader, &mut out)
+                .with_context(|| format!("assembling {}", self.file.partial_path().display()))?;
             write_uff58_trailer(&mut out)?;
             std::fs::remove_file(&body.path).ok();
         }
-        out.flush().context("writing the UFF58 file")?;
+        out.flush()
+            .with_context(|| format!("writing {}", self.file.partial_path().display()))?;
         drop(out);
         self.file.commit()
     }

@@ -131,7 +131,7 @@ impl WavRecorder {
                     self.writer.write_sample(sample)
                 }
             };
-            written.context("writing a WAV sample")?;
+            written.with_context(|| format!("writing {}", self.file.path().display()))?;
         }
         self.frames += 1;
         Ok(())
@@ -149,7 +149,10 @@ impl WavRecorder {
 
     /// Closes the file and gives it its final name.
     pub fn finish(self) -> anyhow::Result<PathBuf> {
-        self.writer.finalize().context("closing the WAV file")?;
+        let path = self.file.path().display().to_string();
+        self.writer
+            .finalize()
+            .with_context(|| format!("closing {path}"))?;
         self.file.commit()
     }
 }
