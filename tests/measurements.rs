@@ -78,6 +78,15 @@ fn strict_fails_a_run_that_ends_with_warnings_and_keeps_its_files() {
     assert_eq!(output.status.code(), Some(3));
     let manifest = read_manifest(&out);
     assert_eq!(manifest["ending"], "completed");
+    // Counted in words: "1 warning", "2 warnings" (issue 24).
+    let count = warnings(&manifest).len();
+    let said = String::from_utf8_lossy(&output.stderr);
+    let words = if count == 1 {
+        "1 warning ".to_string()
+    } else {
+        format!("{count} warnings ")
+    };
+    assert!(said.contains(&format!("--strict: {words}")), "{said}");
     assert!(
         warnings(&manifest)
             .iter()

@@ -54,6 +54,13 @@ fn a_session_of_commands_replays_byte_for_byte() {
     }
     let (status, stderr) = panel.wait();
     assert!(status.success(), "{stderr}");
+    // Quit is the normal end of a session (issue 24): completed, not interrupted.
+    let ending = serde_json::from_str::<serde_json::Value>(
+        &std::fs::read_to_string(out.join("manifest.json")).expect("manifest"),
+    )
+    .expect("JSON")["ending"]
+        .clone();
+    assert_eq!(ending, "completed");
     let replay = folder("panel-replay");
     let session = out.join("session.toml");
     let output = testrig(&[
@@ -179,6 +186,9 @@ fn bad_commands_are_refused_and_change_nothing() {
     }
     let (status, _) = panel.get("/api/nothing");
     assert_eq!(status, 404);
+    let (status, icon) = panel.get("/favicon.ico");
+    assert_eq!(status, 200);
+    assert!(icon.starts_with("<svg"), "{icon}");
     // A known path asked with another method: 405 with the methods it takes (issue 23).
     for (method, path, allow) in [
         ("HEAD", "/api/state", "GET"),

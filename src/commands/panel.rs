@@ -90,10 +90,13 @@ pub fn run(args: &PanelArgs) -> anyhow::Result<ExitCode> {
     std::fs::write(&session_path, session.to_toml()?)
         .with_context(|| format!("cannot write {}", session_path.display()))?;
     let failed = !result.failures().is_empty();
+    // A session ends by Quit (completed) or by a signal (interrupted), unless it failed.
     let ending = if failed {
         Ending::Failed
-    } else {
+    } else if signals.received().is_some() {
         Ending::Interrupted
+    } else {
+        Ending::Completed
     };
     write_manifest(&args.out, &path, &plan, pace, &result, ending)?;
     println!(

@@ -85,15 +85,15 @@ pub fn run(args: &RunArgs) -> anyhow::Result<ExitCode> {
         }
     } else if !warnings.is_empty() {
         eprintln!(
-            "testrig: {} warnings, as foreseen above, listed in {}",
-            warnings.len(),
+            "testrig: {}, as foreseen above, listed in {}",
+            count_of(warnings.len(), "warning"),
             args.out.join("manifest.json").display()
         );
     }
     if args.strict && !warnings.is_empty() {
         eprintln!(
-            "testrig: --strict: {} warnings (listed in manifest.json)",
-            warnings.len()
+            "testrig: --strict: {} (listed in manifest.json)",
+            count_of(warnings.len(), "warning")
         );
         return Ok(ExitCode::from(WARNED));
     }
@@ -122,4 +122,13 @@ fn print_summary(name: &str, out: &std::path::Path, result: &RunResult, pace: Pa
         );
     }
     println!("{} files and manifest.json in {}", files, out.display());
+}
+
+/// `n` things in words: "1 warning", "2 warnings".
+fn count_of(n: usize, thing: &str) -> String {
+    if n == 1 {
+        format!("1 {thing}")
+    } else {
+        format!("{n} {thing}s")
+    }
 }

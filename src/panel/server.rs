@@ -25,6 +25,8 @@ const MAX_BODY_BYTES: u64 = 64 * 1024;
 
 const PAGE_HTML: &str = include_str!("page/panel.html");
 const PAGE_JS: &str = include_str!("page/panel.js");
+/// The page's icon: a gear with a sine, in the panel's green.
+const FAVICON_SVG: &str = r##"<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 32 32"><rect width="32" height="32" rx="6" fill="#1e2227"/><circle cx="16" cy="16" r="10" fill="none" stroke="#7fdc7f" stroke-width="3" stroke-dasharray="4 3"/><path d="M6 16 Q11 6 16 16 T26 16" fill="none" stroke="#7fdc7f" stroke-width="2"/></svg>"##;
 
 /// What the page needs to know once: the scenario, the stream and the limits.
 #[derive(Clone, Debug, Serialize)]
@@ -144,6 +146,7 @@ fn handle(mut request: Request, shared: &Shared) {
     let response = match (method.as_str(), path.as_str()) {
         ("GET", "/" | "/index.html") => text(PAGE_HTML, "text/html; charset=utf-8"),
         ("GET", "/panel.js") => text(PAGE_JS, "text/javascript; charset=utf-8"),
+        ("GET", "/favicon.svg" | "/favicon.ico") => text(FAVICON_SVG, "image/svg+xml"),
         ("GET", "/api/info") => json(200, &*shared.info),
         ("GET", "/api/state") => json(200, &PanelState::of(&shared.status.snapshot(), rate_hz)),
         ("POST", "/api/command") => {
@@ -179,9 +182,8 @@ fn handle(mut request: Request, shared: &Shared) {
 /// The methods a known path answers (for `Allow`); `None` for an unknown path.
 fn allowed_methods(path: &str) -> Option<&'static str> {
     match path {
-        "/" | "/index.html" | "/panel.js" | "/api/info" | "/api/state" | "/api/stream" => {
-            Some("GET")
-        }
+        "/" | "/index.html" | "/panel.js" | "/favicon.svg" | "/favicon.ico" | "/api/info"
+        | "/api/state" | "/api/stream" => Some("GET"),
         "/api/command" => Some("POST"),
         _ => None,
     }

@@ -61,6 +61,19 @@ def main():
             wait_until("a first DVM reading", lambda: rpm() > 0)
             before = rpm()
             page.screenshot(path=str(shots / "1-at-rest.png"))
+            # An empty speed box refuses the command in the page; the rig keeps its speed.
+            set_before = page.evaluate("() => state.speed_set_rpm")
+            page.fill("#speed", "")
+            page.click("#set-speed")
+            said = page.inner_text("#error")
+            if "give a number" not in said:
+                sys.exit(f"FAILED: an empty speed box was not refused: {said!r}")
+            time.sleep(0.5)
+            if page.evaluate("() => state.speed_set_rpm") != set_before:
+                sys.exit("FAILED: an empty speed box changed the set speed")
+            limit = page.get_attribute("#speed", "max")
+            if float(limit) != page.evaluate("() => info.max_speed_rpm"):
+                sys.exit(f"FAILED: the speed box's limit {limit} is not the rig's")
             page.fill("#speed", "1300")
             page.click("#set-speed")
             page.fill("#load", "2.712")

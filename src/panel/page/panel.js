@@ -24,8 +24,29 @@ async function send(command) {
   return reply;
 }
 
-const number = (id) => Number($(id).value);
-const on = (id, make) => $(id).addEventListener("click", () => send(make()));
+// A box's number; an empty or non-numeric box refuses the command, never sends 0.
+class Refused extends Error {}
+const number = (id) => {
+  const text = $(id).value.trim();
+  const value = Number(text);
+  if (text === "" || !Number.isFinite(value)) {
+    const label = document.querySelector(`label[for="${id}"]`);
+    throw new Refused(`${label ? label.textContent : id}: give a number (nothing was sent)`);
+  }
+  return value;
+};
+const on = (id, make) => $(id).addEventListener("click", () => {
+  let command;
+  try {
+    command = make();
+  } catch (e) {
+    if (!(e instanceof Refused)) throw e;
+    $("error").textContent = e.message;
+    $("error").style.color = "#ff8080";
+    return;
+  }
+  send(command);
+});
 
 on("set-speed", () => ({ cmd: "set_speed", rpm: number("speed") }));
 on("set-load", () => ({ cmd: "set_load", nm: number("load") }));
@@ -186,6 +207,12 @@ function show() {
 async function connect() {
   info = await (await fetch(api("/api/info"))).json();
   $("scenario").textContent = info.scenario;
+  // The rig's own limits, one source of truth: the boxes allow what the rig accepts.
+  $("speed").min = 0;
+  $("speed").max = info.max_speed_rpm;
+  $("load").min = 0;
+  $("load").max = info.max_load_nm;
+  $("osc-hz").max = info.max_oscillating_load_hz;
   const ws = new WebSocket(`ws://${location.host}${api("/api/stream")}`);
   ws.onmessage = (m) => { state = JSON.parse(m.data); show(); };
   ws.onclose = () => { $("status").textContent = "disconnected: the session has ended"; };
