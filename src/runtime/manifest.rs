@@ -9,7 +9,7 @@ use sha2::{Digest, Sha256};
 use super::pacing::Pace;
 use super::threaded_run::RunResult;
 use crate::recording::PartialFile;
-use crate::scenario::Plan;
+use crate::scenario::{AnalyserPlan, Plan};
 
 /// How the run ended.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -88,6 +88,7 @@ pub fn write_manifest(
         "torque_ac_rms_nm": p.steady.torque_ac_rms_nm,
         "warnings": result.warnings(),
         "files": files,
+        "analyser": plan.analyser.as_ref().map(analyser_settings),
     });
     if let Value::Object(map) = &mut manifest {
         for (key, value) in result.sinks.iter().flat_map(|s| &s.facts) {
@@ -113,4 +114,20 @@ pub fn sha256_hex(bytes: &[u8]) -> String {
         .iter()
         .map(|b| format!("{b:02x}"))
         .collect()
+}
+
+/// The analyser's settings in effect (after any `--set`), as the manifest records them.
+fn analyser_settings(analyser: &AnalyserPlan) -> Value {
+    let s = &analyser.settings;
+    json!({
+        "input": analyser.input,
+        "fmax_hz": s.fmax_hz,
+        "block": s.block,
+        "window": s.window.name(),
+        "averages": s.averages,
+        "overlap_pct": 100.0 * s.overlap,
+        "sampling": format!("{:?}", s.sampling),
+        "adc_bits": analyser.adc.bits,
+        "adc_range_v": analyser.adc.range_v,
+    })
 }

@@ -186,8 +186,13 @@ impl AnalyserSink {
         write_spectrum_csv(&csv, &self.metadata(measure, count), &lines, &alias_of)?;
         self.files.push(csv);
         let s = &self.plan.settings;
+        // The settings in effect (after any --set), never the scenario's words for them.
+        let filter = match self.filter.as_str() {
+            "none" => "no filter",
+            described => described,
+        };
         let title = format!(
-            "{}: {}, {count} averages, {}, N = {}",
+            "{}: {}; {count} av., {} window, {filter}, N = {}",
             self.scenario,
             measure.label,
             s.window.name(),
