@@ -15,7 +15,20 @@ const WAIT: Duration = Duration::from_secs(60);
 #[test]
 fn a_session_of_commands_replays_byte_for_byte() {
     let out = folder("panel-session");
-    let panel = Panel::start(&out, &["--pace", "20", "--set", "analyser.averages=2"]);
+    // Started at 600 rev/min without load, so that the commands below change the rig.
+    let panel = Panel::start(
+        &out,
+        &[
+            "--pace",
+            "20",
+            "--set",
+            "analyser.averages=2",
+            "--set",
+            "schedule.speed_rpm=600",
+            "--set",
+            "schedule.load_nm=0",
+        ],
+    );
     let (_, info) = panel.get("/api/info");
     assert!(info.contains("\"scenario\":\"panel\""), "{info}");
     for command in [
@@ -40,6 +53,26 @@ fn a_session_of_commands_replays_byte_for_byte() {
     );
     let state = panel.wait_for(WAIT, |s| s["spectrum"]["complete"] == true);
     assert_eq!(state["spectrum"]["averages"], 2);
+    // The panel opens on a live rig (issue 24): the scope shows a trace (AUTO free-runs
+    // when no trigger comes), and the display bottoms out at the chain's noise floor
+    // (the ADC's quantisation, about -120 dB re 1 V² here), not at -300 dB.
+    assert!(
+        state["trace"]["time_s"]
+            .as_array()
+            .is_some_and(|t| !t.is_empty())
+    );
+    let floor = state["spectrum"]["floor_v2"].as_f64().expect("a floor");
+    assert!(floor > 1e-16 && floor < 1e-8, "floor {floor} V²");
+    let lowest = state["spectrum"]["power_v2"]
+        .as_array()
+        .expect("lines")
+        .iter()
+        .filter_map(serde_json::Value::as_f64)
+        .fold(f64::INFINITY, f64::min);
+    assert!(
+        lowest >= floor,
+        "a line at {lowest} V² below the floor {floor} V²"
+    );
     for command in [
         r#"{"cmd": "set_filter", "kind": "bessel", "cutoff_hz": 150}"#,
         r#"{"cmd": "set_scope", "volts_per_div": 0.5, "mode": "single"}"#,

@@ -21,6 +21,10 @@ pub enum SweepMode {
     Repeat,
     /// Sweep once on the first trigger and hold it.
     Single,
+    /// Sweep on every trigger, and free-run when none comes: a sweep starts by itself
+    /// once the scope has waited a sweep's length without a trigger (a real scope's AUTO,
+    /// which shows a flat or slow signal instead of a blank screen).
+    Auto,
 }
 
 /// Scope settings.
@@ -52,6 +56,8 @@ pub struct Scope {
     armed: bool,
     stored: Option<Vec<f64>>,
     sweeps: u64,
+    /// Samples seen since the last sweep ended without a trigger (for AUTO's free run).
+    waited: usize,
 }
 
 /// Slowest time base (s/div): the Tektronix 2B67's 5 s/div.
@@ -91,6 +97,7 @@ impl Scope {
             armed: true,
             stored: None,
             sweeps: 0,
+            waited: 0,
         })
     }
 
@@ -137,20 +144,27 @@ impl Block for Scope {
         self.sweeping.clear();
         self.armed = true;
         self.stored = None;
+        self.waited = 0;
     }
 
     fn process(&mut self, input: &[f64], output: &mut [f64]) {
         output.copy_from_slice(input);
         for &x in input {
             let triggered = self.armed && self.previous.is_some_and(|p| self.triggers(p, x));
-            if !self.sweeping.is_empty() || triggered {
+            let free_run = self.settings.mode == SweepMode::Auto
+                && self.armed
+                && self.waited >= self.sweep_samples;
+            if !self.sweeping.is_empty() || triggered || free_run {
                 self.sweeping.push(x);
+                self.waited = 0;
+            } else {
+                self.waited += 1;
             }
             if self.sweeping.len() == self.sweep_samples {
                 self.stored = Some(std::mem::take(&mut self.sweeping));
                 self.sweeps += 1;
                 self.sweeping.reserve(self.sweep_samples);
-                self.armed = self.settings.mode == SweepMode::Repeat;
+                self.armed = self.settings.mode != SweepMode::Single;
             }
             self.previous = Some(x);
         }

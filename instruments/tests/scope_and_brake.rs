@@ -102,3 +102,34 @@ fn the_brake_torque_follows_the_coil_current_through_its_lag() {
         want.arg()
     );
 }
+
+/// Issue 24: on a signal that never crosses the trigger level, AUTO waited forever and
+/// the panel's screen stayed blank. AUTO free-runs after a sweep's length without a
+/// trigger, as a real scope does, showing the flat signal where it is; REPEAT still waits
+/// for its trigger, and AUTO on a triggering signal still sweeps from the trigger.
+#[test]
+fn auto_free_runs_without_a_trigger_and_repeat_waits() {
+    let sweep = (10.0 * 0.002 * RATE) as usize;
+    let flat = vec![0.1; 3 * sweep];
+    let mut out = vec![0.0; flat.len()];
+    let mut repeat = scope(Slope::Rising, SweepMode::Repeat);
+    repeat.process(&flat, &mut out);
+    assert!(repeat.trace().is_none(), "repeat swept without a trigger");
+    let mut auto = scope(Slope::Rising, SweepMode::Auto);
+    auto.process(&flat, &mut out);
+    let trace = auto.trace().expect("auto shows the flat signal");
+    assert_eq!(trace.len(), sweep);
+    assert!(
+        trace.iter().all(|&(_, div)| (div - 0.2).abs() < 1e-12),
+        "0.1 V at 0.5 V/div"
+    );
+    let mut triggered = scope(Slope::Rising, SweepMode::Auto);
+    let input = sine(100.0, 1.0, 20_000, 0);
+    let mut through = vec![0.0; input.len()];
+    triggered.process(&input, &mut through);
+    let first = triggered.trace().expect("a sweep")[0].1;
+    assert!(
+        (first - 0.5).abs() < 0.02,
+        "auto starts at the trigger level: {first}"
+    );
+}

@@ -8,8 +8,11 @@ use serde::Serialize;
 pub struct LiveSpectrum {
     /// Frequency of each line (Hz).
     pub frequency_hz: Vec<f64>,
-    /// Power of each line (V² rms).
+    /// Power of each line (V² rms), at least the floor.
     pub power_v2: Vec<f64>,
+    /// The chain's noise floor per line (V² rms): the ADC's quantisation noise through
+    /// the window; lines below it are shown at it.
+    pub floor_v2: f64,
     /// For each line, the true frequency (Hz) of the component aliased onto it, if any.
     pub alias_of_hz: Vec<Option<f64>>,
     /// Averages taken.

@@ -60,7 +60,7 @@ def main():
             rpm = lambda: float(re.sub(r"[^0-9.]", "", page.inner_text("#dvm-rpm")) or 0)
             wait_until("a first DVM reading", lambda: rpm() > 0)
             before = rpm()
-            page.screenshot(path=str(shots / "1-at-rest.png"))
+            page.screenshot(path=str(shots / "1-opening.png"))
             # An empty speed box refuses the command in the page; the rig keeps its speed.
             set_before = page.evaluate("() => state.speed_set_rpm")
             page.fill("#speed", "")

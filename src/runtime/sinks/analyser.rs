@@ -165,11 +165,15 @@ impl AnalyserSink {
         self.truth
             .add_blocks(&self.analogue, count, self.plan.settings.hop());
         let lines = self.analyser.display();
-        let floor = self
-            .adc
-            .quantisation_line_power(self.analyser.enbw_hz(), self.plan.settings.sample_rate_hz());
-        let alias_of = self.truth.flags(lines.len(), floor);
+        let alias_of = self.truth.flags(lines.len(), self.noise_floor_v2());
         (lines, alias_of)
+    }
+
+    /// The chain's own noise floor per displayed line (V² rms): the ADC's quantisation
+    /// noise through the window. No line below it can be told from the converter.
+    pub(super) fn noise_floor_v2(&self) -> f64 {
+        self.adc
+            .quantisation_line_power(self.analyser.enbw_hz(), self.plan.settings.sample_rate_hz())
     }
 
     /// Writes the display as `base` (CSV, PNG, SVG, UFF58 when asked), of measurement

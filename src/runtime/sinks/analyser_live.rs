@@ -136,9 +136,13 @@ impl AnalyserSink {
             .active
             .or(self.measures.len().checked_sub(1))
             .map_or(0.0, |i| self.measures[i].speed_rpm / 60.0);
+        // Shown down to the chain's own noise floor, never at the −300 dB of a silent
+        // stream's round-off.
+        let floor_v2 = self.noise_floor_v2();
         let spectrum = LiveSpectrum {
             frequency_hz: lines.iter().map(|l| l.frequency_hz).collect(),
-            power_v2: lines.iter().map(|l| l.value).collect(),
+            power_v2: lines.iter().map(|l| l.value.max(floor_v2)).collect(),
+            floor_v2,
             alias_of_hz,
             averages: count,
             averages_set: s.averages,

@@ -122,7 +122,7 @@ impl LiveScope {
 /// `settings` sweeping as `mode` asks: auto repeats, single stops after one sweep.
 fn sweep_settings(settings: ScopeSettings, mode: ScopeMode) -> ScopeSettings {
     let sweep_mode = match mode {
-        ScopeMode::Auto => SweepMode::Repeat,
+        ScopeMode::Auto => SweepMode::Auto,
         ScopeMode::Single => SweepMode::Single,
     };
     ScopeSettings {
