@@ -319,6 +319,17 @@ fn the_aliasing_study_does_what_its_documented_commands_say() {
     );
     let open_sources = alias_sources(&open.join("spectrum-01.csv"));
     assert!(!open_sources.is_empty(), "with the filter off lines alias");
+    // The mesh line (30 teeth x 1300/60 = 650 Hz) folds to 150 Hz and is flagged as such.
+    let rows = spectrum_rows(&open.join("spectrum-01.csv"));
+    let mesh = rows
+        .iter()
+        .find(|row| row[2].parse::<f64>().is_ok_and(|f| (f - 650.0).abs() < 1.0))
+        .unwrap_or_else(|| panic!("no line flagged as the 650 Hz mesh line: {open_sources:?}"));
+    let shown_hz: f64 = mesh[0].parse().expect("frequency");
+    assert!(
+        (shown_hz - 150.0).abs() < 1.0,
+        "the mesh line shows at {shown_hz} Hz"
+    );
     // The filter's cut-off follows the analyser's band (Fmax 200 Hz), not 2 kHz.
     let text = std::fs::read_to_string(filtered.join("spectrum-01.csv")).expect("CSV");
     assert!(
@@ -330,7 +341,7 @@ fn the_aliasing_study_does_what_its_documented_commands_say() {
     let filtered_sources = alias_sources(&filtered.join("spectrum-01.csv"));
     assert!(
         filtered_sources.iter().all(|&f| f < 1.1 * 200.0),
-        "aliases from far above the band remain: {filtered_sources:?}"
+        "aliases from far above the band remain (the mesh line among them?): {filtered_sources:?}"
     );
     // With fs = 2.56·Fmax everything that folds into the band lies above 1.56·Fmax, where
     // the filter has taken 60 dB: every flagged alias is gone.
