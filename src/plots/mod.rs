@@ -17,7 +17,7 @@ pub use convergence::{SearchPoint, write_convergence};
 pub use frequency_map::{SpeedLines, write_frequency_map};
 pub use impact_raster::{RasterImpact, write_impact_raster};
 pub use regime_map::{RegimeCell, write_regime_map};
-pub use scope::write_scope_plots;
+pub use scope::{ScopeScales, write_scope_plots};
 pub use spectrum::{SpectrumPlot, write_spectrum_plots};
 pub use survey::{SurveyPoint, write_survey_plots};
 pub use waterfall::{WaterfallTrace, write_waterfall};

@@ -9,7 +9,7 @@ use instruments::{AcCoupling, Block, Scope, ScopeSettings};
 use super::measure_clock::MeasureClock;
 use super::scope_live::LiveScope;
 use super::{Sink, SinkReport};
-use crate::plots::write_scope_plots;
+use crate::plots::{ScopeScales, write_scope_plots};
 use crate::recording::CsvRecorder;
 use crate::runtime::status::SharedStatus;
 use crate::scenario::{Measure, Plan, ScopePlan};
@@ -190,12 +190,12 @@ impl ScopeSink {
             self.scenario,
             settings.seconds_per_div * 1e3
         );
-        self.files.extend(write_scope_plots(
-            base,
-            &title,
-            trace,
-            settings.seconds_per_div,
-        )?);
+        let scales = ScopeScales {
+            seconds_per_div: settings.seconds_per_div,
+            volts_per_div: v,
+        };
+        self.files
+            .extend(write_scope_plots(base, &title, trace, scales)?);
         Ok(())
     }
 }
