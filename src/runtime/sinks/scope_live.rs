@@ -80,10 +80,12 @@ impl LiveScope {
         Ok(())
     }
 
-    /// Re-arms the scope (a single sweep starts waiting for its trigger again).
+    /// Re-arms the scope (a single sweep starts waiting for its trigger again). The trace
+    /// on screen stays until the new sweep is complete, as on a storage scope: the count
+    /// of sweeps goes on, so the re-armed scope's empty store is never taken for a sweep.
     pub fn rearm(&mut self) {
         self.scope.reset();
-        self.seen = 0;
+        self.seen = self.scope.sweeps();
     }
 
     /// The trace on screen to save; `None` (the number still counted) if no sweep has
@@ -128,5 +130,41 @@ fn sweep_settings(settings: ScopeSettings, mode: ScopeMode) -> ScopeSettings {
     ScopeSettings {
         mode: sweep_mode,
         ..settings
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use instruments::Slope;
+
+    /// Re-arming the panel's scope emptied its screen until the next sweep, so "save the
+    /// displays" sent just after "arm" saved no trace (a flaky session test). The trace
+    /// on screen now stays until the re-armed sweep completes.
+    #[test]
+    fn a_rearmed_scope_keeps_its_trace_on_screen_until_the_next_sweep() {
+        let rate_hz = 51_200.0;
+        let settings = ScopeSettings {
+            volts_per_div: 0.5,
+            seconds_per_div: 0.002,
+            trigger_v: 0.0,
+            slope: Slope::Rising,
+            mode: SweepMode::Single,
+        };
+        let mut live = LiveScope::new(settings, rate_hz, SharedStatus::default()).expect("valid");
+        let sine = |from: usize, n: usize| -> Vec<f64> {
+            (from..from + n)
+                .map(|k| (std::f64::consts::TAU * 100.0 * k as f64 / rate_hz).sin())
+                .collect()
+        };
+        live.watch(&sine(0, 5_000), "amplifier_v");
+        live.rearm();
+        // A block too short for the re-armed sweep to complete.
+        live.watch(&sine(5_000, 100), "amplifier_v");
+        let saved = live
+            .next_saved()
+            .expect("the earlier trace is still on screen");
+        assert_eq!(saved.number, 1);
+        assert_eq!(saved.trace.len(), 1024);
     }
 }
