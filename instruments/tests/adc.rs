@@ -101,28 +101,12 @@ fn a_fractional_rate_samples_between_stream_samples_exactly() {
     .expect("valid");
     let tone = |t: f64| (2.0 * PI * 1_234.5 * t).sin() + 0.3 * (2.0 * PI * 2_200.0 * t + 1.0).sin();
     let input: Vec<f64> = (0..51_200).map(|k| tone(k as f64 / 51_200.0)).collect();
-    let mut output = Vec::new();
-    for chunk in input.chunks(1000) {
-        adc.convert(chunk, &mut output);
-    }
     // All samples whose kernel lies inside the stream are out; the first 2 ms see the
-    // stream's start (zeros before it) and are skipped.
-    assert_eq!(
-        output.len(),
-        ((51_200 - 1 - 16) as f64 / ratio).floor() as usize + 1
-    );
-    let worst = output
-        .iter()
-        .enumerate()
-        .skip(8)
-        .map(|(k, &v)| (v - tone(k as f64 / 4_000.0)).abs())
-        .fold(0.0, f64::max);
+    // stream's start (zeros before it) and are skipped; splitting the stream differently
+    // gives the same samples.
+    let output = converted_in_chunks_and_whole(&mut adc, &input, 1000, ratio);
+    let worst = worst_error(&output, 8, |k| tone(k as f64 / 4_000.0));
     assert!(worst < 2e-6, "interpolation error {worst}");
-    // Splitting differently gives the same samples.
-    adc.reset();
-    let mut again = Vec::new();
-    adc.convert(&input, &mut again);
-    assert_eq!(output, again);
     assert_eq!(adc.latency(), 16);
 }
 
@@ -143,25 +127,43 @@ fn a_ratio_beyond_the_kernel_reach_samples_a_long_stream() {
     let tone = |t: f64| (2.0 * PI * 50.0 * t).sin();
     let n = 44_100 * 5;
     let input: Vec<f64> = (0..n).map(|k| tone(k as f64 / rate_hz)).collect();
+    let output = converted_in_chunks_and_whole(&mut adc, &input, 4096, ratio);
+    let worst = worst_error(&output, 1, |k| tone(k as f64 / 400.0));
+    assert!(worst < 1e-5, "interpolation error {worst}");
+}
+
+/// `input` converted in chunks of `chunk` samples, checked to hold every sample whose
+/// kernel (16 samples each side) lies inside the stream at `ratio`, and to equal the
+/// samples of the whole stream converted at once after a reset.
+fn converted_in_chunks_and_whole(
+    adc: &mut Adc,
+    input: &[f64],
+    chunk: usize,
+    ratio: f64,
+) -> Vec<f64> {
     let mut output = Vec::new();
-    for chunk in input.chunks(4096) {
-        adc.convert(chunk, &mut output);
+    for part in input.chunks(chunk) {
+        adc.convert(part, &mut output);
     }
     assert_eq!(
         output.len(),
-        ((n - 1 - 16) as f64 / ratio).floor() as usize + 1
+        ((input.len() - 1 - 16) as f64 / ratio).floor() as usize + 1
     );
-    let worst = output
-        .iter()
-        .enumerate()
-        .skip(1)
-        .map(|(k, &v)| (v - tone(k as f64 / 400.0)).abs())
-        .fold(0.0, f64::max);
-    assert!(worst < 1e-5, "interpolation error {worst}");
     adc.reset();
     let mut whole = Vec::new();
-    adc.convert(&input, &mut whole);
+    adc.convert(input, &mut whole);
     assert_eq!(output, whole);
+    output
+}
+
+/// Largest |sample − truth(k)| after the first `skip` samples.
+fn worst_error(output: &[f64], skip: usize, truth: impl Fn(usize) -> f64) -> f64 {
+    output
+        .iter()
+        .enumerate()
+        .skip(skip)
+        .map(|(k, &v)| (v - truth(k)).abs())
+        .fold(0.0, f64::max)
 }
 
 /// Issue 23: a range of 5e-324 (the panel's `set_adc_range`) was accepted, giving a step
