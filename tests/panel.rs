@@ -80,11 +80,25 @@ fn a_session_of_commands_replays_byte_for_byte() {
         r#"{"cmd": "save_displays"}"#,
         r#"{"cmd": "record", "on": false}"#,
         r#"{"cmd": "record", "on": true}"#,
-        r#"{"cmd": "quit"}"#,
     ] {
         let (status, reply) = panel.command(command);
         assert_eq!(status, 200, "{command}: {reply}");
     }
+    // The state echoes what the chain applies (issue 24): the filter just set, the gain,
+    // and a refused gain leaves the applied one.
+    let (status, _) = panel.command(r#"{"cmd": "set_amplifier_gain", "gain": 1e300}"#);
+    assert_eq!(status, 400);
+    let state = panel.wait_for(WAIT, |s| s["chain"]["filter"]["kind"] == "bessel");
+    assert_eq!(state["chain"]["filter"]["cutoff_hz"], 150.0, "{state}");
+    assert!(
+        state["chain"]["amplifier_gain"]
+            .as_f64()
+            .is_some_and(|g| g < 1e6),
+        "{state}"
+    );
+    assert_eq!(state["spectrum"]["block"], 1024, "{state}");
+    let (status, reply) = panel.command(r#"{"cmd": "quit"}"#);
+    assert_eq!(status, 200, "{reply}");
     let (status, stderr) = panel.wait();
     assert!(status.success(), "{stderr}");
     // Quit is the normal end of a session (issue 24): completed, not interrupted.

@@ -2,11 +2,12 @@
 //! carrier amplifier's gain. The stage is rebuilt with the new settings (its state starts
 //! afresh, as when a real filter card is switched); refused, it stays as it was.
 
-use instruments::LowPassSpec;
+use instruments::{FilterKind, LowPassSpec};
 
 use crate::chain::{Instrument, NamedStage};
-use crate::vocabulary::Refusal;
 use crate::vocabulary::command::{RigCommand, Target};
+use crate::vocabulary::signal_names::{AMPLIFIER_V, FILTER_V};
+use crate::vocabulary::{AppliedChain, AppliedFilter, Refusal};
 
 /// Highest carrier amplifier gain accepted (V/V): far beyond the 3C66's.
 const MAX_GAIN: f64 = 1.0e6;
@@ -53,4 +54,33 @@ pub fn apply_to_stage(stage: &mut NamedStage, command: &RigCommand) -> Option<Re
         _ => return None,
     };
     Some(stage.rebuild(instrument).map_err(Refusal::from))
+}
+
+/// Writes what `stage` applies into `chain`, if it is the amplifier or the anti-alias
+/// filter (the panel's echo).
+pub fn echo_stage(stage: &NamedStage, chain: &mut AppliedChain) {
+    match (&stage.plan.instrument, stage.output.as_str()) {
+        (Instrument::CarrierDemodulator(settings), AMPLIFIER_V) => {
+            chain.amplifier_gain = Some(settings.gain);
+        }
+        (Instrument::LowPass(spec), FILTER_V) => {
+            chain.filter = Some(match spec {
+                Some(spec) => AppliedFilter {
+                    kind: match spec.kind {
+                        FilterKind::Butterworth => "butterworth",
+                        FilterKind::Bessel => "bessel",
+                    }
+                    .into(),
+                    order: spec.order,
+                    cutoff_hz: spec.cutoff_hz,
+                },
+                None => AppliedFilter {
+                    kind: "none".into(),
+                    order: 0,
+                    cutoff_hz: 0.0,
+                },
+            });
+        }
+        _ => {}
+    }
 }

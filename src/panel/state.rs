@@ -7,7 +7,7 @@ use instruments::CROMPTON_PARKINSON_V_PER_RPM;
 use serde::Serialize;
 
 use crate::runtime::status::Status;
-use crate::vocabulary::display::{LiveSpectrum, LiveTrace};
+use crate::vocabulary::display::{AppliedChain, LiveSpectrum, LiveTrace};
 
 /// One snapshot of the panel.
 #[derive(Clone, Debug, Serialize)]
@@ -49,6 +49,8 @@ pub struct PanelState {
     pub spectrum: Option<Arc<LiveSpectrum>>,
     /// The scope's latest trace.
     pub trace: Option<Arc<LiveTrace>>,
+    /// The chain's settings in effect: amplifier gain and anti-alias filter.
+    pub chain: AppliedChain,
 }
 
 impl PanelState {
@@ -79,6 +81,7 @@ impl PanelState {
             recording: status.recording,
             spectrum: status.spectrum.clone(),
             trace: status.trace.clone(),
+            chain: status.chain.clone(),
         }
     }
 }

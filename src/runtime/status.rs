@@ -2,7 +2,7 @@
 
 use std::sync::{Arc, Mutex, PoisonError};
 
-use crate::vocabulary::{LiveSpectrum, LiveTrace};
+use crate::vocabulary::{AppliedChain, LiveSpectrum, LiveTrace};
 
 /// The rack as the experimenter reads it.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -35,6 +35,8 @@ pub struct Status {
     pub regime: Option<rig::Regime>,
     /// The physics judge's motion of the last full 10 s window (live runs).
     pub motion: Option<rig::Motion>,
+    /// The chain's settings in effect (live runs).
+    pub chain: AppliedChain,
 }
 
 /// A handle every thread can update.

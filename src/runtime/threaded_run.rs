@@ -201,7 +201,7 @@ impl Threads<'_> {
                 let name = format!("stage {}", stage.output);
                 scope.spawn(move || {
                     guarded(&name, self.stop, self.errors, (), || {
-                        run_stage(stage, stage_input, outputs)
+                        run_stage(stage, stage_input, outputs, self.status)
                     })
                 });
                 match next {

@@ -8,18 +8,27 @@ use crossbeam_channel::{Receiver, Sender, bounded};
 
 use super::sinks::{Sink, SinkReport};
 use crate::chain::NamedStage;
-use crate::chain::stage_commands::apply_to_stage;
+use crate::chain::stage_commands::{apply_to_stage, echo_stage};
+use crate::runtime::status::SharedStatus;
 use crate::vocabulary::frame::Frame;
 
 /// Runs a stage: each frame in, the frame with the stage's output added, out to every
-/// listener; ends when its input closes or no one listens.
-pub fn run_stage(mut stage: NamedStage, input: Receiver<Frame>, outputs: Vec<Sender<Frame>>) {
+/// listener; ends when its input closes or no one listens. What it applies is echoed in
+/// `status` (at the start and after every command it carries out).
+pub fn run_stage(
+    mut stage: NamedStage,
+    input: Receiver<Frame>,
+    outputs: Vec<Sender<Frame>>,
+    status: &SharedStatus,
+) {
     let mut outputs = outputs;
     let mut out = Vec::new();
+    status.update(|st| echo_stage(&stage, &mut st.chain));
     for frame in input {
         for pending in frame.commands.iter() {
             if let Some(outcome) = apply_to_stage(&mut stage, &pending.command) {
                 pending.answer(outcome);
+                status.update(|st| echo_stage(&stage, &mut st.chain));
             }
         }
         out.clear();

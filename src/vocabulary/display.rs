@@ -29,6 +29,12 @@ pub struct LiveSpectrum {
     pub window: String,
     /// Top of the band (Hz).
     pub fmax_hz: f64,
+    /// Block size N in effect.
+    pub block: usize,
+    /// Overlap of successive blocks in effect (%).
+    pub overlap_pct: f64,
+    /// The ADC's ± range in effect (V).
+    pub adc_range_v: f64,
 }
 
 /// The scope's latest trace.
@@ -48,4 +54,25 @@ pub struct LiveTrace {
     pub mode: String,
     /// The signal shown.
     pub signal: String,
+}
+
+/// The chain's settings in effect, as the panel echoes them: what was applied, so that a
+/// refused or clamped setting shows.
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+pub struct AppliedChain {
+    /// The carrier amplifier's gain (V/V), if the chain has one.
+    pub amplifier_gain: Option<f64>,
+    /// The anti-alias filter, if the chain has one.
+    pub filter: Option<AppliedFilter>,
+}
+
+/// The anti-alias filter in effect.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct AppliedFilter {
+    /// `none`, `butterworth` or `bessel`.
+    pub kind: String,
+    /// Its order (0 without a filter).
+    pub order: usize,
+    /// Its cut-off (Hz; 0 without a filter).
+    pub cutoff_hz: f64,
 }

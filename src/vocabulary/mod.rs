@@ -17,7 +17,7 @@ pub(crate) mod signal_names;
 pub use choices::SamplingChoice;
 pub use command::{Reply, RigCommand, Target, TimedCommand};
 pub use control::{CommandInbox, ControlHandle, MAX_QUEUED_COMMANDS, Pending, Request};
-pub use display::{LiveSpectrum, LiveTrace};
+pub use display::{AppliedChain, AppliedFilter, LiveSpectrum, LiveTrace};
 pub use frame::{Frame, SignalNames};
 pub use limits::{
     MAX_SIMULATED_S, check_load_nm, check_load_within_motor, check_simulated_s, check_speed_rpm,

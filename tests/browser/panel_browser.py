@@ -74,6 +74,12 @@ def main():
             limit = page.get_attribute("#speed", "max")
             if float(limit) != page.evaluate("() => info.max_speed_rpm"):
                 sys.exit(f"FAILED: the speed box's limit {limit} is not the rig's")
+            # The controls echo what the rig applies: a refused gain returns to the applied one.
+            page.fill("#gain", "1e300")
+            page.click("#set-gain")
+            wait_until("the refused gain replaced by the applied one",
+                       lambda: float(page.input_value("#gain"))
+                       == page.evaluate("() => state.chain.amplifier_gain"))
             page.fill("#speed", "1300")
             page.click("#set-speed")
             page.fill("#load", "2.712")

@@ -17,6 +17,7 @@ async function send(command) {
     body: JSON.stringify(command),
   });
   const reply = await response.json();
+  if (!reply.ok) echoed = {};
   $("error").textContent = reply.ok
     ? `${command.cmd} at t = ${reply.at_s.toFixed(3)} s`
     : `${command.cmd}: ${reply.error}`;
@@ -182,8 +183,51 @@ $("spectrum").addEventListener("click", (e) => {
 let previous = null; // the state of about a second ago, for rates
 let impactRate = 0;
 
+// The controls echo what the rig applies: a box takes the applied value when it changes
+// (not while the user edits the box), and after a refusal every box returns to what is
+// applied, so a refused or clamped setting shows.
+let echoed = {};
+function echo(id, value) {
+  const box = $(id);
+  if (value === undefined || value === null || document.activeElement === box) return;
+  const text = String(value);
+  if (echoed[id] === text) return;
+  echoed[id] = text;
+  box.value = text;
+}
+
+function echoSettings() {
+  echo("speed", state.speed_set_rpm);
+  echo("load", state.load_set_nm);
+  echo("osc-nm", state.oscillating_load_nm);
+  if (state.oscillating_load_nm > 0) echo("osc-hz", state.oscillating_load_hz);
+  echo("gain", state.chain.amplifier_gain);
+  const filter = state.chain.filter;
+  if (filter) {
+    echo("filter-kind", filter.kind);
+    if (filter.kind !== "none") echo("cutoff", filter.cutoff_hz);
+  }
+  const sp = state.spectrum;
+  if (sp) {
+    echo("fmax", sp.fmax_hz);
+    echo("block", sp.block);
+    echo("window", sp.window);
+    echo("averages-set", sp.averages_set);
+    echo("overlap", sp.overlap_pct);
+    echo("range", sp.adc_range_v);
+  }
+  const tr = state.trace;
+  if (tr) {
+    echo("vdiv", tr.volts_per_div);
+    echo("sdiv", tr.seconds_per_div * 1000);
+    echo("trigger", tr.trigger_v);
+    echo("scope-mode", tr.mode);
+  }
+}
+
 function show() {
   if (!state) return;
+  echoSettings();
   if (!previous || state.simulated_s < previous.simulated_s) previous = state;
   const span = state.simulated_s - previous.simulated_s;
   if (span >= 1) {

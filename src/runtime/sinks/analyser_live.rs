@@ -151,6 +151,9 @@ impl AnalyserSink {
             signal: self.plan.input.clone(),
             window: s.window.name().to_string(),
             fmax_hz: s.fmax_hz,
+            block: s.block,
+            overlap_pct: 100.0 * s.overlap,
+            adc_range_v: self.plan.adc.range_v,
         };
         self.status
             .update(|st| st.spectrum = Some(Arc::new(spectrum)));
