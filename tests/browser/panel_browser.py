@@ -86,6 +86,8 @@ def main():
             page.click("#set-load")
             wait_until("the tacho DVM at 1300 rev/min", lambda: abs(rpm() - 1300) <= 13)
             print(f"DVM: {before:.0f} -> {rpm():.0f} rev/min")
+            # The rig settles into its period-2 motion within some 20 s of its start.
+            wait_until("20 s simulated", lambda: page.evaluate("() => state.simulated_s") > 20)
             page.click("#start-average")
             # The page's own state: the new average (its running speed 1300 / 60 Hz), complete.
             done = "() => state.spectrum && state.spectrum.complete && state.spectrum.averages === 4" \
