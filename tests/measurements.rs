@@ -96,3 +96,25 @@ fn strict_fails_a_run_that_ends_with_warnings_and_keeps_its_files() {
     assert!(out.join("spectrum-01.csv").exists(), "the files are kept");
     std::fs::remove_dir_all(&out).ok();
 }
+
+/// Issue 24: a recording that keeps every 8th sample says which of its signals can alias
+/// (no low-pass below the kept rate's Nyquist frequency before them): the unfiltered
+/// shaft torque, not the anti-alias filter's output (cut at 180 Hz).
+#[test]
+fn a_decimated_recording_warns_of_the_signals_that_can_alias() {
+    let out = folder("decimate-warning");
+    let output = run("subharmonic-2712nm", &out, &["--duration", "1"]);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(output.status.success(), "{stderr}");
+    let warned: Vec<&str> = stderr
+        .lines()
+        .filter(|l| l.contains("record.decimate = 8"))
+        .collect();
+    assert_eq!(warned.len(), 1, "{stderr}");
+    assert!(
+        warned[0].contains("`torque_intermediate_shaft_nm` (6400 Hz)")
+            && warned[0].contains("3200 Hz"),
+        "{stderr}"
+    );
+    std::fs::remove_dir_all(&out).ok();
+}

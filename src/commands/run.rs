@@ -7,7 +7,9 @@ use anyhow::{Context, bail};
 use testrig::runtime::Ending;
 use testrig::runtime::clear_previous_run;
 use testrig::runtime::{Pace, RunOptions, RunResult, StopSignals, run as run_plan, write_manifest};
-use testrig::scenario::{CommandLine, ScenarioSource, build, measurement_warnings};
+use testrig::scenario::{
+    CommandLine, ScenarioSource, build, measurement_warnings, recording_warnings,
+};
 use testrig::vocabulary::check_simulated_s;
 
 use crate::cli::RunArgs;
@@ -35,6 +37,9 @@ pub fn run(args: &RunArgs) -> anyhow::Result<ExitCode> {
             args.scenario.display(),
             predicted.join("\n  ")
         );
+    }
+    for warning in recording_warnings(&plan) {
+        eprintln!("warning: {warning}");
     }
     for warning in &predicted {
         eprintln!("warning: {warning}");
