@@ -89,7 +89,10 @@ def main():
             # The rig settles into its period-2 motion within some 20 s of its start.
             wait_until("20 s simulated", lambda: page.evaluate("() => state.simulated_s") > 20)
             page.click("#start-average")
-            # The page's own state: the new average (its running speed 1300 / 60 Hz), complete.
+            # The page's own state: first the new average under way (the panel's own first
+            # average, already at 1300 rev/min, must not be taken for it), then complete.
+            started = "() => state.spectrum && !state.spectrum.complete"
+            wait_until("the new average under way", lambda: page.evaluate(started))
             done = "() => state.spectrum && state.spectrum.complete && state.spectrum.averages === 4" \
                    " && state.spectrum.running_hz > 21"
             wait_until("an average of 4 at 1300 rev/min", lambda: page.evaluate(done))
