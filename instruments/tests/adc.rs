@@ -92,13 +92,7 @@ fn dither_is_seeded_and_reproducible_after_reset() {
 fn a_fractional_rate_samples_between_stream_samples_exactly() {
     // 51.2 kHz stream, 4 kHz ADC: 12.8 stream samples per ADC sample.
     let ratio = 51_200.0 / 4_000.0;
-    let mut adc = Adc::new(AdcSettings {
-        ratio,
-        bits: 24,
-        range_v: 2.0,
-        dither_seed: None,
-    })
-    .expect("valid");
+    let mut adc = interpolating_adc(ratio);
     let tone = |t: f64| (2.0 * PI * 1_234.5 * t).sin() + 0.3 * (2.0 * PI * 2_200.0 * t + 1.0).sin();
     let input: Vec<f64> = (0..51_200).map(|k| tone(k as f64 / 51_200.0)).collect();
     // All samples whose kernel lies inside the stream are out; the first 2 ms see the
@@ -117,13 +111,7 @@ fn a_fractional_rate_samples_between_stream_samples_exactly() {
 fn a_ratio_beyond_the_kernel_reach_samples_a_long_stream() {
     let rate_hz = 44_100.0;
     let ratio = rate_hz / 400.0;
-    let mut adc = Adc::new(AdcSettings {
-        ratio,
-        bits: 24,
-        range_v: 2.0,
-        dither_seed: None,
-    })
-    .expect("valid");
+    let mut adc = interpolating_adc(ratio);
     let tone = |t: f64| (2.0 * PI * 50.0 * t).sin();
     let n = 44_100 * 5;
     let input: Vec<f64> = (0..n).map(|k| tone(k as f64 / rate_hz)).collect();
@@ -154,6 +142,17 @@ fn converted_in_chunks_and_whole(
     adc.convert(input, &mut whole);
     assert_eq!(output, whole);
     output
+}
+
+/// A 24-bit ADC of ±2 V sampling every `ratio` stream samples.
+fn interpolating_adc(ratio: f64) -> Adc {
+    Adc::new(AdcSettings {
+        ratio,
+        bits: 24,
+        range_v: 2.0,
+        dither_seed: None,
+    })
+    .expect("valid")
 }
 
 /// Largest |sample − truth(k)| after the first `skip` samples.

@@ -64,10 +64,15 @@ impl AnalyserSink {
 
     fn set_adc(&mut self, settings: AdcSettings) -> Result<(), Refusal> {
         let adc = Adc::new(settings).map_err(Refusal::from)?;
+        self.replace_adc(adc, settings);
+        Ok(())
+    }
+
+    /// Puts `adc` (built from `settings`) in place, its predecessor's overloads counted.
+    fn replace_adc(&mut self, adc: Adc, settings: AdcSettings) {
         self.overloads += self.adc.overloads();
         self.adc = adc;
         self.plan.adc = settings;
-        Ok(())
     }
 
     /// New analyser settings; the average under way is written and a fresh one started.
@@ -92,9 +97,7 @@ impl AnalyserSink {
             .map_err(|e| live_refusal(&e, &s))?;
         let restart = self.active;
         self.close_measurement().map_err(|e| Refusal::failed(&e))?;
-        self.overloads += self.adc.overloads();
-        self.adc = setup.adc;
-        self.plan.adc = setup.adc_settings;
+        self.replace_adc(setup.adc, setup.adc_settings);
         self.analyser = setup.analyser;
         self.truth = setup.truth;
         self.plan.settings = s;
