@@ -225,3 +225,52 @@ fn bad_wiring_is_refused_at_its_line_and_field() {
         }
     }
 }
+
+/// The chain carries strain in µε: the recorded `strain` is the shaft torque times
+/// 8/(π d³ G) × 10⁶ = 3.85 µε/N m (Ø20 mm, G 82.7 GPa) with the unit µε in the sidecar,
+/// and the amplifier's and the filter's volts stand for 200/3 µε per volt (the default
+/// calibration, 3 V for 200 µε), as the scope's strain axis draws them.
+#[test]
+fn strain_is_recorded_and_calibrated_in_microstrain() {
+    let text = format!(
+        "{BASE}\n[record]\nsignals = [\"strain\", \"torque_intermediate_shaft_nm\"]\nformats = [\"wav\", \"csv\"]\n"
+    );
+    let dir = folder("microstrain");
+    let path = dir.join("strain.toml");
+    std::fs::write(&path, &text).expect("scenario written");
+    let (out, _) = run_ok("microstrain-run", path.to_str().expect("utf-8"), &[]);
+    let rows = csv_rows(&out.join("recording.csv"));
+    let per_nm = 8.0 / (std::f64::consts::PI * 0.02f64.powi(3) * 82.7e9) * 1e6;
+    assert!((per_nm - 3.849).abs() < 1e-3);
+    for row in rows.iter().step_by(997) {
+        let strain = number(row, "strain");
+        let torque = number(row, "torque_intermediate_shaft_nm");
+        assert!(
+            (strain - per_nm * torque).abs() < 1e-9 * (1.0 + strain.abs()),
+            "{strain} µε at {torque} N m"
+        );
+    }
+    let sidecar: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(out.join("recording.wav.json")).expect("sidecar"),
+    )
+    .expect("json");
+    assert_eq!(sidecar["channels"][0]["unit"], "µε");
+    let plan = build(
+        &ScenarioSource {
+            path: "strain.toml".into(),
+            text,
+        },
+        CommandLine::default(),
+    )
+    .expect("builds");
+    let per_volt = plan
+        .chain
+        .microstrain_per_unit("amplifier_v")
+        .expect("calibrated");
+    assert!((per_volt - 200.0 / 3.0).abs() < 1e-9, "{per_volt}");
+    assert_eq!(plan.chain.microstrain_per_unit("filter_v"), Some(per_volt));
+    assert_eq!(plan.chain.microstrain_per_unit("strain"), Some(1.0));
+    assert_eq!(plan.chain.microstrain_per_unit("tacho_v"), None);
+    std::fs::remove_dir_all(&dir).ok();
+    std::fs::remove_dir_all(&out).ok();
+}

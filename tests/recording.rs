@@ -79,7 +79,7 @@ fn pyuff_reads_our_dataset_58() {
         response_name: "shaft",
         response_node: 3,
         ordinate_type: 3,
-        ordinate_unit: "strain",
+        ordinate_unit: "µε",
         abscissa: Uff58Abscissa::Time {
             start_s: 0.5,
             step_s: 1.0 / 51_200.0,
@@ -98,7 +98,7 @@ fn pyuff_reads_our_dataset_58() {
     write_uff58(&mut file, &spectrum).expect("written");
     drop(file);
     let script = format!(
-        "import pyuff, numpy as np\nsets = pyuff.UFF(r'{}').read_sets()\nprint(len(sets), sets[0]['func_type'], sets[1]['func_type'], sets[0]['num_pts'], repr(float(sets[0]['abscissa_min'])), repr(float(sets[0]['data'][5])), repr(float(sets[1]['x'][2])), sets[0]['id1'].strip())",
+        "import pyuff, numpy as np\nsets = pyuff.UFF(r'{}').read_sets()\nprint(len(sets), sets[0]['func_type'], sets[1]['func_type'], sets[0]['num_pts'], repr(float(sets[0]['abscissa_min'])), repr(float(sets[0]['data'][5])), repr(float(sets[1]['x'][2])), sets[0]['ordinate_axis_units_lab'].strip(), sets[0]['id1'].strip())",
         path.display()
     );
     let out = Command::new("python3")
@@ -122,6 +122,33 @@ fn pyuff_reads_our_dataset_58() {
         (fields[6].parse::<f64>().expect("number") - 7.8125).abs() < 1e-4,
         "{text}"
     );
+    assert_eq!(fields[7], "microstrain", "{text}");
     assert!(text.contains("strain, intermediate shaft"));
     std::fs::remove_dir_all(&dir).ok();
+}
+
+/// Dataset 58 is fixed-column ASCII: a µε unit is written as `microstrain`, and every
+/// line stays ASCII and within 80 columns.
+#[test]
+fn uff58_writes_a_microstrain_unit_in_ascii() {
+    let mut bytes = Vec::new();
+    let record = Uff58Record {
+        description: "strain",
+        source: "testrig",
+        function_type: 1,
+        response_name: "strain",
+        response_node: 1,
+        ordinate_type: 3,
+        ordinate_unit: "µε",
+        abscissa: Uff58Abscissa::Time {
+            start_s: 0.0,
+            step_s: 1e-3,
+        },
+        values: &[1.0, 2.0],
+    };
+    write_uff58(&mut bytes, &record).expect("written");
+    let text = String::from_utf8(bytes).expect("utf-8");
+    assert!(text.is_ascii(), "{text}");
+    assert!(text.lines().all(|l| l.len() <= 80), "{text}");
+    assert!(text.contains("microstrain"), "{text}");
 }

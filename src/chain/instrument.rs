@@ -6,15 +6,18 @@ use instruments::{
     InstrumentError, LowPassSpec, ShaftStrain, SlipRing, SlipRingSettings, StrainBridge, Tacho,
 };
 
+use super::microstrain::{
+    MICROSTRAIN_PER_STRAIN, MICROSTRAIN_UNIT, MicrostrainBridge, ShaftMicrostrain,
+};
 use super::stage::{Stage, block_stage, slip_ring_stage};
 use super::voltmeters::{DvmSettings, MeterSettings};
 
 /// One instrument and its settings.
 #[derive(Clone, Debug)]
 pub enum Instrument {
-    /// Shaft torque (N m) to surface strain at ±45°.
+    /// Shaft torque (N m) to surface strain at +45° (µε).
     Strain(ShaftStrain),
-    /// Strain gauges in a Wheatstone bridge: strain to volts.
+    /// Strain gauges in a Wheatstone bridge: strain (µε) to volts.
     Bridge(StrainBridge),
     /// The carrier amplifier's modulator (before the slip rings).
     CarrierModulator(CarrierSettings),
@@ -46,7 +49,7 @@ impl Instrument {
     /// Unit of its output.
     pub fn unit(&self) -> &'static str {
         match self {
-            Self::Strain(_) => "1",
+            Self::Strain(_) => MICROSTRAIN_UNIT,
             _ => "V",
         }
     }
@@ -54,7 +57,7 @@ impl Instrument {
     /// Full scale of its output for integer recordings (in its unit).
     pub fn full_scale(&self) -> f64 {
         match self {
-            Self::Strain(_) => 1.0e-3,
+            Self::Strain(_) => 1.0e-3 * MICROSTRAIN_PER_STRAIN,
             _ => 10.0,
         }
     }
@@ -83,8 +86,8 @@ impl Instrument {
     pub fn build(&self, rate_hz: f64, inputs: &[usize]) -> Result<Box<dyn Stage>, InstrumentError> {
         let input = inputs[0];
         Ok(match self {
-            Self::Strain(s) => block_stage(*s, input),
-            Self::Bridge(b) => block_stage(*b, input),
+            Self::Strain(s) => block_stage(ShaftMicrostrain(*s), input),
+            Self::Bridge(b) => block_stage(MicrostrainBridge(*b), input),
             Self::CarrierModulator(c) => block_stage(CarrierModulator::new(*c, rate_hz)?, input),
             Self::SlipRings(s) => {
                 slip_ring_stage(SlipRing::new(*s, rate_hz, 0.0)?, input, inputs[1])

@@ -6,6 +6,7 @@ pub(crate) mod analyser_setup;
 pub(crate) mod chain_stages;
 pub(crate) mod inline;
 pub(crate) mod instrument;
+pub(crate) mod microstrain;
 pub(crate) mod spectrum_metadata;
 pub(crate) mod stage;
 pub(crate) mod stage_commands;
@@ -17,6 +18,9 @@ pub use analyser_setup::{AdcChoice, AnalyserSetting, AnalyserSetup, set_up_analy
 pub use chain_stages::{ChainStages, WiringError};
 pub use inline::InlineChain;
 pub use instrument::Instrument;
+pub use microstrain::{
+    MICROSTRAIN_PER_STRAIN, MICROSTRAIN_UNIT, MicrostrainBridge, ShaftMicrostrain,
+};
 pub use spectrum_metadata::{SpectrumFacts, spectrum_metadata};
 pub use stage::Stage;
 pub use stage_plan::{NamedStage, StagePlan};

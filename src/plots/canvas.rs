@@ -60,6 +60,17 @@ pub fn axes<'a, DB: DrawingBackend>(
     x: Range<f64>,
     y: Range<f64>,
 ) -> anyhow::Result<Axes<'a, DB>> {
+    axes_with_right_area(root, title, x, y, 0)
+}
+
+/// As [`axes`], with `right_px` pixels on the right for a second vertical axis.
+pub fn axes_with_right_area<'a, DB: DrawingBackend>(
+    root: &'a DrawingArea<DB, Shift>,
+    title: &str,
+    x: Range<f64>,
+    y: Range<f64>,
+    right_px: u32,
+) -> anyhow::Result<Axes<'a, DB>> {
     let err = draw_error("axes");
     root.fill(&WHITE).map_err(&err)?;
     ChartBuilder::on(root)
@@ -69,6 +80,7 @@ pub fn axes<'a, DB: DrawingBackend>(
         .margin_right(36)
         .x_label_area_size(44)
         .y_label_area_size(70)
+        .right_y_label_area_size(right_px)
         .build_cartesian_2d(x, y)
         .map_err(err)
 }

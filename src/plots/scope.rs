@@ -5,19 +5,27 @@ use std::path::{Path, PathBuf};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::canvas::{axes, draw_error, mesh, png_and_svg};
+use super::canvas::{axes_with_right_area, draw_error, mesh, png_and_svg};
+use crate::chain::MICROSTRAIN_UNIT;
 
-/// The scope's scales: horizontal (s per division) and vertical (V per division).
+/// The scope's scales: horizontal (s per division) and vertical (the signal's unit per
+/// division), and the strain a unit of the signal stands for.
 #[derive(Clone, Copy, Debug)]
 pub struct ScopeScales {
     /// Seconds per division (ten across).
     pub seconds_per_div: f64,
-    /// Volts per division (eight up, ±4 about the centre).
-    pub volts_per_div: f64,
+    /// The signal's unit per division (eight up, ±4 about the centre).
+    pub units_per_div: f64,
+    /// The signal's unit (V for the chain's voltages).
+    pub unit: &'static str,
+    /// Strain (µε) per unit of the signal, where a static calibration gives it: drawn
+    /// as a second vertical axis.
+    pub microstrain_per_unit: Option<f64>,
 }
 
 /// Writes `base.png` and `base.svg` of a trace of (time from trigger in s, divisions)
-/// in volts against milliseconds, one grid line per division, the scales in the title.
+/// in the signal's unit against milliseconds, one grid line per division, the scales in
+/// the title; a second axis in µε where the signal has a strain calibration.
 pub fn write_scope_plots(
     base: &Path,
     title: &str,
@@ -39,11 +47,30 @@ fn draw<DB: DrawingBackend>(
 ) -> anyhow::Result<()> {
     let err = draw_error("scope trace");
     let width_ms = 10.0 * scales.seconds_per_div * 1e3;
-    let v = scales.volts_per_div;
-    let mut chart = axes(&root, title, 0.0..width_ms, -4.0 * v..4.0 * v)?;
-    mesh(&mut chart, ("time from trigger (ms)", "volts (V)"), |m| {
+    let v = scales.units_per_div;
+    let strain_axis = scales
+        .microstrain_per_unit
+        .filter(|_| scales.unit != MICROSTRAIN_UNIT);
+    let right_px = if strain_axis.is_some() { 70 } else { 0 };
+    let chart = axes_with_right_area(&root, title, 0.0..width_ms, -4.0 * v..4.0 * v, right_px)?;
+    let mut chart = match strain_axis {
+        Some(k) => chart.set_secondary_coord(0.0..width_ms, -4.0 * v * k..4.0 * v * k),
+        // The same coordinates on the right, where no axis is drawn.
+        None => chart.set_secondary_coord(0.0..width_ms, -4.0 * v..4.0 * v),
+    };
+    let y_desc = axis_label(scales.unit);
+    mesh(&mut chart, ("time from trigger (ms)", &y_desc), |m| {
         m.x_labels(11).y_labels(9);
     })?;
+    if strain_axis.is_some() {
+        chart
+            .configure_secondary_axes()
+            .y_desc(axis_label(MICROSTRAIN_UNIT))
+            .y_labels(9)
+            .label_style(("sans-serif", 14))
+            .draw()
+            .map_err(&err)?;
+    }
     chart
         .draw_series(LineSeries::new(
             trace.iter().map(|&(t, d)| (t * 1e3, d * v)),
@@ -52,4 +79,13 @@ fn draw<DB: DrawingBackend>(
         .map_err(&err)?;
     root.present().map_err(&err)?;
     Ok(())
+}
+
+/// The vertical axis's label for a signal in `unit`.
+fn axis_label(unit: &str) -> String {
+    match unit {
+        "V" => "volts (V)".to_string(),
+        MICROSTRAIN_UNIT => "strain (µε)".to_string(),
+        other => format!("signal ({other})"),
+    }
 }

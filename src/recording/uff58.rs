@@ -58,6 +58,17 @@ fn fortran_e(value: f64, width: usize, digits: usize) -> String {
     )
 }
 
+/// A unit label in ASCII, as the universal file format's fixed columns need: µε is
+/// written `microstrain`, µ `u`, ² `^2`, any other non-ASCII character `?`.
+fn ascii_unit(unit: &str) -> String {
+    unit.replace("µε", "microstrain")
+        .replace('µ', "u")
+        .replace('²', "^2")
+        .chars()
+        .map(|c| if c.is_ascii() { c } else { '?' })
+        .collect()
+}
+
 fn padded(text: &str, width: usize) -> String {
     let cut: String = text.chars().take(width).collect();
     format!("{cut:<width$}")
@@ -109,7 +120,7 @@ pub fn write_uff58_header(
             0,
             0,
             padded("NONE", 20),
-            padded(unit, 20)
+            padded(&ascii_unit(unit), 20)
         )
     };
     axis(out, abscissa_type, abscissa_unit)?;

@@ -5,7 +5,8 @@ use instruments::{AdcSettings, AnalyserSettings, ScopeSettings};
 use rig::{RigParams, Schedule};
 
 use super::scenario_toml::Overflow;
-use crate::chain::ChainStages;
+use crate::chain::{ChainStages, Instrument, MICROSTRAIN_PER_STRAIN};
+use crate::vocabulary::signal_names::{AMPLIFIER_V, FILTER_V, STRAIN};
 
 /// Everything a run needs, checked.
 #[derive(Clone, Debug)]
@@ -74,6 +75,28 @@ pub struct ChainPlan {
     pub volts_per_nm: f64,
     /// Scope, if wired.
     pub scope: Option<ScopePlan>,
+}
+
+impl ChainPlan {
+    /// Strain (µε) per unit of signal `name`, where the signal is the gauged shaft's strain
+    /// or a static calibration holds it: the amplifier's output, and the anti-alias
+    /// filter's output when the filter (unity gain in its pass band) reads the amplifier.
+    /// `None` for every other signal.
+    pub fn microstrain_per_unit(&self, name: &str) -> Option<f64> {
+        let per_volt = self.strain_per_nm * MICROSTRAIN_PER_STRAIN / self.volts_per_nm;
+        let filters_amplifier = || {
+            self.stages.producing(FILTER_V).is_some_and(|s| {
+                matches!(s.instrument, Instrument::LowPass(_)) && s.inputs == [AMPLIFIER_V]
+            })
+        };
+        match name {
+            STRAIN => Some(1.0),
+            AMPLIFIER_V => Some(per_volt),
+            FILTER_V if filters_amplifier() => Some(per_volt),
+            _ => None,
+        }
+        .filter(|k| k.is_finite())
+    }
 }
 
 /// The storage oscilloscope.

@@ -9,7 +9,7 @@ pub const SHAFT_TORQUE_NM: &str = "torque_intermediate_shaft_nm";
 pub const MOTOR_SPEED_RAD_S: &str = "speed1_rad_s";
 /// Speed of the gauged shaft's slip rings (rad/s); a plant signal.
 pub const SLIP_RING_SPEED_RAD_S: &str = "speed3_rad_s";
-/// Surface shear strain at ±45° (strain).
+/// Surface strain at +45° on the gauged shaft (µε).
 pub const STRAIN: &str = "strain";
 /// Bridge output (V).
 pub const BRIDGE_V: &str = "bridge_v";

@@ -120,13 +120,18 @@ function drawSpectrum() {
   g.fillText(`${s.signal}: ${s.averages}/${s.averages_set} averages, ${s.window}` +
     (s.complete ? " (held)" : ""), left + 80, 14);
   for (let k = 0; k <= 4; k++) g.fillText(`${(fmax * k / 4).toFixed(0)} Hz`, x(fmax * k / 4) - 14, h - 8);
-  // Orders of the running speed: ½, 1, 3/2, 2 …
+  // Orders of the running speed: ½, 1, 3/2, 2 … Every order gets its dashed line; a
+  // label only where it clears the label before it and the legend (top right).
   if (s.running_hz > 0) {
     g.strokeStyle = "#55608a"; g.setLineDash([3, 4]);
+    const legendLeft = right - 175;
+    let labelEnd = -Infinity;
     for (let k = 1; k * s.running_hz / 2 <= fmax; k++) {
       const f = k * s.running_hz / 2;
       g.beginPath(); g.moveTo(x(f), top); g.lineTo(x(f), bottom); g.stroke();
-      if (k <= 8) g.fillText(k % 2 ? `${k}/2` : `${k / 2}`, x(f) + 2, top + 10);
+      const label = k % 2 ? `${k}/2` : `${k / 2}`;
+      const at = x(f) + 2, end = at + g.measureText(label).width;
+      if (at > labelEnd + 6 && end < legendLeft) { g.fillText(label, at, top + 10); labelEnd = end; }
     }
     g.setLineDash([]);
   }

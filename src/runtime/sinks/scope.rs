@@ -23,6 +23,9 @@ pub struct ScopeSink {
     rate_hz: f64,
     input: usize,
     signal: String,
+    /// The signal's unit, and the strain (µε) one unit stands for where calibrated.
+    unit: &'static str,
+    microstrain_per_unit: Option<f64>,
     dir: PathBuf,
     scenario: String,
     measures: Vec<Measure>,
@@ -57,6 +60,8 @@ impl ScopeSink {
             rate_hz: plan.rate_hz,
             input,
             signal: scope.input.clone(),
+            unit: plan.chain.stages.unit_of(&scope.input).unwrap_or("V"),
+            microstrain_per_unit: plan.chain.microstrain_per_unit(&scope.input),
             dir: dir.to_path_buf(),
             scenario: plan.name.clone(),
             clock: MeasureClock::new(measures.iter().map(|m| m.at_s), plan.rate_hz),
@@ -186,13 +191,16 @@ impl ScopeSink {
         }
         self.files.push(csv.finish()?);
         let title = format!(
-            "{}: {label} ({v} V/div, {} ms/div)",
+            "{}: {label} ({v} {}/div, {} ms/div)",
             self.scenario,
+            self.unit,
             settings.seconds_per_div * 1e3
         );
         let scales = ScopeScales {
             seconds_per_div: settings.seconds_per_div,
-            volts_per_div: v,
+            units_per_div: v,
+            unit: self.unit,
+            microstrain_per_unit: self.microstrain_per_unit,
         };
         self.files
             .extend(write_scope_plots(base, &title, trace, scales)?);
