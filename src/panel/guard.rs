@@ -9,7 +9,7 @@
 use std::io::Read;
 use std::net::SocketAddr;
 
-use tiny_http::Request;
+use super::http::HttpRequest;
 
 /// Why a request is refused: its HTTP status and the reason.
 pub type Refused = (u16, String);
@@ -39,14 +39,14 @@ impl Guard {
 
     /// Checks `request` for `path`: its Host, its Origin where it changes the rig or
     /// opens the stream, its token for the API, and JSON for a command.
-    pub fn check(&self, request: &Request, path: &str) -> Result<(), Refused> {
-        let host = header(request, "Host").unwrap_or_default();
-        if self.token.is_none() && !self.is_local_host(&host) {
+    pub fn check(&self, request: &HttpRequest, path: &str) -> Result<(), Refused> {
+        let host = request.header("Host").unwrap_or_default();
+        if self.token.is_none() && !self.is_local_host(host) {
             return Err((403, format!("Host `{host}` is not this panel's address")));
         }
         let api = path.starts_with("/api/");
         let acts = path == "/api/command" || path == "/api/stream";
-        if acts && let Some(origin) = header(request, "Origin") {
+        if acts && let Some(origin) = request.header("Origin") {
             let origin_host = origin.split("://").nth(1).unwrap_or("");
             let same = if self.token.is_none() {
                 self.is_local_host(origin_host)
@@ -58,8 +58,8 @@ impl Guard {
             }
         }
         if api && let Some(token) = &self.token {
-            let given =
-                query_value(request.url(), "token").or_else(|| header(request, "X-Testrig-Token"));
+            let given = query_value(&request.target, "token")
+                .or_else(|| request.header("X-Testrig-Token").map(str::to_string));
             if given.as_deref() != Some(token.as_str()) {
                 return Err((
                     401,
@@ -67,8 +67,8 @@ impl Guard {
                 ));
             }
         }
-        if path == "/api/command" && request.method().as_str() == "POST" {
-            let json = header(request, "Content-Type").is_some_and(|t| {
+        if path == "/api/command" && request.method == "POST" {
+            let json = request.header("Content-Type").is_some_and(|t| {
                 t.split(';')
                     .next()
                     .is_some_and(|m| m.trim() == "application/json")
@@ -95,15 +95,6 @@ impl Guard {
             .iter()
             .any(|h| h == host)
     }
-}
-
-/// The value of header `name`, if sent.
-fn header(request: &Request, name: &'static str) -> Option<String> {
-    request
-        .headers()
-        .iter()
-        .find(|h| h.field.equiv(name))
-        .map(|h| h.value.as_str().to_string())
 }
 
 /// The value of `key` in `url`'s query.

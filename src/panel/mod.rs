@@ -3,8 +3,12 @@
 //! the run's status and sends commands through the control channel.
 
 pub(crate) mod guard;
+pub(crate) mod http;
 pub(crate) mod server;
 pub(crate) mod session;
 pub(crate) mod state;
-pub use server::{PanelInfo, PanelServer};
+pub use http::{
+    HttpRequest, MAX_BODY_BYTES, MAX_HEAD_BYTES, RequestError, parse_head, read_request_from,
+};
+pub use server::{MAX_CONNECTIONS, MAX_STREAMS, PanelInfo, PanelServer};
 pub use session::Session;

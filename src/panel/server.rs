@@ -2,17 +2,16 @@
 //! (`/api/info`, `/api/state`, `/api/command`) and the state streamed over a WebSocket
 //! (`/api/stream`, ten times a second). See `docs/api.md`.
 
-use std::io::Read;
-use std::net::SocketAddr;
+use std::net::{SocketAddr, TcpListener, TcpStream};
 use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::thread::JoinHandle;
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
 use serde::Serialize;
-use tiny_http::{Header, Request, Response, Server, StatusCode};
 
 use super::guard::Guard;
+use super::http::{HttpRequest, HttpResponse, read_request};
 use super::state::PanelState;
 use crate::runtime::status::SharedStatus;
 use crate::vocabulary::command::{Reply, RigCommand};
@@ -20,8 +19,22 @@ use crate::vocabulary::control::ControlHandle;
 
 /// How often the stream sends the state (s).
 pub const STREAM_PERIOD_S: f64 = 0.1;
-/// Largest command body read (bytes).
-const MAX_BODY_BYTES: u64 = 64 * 1024;
+/// Most connections served at once; one more is answered 503 and closed.
+pub const MAX_CONNECTIONS: usize = 64;
+/// Most state streams (WebSockets) open at once, within [`MAX_CONNECTIONS`].
+pub const MAX_STREAMS: usize = 16;
+/// Time a client has to take a response or a streamed state before it is dropped.
+const WRITE_TIMEOUT: Duration = Duration::from_secs(5);
+/// Pause after the listener fails to accept (out of file descriptors): the server waits
+/// for connections to close rather than stopping.
+const ACCEPT_RETRY: Duration = Duration::from_millis(100);
+/// How long, and how much of, a refused client's writing is read before closing.
+const LINGER: Duration = Duration::from_millis(200);
+const LINGER_BYTES: usize = 256 * 1024;
+/// How long a connection refused for want of room waits before it is closed.
+const CLOSE_DELAY: Duration = Duration::from_millis(50);
+/// Most refused connections waiting to be closed.
+const CLOSING_QUEUE: usize = 1024;
 
 const PAGE_HTML: &str = include_str!("page/panel.html");
 const PAGE_JS: &str = include_str!("page/panel.js");
@@ -59,6 +72,10 @@ struct Shared {
     status: SharedStatus,
     info: Arc<PanelInfo>,
     stop: Arc<AtomicBool>,
+    connections: Arc<AtomicUsize>,
+    streams: Arc<AtomicUsize>,
+    /// Refused connections on their way to a graceful close.
+    closer: crossbeam_channel::Sender<(TcpStream, Instant)>,
 }
 
 /// The running server.
@@ -79,12 +96,9 @@ impl PanelServer {
         status: SharedStatus,
         info: PanelInfo,
     ) -> anyhow::Result<Self> {
-        let server = Server::http(address)
-            .map_err(|e| anyhow::anyhow!("--listen {address}: cannot listen: {e}"))?;
-        let address = server
-            .server_addr()
-            .to_ip()
-            .ok_or_else(|| anyhow::anyhow!("--listen {address}: not an IP address"))?;
+        let cannot = |e: std::io::Error| anyhow::anyhow!("--listen {address}: cannot listen: {e}");
+        let listener = TcpListener::bind(address).map_err(cannot)?;
+        let address = listener.local_addr().map_err(cannot)?;
         let stop = Arc::new(AtomicBool::new(false));
         let guard = Guard::new(address)
             .map_err(|e| anyhow::anyhow!("cannot draw the panel's token: {e}"))?;
@@ -95,8 +109,14 @@ impl PanelServer {
             status,
             info: Arc::new(info),
             stop: Arc::clone(&stop),
+            connections: Arc::new(AtomicUsize::new(0)),
+            streams: Arc::new(AtomicUsize::new(0)),
+            closer: start_closer()?,
         };
-        let thread = std::thread::spawn(move || serve(&server, &shared));
+        let thread = std::thread::Builder::new()
+            .name("panel-server".into())
+            .spawn(move || serve(&listener, &shared))
+            .map_err(|e| anyhow::anyhow!("cannot start the panel's server: {e}"))?;
         Ok(Self {
             address,
             token,
@@ -108,6 +128,15 @@ impl PanelServer {
     /// Stops serving (open streams end at their next send).
     pub fn shut_down(mut self) {
         self.stop.store(true, Ordering::Relaxed);
+        // Wakes the listener from its accept with a connection of its own.
+        let mut wake = self.address;
+        if wake.ip().is_unspecified() {
+            wake.set_ip(match wake {
+                SocketAddr::V4(_) => std::net::Ipv4Addr::LOCALHOST.into(),
+                SocketAddr::V6(_) => std::net::Ipv6Addr::LOCALHOST.into(),
+            });
+        }
+        let _ = TcpStream::connect_timeout(&wake, Duration::from_secs(1));
         if let Some(thread) = self.thread.take() {
             // A panic in the server thread has already been reported on stderr.
             let _ = thread.join();
@@ -115,68 +144,180 @@ impl PanelServer {
     }
 }
 
-fn serve(server: &Server, shared: &Shared) {
-    while !shared.stop.load(Ordering::Relaxed) {
-        let request = match server.recv_timeout(Duration::from_millis(100)) {
-            Ok(Some(request)) => request,
-            Ok(None) => continue,
-            Err(e) => {
-                eprintln!("testrig panel: the server stopped: {e}");
-                return;
-            }
-        };
-        let shared = shared.clone();
-        std::thread::spawn(move || handle(request, &shared));
+/// A place among a bounded number, given back when dropped.
+struct Permit(Arc<AtomicUsize>);
+
+impl Permit {
+    /// One of `most` places counted by `count`, if one is free.
+    fn take(count: &Arc<AtomicUsize>, most: usize) -> Option<Self> {
+        count
+            .fetch_update(Ordering::AcqRel, Ordering::Acquire, |n| {
+                (n < most).then_some(n + 1)
+            })
+            .ok()
+            .map(|_| Self(Arc::clone(count)))
     }
 }
 
-fn handle(mut request: Request, shared: &Shared) {
-    let path = request.url().split('?').next().unwrap_or("").to_string();
-    let method = request.method().as_str().to_string();
-    let rate_hz = shared.info.rate_hz;
-    if let Err((status, why)) = shared.guard.check(&request, &path) {
-        let refusal = Reply {
+impl Drop for Permit {
+    fn drop(&mut self) {
+        self.0.fetch_sub(1, Ordering::AcqRel);
+    }
+}
+
+/// Accepts connections until stopped: each on a thread of its own while fewer than
+/// [`MAX_CONNECTIONS`] are open, else answered 503. Running out of file descriptors
+/// pauses accepting; it never ends the server.
+fn serve(listener: &TcpListener, shared: &Shared) {
+    let mut failing = false;
+    while !shared.stop.load(Ordering::Relaxed) {
+        match listener.accept() {
+            Ok(_) if shared.stop.load(Ordering::Relaxed) => return,
+            Ok((conn, _)) => {
+                failing = false;
+                dispatch(conn, shared);
+            }
+            Err(e) => {
+                if !failing {
+                    eprintln!("testrig panel: cannot accept a connection ({e}); retrying");
+                }
+                failing = true;
+                std::thread::sleep(ACCEPT_RETRY);
+            }
+        }
+    }
+}
+
+/// Serves `conn` on a thread of its own, or answers 503 when the server is full.
+fn dispatch(mut conn: TcpStream, shared: &Shared) {
+    if conn.set_nonblocking(false).is_err() || conn.set_write_timeout(Some(WRITE_TIMEOUT)).is_err()
+    {
+        return;
+    }
+    let Some(permit) = Permit::take(&shared.connections, MAX_CONNECTIONS) else {
+        let why = format!("the panel is serving {MAX_CONNECTIONS} connections; try again");
+        let _ = refusal(503, why).write_to(&mut conn);
+        let _ = conn.shutdown(std::net::Shutdown::Write);
+        // Closed a moment later, its request read and dropped, so that the close does not
+        // reset the connection before the client reads the answer; dropped at once when
+        // [`CLOSING_QUEUE`] refused connections already wait.
+        let _ = shared.closer.try_send((conn, Instant::now() + CLOSE_DELAY));
+        return;
+    };
+    let worker = shared.clone();
+    // A thread that cannot be started drops the connection (and its permit) unanswered.
+    let _ = std::thread::Builder::new()
+        .name("panel-connection".into())
+        .spawn(move || handle(conn, &worker, permit));
+}
+
+/// Starts the thread that closes refused connections gracefully, in the order refused.
+fn start_closer() -> anyhow::Result<crossbeam_channel::Sender<(TcpStream, Instant)>> {
+    let (send, receive) = crossbeam_channel::bounded::<(TcpStream, Instant)>(CLOSING_QUEUE);
+    std::thread::Builder::new()
+        .name("panel-closer".into())
+        .spawn(move || {
+            for (mut conn, at) in receive {
+                std::thread::sleep(at.saturating_duration_since(Instant::now()));
+                drain_without_waiting(&mut conn);
+            }
+        })
+        .map_err(|e| anyhow::anyhow!("cannot start the panel's server: {e}"))?;
+    Ok(send)
+}
+
+/// Reads and drops what `conn` has already received (at most [`LINGER_BYTES`]).
+fn drain_without_waiting(conn: &mut TcpStream) {
+    use std::io::Read;
+    if conn.set_nonblocking(true).is_err() {
+        return;
+    }
+    let mut sink = [0u8; 4096];
+    let mut read = 0;
+    while read < LINGER_BYTES {
+        match conn.read(&mut sink) {
+            Ok(0) | Err(_) => break,
+            Ok(n) => read += n,
+        }
+    }
+}
+
+/// A JSON reply `{ok: false, error}` of `status`.
+fn refusal(status: u16, why: String) -> HttpResponse {
+    json(
+        status,
+        &Reply {
             ok: false,
             at_s: f64::NAN,
             error: Some(why),
-        };
-        let _ = request.respond(json(status, &refusal));
+        },
+    )
+}
+
+fn handle(mut conn: TcpStream, shared: &Shared, permit: Permit) {
+    let request = match read_request(&mut conn) {
+        Ok(request) => request,
+        Err(e) => {
+            if let Some(status) = e.status() {
+                let _ = refusal(status, e.to_string()).write_to(&mut conn);
+                close_after_reading_on(conn);
+            }
+            return;
+        }
+    };
+    let path = request.path().to_string();
+    if let Err((status, why)) = shared.guard.check(&request, &path) {
+        let _ = refusal(status, why).write_to(&mut conn);
         return;
     }
-    let response = match (method.as_str(), path.as_str()) {
+    if request.method == "GET" && path == "/api/stream" {
+        return stream(conn, &request, shared, permit);
+    }
+    // The client may have gone; nothing is owed to it then.
+    let _ = respond(&request, &path, shared).write_to(&mut conn);
+}
+
+/// Closes `conn` after an answer to a request not read whole: the client's writing is
+/// read and dropped for a moment (at most [`LINGER_BYTES`]) so that the close does not
+/// reset the connection before the client has read the answer.
+fn close_after_reading_on(mut conn: TcpStream) {
+    use std::io::Read;
+    let _ = conn.shutdown(std::net::Shutdown::Write);
+    let _ = conn.set_read_timeout(Some(LINGER));
+    let mut sink = [0u8; 4096];
+    let mut read = 0;
+    while read < LINGER_BYTES {
+        match conn.read(&mut sink) {
+            Ok(0) | Err(_) => break,
+            Ok(n) => read += n,
+        }
+    }
+}
+
+/// The answer to every request but the stream.
+fn respond(request: &HttpRequest, path: &str, shared: &Shared) -> HttpResponse {
+    let rate_hz = shared.info.rate_hz;
+    let method = request.method.as_str();
+    match (method, path) {
         ("GET", "/" | "/index.html") => text(PAGE_HTML, "text/html; charset=utf-8"),
         ("GET", "/panel.js") => text(PAGE_JS, "text/javascript; charset=utf-8"),
         ("GET", "/favicon.svg" | "/favicon.ico") => text(FAVICON_SVG, "image/svg+xml"),
         ("GET", "/api/info") => json(200, &*shared.info),
         ("GET", "/api/state") => json(200, &PanelState::of(&shared.status.snapshot(), rate_hz)),
         ("POST", "/api/command") => {
-            let reply = command_reply(&mut request, &shared.control);
+            let reply = command_reply(&request.body, &shared.control);
             json(if reply.ok { 200 } else { 400 }, &reply)
         }
-        ("GET", "/api/stream") => return stream(request, shared),
         (_, path) if allowed_methods(path).is_some() => {
             let allowed = allowed_methods(path).unwrap_or_default();
-            json(
+            refusal(
                 405,
-                &Reply {
-                    ok: false,
-                    at_s: f64::NAN,
-                    error: Some(format!("{method} {path}: only {allowed}; see docs/api.md")),
-                },
+                format!("{method} {path}: only {allowed}; see docs/api.md"),
             )
-            .with_header(header("Allow", allowed))
+            .with_header("Allow", allowed)
         }
-        _ => json(
-            404,
-            &Reply {
-                ok: false,
-                at_s: f64::NAN,
-                error: Some(format!("no {method} {path}; see docs/api.md")),
-            },
-        ),
-    };
-    // The client may have gone; nothing is owed to it then.
-    let _ = request.respond(response);
+        _ => refusal(404, format!("no {method} {path}; see docs/api.md")),
+    }
 }
 
 /// The methods a known path answers (for `Allow`); `None` for an unknown path.
@@ -189,17 +330,12 @@ fn allowed_methods(path: &str) -> Option<&'static str> {
     }
 }
 
-/// Parses the body as a command and sends it; a malformed body is refused unsent.
-fn command_reply(request: &mut Request, control: &ControlHandle) -> Reply {
-    let mut body = String::new();
-    let read = request
-        .as_reader()
-        .take(MAX_BODY_BYTES)
-        .read_to_string(&mut body);
-    let parsed = read
-        .map_err(|e| format!("cannot read the body: {e}"))
-        .and_then(|_| {
-            serde_json::from_str::<RigCommand>(&body).map_err(|e| format!("not a command: {e}"))
+/// Parses `body` as a command and sends it; a malformed body is refused unsent.
+fn command_reply(body: &[u8], control: &ControlHandle) -> Reply {
+    let parsed = std::str::from_utf8(body)
+        .map_err(|e| format!("the body is not UTF-8: {e}"))
+        .and_then(|body| {
+            serde_json::from_str::<RigCommand>(body).map_err(|e| format!("not a command: {e}"))
         });
     match parsed {
         Ok(command) => control.send(command),
@@ -212,32 +348,26 @@ fn command_reply(request: &mut Request, control: &ControlHandle) -> Reply {
 }
 
 /// Upgrades to a WebSocket and sends the state every [`STREAM_PERIOD_S`] until the page
-/// goes or the server stops.
-fn stream(request: Request, shared: &Shared) {
-    let key = request
-        .headers()
-        .iter()
-        .find(|h| h.field.equiv("Sec-WebSocket-Key"))
-        .map(|h| h.value.as_str().to_string());
-    let Some(key) = key else {
-        let _ = request.respond(json(
-            400,
-            &Reply {
-                ok: false,
-                at_s: f64::NAN,
-                error: Some("/api/stream is a WebSocket".into()),
-            },
-        ));
+/// goes or the server stops; at most [`MAX_STREAMS`] at once.
+fn stream(mut conn: TcpStream, request: &HttpRequest, shared: &Shared, _permit: Permit) {
+    let Some(key) = request.header("Sec-WebSocket-Key") else {
+        let _ = refusal(400, "/api/stream is a WebSocket".into()).write_to(&mut conn);
+        return;
+    };
+    let Some(_stream_permit) = Permit::take(&shared.streams, MAX_STREAMS) else {
+        let why = format!("{MAX_STREAMS} state streams are open; close one");
+        let _ = refusal(503, why).write_to(&mut conn);
         return;
     };
     let accept = tungstenite::handshake::derive_accept_key(key.as_bytes());
-    let response = Response::empty(StatusCode(101))
-        .with_header(header("Upgrade", "websocket"))
-        .with_header(header("Connection", "Upgrade"))
-        .with_header(header("Sec-WebSocket-Accept", &accept));
-    let socket = request.upgrade("websocket", response);
+    let head = format!(
+        "HTTP/1.1 101 Switching Protocols\r\nUpgrade: websocket\r\nConnection: Upgrade\r\nSec-WebSocket-Accept: {accept}\r\n\r\n"
+    );
+    if std::io::Write::write_all(&mut conn, head.as_bytes()).is_err() {
+        return;
+    }
     let mut ws =
-        tungstenite::WebSocket::from_raw_socket(socket, tungstenite::protocol::Role::Server, None);
+        tungstenite::WebSocket::from_raw_socket(conn, tungstenite::protocol::Role::Server, None);
     while !shared.stop.load(Ordering::Relaxed) {
         let state = PanelState::of(&shared.status.snapshot(), shared.info.rate_hz);
         let Ok(text) = serde_json::to_string(&state) else {
@@ -251,22 +381,11 @@ fn stream(request: Request, shared: &Shared) {
     let _ = ws.close(None);
 }
 
-/// A header of ASCII text (the names and values here are constants, or base64).
-fn header(name: &str, value: &str) -> Header {
-    Header::from_bytes(name.as_bytes(), value.as_bytes()).expect("an ASCII header")
+fn text(body: &str, content_type: &str) -> HttpResponse {
+    HttpResponse::new(200, content_type, body)
 }
 
-fn text(body: &str, content_type: &str) -> Response<std::io::Cursor<Vec<u8>>> {
-    Response::from_string(body)
-        .with_header(header("Content-Type", content_type))
-        .with_chunked_threshold(usize::MAX)
-}
-
-fn json<T: Serialize>(status: u16, value: &T) -> Response<std::io::Cursor<Vec<u8>>> {
+fn json<T: Serialize>(status: u16, value: &T) -> HttpResponse {
     let body = serde_json::to_string(value).unwrap_or_else(|e| format!("{{\"error\":\"{e}\"}}"));
-    // Content-Length rather than chunks, so that the simplest client reads it whole.
-    Response::from_string(body)
-        .with_status_code(status)
-        .with_header(header("Content-Type", "application/json"))
-        .with_chunked_threshold(usize::MAX)
+    HttpResponse::new(status, "application/json", body)
 }
