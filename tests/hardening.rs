@@ -2,8 +2,10 @@
 //! the rig. Each test failed before its fix.
 
 mod common;
+mod panel_support;
 
 use common::{folder, read_manifest, run_ok, scenario, testrig};
+use panel_support::Panel;
 
 /// A 44.1 kHz recording analysed for a 200 Hz band: the ADC samples at a ratio of
 /// 110.25 stream samples, which panicked (exit 101). It now shows the recording's 50 Hz
@@ -259,5 +261,130 @@ fn a_write_that_fails_names_its_file_and_leaves_no_truncated_file() {
         let name = listed["path"].as_str().or(listed.as_str()).unwrap_or("");
         assert!(!name.contains("partial"), "{name} listed as a result");
     }
+    std::fs::remove_dir_all(&out).ok();
+}
+
+/// Waits (at most 60 s) until `ready` holds.
+fn wait_until(what: &str, ready: impl Fn() -> bool) {
+    let start = std::time::Instant::now();
+    while !ready() {
+        assert!(
+            start.elapsed() < std::time::Duration::from_secs(60),
+            "{what} within 60 s"
+        );
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+}
+
+/// A run killed with SIGKILL after its first spectrum leaves finished files and no
+/// manifest; they once stayed beside the next run's in the same folder. The journal of
+/// finished files names them, and the next run removes exactly those (a file of the
+/// user's stays).
+#[test]
+fn files_of_a_killed_run_do_not_stand_beside_the_next_runs() {
+    let out = folder("killed-run");
+    std::fs::create_dir_all(&out).expect("folder");
+    std::fs::write(out.join("notes.txt"), "mine").expect("user file");
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_testrig"))
+        .args([
+            "run",
+            &scenario("subharmonic-2712nm"),
+            "--pace",
+            "20",
+            "--out",
+        ])
+        .arg(&out)
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .expect("starts");
+    wait_until("the first spectrum", || {
+        out.join("spectrum-01.png").is_file()
+    });
+    child.kill().expect("SIGKILL");
+    child.wait().expect("ended");
+    assert!(!out.join("manifest.json").exists());
+    let journal = std::fs::read_to_string(out.join("files.journal")).expect("journal");
+    assert!(journal.lines().any(|l| l == "spectrum-01.csv"), "{journal}");
+
+    // The next run (no analyser: it writes no spectra) into the same folder.
+    let text = "name = \"after\"\nduration_s = 1\n\n[schedule]\nspeed_rpm = 600\nload_nm = 2.712\n\n[record]\nsignals = [\"filter_v\"]\nformats = [\"csv\"]\n";
+    let next = out.join("after.toml");
+    std::fs::write(&next, text).expect("scenario");
+    let status = testrig(&[
+        "run",
+        next.to_str().expect("utf-8"),
+        "--pace",
+        "max",
+        "--out",
+        out.to_str().expect("utf-8"),
+    ]);
+    assert!(
+        status.status.success(),
+        "{}",
+        String::from_utf8_lossy(&status.stderr)
+    );
+    let mut left: Vec<String> = std::fs::read_dir(&out)
+        .expect("folder")
+        .map(|e| e.expect("entry").file_name().to_string_lossy().into_owned())
+        .collect();
+    left.sort();
+    assert!(
+        left.iter()
+            .all(|name| !name.starts_with("spectrum") && !name.starts_with("scope")),
+        "{left:?}"
+    );
+    assert!(left.contains(&"notes.txt".to_string()), "{left:?}");
+    assert!(!left.contains(&"files.journal".to_string()), "{left:?}");
+    let manifest = read_manifest(&out);
+    for name in left {
+        let listed = manifest["files"]
+            .as_array()
+            .expect("files")
+            .iter()
+            .any(|f| f == name.as_str());
+        assert!(
+            listed || ["notes.txt", "after.toml"].contains(&name.as_str()),
+            "{name} is neither the new run's nor the user's"
+        );
+    }
+    std::fs::remove_dir_all(&out).ok();
+}
+
+/// A panel session killed with SIGKILL kept no `session.toml` (it was written at the
+/// end): the session is now a journal, each command appended as it takes effect, so the
+/// file holds every command carried out before the kill and reads as a scenario.
+#[test]
+fn a_killed_panel_session_keeps_every_command_carried_out() {
+    let out = folder("killed-panel");
+    let mut panel = Panel::start(&out, &["--pace", "5"]);
+    for command in [
+        r#"{"cmd": "set_speed", "rpm": 1234}"#,
+        r#"{"cmd": "set_load", "nm": 1.5}"#,
+    ] {
+        let (status, reply) = panel.command(command);
+        assert_eq!(status, 200, "{command}: {reply}");
+    }
+    panel.child.kill().expect("SIGKILL");
+    panel.child.wait().expect("ended");
+    let text = std::fs::read_to_string(out.join("session.toml")).expect("session.toml");
+    let session: toml::Value = toml::from_str(&text).expect("TOML");
+    let commands = session["command"].as_array().expect("commands");
+    assert_eq!(commands.len(), 2, "{text}");
+    assert_eq!(commands[0]["cmd"].as_str(), Some("set_speed"));
+    assert_eq!(commands[0]["rpm"].as_float(), Some(1234.0));
+    assert_eq!(commands[1]["nm"].as_float(), Some(1.5));
+    let built = testrig::scenario::build(
+        &testrig::scenario::ScenarioSource {
+            path: "session.toml".into(),
+            text,
+        },
+        testrig::scenario::CommandLine::default(),
+    );
+    assert!(
+        built.is_ok(),
+        "{:#}",
+        built.err().map(|e| e.to_string()).unwrap_or_default()
+    );
     std::fs::remove_dir_all(&out).ok();
 }

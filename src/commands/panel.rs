@@ -7,8 +7,11 @@ use std::process::ExitCode;
 
 use anyhow::{Context, bail};
 use rig::LiveCeiling;
-use testrig::panel::Session;
+use std::io::Write;
+
 use testrig::panel::{PanelInfo, PanelServer};
+use testrig::panel::{Session, commands_toml, session_head};
+use testrig::recording::PartialFile;
 use testrig::runtime::Ending;
 use testrig::runtime::SharedStatus;
 use testrig::runtime::clear_previous_run;
@@ -19,6 +22,36 @@ use testrig::vocabulary::ControlHandle;
 use testrig::vocabulary::MAX_SIMULATED_S;
 
 use crate::cli::PanelArgs;
+
+/// Starts `path` (`session.toml`) as the session's journal: the scenario as run, then each
+/// command appended and written through the moment it takes effect, so that a session
+/// killed (`kill -9`, a crash) keeps every command it carried out. The session's end
+/// writes the file whole, with its length.
+fn journal_session(
+    path: &std::path::Path,
+    plan: &Plan,
+    ceiling: LiveCeiling,
+    control: &ControlHandle,
+) -> anyhow::Result<()> {
+    let cannot = |e: std::io::Error| anyhow::anyhow!("cannot write {}: {e}", path.display());
+    if let Some(dir) = path.parent() {
+        std::fs::create_dir_all(dir).map_err(cannot)?;
+    }
+    std::fs::write(path, session_head(&plan.text, plan.seed, ceiling)?).map_err(cannot)?;
+    let mut file = std::fs::OpenOptions::new()
+        .append(true)
+        .open(path)
+        .map_err(cannot)?;
+    let shown = path.display().to_string();
+    control.journal_to(move |command| {
+        let written = commands_toml(std::slice::from_ref(command))
+            .and_then(|text| Ok(file.write_all(text.as_bytes())?));
+        if let Err(e) = written {
+            eprintln!("warning: cannot append a command to {shown}: {e:#}");
+        }
+    });
+    Ok(())
+}
 
 /// The bundled scenario, used when none is given.
 const BUNDLED: &str = include_str!("../../scenarios/panel.toml");
@@ -45,6 +78,8 @@ pub fn run(args: &PanelArgs) -> anyhow::Result<ExitCode> {
     source.text = plan.text.clone();
     clear_previous_run(&args.out)?;
     let (control, requests) = ControlHandle::new();
+    let session_path = args.out.join("session.toml");
+    journal_session(&session_path, &plan, ceiling, &control)?;
     let status = SharedStatus::default();
     let server = PanelServer::start(
         args.listen,
@@ -86,9 +121,7 @@ pub fn run(args: &PanelArgs) -> anyhow::Result<ExitCode> {
         ceiling,
         commands: &control.session(),
     };
-    let session_path = args.out.join("session.toml");
-    std::fs::write(&session_path, session.to_toml()?)
-        .with_context(|| format!("cannot write {}", session_path.display()))?;
+    PartialFile::write_whole(&session_path, session.to_toml()?)?;
     let failed = !result.failures().is_empty();
     // A session ends by Quit (completed) or by a signal (interrupted), unless it failed.
     let ending = if failed {

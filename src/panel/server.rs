@@ -3,13 +3,14 @@
 //! (`/api/stream`, ten times a second). See `docs/api.md`.
 
 use std::net::{SocketAddr, TcpListener, TcpStream};
-use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::{Arc, Mutex, PoisonError};
 use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
 use serde::Serialize;
 
+use super::descriptors::descriptors_for_connections;
 use super::guard::Guard;
 use super::http::{HttpRequest, HttpResponse, read_request};
 use super::state::PanelState;
@@ -19,10 +20,11 @@ use crate::vocabulary::control::ControlHandle;
 
 /// How often the stream sends the state (s).
 pub const STREAM_PERIOD_S: f64 = 0.1;
-/// Most connections served at once; one more is answered 503 and closed.
-pub const MAX_CONNECTIONS: usize = 64;
+/// Most connections served at once, streams included; one more is answered 503 and
+/// closed.
+pub const MAX_CONNECTIONS: usize = 512;
 /// Most state streams (WebSockets) open at once, within [`MAX_CONNECTIONS`].
-pub const MAX_STREAMS: usize = 16;
+pub const MAX_STREAMS: usize = 256;
 /// Time a client has to take a response or a streamed state before it is dropped.
 const WRITE_TIMEOUT: Duration = Duration::from_secs(5);
 /// Pause after the listener fails to accept (out of file descriptors): the server waits
@@ -64,6 +66,9 @@ pub struct PanelInfo {
     pub record: bool,
 }
 
+/// The state serialised for the streams, and when.
+type StateJson = (Instant, Arc<str>);
+
 /// What the server's threads share.
 #[derive(Clone)]
 struct Shared {
@@ -74,6 +79,11 @@ struct Shared {
     stop: Arc<AtomicBool>,
     connections: Arc<AtomicUsize>,
     streams: Arc<AtomicUsize>,
+    /// The caps in effect: [`MAX_CONNECTIONS`] and the closing queue, less where the
+    /// process has fewer file descriptors.
+    max_connections: usize,
+    /// The state as JSON, made once a period for every stream.
+    state_json: Arc<Mutex<Option<StateJson>>>,
     /// Refused connections on their way to a graceful close.
     closer: crossbeam_channel::Sender<(TcpStream, Instant)>,
 }
@@ -103,6 +113,10 @@ impl PanelServer {
         let guard = Guard::new(address)
             .map_err(|e| anyhow::anyhow!("cannot draw the panel's token: {e}"))?;
         let token = guard.token().map(str::to_string);
+        // Connections and refused ones waiting to close share the descriptors the run
+        // does not keep, half each.
+        let spare = descriptors_for_connections() / 2;
+        let caps = (MAX_CONNECTIONS.min(spare), CLOSING_QUEUE.min(spare).max(1));
         let shared = Shared {
             guard,
             control,
@@ -111,7 +125,9 @@ impl PanelServer {
             stop: Arc::clone(&stop),
             connections: Arc::new(AtomicUsize::new(0)),
             streams: Arc::new(AtomicUsize::new(0)),
-            closer: start_closer()?,
+            state_json: Arc::default(),
+            max_connections: caps.0,
+            closer: start_closer(caps.1)?,
         };
         let thread = std::thread::Builder::new()
             .name("panel-server".into())
@@ -141,6 +157,29 @@ impl PanelServer {
             // A panic in the server thread has already been reported on stderr.
             let _ = thread.join();
         }
+    }
+}
+
+impl Shared {
+    /// The state as the streams send it, made afresh when the last is older than half a
+    /// stream period: however many streams, it is serialised about 20 times a second.
+    fn state_json(&self) -> Arc<str> {
+        let fresh_for = Duration::from_secs_f64(STREAM_PERIOD_S / 2.0);
+        let mut cached = self
+            .state_json
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner);
+        if let Some((made, text)) = &*cached
+            && made.elapsed() < fresh_for
+        {
+            return Arc::clone(text);
+        }
+        let state = PanelState::of(&self.status.snapshot(), self.info.rate_hz);
+        let text: Arc<str> = serde_json::to_string(&state)
+            .unwrap_or_else(|e| format!("{{\"error\":\"{e}\"}}"))
+            .into();
+        *cached = Some((Instant::now(), Arc::clone(&text)));
+        text
     }
 }
 
@@ -194,8 +233,11 @@ fn dispatch(mut conn: TcpStream, shared: &Shared) {
     {
         return;
     }
-    let Some(permit) = Permit::take(&shared.connections, MAX_CONNECTIONS) else {
-        let why = format!("the panel is serving {MAX_CONNECTIONS} connections; try again");
+    let Some(permit) = Permit::take(&shared.connections, shared.max_connections) else {
+        let why = format!(
+            "the panel is serving {} connections; try again",
+            shared.max_connections
+        );
         let _ = refusal(503, why).write_to(&mut conn);
         let _ = conn.shutdown(std::net::Shutdown::Write);
         // Closed a moment later, its request read and dropped, so that the close does not
@@ -212,8 +254,8 @@ fn dispatch(mut conn: TcpStream, shared: &Shared) {
 }
 
 /// Starts the thread that closes refused connections gracefully, in the order refused.
-fn start_closer() -> anyhow::Result<crossbeam_channel::Sender<(TcpStream, Instant)>> {
-    let (send, receive) = crossbeam_channel::bounded::<(TcpStream, Instant)>(CLOSING_QUEUE);
+fn start_closer(queue: usize) -> anyhow::Result<crossbeam_channel::Sender<(TcpStream, Instant)>> {
+    let (send, receive) = crossbeam_channel::bounded::<(TcpStream, Instant)>(queue);
     std::thread::Builder::new()
         .name("panel-closer".into())
         .spawn(move || {
@@ -369,11 +411,8 @@ fn stream(mut conn: TcpStream, request: &HttpRequest, shared: &Shared, _permit: 
     let mut ws =
         tungstenite::WebSocket::from_raw_socket(conn, tungstenite::protocol::Role::Server, None);
     while !shared.stop.load(Ordering::Relaxed) {
-        let state = PanelState::of(&shared.status.snapshot(), shared.info.rate_hz);
-        let Ok(text) = serde_json::to_string(&state) else {
-            return;
-        };
-        if ws.send(tungstenite::Message::text(text)).is_err() {
+        let text = shared.state_json();
+        if ws.send(tungstenite::Message::text(&*text)).is_err() {
             return;
         }
         std::thread::sleep(Duration::from_secs_f64(STREAM_PERIOD_S));

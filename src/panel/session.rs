@@ -32,24 +32,38 @@ struct Commands<'a> {
 impl Session<'_> {
     /// The session as scenario text.
     pub fn to_toml(&self) -> anyhow::Result<String> {
-        let mut text = self.scenario_text.to_string();
-        for item in [
-            format!("duration_s={}", self.duration_s),
-            format!("seed={}", self.seed),
-            format!("live.max_speed_rpm={}", self.ceiling.speed_rpm),
-            format!(
-                "live.max_oscillating_load_hz={}",
-                self.ceiling.oscillating_load_hz
-            ),
-        ] {
-            text = apply_override(&text, &item)?;
-        }
-        let commands = toml::to_string(&Commands {
-            command: self.commands,
-        })
-        .context("writing the session's commands as TOML")?;
-        text.push_str("\n# The session's commands, at the virtual time each took effect.\n");
-        text.push_str(&commands);
+        let mut text = session_head(self.scenario_text, self.seed, self.ceiling)?;
+        text = apply_override(&text, &format!("duration_s={}", self.duration_s))?;
+        text.push_str(&commands_toml(self.commands)?);
         Ok(text)
     }
+}
+
+/// What `session.toml` holds while the session runs: the scenario as run with its seed and
+/// live ceiling, then each command appended as it takes effect ([`commands_toml`]). A
+/// session killed before its end leaves this file, replayable with `--duration`.
+pub fn session_head(
+    scenario_text: &str,
+    seed: u64,
+    ceiling: LiveCeiling,
+) -> anyhow::Result<String> {
+    let mut text = scenario_text.to_string();
+    for item in [
+        format!("seed={seed}"),
+        format!("live.max_speed_rpm={}", ceiling.speed_rpm),
+        format!(
+            "live.max_oscillating_load_hz={}",
+            ceiling.oscillating_load_hz
+        ),
+    ] {
+        text = apply_override(&text, &item)?;
+    }
+    text.push_str("\n# The session's commands, at the virtual time each took effect.\n");
+    Ok(text)
+}
+
+/// `commands` as `[[command]]` tables, to follow [`session_head`].
+pub fn commands_toml(commands: &[TimedCommand]) -> anyhow::Result<String> {
+    toml::to_string(&Commands { command: commands })
+        .context("writing the session's commands as TOML")
 }

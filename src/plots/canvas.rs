@@ -5,6 +5,8 @@ use std::path::{Path, PathBuf};
 use std::ops::Range;
 
 use anyhow::Context;
+
+use crate::recording::note_finished;
 use plotters::chart::MeshStyle;
 use plotters::coord::Shift;
 use plotters::coord::types::RangedCoordf64;
@@ -42,7 +44,9 @@ pub fn png_and_svg(
 
 /// Gives the finished drawing `partial` its final name `path`.
 fn commit(partial: &Path, path: &Path) -> anyhow::Result<()> {
-    std::fs::rename(partial, path).with_context(|| format!("cannot name {}", path.display()))
+    std::fs::rename(partial, path).with_context(|| format!("cannot name {}", path.display()))?;
+    note_finished(path);
+    Ok(())
 }
 
 /// A plotters error as an anyhow error naming what was drawn.

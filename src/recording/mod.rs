@@ -4,15 +4,17 @@
 pub(crate) mod cleanup;
 pub(crate) mod csv_stream;
 pub(crate) mod frame_writer;
+pub(crate) mod journal;
 pub(crate) mod partial;
 pub(crate) mod spectrum_csv;
 pub(crate) mod uff58;
 pub(crate) mod uff58_stream;
 pub(crate) mod wav;
 
-pub use cleanup::remove_files_with_extension;
+pub use cleanup::{remove_files_with_extension, remove_partial_files};
 pub use csv_stream::CsvRecorder;
 pub use frame_writer::{CsvFrames, FrameWriter, Written};
+pub use journal::{JOURNAL_NAME, end_journal, journaled_files, note_finished, start_journal};
 pub use partial::PartialFile;
 pub use spectrum_csv::{ALIAS_COLUMN, Metadata, write_spectrum_csv};
 pub use uff58::{

@@ -7,6 +7,8 @@ use std::path::{Path, PathBuf};
 
 use anyhow::Context;
 
+use super::journal::note_finished;
+
 /// A file on its way to `path`.
 #[derive(Clone, Debug)]
 pub struct PartialFile {
@@ -50,10 +52,12 @@ impl PartialFile {
         file.commit()
     }
 
-    /// Gives the finished file its final name.
+    /// Gives the finished file its final name, and notes it in its folder's journal of
+    /// finished files where a run keeps one ([`super::journal`]).
     pub fn commit(&self) -> anyhow::Result<PathBuf> {
         std::fs::rename(&self.partial, &self.path)
             .with_context(|| format!("cannot name {}", self.path.display()))?;
+        note_finished(&self.path);
         Ok(self.path.clone())
     }
 }

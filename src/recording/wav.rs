@@ -105,8 +105,7 @@ impl WavRecorder {
             scenario,
         };
         let json_path = PathBuf::from(format!("{}.json", path.display()));
-        std::fs::write(&json_path, serde_json::to_string_pretty(&sidecar)?)
-            .with_context(|| format!("cannot write {}", json_path.display()))?;
+        PartialFile::write_whole(&json_path, serde_json::to_string_pretty(&sidecar)?)?;
         Ok(Self {
             writer,
             channels,

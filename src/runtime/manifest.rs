@@ -8,7 +8,7 @@ use sha2::{Digest, Sha256};
 
 use super::pacing::Pace;
 use super::threaded_run::RunResult;
-use crate::recording::PartialFile;
+use crate::recording::{PartialFile, end_journal};
 use crate::scenario::{AnalyserPlan, Plan};
 
 /// How the run ended.
@@ -101,7 +101,8 @@ pub fn write_manifest(
     std::io::Write::flush(&mut out)?;
     drop(out);
     file.commit()?;
-    Ok(())
+    // The manifest now lists the run's files: the journal kept against a kill is done.
+    end_journal(dir)
 }
 
 fn relative(dir: &Path, file: &Path) -> String {

@@ -21,6 +21,7 @@ use super::sinks::{Sink, SinkReport};
 use super::status::SharedStatus;
 use super::wiring::{channel, guarded, run_sink, run_stage};
 use crate::chain::NamedStage;
+use crate::recording::start_journal;
 use crate::scenario::Plan;
 use crate::vocabulary::control::refusals;
 use crate::vocabulary::frame::SignalNames;
@@ -106,6 +107,7 @@ pub fn run_with_status(
             options.out.display()
         )
     })?;
+    start_journal(&options.out)?;
     let config = PlantConfig {
         output_rate_hz: plan.rate_hz,
         live_ceiling: plan.live_ceiling,

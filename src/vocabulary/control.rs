@@ -25,8 +25,27 @@ pub const MAX_QUEUED_COMMANDS: usize = 256;
 pub type Answer = (u64, Reply);
 
 /// The session's log: each accepted live command with the order the plant's thread took
-/// it in.
-type SessionLog = Arc<Mutex<Vec<(u64, TimedCommand)>>>;
+/// it in, and where each is also written the moment it takes effect.
+type SessionLog = Arc<Mutex<LogState>>;
+
+/// Where each accepted command is also written as it takes effect.
+type Journal = Box<dyn FnMut(&TimedCommand) + Send>;
+
+/// What the session's log holds.
+#[derive(Default)]
+struct LogState {
+    entries: Vec<(u64, TimedCommand)>,
+    journal: Option<Journal>,
+}
+
+impl std::fmt::Debug for LogState {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("LogState")
+            .field("entries", &self.entries)
+            .field("journal", &self.journal.is_some())
+            .finish()
+    }
+}
 
 /// A command on its way to its target.
 #[derive(Clone, Debug)]
@@ -51,9 +70,11 @@ impl Pending {
                 at_s: self.at_s,
                 command: self.command.clone(),
             };
-            log.lock()
-                .unwrap_or_else(PoisonError::into_inner)
-                .push((self.order, timed));
+            let mut log = log.lock().unwrap_or_else(PoisonError::into_inner);
+            if let Some(journal) = &mut log.journal {
+                journal(&timed);
+            }
+            log.entries.push((self.order, timed));
         }
         if let Some(tx) = &self.answer {
             let reply = Reply {
@@ -129,6 +150,15 @@ impl ControlHandle {
         }
     }
 
+    /// Writes each accepted command with `journal` too, the moment it takes effect (the
+    /// panel appends it to `session.toml`, so that a killed session loses none).
+    pub fn journal_to(&self, journal: impl FnMut(&TimedCommand) + Send + 'static) {
+        self.log
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner)
+            .journal = Some(Box::new(journal));
+    }
+
     /// Commands refused so far because the queue was full.
     pub fn refused_busy(&self) -> u64 {
         self.busy.load(Ordering::Relaxed)
@@ -140,6 +170,7 @@ impl ControlHandle {
             .log
             .lock()
             .unwrap_or_else(PoisonError::into_inner)
+            .entries
             .clone();
         log.sort_by_key(|(order, _)| *order);
         log.into_iter().map(|(_, c)| c).collect()
