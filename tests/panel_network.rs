@@ -274,3 +274,110 @@ fn fuzzed_requests_to_a_live_panel_are_answered_or_closed() {
     drop(panel);
     std::fs::remove_dir_all(&out).ok();
 }
+
+/// A command as JSON a script might mangle: a known or unknown `cmd`, and fields of every
+/// JSON kind with edge values.
+fn command_json() -> impl Strategy<Value = String> {
+    let cmd = prop::sample::select(vec![
+        "set_speed",
+        "set_load",
+        "set_oscillating_load",
+        "set_amplifier_gain",
+        "set_filter",
+        "set_adc_range",
+        "set_analyser",
+        "set_scope",
+        "start_average",
+        "hold_average",
+        "arm_scope",
+        "record",
+        "save_displays",
+        "quit_not",
+        "",
+    ]);
+    let field = prop::sample::select(vec![
+        "rpm",
+        "nm",
+        "hz",
+        "gain",
+        "kind",
+        "order",
+        "cutoff_hz",
+        "range_v",
+        "fmax_hz",
+        "block",
+        "window",
+        "averages",
+        "overlap_pct",
+        "volts_per_div",
+        "seconds_per_div",
+        "trigger_v",
+        "mode",
+        "on",
+    ]);
+    let value = prop::sample::select(vec![
+        "0",
+        "-1",
+        "1e308",
+        "-1e308",
+        "5e-324",
+        "1300",
+        "2.712",
+        "18446744073709551616",
+        "4294967297",
+        "true",
+        "null",
+        "\"butterworth\"",
+        "\"hanning\"",
+        "\"auto\"",
+        "\"\"",
+        "[]",
+        "{}",
+    ]);
+    (cmd, prop::collection::vec((field, value), 0..5)).prop_map(|(cmd, fields)| {
+        let mut text = format!("{{\"cmd\": \"{cmd}\"");
+        for (name, value) in fields {
+            text.push_str(&format!(", \"{name}\": {value}"));
+        }
+        text.push('}');
+        text
+    })
+}
+
+/// 300 mangled commands sent to a live panel through its API: each is carried out (200)
+/// or refused (400) with a JSON reply, none crashes the rig, which runs on.
+#[test]
+fn fuzzed_json_commands_are_carried_out_or_refused() {
+    let out = folder("panel-json-fuzz");
+    let panel = Panel::start(&out, &["--pace", "100"]);
+    let mut runner = proptest::test_runner::TestRunner::new_with_rng(
+        ProptestConfig {
+            cases: 300,
+            failure_persistence: None,
+            ..ProptestConfig::default()
+        },
+        proptest::test_runner::TestRng::from_seed(
+            proptest::test_runner::RngAlgorithm::ChaCha,
+            &[23; 32],
+        ),
+    );
+    let carried_out = std::cell::Cell::new(0);
+    runner
+        .run(&command_json(), |body| {
+            let (status, reply) = panel.command(&body);
+            prop_assert!(status == 200 || status == 400, "{body}: {status} {reply}");
+            prop_assert_eq!(reply["ok"].as_bool(), Some(status == 200), "{}", body);
+            if status == 200 {
+                carried_out.set(carried_out.get() + 1);
+            }
+            Ok(())
+        })
+        .expect("every command answered");
+    assert!(carried_out.get() > 0, "the generator reaches the rig");
+    let before = panel.state()["simulated_s"].as_f64().expect("time");
+    std::thread::sleep(Duration::from_millis(300));
+    let after = panel.state()["simulated_s"].as_f64().expect("time");
+    assert!(after > before, "the rig stopped at {before} s");
+    drop(panel);
+    std::fs::remove_dir_all(&out).ok();
+}

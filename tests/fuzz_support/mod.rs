@@ -332,19 +332,26 @@ pub fn cli_number() -> impl Strategy<Value = String> {
 
 /// Runs the binary with `args`; ends it after 30 s (a hang).
 pub fn run_bounded(args: &[String]) -> Result<std::process::Output, String> {
-    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_testrig"))
+    let child = std::process::Command::new(env!("CARGO_BIN_EXE_testrig"))
         .args(args)
         .stdout(std::process::Stdio::piped())
         .stderr(std::process::Stdio::piped())
         .spawn()
         .map_err(|e| e.to_string())?;
-    let started = Instant::now();
-    while child.try_wait().map_err(|e| e.to_string())?.is_none() {
-        if started.elapsed() > Duration::from_secs(30) {
-            child.kill().ok();
-            return Err(format!("hung: {args:?}"));
+    let pid = child.id();
+    // The output is read while the child runs, so that a child writing more than a pipe
+    // holds never waits on the test.
+    let (send, receive) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        let _ = send.send(child.wait_with_output());
+    });
+    match receive.recv_timeout(Duration::from_secs(30)) {
+        Ok(output) => output.map_err(|e| e.to_string()),
+        Err(_) => {
+            let _ = std::process::Command::new("kill")
+                .args(["-9", &pid.to_string()])
+                .status();
+            Err(format!("hung: {args:?}"))
         }
-        std::thread::sleep(Duration::from_millis(5));
     }
-    child.wait_with_output().map_err(|e| e.to_string())
 }
