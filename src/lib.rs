@@ -32,6 +32,7 @@ pub mod plots;
 pub mod recording;
 pub mod runtime;
 pub mod scenario;
+pub mod steady_point;
 pub mod sweep;
 pub mod vocabulary;
 pub mod wav_input;

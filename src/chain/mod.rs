@@ -2,6 +2,7 @@
 //! full scale, inputs, how it is built), one table of the rig's standard stages, and the
 //! builder that the scenario check, the threaded run and the sweeps' inline chain share.
 
+pub(crate) mod analysed;
 pub(crate) mod analyser_setup;
 pub(crate) mod chain_stages;
 pub(crate) mod inline;
@@ -14,6 +15,7 @@ pub(crate) mod stage_plan;
 pub(crate) mod standard;
 pub(crate) mod voltmeters;
 
+pub use analysed::{AnalysedSpectrum, analyse_analogue, analyse_samples, anti_aliased};
 pub use analyser_setup::{AdcChoice, AnalyserSetting, AnalyserSetup, set_up_analyser};
 pub use chain_stages::{ChainStages, WiringError};
 pub use inline::InlineChain;

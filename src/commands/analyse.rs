@@ -8,16 +8,11 @@ use instruments::{
 
 use crate::cli::{AnalyseArgs, FilterArg};
 use testrig::chain::{AdcChoice, AnalyserSetting, AnalyserSetup, set_up_analyser};
-use testrig::chain::{ChainStages, InlineChain, Instrument, StagePlan};
 use testrig::chain::{SpectrumFacts, spectrum_metadata};
+use testrig::chain::{analyse_samples, anti_aliased};
 use testrig::plots::{SpectrumPlot, write_spectrum_plots};
 use testrig::recording::{Metadata, write_spectrum_csv};
-use testrig::vocabulary::FILTER_V;
-use testrig::vocabulary::{Frame, SignalNames};
 use testrig::wav_input::{WavSignal, read_signal};
-
-/// Name of the file's channel as the filter stage reads it.
-const INPUT: &str = "input";
 
 pub fn run(args: &AnalyseArgs) -> anyhow::Result<()> {
     let settings = analyser_settings(args)?;
@@ -39,7 +34,8 @@ pub fn run(args: &AnalyseArgs) -> anyhow::Result<()> {
         anyhow::anyhow!("{flag}: {e}")
     })?;
     let filter_spec = filter_spec(args.filter, args.cutoff.unwrap_or(args.fmax));
-    let analogue = anti_alias(filter_spec, &wav)?;
+    let analogue =
+        anti_aliased(&wav.samples, wav.rate_hz, filter_spec).context("--filter/--cutoff")?;
     let ratio = setup.adc_settings.ratio;
     let mut samples = Vec::with_capacity((analogue.len() as f64 / ratio) as usize + 1);
     setup.adc.convert(&analogue, &mut samples);
@@ -53,22 +49,6 @@ pub fn run(args: &AnalyseArgs) -> anyhow::Result<()> {
     done
 }
 
-/// The signal through the anti-alias filter (`None`: as it is): a chain of one stage on
-/// the file's channel.
-fn anti_alias(spec: Option<LowPassSpec>, wav: &WavSignal) -> anyhow::Result<Vec<f64>> {
-    let stage = StagePlan {
-        output: FILTER_V.to_string(),
-        inputs: vec![INPUT.to_string()],
-        instrument: Instrument::LowPass(spec),
-    };
-    let mut names = SignalNames::of(&[INPUT]);
-    let stages = ChainStages::ordered_on(vec![stage], &names)?
-        .build(wav.rate_hz, &mut names)
-        .context("--filter/--cutoff")?;
-    let frame = InlineChain::new(stages).process(Frame::of_channels(vec![wav.samples.clone()]));
-    Ok(frame.channels[1].to_vec())
-}
-
 /// The averaged spectrum of the ADC samples with the alias truth: spectrum.csv and plots.
 fn run_analyser(
     args: &AnalyseArgs,
@@ -80,11 +60,7 @@ fn run_analyser(
 ) -> anyhow::Result<()> {
     let settings = setup.settings;
     let ratio = setup.adc_settings.ratio;
-    let analyser = &mut setup.analyser;
-    let adc = &setup.adc;
-    analyser.push(samples);
-    let count = analyser.average_count();
-    if count == 0 {
+    let Some(spectrum) = analyse_samples(setup, analogue, samples) else {
         bail!(
             "{} (--start {} s, --length {}): {} samples at {} Hz are fewer than one block of {} ADC samples ({:.3} s)",
             args.file.display(),
@@ -96,12 +72,10 @@ fn run_analyser(
             args.block,
             args.block as f64 * ratio / wav.rate_hz
         );
-    }
-    let truth = &mut setup.truth;
-    truth.add_blocks(analogue, count, settings.hop());
-    let lines = analyser.display();
-    let floor = adc.quantisation_line_power(analyser.enbw_hz(), settings.sample_rate_hz());
-    let alias_of = truth.flags(lines.len(), floor);
+    };
+    let (lines, alias_of, count) = (spectrum.lines, spectrum.alias_of, spectrum.averages);
+    let analyser = &setup.analyser;
+    let adc = &setup.adc;
     let metadata = metadata(
         args,
         &settings,

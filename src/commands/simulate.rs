@@ -3,21 +3,14 @@
 use std::fs::File;
 use std::io::BufWriter;
 use std::path::{Path, PathBuf};
-use std::time::Instant;
 
-use anyhow::{Context, bail};
-use rig::{
-    COLUMN_NAMES, Flank, Impact, Plant, PlantConfig, RegimeCriteria, Schedule, SignalBlock,
-    SteadySummary, run_steady,
-};
+use anyhow::Context;
+use rig::{COLUMN_NAMES, Flank, Impact, SignalBlock, SteadySummary};
 use serde::Serialize;
 
 use crate::cli::SimulateArgs;
 use testrig::plots::{RasterImpact, write_impact_raster};
-use testrig::scenario::preset_with_overrides;
-use testrig::vocabulary::{
-    check_load_nm, check_load_within_motor, check_simulated_s, check_speed_rpm,
-};
+use testrig::steady_point::{FLAG_NAMES, PointRun, PointSpec, run_point};
 
 /// The JSON summary of one run.
 #[derive(Serialize)]
@@ -34,35 +27,28 @@ struct Report<'a> {
 }
 
 pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
-    check_inputs(args)?;
-    let params = preset_with_overrides(&args.rig.preset, &args.rig.overrides)?;
-    check_load_within_motor(args.load, &params)
-        .map_err(|e| anyhow::anyhow!("--load {}: {e}", args.load))?;
-    let config = PlantConfig {
-        output_rate_hz: args.rate,
-        ..PlantConfig::default()
+    let spec = PointSpec {
+        preset: &args.rig.preset,
+        overrides: &args.rig.overrides,
+        rpm: args.rpm,
+        load_nm: args.load,
+        settle_s: args.settle,
+        duration_s: args.duration,
+        rate_hz: args.rate,
     };
-    let mut plant = Plant::new(params, Schedule::constant(args.rpm, args.load), config)
-        .context("--rpm/--load/--rate")?;
     let mut writer = match &args.out {
         Some(dir) => Some(SignalWriter::create(dir)?),
         None => None,
     };
-    let started = Instant::now();
-    let summary = run_steady(
-        &mut plant,
-        args.settle,
-        args.duration,
-        &RegimeCriteria::default(),
-        |block| -> anyhow::Result<()> {
-            match writer.as_mut() {
-                Some(w) => w.write(block),
-                None => Ok(()),
-            }
-        },
-    )?;
-    let wall_s = started.elapsed().as_secs_f64();
-    let simulated_s = args.settle + summary.measured_s;
+    let PointRun {
+        plant,
+        summary,
+        simulated_s,
+        wall_s,
+    } = run_point(&spec, FLAG_NAMES, |block| match writer.as_mut() {
+        Some(w) => w.write(block),
+        None => Ok(()),
+    })?;
     let report = Report {
         preset: &args.rig.preset,
         rpm: args.rpm,
@@ -86,20 +72,6 @@ pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
     } else {
         print_text(&report);
     }
-    Ok(())
-}
-
-/// The set points, times and rate as given, each refused with its flag named.
-fn check_inputs(args: &SimulateArgs) -> anyhow::Result<()> {
-    check_speed_rpm(args.rpm).map_err(|e| anyhow::anyhow!("--rpm {}: {e}", args.rpm))?;
-    check_load_nm(args.load).map_err(|e| anyhow::anyhow!("--load {}: {e}", args.load))?;
-    if !(args.rate.is_finite() && args.rate > 0.0) {
-        bail!("--rate {}: a sample rate > 0 Hz", args.rate);
-    }
-    check_simulated_s(args.duration, false)
-        .map_err(|e| anyhow::anyhow!("--duration {}: {e}", args.duration))?;
-    check_simulated_s(args.settle, true)
-        .map_err(|e| anyhow::anyhow!("--settle {}: {e}", args.settle))?;
     Ok(())
 }
 

@@ -1,0 +1,119 @@
+//! One steady operating point of the plant alone, unpaced: the set points and times
+//! checked, the plant built from a preset and its overrides, settled, then measured with
+//! every block handed to the caller. The one path of `testrig simulate` and of the Python
+//! package's `testrig.simulate`.
+
+use std::time::Instant;
+
+use anyhow::{Context, bail};
+use rig::{Plant, PlantConfig, RegimeCriteria, Schedule, SignalBlock, SteadySummary, run_steady};
+
+use crate::scenario::preset_with_overrides;
+use crate::vocabulary::{
+    check_load_nm, check_load_within_motor, check_simulated_s, check_speed_rpm,
+};
+
+/// What to run.
+#[derive(Clone, Debug)]
+pub struct PointSpec<'a> {
+    /// Parameter preset (`testrig params`).
+    pub preset: &'a str,
+    /// `NAME=VALUE` parameter overrides.
+    pub overrides: &'a [String],
+    /// Motor speed set point (rev/min).
+    pub rpm: f64,
+    /// Brake load (N m).
+    pub load_nm: f64,
+    /// Simulated time before measuring (s).
+    pub settle_s: f64,
+    /// Measuring window (s).
+    pub duration_s: f64,
+    /// Output rate of the true signals (Hz).
+    pub rate_hz: f64,
+}
+
+/// How the caller names each input in its messages (the command line's flags, or the
+/// Python function's arguments).
+#[derive(Clone, Copy, Debug)]
+pub struct InputNames {
+    /// The speed.
+    pub rpm: &'static str,
+    /// The load.
+    pub load: &'static str,
+    /// The settling time.
+    pub settle: &'static str,
+    /// The measuring window.
+    pub duration: &'static str,
+    /// The output rate.
+    pub rate: &'static str,
+}
+
+/// The command line's names.
+pub const FLAG_NAMES: InputNames = InputNames {
+    rpm: "--rpm",
+    load: "--load",
+    settle: "--settle",
+    duration: "--duration",
+    rate: "--rate",
+};
+
+/// A point run: the plant as it ended (its impacts and revolutions), the window's
+/// summary, and the times.
+pub struct PointRun {
+    /// The plant after the window.
+    pub plant: Plant,
+    /// The measuring window's summary.
+    pub summary: SteadySummary,
+    /// Simulated time, settling included (s).
+    pub simulated_s: f64,
+    /// Wall time (s).
+    pub wall_s: f64,
+}
+
+/// Checks `spec` (each input refused under its name in `names`), runs it, and hands
+/// `sink` every block of the measuring window.
+pub fn run_point(
+    spec: &PointSpec,
+    names: InputNames,
+    sink: impl FnMut(&SignalBlock) -> anyhow::Result<()>,
+) -> anyhow::Result<PointRun> {
+    check_point(spec, names)?;
+    let params = preset_with_overrides(spec.preset, spec.overrides)?;
+    check_load_within_motor(spec.load_nm, &params)
+        .map_err(|e| anyhow::anyhow!("{} {}: {e}", names.load, spec.load_nm))?;
+    let config = PlantConfig {
+        output_rate_hz: spec.rate_hz,
+        ..PlantConfig::default()
+    };
+    let mut plant = Plant::new(params, Schedule::constant(spec.rpm, spec.load_nm), config)
+        .with_context(|| format!("{}/{}/{}", names.rpm, names.load, names.rate))?;
+    let started = Instant::now();
+    let summary = run_steady(
+        &mut plant,
+        spec.settle_s,
+        spec.duration_s,
+        &RegimeCriteria::default(),
+        sink,
+    )?;
+    Ok(PointRun {
+        simulated_s: spec.settle_s + summary.measured_s,
+        wall_s: started.elapsed().as_secs_f64(),
+        plant,
+        summary,
+    })
+}
+
+/// The set points, times and rate, each refused under its name.
+fn check_point(spec: &PointSpec, names: InputNames) -> anyhow::Result<()> {
+    check_speed_rpm(spec.rpm).map_err(|e| anyhow::anyhow!("{} {}: {e}", names.rpm, spec.rpm))?;
+    check_load_nm(spec.load_nm)
+        .map_err(|e| anyhow::anyhow!("{} {}: {e}", names.load, spec.load_nm))?;
+    if !(spec.rate_hz.is_finite() && spec.rate_hz > 0.0) {
+        bail!("{} {}: a sample rate > 0 Hz", names.rate, spec.rate_hz);
+    }
+    check_simulated_s(spec.duration_s, false)
+        .map_err(|e| anyhow::anyhow!("{} {}: {e}", names.duration, spec.duration_s))?;
+    check_simulated_s(spec.settle_s, true)
+        .map_err(|e| anyhow::anyhow!("{} {}: {e}", names.settle, spec.settle_s))?;
+    Ok(())
+}
