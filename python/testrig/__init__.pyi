@@ -1,0 +1,71 @@
+"""Type stubs of testrig (units in every name)."""
+
+from typing import Any, Mapping, Optional, TypedDict, Union
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+
+class TestrigError(Exception):
+    """A value testrig refuses, or a run that failed; the message names the argument."""
+
+class Impacts(TypedDict):
+    time_s: npt.NDArray[np.float64]
+    flank: npt.NDArray[np.int8]
+    """+1 drive flank, -1 back flank."""
+    tooth: npt.NDArray[np.uint32]
+    closing_speed_rad_s: npt.NDArray[np.float64]
+
+class Simulation(TypedDict):
+    signals: dict[str, npt.NDArray[Any]]
+    """time_s, angle1_rad..angle5_rad, speed1_rad_s..speed5_rad_s,
+    torque_input_shaft_nm, torque_intermediate_shaft_nm, torque_final_shaft_nm,
+    mesh_torque_nm, motor_torque_nm, contact (+1/0/-1), tooth."""
+    impacts: Impacts
+    summary: dict[str, Any]
+    """As `testrig simulate --json`: regime, motion (the physics judge), impacts per
+    tooth, torque mean and RMS (N m), simulated_s, wall_s, realtime_factor."""
+
+def simulate(
+    rpm: float,
+    load_nm: float,
+    preset: str = "basmaji-1983-rig",
+    settle_s: float = 60.0,
+    duration_s: float = 10.0,
+    rate_hz: float = 51200.0,
+    set: Optional[Mapping[str, Union[float, int, str, bool]]] = None,
+) -> Simulation:
+    """The plant at `rpm` rev/min and `load_nm` N m from rest: `settle_s` s settling,
+    then `duration_s` s measured at `rate_hz` Hz. `set` overrides parameters by name
+    (`testrig params`). Releases the GIL; Ctrl-C stops it."""
+
+class Analysed(TypedDict):
+    frequency_hz: npt.NDArray[np.float64]
+    power: npt.NDArray[np.float64]
+    """Power of each line in the signal's unit squared (RMS)."""
+    alias_of_hz: npt.NDArray[np.float64]
+    """The true frequency (Hz) a line is an alias of; NaN where it is none."""
+    averages: int
+    adc_overloads: int
+    floor: float
+    """The ADC's quantisation noise in one line (the signal's unit squared)."""
+
+def analyse(
+    signal: npt.NDArray[np.float64],
+    rate_hz: float,
+    fmax_hz: float,
+    block: int = 1024,
+    window: str = "hanning",
+    averages: int = 10,
+    overlap_pct: float = 0.0,
+    sampling: str = "thesis",
+    bits: int = 12,
+    range: Optional[float] = None,
+    filter: Optional[str] = None,
+    filter_order: int = 8,
+    cutoff_hz: Optional[float] = None,
+) -> Analysed:
+    """The averaged spectrum of `signal` sampled at `rate_hz` Hz, up to `fmax_hz` Hz,
+    through an optional low-pass `filter` ("butterworth" or "bessel"), an ADC of `bits`
+    over ±`range` (default: the signal's peak) and the analyser."""

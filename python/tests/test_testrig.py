@@ -1,0 +1,92 @@
+"""The Python package against physics and against the command line's engine."""
+
+import json
+import math
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+import testrig
+
+ROOT = Path(__file__).resolve().parents[2]
+BINARY = ROOT / "target" / "release" / "testrig"
+
+
+def test_simulate_returns_every_true_signal_with_units():
+    sim = testrig.simulate(1300, 2.712, settle_s=5, duration_s=2, rate_hz=10240)
+    signals = sim["signals"]
+    assert len(signals["time_s"]) == 2 * 10240
+    for name in ["angle1_rad", "speed5_rad_s", "torque_intermediate_shaft_nm",
+                 "mesh_torque_nm", "motor_torque_nm", "contact", "tooth"]:
+        assert len(signals[name]) == len(signals["time_s"]), name
+    # The mean output-shaft torque carries the load (2.712 N m plus the preset's
+    # 0.6 N m residual drag at the brake).
+    mean = signals["torque_intermediate_shaft_nm"].mean()
+    assert abs(mean - 3.312) < 0.05, mean
+    # The driven gear turns at the set speed: 1300 rev/min = 136.1 rad/s.
+    assert abs(signals["speed3_rad_s"].mean() - 1300 * math.pi / 30) < 0.5
+    assert sim["summary"]["motion"]["motion"]
+    impacts = sim["impacts"]
+    assert len(impacts["time_s"]) == sim["summary"]["impacts"]
+    assert set(np.unique(impacts["flank"])) <= {-1, 1}
+
+
+@pytest.mark.skipif(not BINARY.exists(), reason="needs the CLI: cargo build --release")
+def test_simulate_is_the_command_lines_engine():
+    args = ["simulate", "--rpm", "1100", "--load", "0", "--settle", "3", "--duration", "2",
+            "--rate", "10240", "--preset", "basmaji-1983-rig", "--json"]
+    cli = json.loads(subprocess.run([str(BINARY), *args], check=True,
+                                    capture_output=True, text=True).stdout)
+    py = testrig.simulate(1100, 0, settle_s=3, duration_s=2, rate_hz=10240)["summary"]
+    for key in ["impacts", "impacts_per_tooth", "torque_mean_nm", "torque_ac_rms_nm",
+                "regime", "motion", "revolutions"]:
+        assert py[key] == cli[key], key
+
+
+def test_overrides_and_refusals_name_the_argument():
+    with pytest.raises(testrig.TestrigError, match="load_nm 99"):
+        testrig.simulate(1300, 99, settle_s=1, duration_s=1)
+    with pytest.raises(testrig.TestrigError, match="rpm -5"):
+        testrig.simulate(-5, 1, settle_s=1, duration_s=1)
+    with pytest.raises(testrig.TestrigError, match="teeth"):
+        testrig.simulate(600, 1, settle_s=1, duration_s=1, set={"teeth": -3})
+    # 31 teeth: 31 tooth numbers in mesh over a whole window.
+    sim = testrig.simulate(600, 2.712, settle_s=1, duration_s=1, rate_hz=5120,
+                           set={"teeth": 31})
+    assert sim["signals"]["tooth"].max() == 30
+
+
+def test_analyse_agrees_with_scipy_welch():
+    scipy_signal = pytest.importorskip("scipy.signal")
+    rng = np.random.default_rng(7)
+    rate = 4096.0
+    t = np.arange(int(rate * 20)) / rate
+    x = 0.5 * np.sin(2 * np.pi * 100.0 * t) + 0.05 * rng.standard_normal(len(t))
+    out = testrig.analyse(x, rate, fmax_hz=rate / 2, block=1024, window="hanning",
+                          averages=40, bits=24, range=1.0)
+    f, pxx = scipy_signal.welch(x, fs=rate, window="hann", nperseg=1024, noverlap=0,
+                                scaling="spectrum", detrend=False)
+    line = np.argmin(abs(out["frequency_hz"] - 100.0))
+    # The tone's power: 0.5²/2 = 0.125 in both.
+    assert abs(out["power"][line] / 0.125 - 1) < 0.02
+    assert abs(pxx[np.argmin(abs(f - 100.0))] / 0.125 - 1) < 0.02
+    # The noise floor agrees away from the tone (median over the band, within 10 %).
+    band = (out["frequency_hz"] > 300) & (out["frequency_hz"] < 1500)
+    ours = np.median(out["power"][band])
+    theirs = np.median(pxx[(f > 300) & (f < 1500)])
+    assert abs(ours / theirs - 1) < 0.1, (ours, theirs)
+
+
+def test_analyse_flags_an_alias_where_the_truth_puts_it():
+    rate = 8192.0
+    t = np.arange(int(rate * 10)) / rate
+    # A 700 Hz tone analysed with fmax 200 Hz (fs 400 Hz) without a filter folds to
+    # |700 - 2 * 400| = 100 Hz.
+    x = np.sin(2 * np.pi * 700.0 * t)
+    out = testrig.analyse(x, rate, fmax_hz=200, block=256, averages=4, range=1.0)
+    line = np.argmax(out["power"])
+    assert abs(out["frequency_hz"][line] - 100.0) < 2.0
+    assert abs(out["alias_of_hz"][line] - 700.0) < 2.0
+    with pytest.raises(testrig.TestrigError, match="block 1000"):
+        testrig.analyse(x, rate, fmax_hz=200, block=1000)
