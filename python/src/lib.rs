@@ -5,6 +5,8 @@
 mod analyse;
 mod errors;
 mod interrupt;
+mod run;
+mod scenario_arg;
 mod simulate;
 
 use pyo3::prelude::*;
@@ -15,6 +17,9 @@ fn _testrig(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("TestrigError", m.py().get_type::<errors::TestrigError>())?;
     m.add_function(wrap_pyfunction!(simulate::simulate, m)?)?;
     m.add_function(wrap_pyfunction!(analyse::analyse, m)?)?;
+    m.add_function(wrap_pyfunction!(run::run_into, m)?)?;
+    m.add_function(wrap_pyfunction!(run::sweep_into, m)?)?;
+    m.add_function(wrap_pyfunction!(run::read_recording, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

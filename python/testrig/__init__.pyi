@@ -1,5 +1,7 @@
 """Type stubs of testrig (units in every name)."""
 
+import os
+from pathlib import Path
 from typing import Any, Mapping, Optional, TypedDict, Union
 
 import numpy as np
@@ -69,3 +71,46 @@ def analyse(
     """The averaged spectrum of `signal` sampled at `rate_hz` Hz, up to `fmax_hz` Hz,
     through an optional low-pass `filter` ("butterworth" or "bessel"), an ADC of `bits`
     over ±`range` (default: the signal's peak) and the analyser."""
+
+Scenario = Union[str, "os.PathLike[str]", Mapping[str, Any]]
+
+class Recording(TypedDict):
+    rate_hz: float
+    channels: dict[str, npt.NDArray[np.float64]]
+    units: dict[str, str]
+    """Each channel's unit: V, µε, N m, rad/s…"""
+    sidecar: dict[str, Any]
+
+class MeasuredSpectrum(TypedDict):
+    name: str
+    metadata: dict[str, str]
+    frequency_hz: npt.NDArray[np.float64]
+    power: npt.NDArray[np.float64]
+    """V² (RMS) of the analysed signal."""
+    alias_of_hz: npt.NDArray[np.float64]
+
+class Run(TypedDict):
+    out: Path
+    manifest: dict[str, Any]
+    recording: Optional[Recording]
+    spectra: list[MeasuredSpectrum]
+    readings: Optional[dict[str, npt.NDArray[Any]]]
+
+def run(
+    scenario: Scenario,
+    out: Optional[Union[str, "os.PathLike[str]"]] = None,
+    set: Optional[Mapping[str, Any]] = None,
+    seed: Optional[int] = None,
+    duration_s: Optional[float] = None,
+) -> Run:
+    """A scenario run unpaced into `out`: the files `testrig run` writes, byte for byte,
+    read back. Ctrl-C stops it, its files kept."""
+
+def sweep(
+    scenario: Scenario,
+    out: Optional[Union[str, "os.PathLike[str]"]] = None,
+    set: Optional[Mapping[str, Any]] = None,
+    jobs: Optional[int] = None,
+) -> Any:
+    """A sweep run into `out`; its cases.csv as a pandas DataFrame (pandas installed) or
+    a dict of arrays."""

@@ -90,3 +90,67 @@ def test_analyse_flags_an_alias_where_the_truth_puts_it():
     assert abs(out["alias_of_hz"][line] - 700.0) < 2.0
     with pytest.raises(testrig.TestrigError, match="block 1000"):
         testrig.analyse(x, rate, fmax_hz=200, block=1000)
+
+
+def _files(folder):
+    return {p.name: p.read_bytes() for p in sorted(Path(folder).iterdir())
+            if p.name != "manifest.json"}
+
+
+@pytest.mark.skipif(not BINARY.exists(), reason="needs the CLI: cargo build --release")
+def test_run_writes_the_command_lines_bytes(tmp_path):
+    scenario = ROOT / "scenarios" / "subharmonic-2712nm.toml"
+    sets = {"duration_s": 40}
+    subprocess.run([str(BINARY), "run", str(scenario), "--pace", "max", "--set",
+                    "duration_s=40", "--out", str(tmp_path / "cli")], check=True,
+                   capture_output=True)
+    result = testrig.run(scenario, out=tmp_path / "py", set=sets)
+    cli, py = _files(tmp_path / "cli"), _files(tmp_path / "py")
+    assert cli.keys() == py.keys()
+    different = [name for name in cli if cli[name] != py[name]]
+    assert not different, different
+    # Read back: the recorded output-shaft torque and the filter's volts, units kept.
+    recording = result["recording"]
+    assert recording["units"]["torque_intermediate_shaft_nm"] == "N m"
+    assert recording["units"]["filter_v"] == "V"
+    torque = recording["channels"]["torque_intermediate_shaft_nm"]
+    assert abs(len(torque) / recording["rate_hz"] - 40) < 0.01
+    assert result["manifest"]["ending"] == "completed"
+    assert result["spectra"], "spectra read back"
+    spectrum = result["spectra"][0]
+    assert len(spectrum["frequency_hz"]) == len(spectrum["power"])
+    assert "label" in result["readings"]
+
+
+def test_run_takes_a_dict_shaped_like_the_toml(tmp_path):
+    scenario = {
+        "name": "from-python",
+        "duration_s": 2,
+        "schedule": {"speed_rpm": 600, "load_nm": 2.712},
+        "record": {"signals": ["strain", "torque_intermediate_shaft_nm"],
+                   "formats": ["wav"]},
+    }
+    result = testrig.run(scenario, out=tmp_path)
+    rec = result["recording"]
+    assert rec["units"]["strain"] == "µε"
+    # The gauged shaft: 3.85 µε per N m of its torque (Ø20 mm, G 82.7 GPa).
+    ratio = rec["channels"]["strain"] / rec["channels"]["torque_intermediate_shaft_nm"]
+    assert abs(np.median(ratio) - 8 / (math.pi * 0.02 ** 3 * 82.7e9) * 1e6) < 1e-3
+    with pytest.raises(testrig.TestrigError, match="speed_rpm"):
+        testrig.run({**scenario, "schedule": {"speed_rpm": -5, "load_nm": 0}}, out=tmp_path)
+
+
+def test_sweep_returns_its_cases(tmp_path):
+    sweep = {
+        "name": "small",
+        "seed": 1,
+        "rate_hz": 10240,
+        "rig": {"preset": "basmaji-1983-rig"},
+        "grid": {"rpm": [600, 1300], "load_nm": [2.712]},
+        "case": {"settle_s": 5, "measure_s": 5},
+        "analyser": {"fmax_hz": 200, "block": 512, "averages": 2},
+    }
+    table = testrig.sweep(sweep, out=tmp_path)
+    rpm = list(table["rpm"])
+    assert sorted(rpm) == [600.0, 1300.0]
+    assert (tmp_path / "cases.csv").exists()

@@ -5,8 +5,7 @@ use std::process::ExitCode;
 
 use anyhow::{Context, bail};
 use testrig::runtime::Ending;
-use testrig::runtime::clear_previous_run;
-use testrig::runtime::{Pace, RunOptions, RunResult, StopSignals, run as run_plan, write_manifest};
+use testrig::runtime::{FolderRun, Pace, RunOptions, RunResult, StopSignals, run_into_folder};
 use testrig::scenario::{
     CommandLine, ScenarioSource, build, measurement_warnings, recording_warnings,
 };
@@ -44,13 +43,6 @@ pub fn run(args: &RunArgs) -> anyhow::Result<ExitCode> {
     for warning in &predicted {
         eprintln!("warning: {warning}");
     }
-    let removed = clear_previous_run(&args.out)?;
-    if removed > 0 {
-        eprintln!(
-            "testrig: removed {removed} files of the earlier run in {}",
-            args.out.display()
-        );
-    }
     let signals = StopSignals::install().context("cannot install the signal handlers")?;
     let options = RunOptions {
         pace,
@@ -59,14 +51,18 @@ pub fn run(args: &RunArgs) -> anyhow::Result<ExitCode> {
         console: std::io::stderr().is_terminal(),
         control: None,
     };
-    let result = run_plan(&plan, &options)?;
-    let failed = !result.failures().is_empty();
-    let ending = match (failed, result.stopped_early) {
-        (true, _) => Ending::Failed,
-        (false, true) => Ending::Interrupted,
-        (false, false) => Ending::Completed,
-    };
-    write_manifest(&args.out, &args.scenario, &plan, pace, &result, ending)?;
+    let FolderRun {
+        result,
+        ending,
+        removed,
+    } = run_into_folder(&args.scenario, &plan, &options)?;
+    if removed > 0 {
+        eprintln!(
+            "testrig: removed {removed} files of the earlier run in {}",
+            args.out.display()
+        );
+    }
+    let failed = ending == Ending::Failed;
     print_summary(&plan.name, &args.out, &result, pace);
     if failed {
         let all = result.failures();

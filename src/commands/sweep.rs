@@ -3,10 +3,9 @@
 use std::io::IsTerminal;
 
 use anyhow::bail;
-use rig::RigChains;
 use testrig::scenario::ScenarioSource;
 use testrig::sweep::SweepFile;
-use testrig::sweep::{Shard, SweepMeta, SweepOptions, build_sweep, fingerprint, run_sweep};
+use testrig::sweep::{Shard, SweepOptions, build_sweep, run_sweep, sweep_meta};
 
 use crate::cli::SweepArgs;
 
@@ -18,25 +17,7 @@ pub fn run(args: &SweepArgs) -> anyhow::Result<()> {
     let source = ScenarioSource::read_with(&args.sweep, &args.overrides)?;
     let file: SweepFile = source.parse_sweep()?;
     let plan = build_sweep(&source, &file)?;
-    let base = plan.cases.first().map(|c| c.params.clone());
-    let natural_hz = base
-        .map(|p| {
-            RigChains::of(&p)
-                .whole_rig
-                .modes()
-                .iter()
-                .map(|m| m.frequency_hz)
-                .collect()
-        })
-        .unwrap_or_default();
-    let meta = SweepMeta {
-        name: plan.name.clone(),
-        swept: plan.swept.clone(),
-        natural_hz,
-        fmax_hz: plan.analyser.settings.fmax_hz,
-        cases: plan.cases.len(),
-        fingerprint: fingerprint(&source.text, &plan),
-    };
+    let meta = sweep_meta(&source, &plan);
     let options = SweepOptions {
         jobs: args.jobs,
         shard,

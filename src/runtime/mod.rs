@@ -2,6 +2,7 @@
 //! threads joined by crossbeam channels, and the run's manifest.
 
 pub(crate) mod console;
+pub(crate) mod folder_run;
 pub(crate) mod manifest;
 pub(crate) mod pacing;
 pub(crate) mod plant_source;
@@ -14,6 +15,7 @@ pub(crate) mod stop_signals;
 pub(crate) mod threaded_run;
 pub(crate) mod wiring;
 
+pub use folder_run::{FolderRun, run_into_folder};
 pub use manifest::{Ending, write_manifest};
 pub use pacing::{LatenessHistogram, Pace};
 pub use previous_run::clear_previous_run;

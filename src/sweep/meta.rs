@@ -8,8 +8,11 @@ use serde::{Deserialize, Serialize};
 
 use sha2::{Digest, Sha256};
 
+use rig::RigChains;
+
 use super::grid::SweepPlan;
 use crate::recording::PartialFile;
+use crate::scenario::ScenarioSource;
 
 /// What the table and plots need besides the cases (`sweep.json`, so that `merge` can
 /// assemble shards without the sweep file).
@@ -29,6 +32,32 @@ pub struct SweepMeta {
     /// and resumed runs of one sweep share it; `merge` and `--resume` refuse others.
     #[serde(default)]
     pub fingerprint: String,
+}
+
+/// The metadata of the sweep `plan` read from `source`: its name, what it sweeps, the
+/// whole rig's natural frequencies (of the first case's parameters), its band, its size
+/// and fingerprint.
+pub fn sweep_meta(source: &ScenarioSource, plan: &SweepPlan) -> SweepMeta {
+    let natural_hz = plan
+        .cases
+        .first()
+        .map(|c| {
+            RigChains::of(&c.params)
+                .whole_rig
+                .modes()
+                .iter()
+                .map(|m| m.frequency_hz)
+                .collect()
+        })
+        .unwrap_or_default();
+    SweepMeta {
+        name: plan.name.clone(),
+        swept: plan.swept.clone(),
+        natural_hz,
+        fmax_hz: plan.analyser.settings.fmax_hz,
+        cases: plan.cases.len(),
+        fingerprint: fingerprint(&source.text, plan),
+    }
 }
 
 /// The fingerprint of a sweep: SHA-256 over the sweep file's text as run (with its

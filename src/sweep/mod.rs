@@ -19,7 +19,7 @@ pub(crate) mod thesis;
 pub use approach::Approach;
 pub use case::{CaseResult, run_case};
 pub use grid::{Case, SweepPlan, build_sweep};
-pub use meta::{SweepMeta, fingerprint, read_meta};
+pub use meta::{SweepMeta, fingerprint, read_meta, sweep_meta};
 pub use runner::{Assembled, SweepOptions, SweepOutcome, assemble, missing_cases, run_sweep};
 pub use sequence::{Direction, Sequence};
 pub use shard::Shard;
