@@ -5,6 +5,7 @@
 mod analyse;
 mod errors;
 mod interrupt;
+mod live;
 mod run;
 mod scenario_arg;
 mod simulate;
@@ -16,6 +17,7 @@ use pyo3::prelude::*;
 fn _testrig(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("TestrigError", m.py().get_type::<errors::TestrigError>())?;
     m.add_function(wrap_pyfunction!(simulate::simulate, m)?)?;
+    m.add_class::<live::Rig>()?;
     m.add_function(wrap_pyfunction!(analyse::analyse, m)?)?;
     m.add_function(wrap_pyfunction!(run::run_into, m)?)?;
     m.add_function(wrap_pyfunction!(run::sweep_into, m)?)?;

@@ -11,6 +11,8 @@ The same engine as the `testrig` command line, on numpy arrays:
 - ``run(scenario, ...)``: a scenario (a path, or a dict shaped like the TOML) run
   unpaced into a folder, byte for byte the files ``testrig run`` writes, read back: the
   recording's channels, the spectra with their alias truth, the meter readings.
+- ``Rig(scenario, ...)``: a live rig paced in real time, driven as the panel drives it
+  (every panel command, the panel's state) and read block by block; a context manager.
 - ``sweep(scenario, ...)``: a sweep run into a folder, its ``cases.csv`` as a table (a
   pandas DataFrame when pandas is installed, else a dict of arrays).
 
@@ -25,9 +27,10 @@ from pathlib import Path
 import numpy as np
 
 from ._testrig import TestrigError, __version__, analyse, read_recording, run_into, simulate
+from ._testrig import Rig as _Rig
 from ._testrig import sweep_into
 
-__all__ = ["TestrigError", "__version__", "analyse", "run", "simulate", "sweep"]
+__all__ = ["Rig", "TestrigError", "__version__", "analyse", "run", "simulate", "sweep"]
 
 
 def _folder(out, prefix):
@@ -108,3 +111,104 @@ def sweep(scenario, out=None, set=None, jobs=None):
     except ImportError:
         return table
     return pandas.DataFrame(table)
+
+
+def _command(cmd, **fields):
+    return {"cmd": cmd, **{k: v for k, v in fields.items() if v is not None}}
+
+
+class Rig:
+    """A live rig: `scenario` (a path or a dict, e.g. ``scenarios/panel.toml``) paced at
+    `pace` (1: real time), writing into `out` (a new temporary folder if None). Use it in a ``with``
+    block; leaving it (normally, by an exception or Ctrl-C) stops the rig and writes its
+    manifest. Each method sends the panel's command of the same name (docs/api.md) and
+    waits for the rig to carry it out, returning ``{"ok", "at_s"}`` (the virtual time it
+    took effect, s); a refusal raises ``TestrigError`` with the reason."""
+
+    def __init__(self, scenario, out=None, pace=1.0, set=None):
+        self.out = _folder(out, "testrig-rig-")
+        self._rig = _Rig(scenario, str(self.out), pace, set)
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+        return False
+
+    def close(self):
+        """Stops the rig, closes its files and writes its manifest; returns the folder."""
+        self._rig.close()
+        return self.out
+
+    def send(self, command):
+        """Any panel command as a dict, e.g. ``{"cmd": "set_speed", "rpm": 1300}``."""
+        return self._rig.send(command)
+
+    def state(self):
+        """The state as the panel shows it: set points, tacho DVM (V, rev/min), RMS meter
+        (V), the analyser's display, the scope's trace, overruns, the judged motion."""
+        return self._rig.state()
+
+    def read(self):
+        """The latest block of every signal: ``{"start_s", "rate_hz", "channels": name ->
+        array}`` (units in the names, ``strain`` in µε); None before the first block."""
+        return self._rig.read()
+
+    def set_speed(self, rpm):
+        """Motor speed set point (rev/min)."""
+        return self.send(_command("set_speed", rpm=rpm))
+
+    def set_load(self, nm):
+        """Brake load (N m)."""
+        return self.send(_command("set_load", nm=nm))
+
+    def set_oscillating_load(self, nm, hz):
+        """The function generator on the brake: amplitude (N m; 0 off) at `hz` (Hz)."""
+        return self.send(_command("set_oscillating_load", nm=nm, hz=hz))
+
+    def set_amplifier_gain(self, gain):
+        """Carrier amplifier gain (V per V of bridge output)."""
+        return self.send(_command("set_amplifier_gain", gain=gain))
+
+    def set_filter(self, kind, order=None, cutoff_hz=None):
+        """Anti-alias filter: "none", "butterworth" or "bessel", order 1-12, cut-off (Hz)."""
+        return self.send(_command("set_filter", kind=kind, order=order, cutoff_hz=cutoff_hz))
+
+    def set_adc_range(self, range_v):
+        """The ADC's ±full scale (V)."""
+        return self.send(_command("set_adc_range", range_v=range_v))
+
+    def set_analyser(self, fmax_hz=None, block=None, window=None, averages=None,
+                     overlap_pct=None):
+        """The analyser's band (Hz), block, window, averages and overlap (%)."""
+        return self.send(_command("set_analyser", fmax_hz=fmax_hz, block=block,
+                                  window=window, averages=averages,
+                                  overlap_pct=overlap_pct))
+
+    def start_average(self):
+        """A fresh average from now."""
+        return self.send(_command("start_average"))
+
+    def hold_average(self):
+        """Stops the average (written as it stands)."""
+        return self.send(_command("hold_average"))
+
+    def set_scope(self, volts_per_div=None, seconds_per_div=None, trigger_v=None,
+                  mode=None):
+        """The scope's scales (V/div, s/div), trigger level (V) and mode ("auto", "single")."""
+        return self.send(_command("set_scope", volts_per_div=volts_per_div,
+                                  seconds_per_div=seconds_per_div, trigger_v=trigger_v,
+                                  mode=mode))
+
+    def arm_scope(self):
+        """A stored sweep from now."""
+        return self.send(_command("arm_scope"))
+
+    def record(self, on):
+        """Starts or stops the recording of the scenario's [record] signals."""
+        return self.send(_command("record", on=on))
+
+    def save_displays(self):
+        """Writes the spectrum and scope on screen."""
+        return self.send(_command("save_displays"))

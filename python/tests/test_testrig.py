@@ -3,6 +3,7 @@
 import json
 import math
 import subprocess
+import time
 from pathlib import Path
 
 import numpy as np
@@ -154,3 +155,26 @@ def test_sweep_returns_its_cases(tmp_path):
     rpm = list(table["rpm"])
     assert sorted(rpm) == [600.0, 1300.0]
     assert (tmp_path / "cases.csv").exists()
+
+
+def test_a_live_rig_follows_its_commands_and_stops_cleanly(tmp_path):
+    scenario = ROOT / "scenarios" / "panel.toml"
+    with testrig.Rig(scenario, out=tmp_path, pace=20) as rig:
+        reply = rig.set_speed(900)
+        assert reply["ok"] and reply["at_s"] >= 0
+        rig.set_load(1.5)
+        with pytest.raises(testrig.TestrigError, match="speed: -10 rev.min is not allowed"):
+            rig.set_speed(-10)
+        # The motor follows (0.5 Hz speed loop): within 2 % after 10 s of rig time.
+        deadline = reply["at_s"] + 10
+        while rig.state()["simulated_s"] < deadline:
+            time.sleep(0.05)
+        block = rig.read()
+        speed = block["channels"]["speed1_rad_s"]
+        assert abs(speed.mean() - 900 * math.pi / 30) < 0.02 * 900 * math.pi / 30
+        assert len(speed) == len(block["channels"]["strain"])
+        state = rig.state()
+        assert state["speed_set_rpm"] == 900 and state["load_set_nm"] == 1.5
+        assert state["overruns"] == 0
+    manifest = json.loads((tmp_path / "manifest.json").read_text())
+    assert manifest["ending"] in ("completed", "interrupted")

@@ -19,7 +19,7 @@ use testrig::runtime::run_with_status;
 use testrig::runtime::{Pace, RunOptions, StopSignals, write_manifest};
 use testrig::scenario::{CommandLine, Plan, ScenarioSource, apply_override, build};
 use testrig::vocabulary::ControlHandle;
-use testrig::vocabulary::MAX_SIMULATED_S;
+use testrig::vocabulary::{DEFAULT_LIVE_CEILING, MAX_SIMULATED_S};
 
 use crate::cli::PanelArgs;
 
@@ -57,11 +57,6 @@ fn journal_session(
 const BUNDLED: &str = include_str!("../../scenarios/panel.toml");
 /// Where the bundled scenario lives in the source tree (named in messages and the manifest).
 const BUNDLED_PATH: &str = "scenarios/panel.toml";
-/// The live ceiling when the scenario has no `[live]`.
-const DEFAULT_CEILING: LiveCeiling = LiveCeiling {
-    speed_rpm: 3000.0,
-    oscillating_load_hz: 200.0,
-};
 
 pub fn run(args: &PanelArgs) -> anyhow::Result<ExitCode> {
     let pace = match args.pace {
@@ -72,7 +67,7 @@ pub fn run(args: &PanelArgs) -> anyhow::Result<ExitCode> {
     };
     let (path, mut source) = scenario_source(args)?;
     let mut plan = build(&source, CommandLine::default())?;
-    let ceiling = *plan.live_ceiling.get_or_insert(DEFAULT_CEILING);
+    let ceiling = *plan.live_ceiling.get_or_insert(DEFAULT_LIVE_CEILING);
     // Runs until Quit or a signal: as long as any run may be.
     plan.duration_s = MAX_SIMULATED_S;
     source.text = plan.text.clone();

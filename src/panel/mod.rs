@@ -13,3 +13,4 @@ pub use http::{
 };
 pub use server::{MAX_CONNECTIONS, MAX_STREAMS, PanelInfo, PanelServer};
 pub use session::{Session, commands_toml, session_head};
+pub use state::PanelState;

@@ -6,7 +6,8 @@ use std::path::Path;
 
 use super::manifest::{Ending, write_manifest};
 use super::previous_run::clear_previous_run;
-use super::threaded_run::{RunOptions, RunResult, run};
+use super::status::SharedStatus;
+use super::threaded_run::{RunOptions, RunResult, run_with_status};
 use crate::scenario::Plan;
 
 /// What a run into a folder did.
@@ -27,8 +28,19 @@ pub fn run_into_folder(
     plan: &Plan,
     options: &RunOptions,
 ) -> anyhow::Result<FolderRun> {
+    run_into_folder_with_status(scenario_path, plan, options, SharedStatus::default())
+}
+
+/// As [`run_into_folder`], the rack's readings and displays kept in `status` (a live rig
+/// reads it).
+pub fn run_into_folder_with_status(
+    scenario_path: &Path,
+    plan: &Plan,
+    options: &RunOptions,
+    status: SharedStatus,
+) -> anyhow::Result<FolderRun> {
     let removed = clear_previous_run(&options.out)?;
-    let result = run(plan, options)?;
+    let result = run_with_status(plan, options, status)?;
     let ending = match (!result.failures().is_empty(), result.stopped_early) {
         (true, _) => Ending::Failed,
         (false, true) => Ending::Interrupted,

@@ -15,10 +15,10 @@ pub(crate) mod stop_signals;
 pub(crate) mod threaded_run;
 pub(crate) mod wiring;
 
-pub use folder_run::{FolderRun, run_into_folder};
+pub use folder_run::{FolderRun, run_into_folder, run_into_folder_with_status};
 pub use manifest::{Ending, write_manifest};
 pub use pacing::{LatenessHistogram, Pace};
 pub use previous_run::clear_previous_run;
-pub use status::SharedStatus;
+pub use status::{LatestBlock, SharedStatus, Status};
 pub use stop_signals::StopSignals;
 pub use threaded_run::{RunOptions, RunResult, run, run_with_status};

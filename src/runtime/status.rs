@@ -37,6 +37,19 @@ pub struct Status {
     pub motion: Option<rig::Motion>,
     /// The chain's settings in effect (live runs).
     pub chain: AppliedChain,
+    /// The latest block of every signal (live runs).
+    pub latest: Option<Arc<LatestBlock>>,
+}
+
+/// The latest block of every signal, plant and chain, as the sinks received it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LatestBlock {
+    /// Index of its first sample in the run.
+    pub start_sample: u64,
+    /// The signals' names, in channel order.
+    pub names: Arc<[String]>,
+    /// The samples, one channel per name (each signal's unit).
+    pub channels: Vec<Arc<[f64]>>,
 }
 
 /// A handle every thread can update.

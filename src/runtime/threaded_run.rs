@@ -17,6 +17,7 @@ use super::sinks::analyser::AnalyserSink;
 use super::sinks::monitor::MonitorSink;
 use super::sinks::recorder::RecorderSink;
 use super::sinks::scope::ScopeSink;
+use super::sinks::tap::TapSink;
 use super::sinks::{Sink, SinkReport};
 use super::status::SharedStatus;
 use super::wiring::{channel, guarded, run_sink, run_stage};
@@ -296,6 +297,10 @@ fn build_sinks(
             sink.go_live();
         }
         sinks.push(("analyser", Box::new(sink)));
+    }
+    if live {
+        let tap = TapSink::new(names.names().to_vec(), status.clone());
+        sinks.push(("tap", Box::new(tap)));
     }
     if let Some(scope) = &plan.chain.scope {
         let mut sink = ScopeSink::create(dir, plan, scope, index(&scope.input)?, measures)?;

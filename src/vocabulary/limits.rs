@@ -6,6 +6,13 @@
 /// Highest motor speed set point a scenario accepts (rev/min), the plant's own limit.
 pub const MAX_SPEED_RPM: f64 = rig::schedule::MAX_SPEED_RPM;
 
+/// The live ceiling of a live rig (the panel, Python's `testrig.Rig`) whose scenario has
+/// no `[live]`: speeds up to 3000 rev/min, an oscillating load up to 200 Hz.
+pub const DEFAULT_LIVE_CEILING: rig::LiveCeiling = rig::LiveCeiling {
+    speed_rpm: 3000.0,
+    oscillating_load_hz: 200.0,
+};
+
 /// Longest simulated time a run, a simulation or a sweep case accepts (s): 10⁶ s, about
 /// 11.6 days (half an hour unpaced); beyond it the sample count loses meaning.
 pub const MAX_SIMULATED_S: f64 = 1.0e6;

@@ -20,7 +20,8 @@ pub use control::{CommandInbox, ControlHandle, MAX_QUEUED_COMMANDS, Pending, Req
 pub use display::{AppliedChain, AppliedFilter, LiveSpectrum, LiveTrace};
 pub use frame::{Frame, SignalNames};
 pub use limits::{
-    MAX_SIMULATED_S, check_load_nm, check_load_within_motor, check_simulated_s, check_speed_rpm,
+    DEFAULT_LIVE_CEILING, MAX_SIMULATED_S, check_load_nm, check_load_within_motor,
+    check_simulated_s, check_speed_rpm,
 };
 pub use refusal::Refusal;
 pub use signal_names::FILTER_V;

@@ -7,6 +7,7 @@ pub(crate) mod monitor;
 pub(crate) mod recorder;
 pub(crate) mod scope;
 pub(crate) mod scope_live;
+pub(crate) mod tap;
 
 use std::path::PathBuf;
 
