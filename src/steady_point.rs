@@ -71,10 +71,13 @@ pub struct PointRun {
 }
 
 /// Checks `spec` (each input refused under its name in `names`), runs it, and hands
-/// `sink` every block of the measuring window.
+/// `sink` every block of the measuring window. `keep_going` is asked every
+/// [`rig::CHECK_EVERY`] samples of settling (and `sink` after every block): an error from either stops the run (a
+/// Python caller's Ctrl-C).
 pub fn run_point(
     spec: &PointSpec,
     names: InputNames,
+    mut keep_going: impl FnMut() -> anyhow::Result<()>,
     sink: impl FnMut(&SignalBlock) -> anyhow::Result<()>,
 ) -> anyhow::Result<PointRun> {
     check_point(spec, names)?;
@@ -88,9 +91,21 @@ pub fn run_point(
     let mut plant = Plant::new(params, Schedule::constant(spec.rpm, spec.load_nm), config)
         .with_context(|| format!("{}/{}/{}", names.rpm, names.load, names.rate))?;
     let started = Instant::now();
+    let settle = (spec.settle_s * spec.rate_hz).round() as usize;
+    let mut stopped = None;
+    let settled = plant.skip_while(settle, || match keep_going() {
+        Ok(()) => true,
+        Err(e) => {
+            stopped = Some(e);
+            false
+        }
+    })?;
+    if let Some(e) = stopped.filter(|_| settled < settle) {
+        return Err(e);
+    }
     let summary = run_steady(
         &mut plant,
-        spec.settle_s,
+        0.0,
         spec.duration_s,
         &RegimeCriteria::default(),
         sink,

@@ -52,29 +52,33 @@ pub fn run_into(
     })
 }
 
-/// Runs `sweep` (a sweep file or dict) into `out` on every core; its cases.csv there.
+/// Runs `sweep` (a sweep file or dict) into `out` on `jobs` workers (every core if
+/// None), skipping the cases finished there when `resume`; its cases.csv there. Ctrl-C
+/// starts no further case and keeps those finished.
 #[pyfunction]
-#[pyo3(signature = (sweep, out, set=None, jobs=None))]
+#[pyo3(signature = (sweep, out, set=None, jobs=None, resume=false))]
 pub fn sweep_into(
     py: Python<'_>,
     sweep: &Bound<'_, PyAny>,
     out: PathBuf,
     set: Option<HashMap<String, Bound<'_, PyAny>>>,
     jobs: Option<usize>,
+    resume: bool,
 ) -> PyResult<()> {
     let (_, source) = scenario_source(sweep, set)?;
     let file: SweepFile = source.parse_sweep().map_err(to_py)?;
     let plan = build_sweep(&source, &file).map_err(to_py)?;
     let meta = sweep_meta(&source, &plan);
+    let stop = Arc::new(AtomicBool::new(false));
     let options = SweepOptions {
         jobs,
         shard: Shard { index: 0, count: 1 },
-        resume: false,
+        resume,
         out,
         progress: false,
+        stop: Some(Arc::clone(&stop)),
     };
-    let outcome = py
-        .detach(|| run_sweep(&plan, &meta, &options))
+    let outcome = until_done_or_interrupted(py, &stop, move || run_sweep(&plan, &meta, &options))?
         .map_err(to_py)?;
     if !outcome.failed.is_empty() {
         let list: Vec<String> = outcome

@@ -86,11 +86,17 @@ pub fn simulate<'py>(
     let samples = (duration_s.max(0.0) * rate_hz.max(0.0)).min(1e9) as usize + 1;
     let (columns, run, interrupt) = py.detach(|| {
         let mut columns = Columns::with_capacity(samples);
-        let mut interrupt = Interrupt::new();
-        let run = run_point(&spec, ARGUMENT_NAMES, |block| {
-            columns.extend(block);
-            interrupt.check()
-        });
+        let interrupt = std::cell::RefCell::new(Interrupt::new());
+        let run = run_point(
+            &spec,
+            ARGUMENT_NAMES,
+            || interrupt.borrow_mut().check(),
+            |block| {
+                columns.extend(block);
+                interrupt.borrow_mut().check()
+            },
+        );
+        let interrupt = interrupt.into_inner();
         (columns, run, interrupt)
     });
     let run = interrupt.result(run)?;

@@ -99,12 +99,13 @@ def run(scenario, out=None, set=None, seed=None, duration_s=None):
     }
 
 
-def sweep(scenario, out=None, set=None, jobs=None):
+def sweep(scenario, out=None, set=None, jobs=None, resume=False):
     """Runs the sweep `scenario` (a path or a dict) into `out` (a new temporary folder if
     None) on `jobs` workers (every core if None), as ``testrig sweep``; returns its
-    ``cases.csv``: a pandas DataFrame when pandas is installed, else a dict of arrays."""
+    ``cases.csv``: a pandas DataFrame when pandas is installed, else a dict of arrays.
+    Ctrl-C starts no further case; ``resume=True`` then finishes the rest."""
     folder = _folder(out, "testrig-sweep-")
-    sweep_into(scenario, str(folder), set, jobs)
+    sweep_into(scenario, str(folder), set, jobs, resume)
     table = _read_table(folder / "cases.csv")
     try:
         import pandas

@@ -111,6 +111,7 @@ def sweep(
     out: Optional[Union[str, "os.PathLike[str]"]] = None,
     set: Optional[Mapping[str, Any]] = None,
     jobs: Optional[int] = None,
+    resume: bool = False,
 ) -> Any:
     """A sweep run into `out`; its cases.csv as a pandas DataFrame (pandas installed) or
     a dict of arrays."""

@@ -204,3 +204,24 @@ def test_the_examples_run(tmp_path, monkeypatch):
     rows = (tmp_path / "dataset" / "labels.csv").read_text().splitlines()
     assert len(rows) == 1 + 36
     assert (tmp_path / "dataset" / "case-035.wav").exists()
+
+
+@pytest.mark.parametrize("call", [
+    "testrig.simulate(1300, 2.712, settle_s=100000, duration_s=1)",
+    "testrig.run({'name': 'long', 'duration_s': 100000, "
+    "'schedule': {'speed_rpm': 1300, 'load_nm': 2.712}}, out=OUT)",
+])
+def test_ctrl_c_stops_a_long_call(call, tmp_path):
+    import signal
+    import sys
+    script = f"import testrig\nOUT = {str(tmp_path)!r}\nprint('started', flush=True)\n{call}\n"
+    child = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE,
+                             stderr=subprocess.PIPE, text=True, cwd=tmp_path)
+    assert child.stdout.readline().strip() == "started"
+    time.sleep(1.0)
+    sent = time.perf_counter()
+    child.send_signal(signal.SIGINT)
+    _, err = child.communicate(timeout=30)
+    stopped_s = time.perf_counter() - sent
+    assert "KeyboardInterrupt" in err, err
+    assert stopped_s < 3.0, stopped_s

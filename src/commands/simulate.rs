@@ -45,10 +45,15 @@ pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
         summary,
         simulated_s,
         wall_s,
-    } = run_point(&spec, FLAG_NAMES, |block| match writer.as_mut() {
-        Some(w) => w.write(block),
-        None => Ok(()),
-    })?;
+    } = run_point(
+        &spec,
+        FLAG_NAMES,
+        || Ok(()),
+        |block| match writer.as_mut() {
+            Some(w) => w.write(block),
+            None => Ok(()),
+        },
+    )?;
     let report = Report {
         preset: &args.rig.preset,
         rpm: args.rpm,

@@ -24,6 +24,7 @@ pub fn run(args: &SweepArgs) -> anyhow::Result<()> {
         resume: args.resume,
         out: args.out.clone(),
         progress: std::io::stderr().is_terminal(),
+        stop: None,
     };
     let outcome = run_sweep(&plan, &meta, &options)?;
     println!(

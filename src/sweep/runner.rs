@@ -2,6 +2,8 @@
 //! written as it finishes; then the table and the plots from every finished case.
 
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
 
 use anyhow::Context;
@@ -35,6 +37,9 @@ pub struct SweepOptions {
     pub out: PathBuf,
     /// Draw a progress bar.
     pub progress: bool,
+    /// Set (by Ctrl-C) to start no further case: those finished are kept, and the sweep
+    /// ends with an error saying how to resume.
+    pub stop: Option<Arc<AtomicBool>>,
 }
 
 /// What a sweep did.
@@ -82,7 +87,12 @@ pub fn run_sweep(
     let failed: Vec<(usize, String)> = pool.install(|| {
         todo.par_iter()
             .flat_map_iter(|unit| {
+                let stopped = options
+                    .stop
+                    .as_ref()
+                    .is_some_and(|s| s.load(Ordering::Relaxed));
                 let results = match unit.as_slice() {
+                    _ if stopped => Vec::new(),
                     [case] if case.series.is_none() => vec![(case.index, run_case(plan, case))],
                     series => run_series(plan, series),
                 };
@@ -95,6 +105,16 @@ pub fn run_sweep(
             .collect()
     });
     bar.finish_and_clear();
+    if options
+        .stop
+        .as_ref()
+        .is_some_and(|s| s.load(Ordering::Relaxed))
+    {
+        anyhow::bail!(
+            "stopped: the cases finished are kept in {}; run it again with resume to finish",
+            dir.display()
+        );
+    }
     let wall_s = started.elapsed().as_secs_f64();
     let files = assemble(std::slice::from_ref(dir), dir)?.files;
     Ok(SweepOutcome {

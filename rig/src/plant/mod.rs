@@ -18,4 +18,5 @@ mod state;
 mod stepping;
 mod switches;
 
+pub use output::CHECK_EVERY;
 pub use state::{Plant, PlantConfig};
