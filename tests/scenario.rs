@@ -92,3 +92,26 @@ fn set_takes_a_bare_rig_parameter_or_backlash_as_simulate_does() {
     let edited = apply_override(TEXT, "duration_s=3").expect("applies");
     assert_eq!(parse(&edited)["duration_s"].as_integer(), Some(3));
 }
+
+/// A table written inline (`[rig]` … `set = { teeth = 30 }`) is edited in place: a
+/// `--set rig.set.NAME` once appended a `[rig.set]` table beside it, a duplicate key.
+#[test]
+fn set_edits_a_table_written_inline() {
+    let text = "name = \"t\"\n\n[rig]\npreset = \"basmaji-1983-rig\"\nset = { teeth = 30, addendum_coefficient = 1.0 }\n\n[schedule]\nspeed_rpm = 600\nload_nm = 1\n";
+    let edited = apply_override(text, "rig.set.teeth=31").expect("applies");
+    let edited = apply_override(&edited, "rig.set.brake_drag_nm=0.8").expect("applies");
+    assert_eq!(edited.lines().count(), text.lines().count(), "{edited}");
+    let table = parse(&edited);
+    let set = &table["rig"]["set"];
+    assert_eq!(set["teeth"].as_integer(), Some(31), "{edited}");
+    assert_eq!(set["brake_drag_nm"].as_float(), Some(0.8), "{edited}");
+    assert_eq!(
+        set["addendum_coefficient"].as_float(),
+        Some(1.0),
+        "{edited}"
+    );
+    assert!(
+        edited.contains("# --set rig.set.brake_drag_nm=0.8"),
+        "{edited}"
+    );
+}

@@ -59,9 +59,10 @@ impl Columns {
 /// then `duration_s` s measured at `rate_hz`. Returns a dict: `signals` (name → array,
 /// units in the names), `impacts` (time_s, flank +1 drive / −1 back, tooth,
 /// closing_speed_rad_s), `summary` (the CLI's `simulate --json`). `set` overrides
-/// parameters by name (`testrig params`).
+/// parameters by name (`testrig params`). `signals=False` keeps no signal (`signals`
+/// is then empty): the impacts and the summary alone, as fast as the CLI.
 #[pyfunction]
-#[pyo3(signature = (rpm, load_nm, preset="basmaji-1983-rig", settle_s=60.0, duration_s=10.0, rate_hz=51200.0, set=None))]
+#[pyo3(signature = (rpm, load_nm, preset="basmaji-1983-rig", settle_s=60.0, duration_s=10.0, rate_hz=51200.0, set=None, signals=true))]
 #[allow(clippy::too_many_arguments)]
 pub fn simulate<'py>(
     py: Python<'py>,
@@ -72,6 +73,7 @@ pub fn simulate<'py>(
     duration_s: f64,
     rate_hz: f64,
     set: Option<HashMap<String, Bound<'py, PyAny>>>,
+    signals: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let overrides = overrides(set)?;
     let spec = PointSpec {
@@ -83,7 +85,11 @@ pub fn simulate<'py>(
         duration_s,
         rate_hz,
     };
-    let samples = (duration_s.max(0.0) * rate_hz.max(0.0)).min(1e9) as usize + 1;
+    let samples = if signals {
+        (duration_s.max(0.0) * rate_hz.max(0.0)).min(1e9) as usize + 1
+    } else {
+        0
+    };
     let (columns, run, interrupt) = py.detach(|| {
         let mut columns = Columns::with_capacity(samples);
         let interrupt = std::cell::RefCell::new(Interrupt::new());
@@ -92,7 +98,9 @@ pub fn simulate<'py>(
             ARGUMENT_NAMES,
             || interrupt.borrow_mut().check(),
             |block| {
-                columns.extend(block);
+                if signals {
+                    columns.extend(block);
+                }
                 interrupt.borrow_mut().check()
             },
         );
@@ -121,12 +129,14 @@ fn result_dict<'py>(
     run: PointRun,
 ) -> PyResult<Bound<'py, PyDict>> {
     let signals = PyDict::new(py);
-    let numeric = COLUMN_NAMES.iter().take(columns.numbers.len());
-    for (name, column) in numeric.zip(columns.numbers) {
-        signals.set_item(*name, column.into_pyarray(py))?;
+    if columns.numbers.first().is_some_and(|c| !c.is_empty()) {
+        let numeric = COLUMN_NAMES.iter().take(columns.numbers.len());
+        for (name, column) in numeric.zip(columns.numbers) {
+            signals.set_item(*name, column.into_pyarray(py))?;
+        }
+        signals.set_item("contact", columns.contact.into_pyarray(py))?;
+        signals.set_item("tooth", columns.tooth.into_pyarray(py))?;
     }
-    signals.set_item("contact", columns.contact.into_pyarray(py))?;
-    signals.set_item("tooth", columns.tooth.into_pyarray(py))?;
     let impacts = PyDict::new(py);
     let list = run.plant.impacts();
     let times: Vec<f64> = list.iter().map(|i| i.time_s).collect();

@@ -37,10 +37,12 @@ def simulate(
     duration_s: float = 10.0,
     rate_hz: float = 51200.0,
     set: Optional[Mapping[str, Union[float, int, str, bool]]] = None,
+    signals: bool = True,
 ) -> Simulation:
     """The plant at `rpm` rev/min and `load_nm` N m from rest: `settle_s` s settling,
     then `duration_s` s measured at `rate_hz` Hz. `set` overrides parameters by name
-    (`testrig params`). Releases the GIL; Ctrl-C stops it."""
+    (`testrig params`); `signals=False` returns no signal arrays (impacts and summary
+    only). Releases the GIL; Ctrl-C stops it."""
 
 class Analysed(TypedDict):
     frequency_hz: npt.NDArray[np.float64]

@@ -40,9 +40,13 @@ def test_simulate_is_the_command_lines_engine():
     cli = json.loads(subprocess.run([str(BINARY), *args], check=True,
                                     capture_output=True, text=True).stdout)
     py = testrig.simulate(1100, 0, settle_s=3, duration_s=2, rate_hz=10240)["summary"]
+    bare = testrig.simulate(1100, 0, settle_s=3, duration_s=2, rate_hz=10240,
+                            signals=False)
+    assert bare["signals"] == {}
     for key in ["impacts", "impacts_per_tooth", "torque_mean_nm", "torque_ac_rms_nm",
                 "regime", "motion", "revolutions"]:
         assert py[key] == cli[key], key
+        assert bare["summary"][key] == cli[key], key
 
 
 def test_overrides_and_refusals_name_the_argument():

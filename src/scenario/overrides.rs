@@ -63,6 +63,7 @@ pub fn apply_override(text: &str, item: &str) -> anyhow::Result<String> {
             };
             lines.insert(at, format!("{leaf} = {value} {mark}"));
         }
+        None if set_in_inline_table(&mut lines, table, leaf, &value, &mark)? => {}
         None => {
             lines.push(format!("[{table}]"));
             lines.push(format!("{leaf} = {value} {mark}"));
@@ -80,6 +81,52 @@ fn scenario_key(key: &str) -> String {
         _ if !key.contains('.') && rig::param_spec(key).is_ok() => format!("rig.set.{key}"),
         _ => key.to_string(),
     }
+}
+
+/// Where `table` is written inline in its parent (`[rig]` … `set = { teeth = 30 }` for
+/// `rig.set`), sets `leaf` to `value` inside it, on its line; whether it was.
+fn set_in_inline_table(
+    lines: &mut [String],
+    table: &str,
+    leaf: &str,
+    value: &str,
+    mark: &str,
+) -> anyhow::Result<bool> {
+    let (parent, name) = table.rsplit_once('.').unwrap_or(("", table));
+    let mut current = String::new();
+    for line in lines.iter_mut() {
+        let trimmed = line.trim();
+        if let Some(header) = trimmed.strip_prefix('[') {
+            current = header
+                .trim_matches(|c| c == '[' || c == ']')
+                .trim()
+                .to_string();
+            continue;
+        }
+        let Some((key, rest)) = trimmed.split_once('=') else {
+            continue;
+        };
+        if current != parent || key.trim() != name || !rest.trim_start().starts_with('{') {
+            continue;
+        }
+        let parsed: toml::Table =
+            toml::from_str(&format!("t = {}", rest.trim())).with_context(|| {
+                format!("`{table}` is an inline table that spans lines: --set cannot edit it")
+            })?;
+        let mut inline = match parsed.get("t") {
+            Some(toml::Value::Table(t)) => t.clone(),
+            _ => return Ok(false),
+        };
+        let new: toml::Table = toml::from_str(&format!("v = {value}"))
+            .with_context(|| format!("`{value}` is not a TOML value"))?;
+        if let Some(v) = new.get("v") {
+            inline.insert(leaf.to_string(), v.clone());
+        }
+        let entries: Vec<String> = inline.iter().map(|(k, v)| format!("{k} = {v}")).collect();
+        *line = format!("{name} = {{ {} }} {mark}", entries.join(", "));
+        return Ok(true);
+    }
+    Ok(false)
 }
 
 fn first_table_line(lines: &[String]) -> usize {
