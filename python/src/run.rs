@@ -80,19 +80,7 @@ pub fn sweep_into(
     };
     let outcome = until_done_or_interrupted(py, &stop, move || run_sweep(&plan, &meta, &options))?
         .map_err(to_py)?;
-    if !outcome.failed.is_empty() {
-        let list: Vec<String> = outcome
-            .failed
-            .iter()
-            .map(|(i, e)| format!("case {i}: {e}"))
-            .collect();
-        return Err(to_py(anyhow::anyhow!(
-            "{} case(s) failed (the others are kept): {}",
-            list.len(),
-            list.join("; ")
-        )));
-    }
-    Ok(())
+    outcome.failures().map_err(to_py)
 }
 
 /// Runs `work` without the GIL on a thread of its own, looking for Ctrl-C on this one

@@ -38,17 +38,5 @@ pub fn run(args: &SweepArgs) -> anyhow::Result<()> {
         outcome.files.len(),
         args.out.display()
     );
-    if !outcome.failed.is_empty() {
-        let list: Vec<String> = outcome
-            .failed
-            .iter()
-            .map(|(i, e)| format!("case {i}: {e}"))
-            .collect();
-        bail!(
-            "{} case(s) failed (the others are kept): {}",
-            list.len(),
-            list.join("; ")
-        );
-    }
-    Ok(())
+    outcome.failures()
 }

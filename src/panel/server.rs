@@ -270,10 +270,15 @@ fn start_closer(queue: usize) -> anyhow::Result<crossbeam_channel::Sender<(TcpSt
 
 /// Reads and drops what `conn` has already received (at most [`LINGER_BYTES`]).
 fn drain_without_waiting(conn: &mut TcpStream) {
-    use std::io::Read;
-    if conn.set_nonblocking(true).is_err() {
-        return;
+    if conn.set_nonblocking(true).is_ok() {
+        read_and_drop(conn);
     }
+}
+
+/// Reads and drops what `conn` sends until it closes, a read fails or times out, or
+/// [`LINGER_BYTES`] have come.
+fn read_and_drop(conn: &mut TcpStream) {
+    use std::io::Read;
     let mut sink = [0u8; 4096];
     let mut read = 0;
     while read < LINGER_BYTES {
@@ -323,17 +328,9 @@ fn handle(mut conn: TcpStream, shared: &Shared, permit: Permit) {
 /// read and dropped for a moment (at most [`LINGER_BYTES`]) so that the close does not
 /// reset the connection before the client has read the answer.
 fn close_after_reading_on(mut conn: TcpStream) {
-    use std::io::Read;
     let _ = conn.shutdown(std::net::Shutdown::Write);
     let _ = conn.set_read_timeout(Some(LINGER));
-    let mut sink = [0u8; 4096];
-    let mut read = 0;
-    while read < LINGER_BYTES {
-        match conn.read(&mut sink) {
-            Ok(0) | Err(_) => break,
-            Ok(n) => read += n,
-        }
-    }
+    read_and_drop(&mut conn);
 }
 
 /// The answer to every request but the stream.

@@ -57,6 +57,25 @@ pub struct SweepOutcome {
     pub files: Vec<PathBuf>,
 }
 
+impl SweepOutcome {
+    /// An error listing the cases that failed, if any did (the others are kept).
+    pub fn failures(&self) -> anyhow::Result<()> {
+        if self.failed.is_empty() {
+            return Ok(());
+        }
+        let list: Vec<String> = self
+            .failed
+            .iter()
+            .map(|(i, e)| format!("case {i}: {e}"))
+            .collect();
+        anyhow::bail!(
+            "{} case(s) failed (the others are kept): {}",
+            list.len(),
+            list.join("; ")
+        )
+    }
+}
+
 /// Runs this shard's cases of `plan` and assembles what is finished.
 pub fn run_sweep(
     plan: &SweepPlan,
