@@ -278,8 +278,9 @@ fn wait_until(what: &str, ready: impl Fn() -> bool) {
 
 /// A run killed with SIGKILL after its first spectrum leaves finished files and no
 /// manifest; they once stayed beside the next run's in the same folder. The journal of
-/// finished files names them, and the next run removes exactly those (a file of the
-/// user's stays).
+/// finished files names them and their scenario: a run of another scenario is refused
+/// there until told `--replace`, and then removes exactly those (a file of the user's
+/// stays).
 #[test]
 fn files_of_a_killed_run_do_not_stand_beside_the_next_runs() {
     let out = folder("killed-run");
@@ -307,18 +308,31 @@ fn files_of_a_killed_run_do_not_stand_beside_the_next_runs() {
     let journal = std::fs::read_to_string(out.join("files.journal")).expect("journal");
     assert!(journal.lines().any(|l| l == "spectrum-01.csv"), "{journal}");
 
-    // The next run (no analyser: it writes no spectra) into the same folder.
+    // The next run, of another scenario (no analyser: it writes no spectra), into the
+    // same folder: refused, nothing removed, until told to replace.
     let text = "name = \"after\"\nduration_s = 1\n\n[schedule]\nspeed_rpm = 600\nload_nm = 2.712\n\n[record]\nsignals = [\"filter_v\"]\nformats = [\"csv\"]\n";
     let next = out.join("after.toml");
     std::fs::write(&next, text).expect("scenario");
-    let status = testrig(&[
+    let args = [
         "run",
         next.to_str().expect("utf-8"),
         "--pace",
         "max",
         "--out",
         out.to_str().expect("utf-8"),
-    ]);
+    ];
+    let refused = testrig(&args);
+    let said = String::from_utf8_lossy(&refused.stderr);
+    assert!(!refused.status.success(), "{said}");
+    assert!(
+        said.contains("another run (scenario `subharmonic-2712nm`)") && said.contains("--replace"),
+        "{said}"
+    );
+    assert!(
+        out.join("spectrum-01.csv").exists(),
+        "nothing removed when refused"
+    );
+    let status = testrig(&[&args[..], &["--replace"]].concat());
     assert!(
         status.status.success(),
         "{}",
@@ -386,5 +400,41 @@ fn a_killed_panel_session_keeps_every_command_carried_out() {
         "{:#}",
         built.err().map(|e| e.to_string()).unwrap_or_default()
     );
+    std::fs::remove_dir_all(&out).ok();
+}
+
+/// A finished run's folder: a rerun of its scenario replaces its files; another
+/// scenario is refused there (its manifest names the scenario) until `--replace`.
+#[test]
+fn another_scenarios_run_is_refused_in_a_finished_runs_folder() {
+    let out = folder("other-scenario");
+    std::fs::create_dir_all(&out).expect("folder");
+    let write = |name: &str| {
+        let path = out.join(format!("{name}.toml"));
+        let text = format!(
+            "name = \"{name}\"\nduration_s = 0.5\n\n[schedule]\nspeed_rpm = 600\nload_nm = 1\n"
+        );
+        std::fs::write(&path, text).expect("scenario");
+        path.to_str().expect("utf-8").to_string()
+    };
+    let (first, second) = (write("first"), write("second"));
+    let dir = out.to_str().expect("utf-8");
+    let run = |scenario: &str, extra: &[&str]| {
+        testrig(&[&["run", scenario, "--pace", "max", "--out", dir][..], extra].concat())
+    };
+    assert!(run(&first, &[]).status.success());
+    assert!(
+        run(&first, &[]).status.success(),
+        "a rerun replaces its own"
+    );
+    let refused = run(&second, &[]);
+    let said = String::from_utf8_lossy(&refused.stderr);
+    assert!(
+        !refused.status.success() && said.contains("scenario `first`"),
+        "{said}"
+    );
+    assert_eq!(read_manifest(&out)["scenario"], "first", "nothing replaced");
+    assert!(run(&second, &["--replace"]).status.success());
+    assert_eq!(read_manifest(&out)["scenario"], "second");
     std::fs::remove_dir_all(&out).ok();
 }

@@ -62,6 +62,7 @@ impl Rig {
             stop: Arc::clone(&stop),
             console: false,
             control: Some(requests),
+            replace: false,
         };
         let rate_hz = plan.rate_hz;
         let shared = status.clone();

@@ -18,10 +18,11 @@ use testrig::wav_input::read_signal;
 use crate::errors::to_py;
 use crate::scenario_arg::scenario_source;
 
-/// Runs `scenario` unpaced into `out` (the earlier run's files there removed first);
+/// Runs `scenario` unpaced into `out` (the earlier run's files there removed first; a
+/// folder of another scenario's run only with `replace`);
 /// returns the manifest as JSON text. Ctrl-C stops the run, keeping its files.
 #[pyfunction]
-#[pyo3(signature = (scenario, out, set=None, seed=None, duration_s=None))]
+#[pyo3(signature = (scenario, out, set=None, seed=None, duration_s=None, replace=false))]
 pub fn run_into(
     py: Python<'_>,
     scenario: &Bound<'_, PyAny>,
@@ -29,6 +30,7 @@ pub fn run_into(
     set: Option<HashMap<String, Bound<'_, PyAny>>>,
     seed: Option<u64>,
     duration_s: Option<f64>,
+    replace: bool,
 ) -> PyResult<String> {
     let (path, source) = scenario_source(scenario, set)?;
     let plan = build(&source, CommandLine { duration_s, seed }).map_err(to_py)?;
@@ -39,6 +41,7 @@ pub fn run_into(
         stop: Arc::clone(&stop),
         console: false,
         control: None,
+        replace,
     };
     let outcome = until_done_or_interrupted(py, &stop, move || {
         run_into_folder(&path, &plan, &options).map(|_| ())

@@ -73,17 +73,18 @@ def _read_spectrum(path):
     }
 
 
-def run(scenario, out=None, set=None, seed=None, duration_s=None):
+def run(scenario, out=None, set=None, seed=None, duration_s=None, replace=False):
     """Runs `scenario` (a path, or a dict shaped like the TOML file) unpaced into `out`
     (a new temporary folder if None): the files ``testrig run`` writes, byte for byte.
     `set` changes scenario keys (``{"schedule.speed_rpm": 1500}``), `seed` and
-    `duration_s` (s) as the CLI's flags. Returns a dict: ``out`` (the folder),
+    `duration_s` (s) and `replace` (remove another scenario's run from `out`) as the
+    CLI's flags. Returns a dict: ``out`` (the folder),
     ``manifest``, ``recording`` (``rate_hz``, ``channels`` name -> array, ``units``,
     ``sidecar``; None without a WAV), ``spectra`` (one dict a measurement:
     ``frequency_hz``, ``power`` in V², ``alias_of_hz`` NaN where not an alias,
     ``metadata``), ``readings`` (readings.csv by column; None without meters)."""
     folder = _folder(out, "testrig-run-")
-    manifest = json.loads(run_into(scenario, str(folder), set, seed, duration_s))
+    manifest = json.loads(run_into(scenario, str(folder), set, seed, duration_s, replace))
     wav = folder / "recording.wav"
     recording = None
     if wav.exists():

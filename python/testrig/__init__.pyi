@@ -104,6 +104,7 @@ def run(
     set: Optional[Mapping[str, Any]] = None,
     seed: Optional[int] = None,
     duration_s: Optional[float] = None,
+    replace: bool = False,
 ) -> Run:
     """A scenario run unpaced into `out`: the files `testrig run` writes, byte for byte,
     read back. Ctrl-C stops it, its files kept."""

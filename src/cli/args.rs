@@ -59,6 +59,11 @@ pub struct PanelArgs {
     /// Output folder: recordings, spectra, scope traces, manifest.json and session.toml.
     #[arg(long, default_value = "out/panel")]
     pub out: PathBuf,
+    /// Remove the files of another scenario's run from the output folder (only those its
+    /// manifest or journal lists); without it such a folder is refused. A rerun of the
+    /// same scenario always replaces its own files.
+    #[arg(long)]
+    pub replace: bool,
 }
 
 /// `testrig sweep`.
@@ -155,6 +160,11 @@ pub struct RunArgs {
     /// Output folder.
     #[arg(long)]
     pub out: PathBuf,
+    /// Remove the files of another scenario's run from the output folder (only those its
+    /// manifest or journal lists); without it such a folder is refused. A rerun of the
+    /// same scenario always replaces its own files.
+    #[arg(long)]
+    pub replace: bool,
 }
 
 /// Choice of parameter set.

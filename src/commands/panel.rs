@@ -71,7 +71,7 @@ pub fn run(args: &PanelArgs) -> anyhow::Result<ExitCode> {
     // Runs until Quit or a signal: as long as any run may be.
     plan.duration_s = MAX_SIMULATED_S;
     source.text = plan.text.clone();
-    clear_previous_run(&args.out)?;
+    clear_previous_run(&args.out, &plan.name, args.replace)?;
     let (control, requests) = ControlHandle::new();
     let session_path = args.out.join("session.toml");
     journal_session(&session_path, &plan, ceiling, &control)?;
@@ -105,6 +105,7 @@ pub fn run(args: &PanelArgs) -> anyhow::Result<ExitCode> {
         stop: signals.flag(),
         console: false,
         control: Some(requests),
+        replace: args.replace,
     };
     let result = run_with_status(&plan, &options, status);
     server.shut_down();

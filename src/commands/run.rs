@@ -50,6 +50,7 @@ pub fn run(args: &RunArgs) -> anyhow::Result<ExitCode> {
         stop: signals.flag(),
         console: std::io::stderr().is_terminal(),
         control: None,
+        replace: args.replace,
     };
     let FolderRun {
         result,

@@ -13,10 +13,26 @@ use anyhow::Context;
 /// The journal's file name in the output folder.
 pub const JOURNAL_NAME: &str = "files.journal";
 
-/// Opens an empty journal in `dir` (an existing folder).
-pub fn start_journal(dir: &Path) -> anyhow::Result<()> {
+/// The journal's first line: the scenario whose run keeps it.
+const SCENARIO_LINE: &str = "# scenario: ";
+
+/// Opens a journal in `dir` (an existing folder) for a run of scenario `scenario`.
+pub fn start_journal(dir: &Path, scenario: &str) -> anyhow::Result<()> {
     let path = dir.join(JOURNAL_NAME);
-    std::fs::write(&path, "").with_context(|| format!("cannot write {}", path.display()))
+    std::fs::write(&path, format!("{SCENARIO_LINE}{scenario}\n"))
+        .with_context(|| format!("cannot write {}", path.display()))
+}
+
+/// The scenario of the run whose journal is in `dir`, if one is.
+pub fn journaled_scenario(dir: &Path) -> Option<String> {
+    let text = std::fs::read_to_string(dir.join(JOURNAL_NAME)).ok()?;
+    Some(
+        text.lines()
+            .next()
+            .and_then(|l| l.strip_prefix(SCENARIO_LINE))
+            .unwrap_or("")
+            .to_string(),
+    )
 }
 
 /// Notes `finished` (a file just given its final name) in the journal of its folder, if
@@ -38,7 +54,12 @@ pub fn journaled_files(dir: &Path) -> Vec<PathBuf> {
     std::fs::read_to_string(dir.join(JOURNAL_NAME))
         .unwrap_or_default()
         .lines()
-        .filter(|name| !name.is_empty() && !name.contains('/') && !name.contains(".."))
+        .filter(|name| {
+            !name.is_empty()
+                && !name.starts_with('#')
+                && !name.contains('/')
+                && !name.contains("..")
+        })
         .map(|name| dir.join(name))
         .collect()
 }

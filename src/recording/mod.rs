@@ -14,7 +14,9 @@ pub(crate) mod wav;
 pub use cleanup::{remove_files_with_extension, remove_partial_files};
 pub use csv_stream::CsvRecorder;
 pub use frame_writer::{CsvFrames, FrameWriter, Written};
-pub use journal::{JOURNAL_NAME, end_journal, journaled_files, note_finished, start_journal};
+pub use journal::{
+    JOURNAL_NAME, end_journal, journaled_files, journaled_scenario, note_finished, start_journal,
+};
 pub use partial::PartialFile;
 pub use spectrum_csv::{ALIAS_COLUMN, Metadata, write_spectrum_csv};
 pub use uff58::{

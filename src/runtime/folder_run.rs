@@ -39,7 +39,7 @@ pub fn run_into_folder_with_status(
     options: &RunOptions,
     status: SharedStatus,
 ) -> anyhow::Result<FolderRun> {
-    let removed = clear_previous_run(&options.out)?;
+    let removed = clear_previous_run(&options.out, &plan.name, options.replace)?;
     let result = run_with_status(plan, options, status)?;
     let ending = match (!result.failures().is_empty(), result.stopped_early) {
         (true, _) => Ending::Failed,

@@ -2,21 +2,31 @@
 //! first, so old spectra never stand beside new ones: those its `manifest.json` lists
 //! (a run that ended), those its journal of finished files names (a run killed before its
 //! manifest, `recording::journal`), and any half-written file. Files neither lists are
-//! the user's and stay.
+//! the user's and stay. A folder holding another scenario's run is refused unless the
+//! caller says to replace it (`--replace`): a rerun of the same scenario replaces its own.
 
 use std::path::{Path, PathBuf};
 
 use anyhow::Context;
 
-use crate::recording::{JOURNAL_NAME, journaled_files, remove_partial_files};
+use crate::recording::{JOURNAL_NAME, journaled_files, journaled_scenario, remove_partial_files};
 
-/// Removes the files of the run recorded in `dir` (its manifest and its journal); returns
-/// how many. A folder that does not exist yet holds nothing to remove.
-pub fn clear_previous_run(dir: &Path) -> anyhow::Result<usize> {
+/// Removes the files of the run recorded in `dir` (its manifest and its journal) before a
+/// run of scenario `scenario`; returns how many. A folder that does not exist yet holds
+/// nothing to remove; one holding another scenario's run is refused unless `replace`.
+pub fn clear_previous_run(dir: &Path, scenario: &str, replace: bool) -> anyhow::Result<usize> {
     if !dir.is_dir() {
         return Ok(0);
     }
-    let mut doomed = manifest_files(dir)?;
+    let (listed, earlier) = manifest_files(dir)?;
+    let earlier = earlier.or_else(|| journaled_scenario(dir));
+    if let Some(earlier) = earlier.filter(|e| e != scenario && !replace) {
+        anyhow::bail!(
+            "--out {}: holds the files of another run (scenario `{earlier}`); pass --replace to remove them (only the files its manifest or journal lists), or choose another folder",
+            dir.display()
+        );
+    }
+    let mut doomed = listed;
     doomed.extend(journaled_files(dir));
     doomed.push(dir.join(JOURNAL_NAME));
     let mut removed = 0;
@@ -30,11 +40,12 @@ pub fn clear_previous_run(dir: &Path) -> anyhow::Result<usize> {
     Ok(removed + remove_partial_files(dir)?)
 }
 
-/// The files `dir/manifest.json` lists, as paths in `dir` (none without a manifest).
-fn manifest_files(dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
+/// The files `dir/manifest.json` lists, as paths in `dir`, and the scenario it ran
+/// (nothing without a manifest).
+fn manifest_files(dir: &Path) -> anyhow::Result<(Vec<PathBuf>, Option<String>)> {
     let manifest = dir.join("manifest.json");
     let Ok(text) = std::fs::read_to_string(&manifest) else {
-        return Ok(Vec::new());
+        return Ok((Vec::new(), None));
     };
     let listed: serde_json::Value = serde_json::from_str(&text).with_context(|| {
         format!(
@@ -42,7 +53,7 @@ fn manifest_files(dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
             manifest.display()
         )
     })?;
-    Ok(listed["files"]
+    let files = listed["files"]
         .as_array()
         .into_iter()
         .flatten()
@@ -50,5 +61,7 @@ fn manifest_files(dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
         .filter(|name| !name.contains(".."))
         .map(|name| dir.join(name))
         .filter(|path| path.starts_with(dir))
-        .collect())
+        .collect();
+    let scenario = listed["scenario"].as_str().map(str::to_string);
+    Ok((files, scenario))
 }

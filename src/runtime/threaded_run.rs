@@ -42,6 +42,9 @@ pub struct RunOptions {
     pub console: bool,
     /// Live commands (a panel's), besides the scenario's timed ones.
     pub control: Option<crossbeam_channel::Receiver<Request>>,
+    /// Remove the files of another scenario's run from `out` (else such a folder is
+    /// refused); a rerun of the same scenario always replaces its own.
+    pub replace: bool,
 }
 
 /// What a run did.
@@ -108,7 +111,7 @@ pub fn run_with_status(
             options.out.display()
         )
     })?;
-    start_journal(&options.out)?;
+    start_journal(&options.out, &plan.name)?;
     let config = PlantConfig {
         output_rate_hz: plan.rate_hz,
         live_ceiling: plan.live_ceiling,
