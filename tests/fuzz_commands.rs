@@ -10,7 +10,7 @@ mod fuzz_support;
 
 use std::cell::Cell;
 
-use fuzz_support::{fuzz, run_bounded};
+use fuzz_support::{RUN_HANG, fuzz_within, run_bounded};
 use proptest::prelude::*;
 
 /// A number as TOML writes it: the edges, then any float.
@@ -91,35 +91,40 @@ fn fuzzed_commands_are_carried_out_or_refused_without_a_panic() {
     let base = std::fs::read_to_string(common::scenario("panel")).expect("panel.toml");
     let base = testrig::scenario::apply_override(&base, "analyser.averages=2").expect("applies");
     let (runs, stopped, refused) = (Cell::new(0), Cell::new(0), Cell::new(0));
-    fuzz(12, prop::collection::vec(command(), 40), |commands| {
-        let text = format!("{base}\n{}", commands.join("\n"));
-        let path = dir.join("commands.toml");
-        std::fs::write(&path, &text).expect("written");
-        let out = dir.join("out");
-        let args: Vec<String> = ["run", path.to_str().expect("utf-8"), "--pace", "max"]
-            .iter()
-            .map(|s| s.to_string())
-            .chain([
-                "--duration".into(),
-                "3".into(),
-                "--out".into(),
-                out.display().to_string(),
-            ])
-            .collect();
-        let output = run_bounded(&args).map_err(TestCaseError::fail)?;
-        let stderr = String::from_utf8_lossy(&output.stderr);
-        prop_assert!(!stderr.contains("panicked"), "{stderr}");
-        runs.set(runs.get() + 1);
-        if !output.status.success() {
-            // Only the plant may stop a run: an accepted set point it could not follow.
-            prop_assert!(stderr.contains("the plant stopped"), "{stderr}");
-            stopped.set(stopped.get() + 1);
-            return Ok(());
-        }
-        let manifest = std::fs::read_to_string(out.join("manifest.json")).expect("manifest");
-        refused.set(refused.get() + manifest.matches("was refused").count());
-        Ok(())
-    });
+    fuzz_within(
+        12,
+        RUN_HANG,
+        prop::collection::vec(command(), 40),
+        |commands| {
+            let text = format!("{base}\n{}", commands.join("\n"));
+            let path = dir.join("commands.toml");
+            std::fs::write(&path, &text).expect("written");
+            let out = dir.join("out");
+            let args: Vec<String> = ["run", path.to_str().expect("utf-8"), "--pace", "max"]
+                .iter()
+                .map(|s| s.to_string())
+                .chain([
+                    "--duration".into(),
+                    "3".into(),
+                    "--out".into(),
+                    out.display().to_string(),
+                ])
+                .collect();
+            let output = run_bounded(&args).map_err(TestCaseError::fail)?;
+            let stderr = String::from_utf8_lossy(&output.stderr);
+            prop_assert!(!stderr.contains("panicked"), "{stderr}");
+            runs.set(runs.get() + 1);
+            if !output.status.success() {
+                // Only the plant may stop a run: an accepted set point it could not follow.
+                prop_assert!(stderr.contains("the plant stopped"), "{stderr}");
+                stopped.set(stopped.get() + 1);
+                return Ok(());
+            }
+            let manifest = std::fs::read_to_string(out.join("manifest.json")).expect("manifest");
+            refused.set(refused.get() + manifest.matches("was refused").count());
+            Ok(())
+        },
+    );
     eprintln!(
         "MEASURED fuzzed commands: {} runs of 40, {} stopped by the plant, {} commands refused",
         runs.get(),

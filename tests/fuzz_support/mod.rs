@@ -180,6 +180,19 @@ pub fn fuzz<S: Strategy>(
 ) where
     S::Value: std::fmt::Debug,
 {
+    fuzz_within(cases, HANG, strategy, check);
+}
+
+/// As [`fuzz`], an input slower than `limit` failing (whole runs of the binary get the
+/// limit of [`run_bounded`], which a loaded 2-core machine needs).
+pub fn fuzz_within<S: Strategy>(
+    cases: u32,
+    limit: Duration,
+    strategy: S,
+    check: impl Fn(S::Value) -> Result<(), TestCaseError>,
+) where
+    S::Value: std::fmt::Debug,
+{
     // Seeded: the same inputs every run (the project's rule for random sources).
     let rng = TestRng::from_seed(RngAlgorithm::ChaCha, &[19; 32]);
     let config = Config {
@@ -193,7 +206,8 @@ pub fn fuzz<S: Strategy>(
             let started = Instant::now();
             let text = format!("{input:?}");
             check(input)?;
-            prop_assert!(started.elapsed() < HANG, "slower than {HANG:?}: {text}");
+            let took = started.elapsed();
+            prop_assert!(took < limit, "slower than {limit:?} ({took:?}): {text}");
             Ok(())
         })
         .expect("every input handled without a panic, a hang or an unclear error");
@@ -330,7 +344,10 @@ pub fn cli_number() -> impl Strategy<Value = String> {
     ]
 }
 
-/// Runs the binary with `args`; ends it after 30 s (a hang).
+/// Time a whole run of the binary may take before it counts as a hang.
+pub const RUN_HANG: Duration = Duration::from_secs(30);
+
+/// Runs the binary with `args`; ends it after [`RUN_HANG`] (a hang).
 pub fn run_bounded(args: &[String]) -> Result<std::process::Output, String> {
     let child = std::process::Command::new(env!("CARGO_BIN_EXE_testrig"))
         .args(args)
@@ -345,7 +362,7 @@ pub fn run_bounded(args: &[String]) -> Result<std::process::Output, String> {
     std::thread::spawn(move || {
         let _ = send.send(child.wait_with_output());
     });
-    match receive.recv_timeout(Duration::from_secs(30)) {
+    match receive.recv_timeout(RUN_HANG) {
         Ok(output) => output.map_err(|e| e.to_string()),
         Err(_) => {
             let _ = std::process::Command::new("kill")
