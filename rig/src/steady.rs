@@ -40,6 +40,9 @@ pub struct SteadySummary {
     pub torque_ac_rms_nm: f64,
     /// Revolutions of the driving gear in the window.
     pub revolutions: usize,
+    /// Mean speed of the motor over the window less the set speed (rev/min): near 0
+    /// where the motor holds the set speed, negative where its torque limit lets it sag.
+    pub speed_offset_rpm: f64,
     /// The physics judge's verdict on the output-shaft torque, with its numbers.
     pub motion: Judgement,
 }
@@ -184,6 +187,7 @@ impl SteadyWindow {
             torque_rms_nm: (self.sum_sq / count).sqrt(),
             torque_ac_rms_nm: (self.sum_sq / count - mean * mean).max(0.0).sqrt(),
             revolutions,
+            speed_offset_rpm: self.speed_moments[0].0 / count * 30.0 / std::f64::consts::PI,
             motion: self.judgement(),
         }
     }

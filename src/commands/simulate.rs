@@ -118,6 +118,10 @@ fn print_text(r: &Report) {
         "output shaft     mean {:.4} N m, rms {:.4} N m, ac rms {:.4} N m",
         s.torque_mean_nm, s.torque_rms_nm, s.torque_ac_rms_nm
     );
+    println!(
+        "motor speed      {:+.2} rev/min from the set speed (mean over the window)",
+        s.speed_offset_rpm
+    );
 }
 
 /// Streams the true signals to `signals.csv`, under a temporary name until finished.

@@ -73,6 +73,10 @@ pub struct CaseResult {
     pub torque_mean_nm: f64,
     /// RMS of the output-shaft torque about its mean (N m).
     pub torque_ac_rms_nm: f64,
+    /// Mean motor speed over the window less the set speed (rev/min); 0 in case files
+    /// written before it was kept.
+    #[serde(default)]
+    pub speed_offset_rpm: f64,
     /// Analyser averages taken.
     pub averages: usize,
     /// The displayed spectrum: (Hz, V² rms) per line.
@@ -236,6 +240,7 @@ fn result(
         apart_fraction: s.apart_fraction,
         torque_mean_nm: s.torque_mean_nm,
         torque_ac_rms_nm: s.torque_ac_rms_nm,
+        speed_offset_rpm: s.speed_offset_rpm,
         averages,
         spectrum: lines.iter().map(|l| (l.frequency_hz, l.value)).collect(),
         peaks: peaks(lines, plan.line_db),

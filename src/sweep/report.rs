@@ -91,6 +91,7 @@ fn physics(md: &mut String, cases: &[CaseResult]) {
         );
     }
     hysteresis(md, cases);
+    motor_holding(md, cases);
     let _ = writeln!(
         md,
         "\nEach cell: the judged motion, the half-order height over the floor (dB), the 0-1 test's K; ✓ where it is the thesis's motion, ✗ where not, blank where the thesis decides nothing.\n"
@@ -132,6 +133,34 @@ fn hysteresis(md: &mut String, cases: &[CaseResult]) {
         );
     }
 }
+
+/// Points where the motor does not hold the set speed: its mean speed over the window
+/// more than [`SPEED_HELD_FRACTION`] of the set speed off it (its torque limit reached).
+fn motor_holding(md: &mut String, cases: &[CaseResult]) {
+    let lost: Vec<String> = cases
+        .iter()
+        .filter(|c| c.speed_offset_rpm.abs() > SPEED_HELD_FRACTION * c.rpm)
+        .map(|c| {
+            format!(
+                "{} rev/min, {} N m, {}: {:+.0} rev/min",
+                c.rpm, c.load_nm, c.direction, c.speed_offset_rpm
+            )
+        })
+        .collect();
+    let _ = writeln!(
+        md,
+        "- The motor holds the set speed (mean within {:.0} %): {}.",
+        100.0 * SPEED_HELD_FRACTION,
+        if lost.is_empty() {
+            "at every point".to_string()
+        } else {
+            format!("not at {} points — {}", lost.len(), lost.join("; "))
+        }
+    );
+}
+
+/// Share of the set speed the window's mean speed may be off it with the speed held.
+const SPEED_HELD_FRACTION: f64 = 0.01;
 
 /// Whether two cases at one point settled to different motions: another kind, or the
 /// same kind with AC RMS torques more than [`COEXIST_RMS_RATIO`] apart.

@@ -78,6 +78,7 @@ pub fn write_table(dir: &Path, swept: &[String], cases: &[CaseResult]) -> anyhow
             "apart_fraction",
             "torque_mean_nm",
             "torque_ac_rms_nm",
+            "speed_offset_rpm",
             "averages",
             "seed",
             "direction",
@@ -132,6 +133,7 @@ pub fn write_table(dir: &Path, swept: &[String], cases: &[CaseResult]) -> anyhow
             format!("{:.6}", c.apart_fraction),
             format!("{:.6}", c.torque_mean_nm),
             format!("{:.6}", c.torque_ac_rms_nm),
+            format!("{:.3}", c.speed_offset_rpm),
             c.averages.to_string(),
             c.seed.to_string(),
         ]);
