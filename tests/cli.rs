@@ -104,7 +104,22 @@ fn simulate_writes_signals_impacts_and_summary() {
     let header = lines.next().expect("header");
     assert!(header.starts_with("time_s,angle1_rad"), "{header}");
     assert_eq!(lines.count(), 2048);
-    assert!(dir.join("impacts.csv").exists() && dir.join("summary.json").exists());
+    assert!(dir.join("summary.json").exists());
+    // One header, then one row per impact: time, flank, tooth, closing speed.
+    let impacts = std::fs::read_to_string(dir.join("impacts.csv")).expect("impacts.csv");
+    let mut rows = impacts.lines();
+    assert_eq!(rows.next(), Some("time_s,flank,tooth,closing_speed_rad_s"));
+    let rows: Vec<&str> = rows.collect();
+    assert!(!rows.is_empty(), "1300 rev/min, 2.712 N m impacts");
+    for row in rows {
+        let fields: Vec<&str> = row.split(',').collect();
+        assert!(
+            fields.len() == 4
+                && fields[0].parse::<f64>().is_ok()
+                && ["drive", "back"].contains(&fields[1]),
+            "{row}"
+        );
+    }
     assert!(!dir.join("signals.csv.partial").exists());
     std::fs::remove_dir_all(&dir).ok();
 }

@@ -191,8 +191,12 @@ fn write_raster(dir: &Path, report: &Report, impacts: &[Impact], teeth: u32) -> 
 const RASTER_REVOLUTIONS: f64 = 40.0;
 
 fn write_impacts(path: &Path, impacts: &[Impact]) -> anyhow::Result<()> {
-    let mut csv =
-        csv::Writer::from_path(path).with_context(|| format!("writing {}", path.display()))?;
+    // The header is written here, so that a window without impacts still has one;
+    // `serialize` would write another before the first row.
+    let mut csv = csv::WriterBuilder::new()
+        .has_headers(false)
+        .from_path(path)
+        .with_context(|| format!("writing {}", path.display()))?;
     csv.write_record(["time_s", "flank", "tooth", "closing_speed_rad_s"])?;
     for i in impacts {
         csv.serialize(i)?;
