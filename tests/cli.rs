@@ -293,3 +293,41 @@ fn one_parameter_vocabulary_across_params_simulate_and_run() {
     );
     std::fs::remove_dir_all(&out).ok();
 }
+
+/// The motor's limit counts the rig's residual drag with the load: 5.424 N m with 3 N m
+/// of drag (8.4 N m) is beyond the 2 hp motor's 7.12 N m and refused before any run,
+/// naming the drag; with the preset's 0.6 N m it runs.
+#[test]
+fn a_load_and_drag_beyond_the_motor_are_refused_naming_the_drag() {
+    let args = |drag: &'static str| {
+        [
+            "simulate",
+            "--preset",
+            "basmaji-1983-rig",
+            "--set",
+            drag,
+            "--rpm",
+            "600",
+            "--load",
+            "5.424",
+            "--settle",
+            "1",
+            "--duration",
+            "1",
+        ]
+    };
+    let refused = testrig(&args("brake_drag_nm=3.0"));
+    let said = String::from_utf8_lossy(&refused.stderr);
+    assert!(
+        !refused.status.success()
+            && said.contains("brake_drag_nm")
+            && said.contains("more than the motor can hold"),
+        "{said}"
+    );
+    let runs = testrig(&args("brake_drag_nm=0.6"));
+    assert!(
+        runs.status.success(),
+        "{}",
+        String::from_utf8_lossy(&runs.stderr)
+    );
+}

@@ -39,16 +39,22 @@ pub fn check_load_nm(value: f64) -> Result<f64, LimitError> {
     }
 }
 
-/// A brake load (N m) the rig of `params` can run against: at most the motor's torque
-/// limit. Beyond it the 2 hp motor cannot hold any speed, and the model's constant-torque
-/// brake would then drive the rig backwards, which an eddy-current brake cannot (its
-/// torque falls to zero with the speed).
+/// A brake load (N m) the rig of `params` can run against: with the rig's residual drag
+/// (`brake_drag_nm`, added to every load) at most the motor's torque limit. Beyond it the
+/// 2 hp motor cannot hold any speed, and the model's constant-torque brake would then
+/// drive the rig backwards, which an eddy-current brake cannot (its torque falls to zero
+/// with the speed).
 pub fn check_load_within_motor(load_nm: f64, params: &rig::RigParams) -> Result<(), LimitError> {
     let limit_nm = params.motor_torque_limit_nm;
-    if load_nm <= limit_nm {
+    let drag_nm = params.brake_drag_nm;
+    if load_nm + drag_nm <= limit_nm {
         Ok(())
     } else {
-        Err(LimitError::LoadAboveMotor { load_nm, limit_nm })
+        Err(LimitError::LoadAboveMotor {
+            load_nm,
+            drag_nm,
+            limit_nm,
+        })
     }
 }
 
@@ -115,11 +121,13 @@ pub enum LimitError {
     },
     /// A brake load beyond the motor's torque limit.
     #[error(
-        "{load_nm} N m is more than the motor can hold (motor_torque_limit_nm = {limit_nm:.3} N m): the rig would stop, and an eddy-current brake cannot drive it backwards"
+        "{load_nm} N m with the rig's residual drag of {drag_nm} N m (brake_drag_nm) is more than the motor can hold (motor_torque_limit_nm = {limit_nm:.3} N m): the rig would stop, and an eddy-current brake cannot drive it backwards"
     )]
     LoadAboveMotor {
         /// The load given (N m).
         load_nm: f64,
+        /// The rig's residual drag, added to the load (N m).
+        drag_nm: f64,
         /// The motor's torque limit (N m).
         limit_nm: f64,
     },
