@@ -164,10 +164,17 @@ impl Adc {
 
     /// Σ x[i]·w(t − i) / Σ w(t − i) over the 2·LOBES samples around t (samples before
     /// the stream are 0); normalising the weights makes the gain at DC exactly one.
+    /// sin π(t − i) is (−1)^(i − c)·sin π(t − c) for c = ⌊t⌋: one sine per sample.
     fn lanczos(&self, t: f64, centre: u64) -> f64 {
+        let sin_offset = (std::f64::consts::PI * (t - centre as f64)).sin();
         let (mut sum, mut weights) = (0.0, 0.0);
         for i in centre as i64 + 1 - LOBES as i64..=centre as i64 + LOBES as i64 {
-            let w = kernel(t - i as f64);
+            let sign = if (i - centre as i64) % 2 == 0 {
+                1.0
+            } else {
+                -1.0
+            };
+            let w = kernel(t - i as f64, sign * sin_offset);
             weights += w;
             if i >= self.history_start as i64 {
                 sum += w * self.history[(i as u64 - self.history_start) as usize];
@@ -212,20 +219,25 @@ const MAX_RANGE: f64 = 1e9;
 /// Kaiser window shape β.
 const KAISER_BETA: f64 = 12.0;
 
-/// Windowed sinc: sinc(x)·I0(β√(1 − (x/a)²))/I0(β), a = 16 lobes.
-fn kernel(x: f64) -> f64 {
+/// Windowed sinc: sinc(x)·I0(β√(1 − (x/a)²))/I0(β), a = 16 lobes, given sin πx.
+fn kernel(x: f64, sin_pi_x: f64) -> f64 {
     let a = LOBES as f64;
     if x.abs() >= a {
         return 0.0;
     }
-    let window = bessel_i0(KAISER_BETA * (1.0 - (x / a).powi(2)).sqrt()) / bessel_i0(KAISER_BETA);
+    let window = bessel_i0(KAISER_BETA * (1.0 - (x / a).powi(2)).sqrt()) / kaiser_i0_beta();
     let sinc = if x == 0.0 {
         1.0
     } else {
-        let px = std::f64::consts::PI * x;
-        px.sin() / px
+        sin_pi_x / (std::f64::consts::PI * x)
     };
     sinc * window
+}
+
+/// I0(β) of the Kaiser window, computed once.
+fn kaiser_i0_beta() -> f64 {
+    static I0_BETA: std::sync::OnceLock<f64> = std::sync::OnceLock::new();
+    *I0_BETA.get_or_init(|| bessel_i0(KAISER_BETA))
 }
 
 /// Modified Bessel function of the first kind, order 0: Σ ((x/2)^k / k!)², to rounding.
