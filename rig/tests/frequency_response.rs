@@ -3,7 +3,7 @@
 
 mod support;
 
-use nalgebra::{Complex, DMatrix, DVector};
+use nalgebra::{Complex, DVector};
 use rig::{MeshMode, RigParams, Schedule, Track};
 
 type C = Complex<f64>;
@@ -12,44 +12,9 @@ type C = Complex<f64>;
 /// −A sin ωt on the brake, solved from (−ω²M + iωC + K + G) X = F with the speed loop
 /// G(iω) = (Kp + Ki/iω)·(ω_f/(iω + ω_f))·iω on M1.
 fn analytic(p: &RigParams, w: f64, amplitude: f64) -> (Vec<C>, C, C) {
-    let j = p.inertias_kgm2();
-    let springs = [
-        (
-            0,
-            1,
-            p.k12_input_shaft_nm_per_rad,
-            p.c12_input_shaft_nms_per_rad,
-        ),
-        (1, 2, p.k23_mesh_nm_per_rad, p.c23_mesh_nms_per_rad),
-        (
-            2,
-            3,
-            p.k34_intermediate_shaft_nm_per_rad,
-            p.c34_intermediate_shaft_nms_per_rad,
-        ),
-        (
-            3,
-            4,
-            p.k45_final_shaft_nm_per_rad,
-            p.c45_final_shaft_nms_per_rad,
-        ),
-    ];
     let iw = C::new(0.0, w);
-    let mut z = DMatrix::<C>::zeros(5, 5);
-    for (k, &jk) in j.iter().enumerate() {
-        z[(k, k)] += C::new(-w * w * jk, 0.0);
-    }
-    for (a, b, k, c) in springs {
-        let s = C::new(k, 0.0) + iw * c;
-        z[(a, a)] += s;
-        z[(b, b)] += s;
-        z[(a, b)] -= s;
-        z[(b, a)] -= s;
-    }
-    let (kp, ki) = p.speed_loop_gains();
-    let wf = 2.0 * std::f64::consts::PI * p.speed_feedback_filter_hz;
-    let filter = C::new(wf, 0.0) / (iw + wf);
-    z[(0, 0)] += (C::new(kp, 0.0) + C::new(ki, 0.0) / iw) * filter * iw;
+    let z = support::dynamic_stiffness(p, w);
+    let (_, filter) = support::speed_loop_parts(p, w);
     let mut f = DVector::<C>::zeros(5);
     f[4] = C::new(0.0, amplitude);
     let x = z.lu().solve(&f).expect("regular");

@@ -8,7 +8,7 @@
 
 mod support;
 
-use nalgebra::{Complex, DMatrix, DVector};
+use nalgebra::{Complex, DVector};
 use rig::{GearGeometry, RegimeCriteria, RigParams, Schedule, preset, run_steady};
 
 type C = Complex<f64>;
@@ -18,46 +18,8 @@ type C = Complex<f64>;
 /// displacement e = B₀·C1 on the mesh spring and damper and the speed loop G on M1.
 fn linear_mesh_torque_nm(p: &RigParams, rpm: f64) -> f64 {
     let w = rpm * std::f64::consts::PI / 30.0;
-    let iw = C::new(0.0, w);
-    let j = p.inertias_kgm2();
-    let mesh = C::new(p.k23_mesh_nm_per_rad, 0.0) + iw * p.c23_mesh_nms_per_rad;
-    let springs = [
-        (
-            0,
-            1,
-            p.k12_input_shaft_nm_per_rad,
-            p.c12_input_shaft_nms_per_rad,
-        ),
-        (
-            2,
-            3,
-            p.k34_intermediate_shaft_nm_per_rad,
-            p.c34_intermediate_shaft_nms_per_rad,
-        ),
-        (
-            3,
-            4,
-            p.k45_final_shaft_nm_per_rad,
-            p.c45_final_shaft_nms_per_rad,
-        ),
-    ];
-    let mut z = DMatrix::<C>::zeros(5, 5);
-    for (k, &jk) in j.iter().enumerate() {
-        z[(k, k)] += C::new(-w * w * jk, 0.0);
-    }
-    let mut couple = |a: usize, b: usize, s: C| {
-        z[(a, a)] += s;
-        z[(b, b)] += s;
-        z[(a, b)] -= s;
-        z[(b, a)] -= s;
-    };
-    for (a, b, k, c) in springs {
-        couple(a, b, C::new(k, 0.0) + iw * c);
-    }
-    couple(1, 2, mesh);
-    let (kp, ki) = p.speed_loop_gains();
-    let wf = 2.0 * std::f64::consts::PI * p.speed_feedback_filter_hz;
-    z[(0, 0)] += (C::new(kp, 0.0) + C::new(ki, 0.0) / iw) * (C::new(wf, 0.0) / (iw + wf)) * iw;
+    let mesh = C::new(p.k23_mesh_nm_per_rad, 0.0) + C::new(0.0, w) * p.c23_mesh_nms_per_rad;
+    let z = support::dynamic_stiffness(p, w);
     // Drive flank: the mesh torque on M3 is −(K + iΩC)(X3 − X2 − e), its reaction on M2.
     let e = GearGeometry::of(p).half_backlash_rad * p.backlash_variation_c1;
     let mut f = DVector::<C>::zeros(5);

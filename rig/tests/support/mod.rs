@@ -68,3 +68,64 @@ pub fn mesh_angle(block: &SignalBlock) -> Vec<f64> {
         .map(|(x3, x2)| x3 - x2)
         .collect()
 }
+
+/// The linear rig's dynamic stiffness at `w_rad_s` with the teeth in contact:
+/// −ω²M + iωC + K over the five bodies (shafts and mesh as springs with dampers) plus the
+/// speed loop on M1, G(iω) = (Kp + Ki/iω)·(ω_f/(iω + ω_f))·iω. Z·X = F gives the steady
+/// phasors X (rad) for torque phasors F (N m).
+pub fn dynamic_stiffness(p: &RigParams, w_rad_s: f64) -> nalgebra::DMatrix<nalgebra::Complex<f64>> {
+    use nalgebra::Complex;
+    let w = w_rad_s;
+    let iw = Complex::new(0.0, w);
+    let springs = [
+        (
+            0,
+            1,
+            p.k12_input_shaft_nm_per_rad,
+            p.c12_input_shaft_nms_per_rad,
+        ),
+        (1, 2, p.k23_mesh_nm_per_rad, p.c23_mesh_nms_per_rad),
+        (
+            2,
+            3,
+            p.k34_intermediate_shaft_nm_per_rad,
+            p.c34_intermediate_shaft_nms_per_rad,
+        ),
+        (
+            3,
+            4,
+            p.k45_final_shaft_nm_per_rad,
+            p.c45_final_shaft_nms_per_rad,
+        ),
+    ];
+    let mut z = nalgebra::DMatrix::<Complex<f64>>::zeros(5, 5);
+    for (k, &jk) in p.inertias_kgm2().iter().enumerate() {
+        z[(k, k)] += Complex::new(-w * w * jk, 0.0);
+    }
+    for (a, b, k, c) in springs {
+        let s = Complex::new(k, 0.0) + iw * c;
+        z[(a, a)] += s;
+        z[(b, b)] += s;
+        z[(a, b)] -= s;
+        z[(b, a)] -= s;
+    }
+    z[(0, 0)] += speed_loop_parts(p, w).0 * iw;
+    z
+}
+
+/// The speed loop's transfer from M1's speed to its torque, (Kp + Ki/iω)·ω_f/(iω + ω_f),
+/// and the feedback filter ω_f/(iω + ω_f) on its own: (loop, filter).
+pub fn speed_loop_parts(
+    p: &RigParams,
+    w_rad_s: f64,
+) -> (nalgebra::Complex<f64>, nalgebra::Complex<f64>) {
+    use nalgebra::Complex;
+    let iw = Complex::new(0.0, w_rad_s);
+    let (kp, ki) = p.speed_loop_gains();
+    let wf = 2.0 * std::f64::consts::PI * p.speed_feedback_filter_hz;
+    let filter = Complex::new(wf, 0.0) / (iw + wf);
+    (
+        (Complex::new(kp, 0.0) + Complex::new(ki, 0.0) / iw) * filter,
+        filter,
+    )
+}
