@@ -45,17 +45,21 @@ pub fn check_load_nm(value: f64) -> Result<f64, LimitError> {
 /// drive the rig backwards, which an eddy-current brake cannot (its torque falls to zero
 /// with the speed).
 pub fn check_load_within_motor(load_nm: f64, params: &rig::RigParams) -> Result<(), LimitError> {
-    let limit_nm = params.motor_torque_limit_nm;
-    let drag_nm = params.brake_drag_nm;
-    if load_nm + drag_nm <= limit_nm {
+    if load_nm <= max_load_nm(params) {
         Ok(())
     } else {
         Err(LimitError::LoadAboveMotor {
             load_nm,
-            drag_nm,
-            limit_nm,
+            drag_nm: params.brake_drag_nm,
+            limit_nm: params.motor_torque_limit_nm,
         })
     }
+}
+
+/// The largest brake load (N m) the motor of `params` can hold: its torque limit less the
+/// rig's residual drag.
+pub fn max_load_nm(params: &rig::RigParams) -> f64 {
+    params.motor_torque_limit_nm - params.brake_drag_nm
 }
 
 /// A motor speed set point (rev/min) as an input accepts it: finite, in [0, 10 000].

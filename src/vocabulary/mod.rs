@@ -21,7 +21,7 @@ pub use display::{AppliedChain, AppliedFilter, LiveSpectrum, LiveTrace};
 pub use frame::{Frame, SignalNames};
 pub use limits::{
     DEFAULT_LIVE_CEILING, MAX_SIMULATED_S, check_load_nm, check_load_within_motor,
-    check_simulated_s, check_speed_rpm,
+    check_simulated_s, check_speed_rpm, max_load_nm,
 };
 pub use refusal::Refusal;
 pub use signal_names::FILTER_V;
