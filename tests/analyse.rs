@@ -1,6 +1,10 @@
 //! `testrig analyse` end to end: a WAV file through filter, ADC and analyser.
 
-use std::path::{Path, PathBuf};
+mod common;
+
+use std::path::Path;
+
+use common::folder;
 use std::process::Command;
 
 use instruments::{AntiAliasFilter, Block, FilterKind, LowPassSpec};
@@ -20,12 +24,6 @@ fn write_wav(path: &Path, rate: u32, freq_hz: f64, amplitude: f32, seconds: f64)
             .expect("written");
     }
     writer.finalize().expect("closed");
-}
-
-fn folder(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("testrig-analyse-{name}-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp folder");
-    dir
 }
 
 /// (frequency, power, alias_of) rows of spectrum.csv.

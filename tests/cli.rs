@@ -1,5 +1,7 @@
 //! End-to-end tests of the `testrig` binary.
 
+mod common;
+
 use std::process::{Command, Output};
 
 fn testrig(args: &[&str]) -> Output {
@@ -78,7 +80,7 @@ fn simulate_reports_the_summary_keys() {
 
 #[test]
 fn simulate_writes_signals_impacts_and_summary() {
-    let dir = std::env::temp_dir().join(format!("testrig-cli-{}", std::process::id()));
+    let dir = common::folder("cli-simulate");
     let out = testrig(&[
         "simulate",
         "--rpm",
@@ -203,8 +205,8 @@ fn a_closed_pipe_ends_the_output_quietly_without_a_panic() {
 fn a_file_given_to_the_wrong_command_is_sent_to_the_right_one() {
     let dir = env!("CARGO_MANIFEST_DIR");
     let campaign = format!("{dir}/scenarios/thesis-campaign.toml");
-    let out = std::env::temp_dir().join(format!("testrig-wrong-command-{}", std::process::id()));
-    let out = out.to_str().expect("utf-8");
+    let scratch = common::folder("wrong-command");
+    let out = scratch.to_str().expect("utf-8");
     let run = testrig(&["run", &campaign, "--out", out]);
     let stderr = String::from_utf8_lossy(&run.stderr);
     assert!(!run.status.success());
@@ -252,7 +254,7 @@ fn one_parameter_vocabulary_across_params_simulate_and_run() {
         "{}/scenarios/aliasing-windowing.toml",
         env!("CARGO_MANIFEST_DIR")
     );
-    let out = std::env::temp_dir().join(format!("testrig-vocabulary-{}", std::process::id()));
+    let out = common::folder("vocabulary");
     let run = |extra: &[&str]| {
         let mut args = vec![
             "run",

@@ -277,13 +277,9 @@ fn bad_commands_are_refused_and_change_nothing() {
 }
 
 #[test]
+#[ignore = "needs Python modules (python3 -m pip install -r tests/requirements.txt); run by .ci/run"]
 fn the_python_example_finds_the_half_order_line_at_1300_rpm() {
-    if !common::python_has(
-        "the_python_example_finds_the_half_order_line_at_1300_rpm",
-        &["requests", "websocket", "numpy"],
-    ) {
-        return;
-    }
+    common::require_python(&["requests", "websocket", "numpy"]);
     let out = folder("panel-python");
     let panel = Panel::start(&out, &["--pace", "20"]);
     let script = format!("{}/examples/panel_client.py", env!("CARGO_MANIFEST_DIR"));

@@ -6,11 +6,7 @@ use std::process::Command;
 
 use testrig::recording::{ChannelInfo, Uff58Abscissa, Uff58Record, WavRecorder, write_uff58};
 
-fn folder(name: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("testrig-recording-{name}-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp folder");
-    dir
-}
+use common::folder;
 
 #[test]
 fn a_wav_recording_holds_scaled_frames_and_its_sidecar_says_how() {
@@ -62,10 +58,9 @@ fn a_wav_recording_holds_scaled_frames_and_its_sidecar_says_how() {
 }
 
 #[test]
+#[ignore = "needs Python modules (python3 -m pip install -r tests/requirements.txt); run by .ci/run"]
 fn pyuff_reads_our_dataset_58() {
-    if !common::python_has("pyuff_reads_our_dataset_58", &["pyuff", "numpy"]) {
-        return;
-    }
+    common::require_python(&["pyuff", "numpy"]);
     let dir = folder("uff");
     let path = dir.join("strain.uff");
     let values: Vec<f64> = (0..37)

@@ -249,13 +249,9 @@ fn ctrl_c_and_sigterm_close_every_file_with_the_samples_up_to_the_stop() {
 }
 
 #[test]
+#[ignore = "needs Python modules (python3 -m pip install -r tests/requirements.txt); run by .ci/run"]
 fn a_run_records_uff58_that_pyuff_reads_and_24_bit_wav_at_its_full_scale() {
-    if !common::python_has(
-        "a_run_records_uff58_that_pyuff_reads_and_24_bit_wav_at_its_full_scale",
-        &["pyuff"],
-    ) {
-        return;
-    }
+    common::require_python(&["pyuff"]);
     let (out, manifest) = run_ok(
         "uff",
         &scenario("aliasing-windowing"),

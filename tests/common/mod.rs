@@ -23,11 +23,54 @@ pub fn testrig_ok(args: &[&str]) -> String {
     String::from_utf8_lossy(&output.stdout).into_owned()
 }
 
-pub fn folder(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("testrig-e2e-{name}-{}", std::process::id()));
-    std::fs::remove_dir_all(&dir).ok();
-    std::fs::create_dir_all(&dir).expect("temp folder");
-    dir
+/// A fresh folder in the temp directory for one test's files: removed when it goes out of
+/// scope, kept where the test failed (a panic is unwinding), its path then printed.
+pub struct Scratch {
+    path: PathBuf,
+}
+
+impl Scratch {
+    /// The folder's path.
+    pub fn path(&self) -> &Path {
+        &self.path
+    }
+}
+
+impl std::ops::Deref for Scratch {
+    type Target = Path;
+    fn deref(&self) -> &Path {
+        &self.path
+    }
+}
+
+impl AsRef<Path> for Scratch {
+    fn as_ref(&self) -> &Path {
+        &self.path
+    }
+}
+
+impl AsRef<std::ffi::OsStr> for Scratch {
+    fn as_ref(&self) -> &std::ffi::OsStr {
+        self.path.as_os_str()
+    }
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        if std::thread::panicking() {
+            eprintln!("kept for the failed test: {}", self.path.display());
+        } else {
+            std::fs::remove_dir_all(&self.path).ok();
+        }
+    }
+}
+
+/// A fresh, empty [`Scratch`] folder named after `name` and this process.
+pub fn folder(name: &str) -> Scratch {
+    let path = std::env::temp_dir().join(format!("testrig-e2e-{name}-{}", std::process::id()));
+    std::fs::remove_dir_all(&path).ok();
+    std::fs::create_dir_all(&path).expect("temp folder");
+    Scratch { path }
 }
 
 pub fn scenario(name: &str) -> String {
@@ -35,7 +78,7 @@ pub fn scenario(name: &str) -> String {
 }
 
 /// Runs `scenario_path` unpaced with `extra` arguments into a fresh folder; checks success.
-pub fn run_ok(tag: &str, scenario_path: &str, extra: &[&str]) -> (PathBuf, serde_json::Value) {
+pub fn run_ok(tag: &str, scenario_path: &str, extra: &[&str]) -> (Scratch, serde_json::Value) {
     let out = folder(tag);
     let mut args = vec!["run", scenario_path, "--out", out.to_str().expect("utf-8")];
     if !extra.contains(&"--pace") {
@@ -131,20 +174,14 @@ pub fn sets<'a>(items: &[&'a str], extra: &[&'a str]) -> Vec<&'a str> {
     args
 }
 
-/// Set (to anything) to turn a test skipped for a missing tool into a failure: `.ci/run`
-/// sets it, so that CI runs every test.
-pub const REQUIRE_ALL: &str = "TESTRIG_REQUIRE_ALL";
-
-/// Whether `python3` can import every one of `modules`. Where it cannot, `test` is
-/// skipped: it says so on the terminal (past the test harness's capture), with the modules
-/// missing and the command that installs them, and this returns false. With
-/// [`REQUIRE_ALL`] set, a missing module fails the test instead.
-pub fn python_has(test: &str, modules: &[&str]) -> bool {
+/// Fails the test, naming the modules and the command that installs them, unless
+/// `python3` can import every one of `modules`.
+pub fn require_python(modules: &[&str]) {
     let probe = Command::new("python3")
         .args(["-c", &format!("import {}", modules.join(", "))])
         .output();
     let missing = match probe {
-        Ok(out) if out.status.success() => return true,
+        Ok(out) if out.status.success() => return,
         Ok(out) => String::from_utf8_lossy(&out.stderr)
             .lines()
             .last()
@@ -152,16 +189,8 @@ pub fn python_has(test: &str, modules: &[&str]) -> bool {
             .to_string(),
         Err(e) => format!("python3 does not run: {e}"),
     };
-    let why = format!(
+    panic!(
         "needs the Python modules {} ({missing}); install them with `python3 -m pip install -r tests/requirements.txt`",
         modules.join(", ")
     );
-    assert!(
-        std::env::var_os(REQUIRE_ALL).is_none(),
-        "{test} cannot run: {why} ({REQUIRE_ALL} is set: no test may be skipped)"
-    );
-    let message = format!("SKIPPED {test}: {why}");
-    use std::io::Write as _;
-    writeln!(std::io::stderr(), "{message}").ok();
-    false
 }
