@@ -62,7 +62,7 @@ impl Columns {
 /// parameters by name (`testrig params`). `signals=False` keeps no signal (`signals`
 /// is then empty): the impacts and the summary alone, as fast as the CLI.
 #[pyfunction]
-#[pyo3(signature = (rpm, load_nm, preset="basmaji-1983-rig", settle_s=60.0, duration_s=10.0, rate_hz=51200.0, set=None, signals=true))]
+#[pyo3(signature = (rpm, load_nm, preset=rig::DEFAULT_PRESET, settle_s=60.0, duration_s=10.0, rate_hz=51200.0, set=None, signals=true))]
 #[allow(clippy::too_many_arguments)]
 pub fn simulate<'py>(
     py: Python<'py>,

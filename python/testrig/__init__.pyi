@@ -32,7 +32,7 @@ class Simulation(TypedDict):
 def simulate(
     rpm: float,
     load_nm: float,
-    preset: str = "basmaji-1983-rig",
+    preset: str = "basmaji-1983",
     settle_s: float = 60.0,
     duration_s: float = 10.0,
     rate_hz: float = 51200.0,
@@ -105,9 +105,11 @@ def run(
     seed: Optional[int] = None,
     duration_s: Optional[float] = None,
     replace: bool = False,
+    keep: bool = False,
 ) -> Run:
     """A scenario run unpaced into `out`: the files `testrig run` writes, byte for byte,
-    read back. Ctrl-C stops it, its files kept."""
+    read back. Without `out`, a temporary folder removed when the result is dropped
+    unless `keep`. Ctrl-C stops it, its files kept."""
 
 def sweep(
     scenario: Scenario,
@@ -115,9 +117,11 @@ def sweep(
     set: Optional[Mapping[str, Any]] = None,
     jobs: Optional[int] = None,
     resume: bool = False,
+    keep: bool = False,
 ) -> Any:
     """A sweep run into `out`; its cases.csv as a pandas DataFrame (pandas installed) or
-    a dict of arrays."""
+    a dict of arrays. Without `out`, a temporary folder removed once the table is read
+    unless `keep` (its path then in `attrs["out"]`, or the key "out")."""
 
 class Reply(TypedDict):
     ok: bool
@@ -134,13 +138,15 @@ class Rig:
     context manager that stops it and writes its manifest on exit (Ctrl-C included)."""
     out: Path
     def __init__(self, scenario: Scenario, out: Optional[Union[str, "os.PathLike[str]"]] = None,
-                 pace: float = 1.0, set: Optional[Mapping[str, Any]] = None) -> None: ...
+                 pace: float = 1.0, set: Optional[Mapping[str, Any]] = None,
+                 keep: bool = False) -> None: ...
     def __enter__(self) -> "Rig": ...
     def __exit__(self, *exc: Any) -> bool: ...
     def close(self) -> Path: ...
     def send(self, command: Mapping[str, Any]) -> Reply: ...
     def state(self) -> dict[str, Any]: ...
-    def read(self) -> Optional[Block]: ...
+    def read(self, timeout_s: float = 5.0) -> Block:
+        """The next block made after the call; TimeoutError after `timeout_s` (s)."""
     def set_speed(self, rpm: float) -> Reply: ...
     def set_load(self, nm: float) -> Reply: ...
     def set_oscillating_load(self, nm: float, hz: float) -> Reply: ...

@@ -64,7 +64,7 @@ pub use options::{ContactLaw, MeshPairs};
 pub use param_table::{DERIVED_SPECS, PARAM_SPECS, ParamSpec, param_spec, set_param};
 pub use params::RigParams;
 pub use plant::{CHECK_EVERY, Plant, PlantConfig};
-pub use presets::{PRESET_NAMES, preset};
+pub use presets::{DEFAULT_PRESET, PRESET_NAMES, preset};
 pub use records::{Flank, Impact, RevolutionSample};
 pub use regime::{Regime, RegimeCriteria, classify, classify_scaled};
 pub use schedule::{LiveCeiling, Schedule, SetPoints, Track};

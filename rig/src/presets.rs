@@ -13,6 +13,10 @@ pub const PRESET_NAMES: &[&str] = &[
     "basmaji-1983-rig",
 ];
 
+/// The preset every front door uses where none is named (the CLI's `--preset`, a
+/// scenario without `[rig] preset`, Python's `preset=`): the thesis's own numbers.
+pub const DEFAULT_PRESET: &str = "basmaji-1983";
+
 /// 2 hp (W).
 const TWO_HP_W: f64 = 2.0 * 745.699_872;
 /// Top of the rig's speed range (rev/min), taken as the motor's base speed.

@@ -172,7 +172,7 @@ pub struct RunArgs {
 pub struct RigArgs {
     /// Named parameter set, or the path of a preset file (`*.toml`, as `testrig calibrate`
     /// writes).
-    #[arg(long, default_value = "basmaji-1983")]
+    #[arg(long, default_value = rig::DEFAULT_PRESET)]
     pub preset: String,
     /// Override one parameter (repeatable), e.g. --set teeth=31.
     #[arg(long = "set", value_name = "NAME=VALUE")]

@@ -1,15 +1,12 @@
 //! The rig, the schedule and the measurements of a scenario.
 
-use rig::{RigParams, Schedule, Track};
+use rig::{DEFAULT_PRESET, RigParams, Schedule, Track};
 use toml::Spanned;
 
 use super::preset_file::preset_params;
 use super::run_plan::Measure;
 use super::scenario_toml::{ChangeFile, RigFile, ScenarioFile, ScheduleFile, SurveyFile};
 use super::source::ScenarioSource;
-
-/// Preset name when the scenario names none.
-pub const DEFAULT_PRESET: &str = "basmaji-1983";
 
 /// The preset with the backlash setting and every `[rig.set]` override applied.
 pub fn rig_params(src: &ScenarioSource, rig: &RigFile) -> anyhow::Result<(String, RigParams)> {
