@@ -22,6 +22,7 @@ Errors are ``TestrigError`` with the command line's message, the argument named.
 import csv
 import json
 import tempfile
+import time
 from pathlib import Path
 
 import numpy as np
@@ -33,10 +34,31 @@ from ._testrig import sweep_into
 __all__ = ["Rig", "TestrigError", "__version__", "analyse", "run", "simulate", "sweep"]
 
 
-def _folder(out, prefix):
-    if out is None:
-        return Path(tempfile.mkdtemp(prefix=prefix))
-    return Path(out)
+class _Folder:
+    """Where a call writes: `out`, or a new temporary folder that is removed with this
+    object (when the result holding it is dropped) unless `keep`."""
+
+    def __init__(self, out, prefix, keep):
+        self._temporary = None
+        if out is not None:
+            self.path = Path(out)
+        elif keep:
+            self.path = Path(tempfile.mkdtemp(prefix=prefix))
+        else:
+            self._temporary = tempfile.TemporaryDirectory(prefix=prefix)
+            self.path = Path(self._temporary.name)
+
+    def remove(self):
+        """Removes the folder now if it is a temporary one not kept."""
+        if self._temporary is not None:
+            self._temporary.cleanup()
+
+
+class RunResult(dict):
+    """What ``run`` returns: a dict (see ``run``) that also holds its temporary folder,
+    removed when the result is dropped unless ``keep=True`` was asked for."""
+
+    __slots__ = ("_folder",)
 
 
 def _column(values):
@@ -73,9 +95,10 @@ def _read_spectrum(path):
     }
 
 
-def run(scenario, out=None, set=None, seed=None, duration_s=None, replace=False):
+def run(scenario, out=None, set=None, seed=None, duration_s=None, replace=False, keep=False):
     """Runs `scenario` (a path, or a dict shaped like the TOML file) unpaced into `out`
-    (a new temporary folder if None): the files ``testrig run`` writes, byte for byte.
+    (if None, a new temporary folder, removed when the result is dropped unless
+    `keep`): the files ``testrig run`` writes, byte for byte.
     `set` changes scenario keys (``{"schedule.speed_rpm": 1500}``), `seed` and
     `duration_s` (s) and `replace` (remove another scenario's run from `out`) as the
     CLI's flags. Returns a dict: ``out`` (the folder),
@@ -83,7 +106,8 @@ def run(scenario, out=None, set=None, seed=None, duration_s=None, replace=False)
     ``sidecar``; None without a WAV), ``spectra`` (one dict a measurement:
     ``frequency_hz``, ``power`` in V², ``alias_of_hz`` NaN where not an alias,
     ``metadata``), ``readings`` (readings.csv by column; None without meters)."""
-    folder = _folder(out, "testrig-run-")
+    holder = _Folder(out, "testrig-run-", keep)
+    folder = holder.path
     manifest = json.loads(run_into(scenario, str(folder), set, seed, duration_s, replace))
     wav = folder / "recording.wav"
     recording = None
@@ -91,28 +115,45 @@ def run(scenario, out=None, set=None, seed=None, duration_s=None, replace=False)
         recording = read_recording(str(wav))
         recording["sidecar"] = json.loads((folder / "recording.wav.json").read_text())
     readings = folder / "readings.csv"
-    return {
-        "out": folder,
-        "manifest": manifest,
-        "recording": recording,
-        "spectra": [_read_spectrum(p) for p in sorted(folder.glob("spectrum-*.csv"))],
-        "readings": _read_table(readings) if readings.exists() else None,
-    }
+    result = RunResult(
+        out=folder,
+        manifest=manifest,
+        recording=recording,
+        spectra=[_read_spectrum(p) for p in sorted(folder.glob("spectrum-*.csv"))],
+        readings=_read_table(readings) if readings.exists() else None,
+    )
+    result._folder = holder
+    return result
 
 
-def sweep(scenario, out=None, set=None, jobs=None, resume=False):
-    """Runs the sweep `scenario` (a path or a dict) into `out` (a new temporary folder if
-    None) on `jobs` workers (every core if None), as ``testrig sweep``; returns its
-    ``cases.csv``: a pandas DataFrame when pandas is installed, else a dict of arrays.
+def sweep(scenario, out=None, set=None, jobs=None, resume=False, keep=False):
+    """Runs the sweep `scenario` (a path or a dict) into `out` on `jobs` workers (every
+    core if None), as ``testrig sweep``; returns its ``cases.csv``: a pandas DataFrame
+    when pandas is installed, else a dict of arrays. Without `out` the sweep runs in a
+    temporary folder that is removed once the table is read, unless `keep` (then the
+    folder's path is in the table's ``attrs["out"]`` or under the key ``"out"``).
     Ctrl-C starts no further case; ``resume=True`` then finishes the rest."""
-    folder = _folder(out, "testrig-sweep-")
-    sweep_into(scenario, str(folder), set, jobs, resume)
-    table = _read_table(folder / "cases.csv")
+    holder = _Folder(out, "testrig-sweep-", keep)
+    folder = holder.path
+    try:
+        sweep_into(scenario, str(folder), set, jobs, resume)
+        table = _read_table(folder / "cases.csv")
+    finally:
+        holder.remove()
+    if out is not None or keep:
+        table_out = str(folder)
+    else:
+        table_out = None
     try:
         import pandas
     except ImportError:
+        if table_out is not None:
+            table["out"] = table_out
         return table
-    return pandas.DataFrame(table)
+    frame = pandas.DataFrame(table)
+    if table_out is not None:
+        frame.attrs["out"] = table_out
+    return frame
 
 
 def _command(cmd, **fields):
@@ -121,14 +162,16 @@ def _command(cmd, **fields):
 
 class Rig:
     """A live rig: `scenario` (a path or a dict, e.g. ``scenarios/panel.toml``) paced at
-    `pace` (1: real time), writing into `out` (a new temporary folder if None). Use it in a ``with``
+    `pace` (1: real time), writing into `out` (if None, a new temporary folder removed at
+    ``close`` unless `keep`). Use it in a ``with``
     block; leaving it (normally, by an exception or Ctrl-C) stops the rig and writes its
     manifest. Each method sends the panel's command of the same name (docs/api.md) and
     waits for the rig to carry it out, returning ``{"ok", "at_s"}`` (the virtual time it
     took effect, s); a refusal raises ``TestrigError`` with the reason."""
 
-    def __init__(self, scenario, out=None, pace=1.0, set=None):
-        self.out = _folder(out, "testrig-rig-")
+    def __init__(self, scenario, out=None, pace=1.0, set=None, keep=False):
+        self._folder = _Folder(out, "testrig-rig-", keep)
+        self.out = self._folder.path
         self._rig = _Rig(scenario, str(self.out), pace, set)
 
     def __enter__(self):
@@ -139,8 +182,10 @@ class Rig:
         return False
 
     def close(self):
-        """Stops the rig, closes its files and writes its manifest; returns the folder."""
+        """Stops the rig, closes its files and writes its manifest; returns the folder
+        (removed now if it was a temporary one not kept)."""
         self._rig.close()
+        self._folder.remove()
         return self.out
 
     def send(self, command):
@@ -152,10 +197,20 @@ class Rig:
         (V), the analyser's display, the scope's trace, overruns, the judged motion."""
         return self._rig.state()
 
-    def read(self):
-        """The latest block of every signal: ``{"start_s", "rate_hz", "channels": name ->
-        array}`` (units in the names, ``strain`` in µε); None before the first block."""
-        return self._rig.read()
+    def read(self, timeout_s=5.0):
+        """The next block of every signal made after this call: ``{"start_s", "rate_hz",
+        "channels": name -> array}`` (units in the names, ``strain`` in µε). Waits for it
+        up to `timeout_s` (s of wall time), then raises ``TimeoutError``."""
+        latest = self._rig.read()
+        after_s = None if latest is None else latest["start_s"]
+        deadline = time.monotonic() + timeout_s
+        while True:
+            block = self._rig.read()
+            if block is not None and (after_s is None or block["start_s"] > after_s):
+                return block
+            if time.monotonic() >= deadline:
+                raise TimeoutError(f"no new block within {timeout_s} s")
+            time.sleep(0.005)
 
     def set_speed(self, rpm):
         """Motor speed set point (rev/min)."""

@@ -184,6 +184,39 @@ def test_a_live_rig_follows_its_commands_and_stops_cleanly(tmp_path):
     assert manifest["ending"] in ("completed", "interrupted")
 
 
+def test_read_right_after_a_command_waits_for_the_next_block():
+    scenario = ROOT / "scenarios" / "panel.toml"
+    with testrig.Rig(scenario, pace=20) as rig:
+        reply = rig.set_speed(900)
+        block = rig.read()
+        assert block is not None
+        # A block made after the command: it starts at or after the command took effect.
+        assert block["start_s"] >= reply["at_s"]
+        later = rig.read()
+        assert later["start_s"] > block["start_s"]
+        folder = rig.out
+        assert folder.exists()
+    assert not folder.exists(), "the temporary folder of a Rig goes at close"
+
+
+def test_temporary_outputs_go_with_the_result_unless_kept():
+    import gc
+    small = {"name": "tiny", "duration_s": 1, "schedule": {"speed_rpm": 600, "load_nm": 1.0}}
+    result = testrig.run(small)
+    folder = result["out"]
+    assert (folder / "manifest.json").exists()
+    del result
+    gc.collect()
+    assert not folder.exists(), "a temporary run folder goes when the result is dropped"
+    kept = testrig.run(small, keep=True)
+    del_folder = kept["out"]
+    del kept
+    gc.collect()
+    assert (del_folder / "manifest.json").exists(), "keep=True keeps the folder"
+    import shutil
+    shutil.rmtree(del_folder)
+
+
 def _require(module):
     """`module`, or a skip saying why (a failure where CI sets TESTRIG_REQUIRE_ALL)."""
     import importlib
