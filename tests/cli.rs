@@ -333,3 +333,110 @@ fn a_load_and_drag_beyond_the_motor_are_refused_naming_the_drag() {
         String::from_utf8_lossy(&runs.stderr)
     );
 }
+
+#[test]
+fn an_unknown_set_name_lists_the_scenario_sections_and_the_rig_parameters() {
+    let scratch = common::folder("unknown-set");
+    let scenario = format!(
+        "{}/scenarios/subharmonic-2712nm.toml",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let out = testrig(&[
+        "run",
+        &scenario,
+        "--set",
+        "nonsense=1",
+        "--out",
+        scratch.to_str().expect("utf-8"),
+    ]);
+    assert!(!out.status.success());
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    for expected in [
+        "--set nonsense=1",
+        "`schedule`",
+        "`analyser`",
+        "k12_input_shaft_nm_per_rad",
+        "backlash_mm",
+    ] {
+        assert!(stderr.contains(expected), "{expected} missing: {stderr}");
+    }
+    assert!(
+        !scratch.join("manifest.json").exists(),
+        "nothing is run on a bad --set"
+    );
+}
+
+#[test]
+fn a_run_into_a_folder_simulate_wrote_is_refused_and_with_replace_removes_its_files() {
+    let scratch = common::folder("simulate-guard");
+    let dir = scratch.to_str().expect("utf-8");
+    let simulate = testrig(&[
+        "simulate",
+        "--rpm",
+        "600",
+        "--load",
+        "1",
+        "--settle",
+        "0.2",
+        "--duration",
+        "0.3",
+        "--rate",
+        "5120",
+        "--out",
+        dir,
+    ]);
+    assert!(
+        simulate.status.success(),
+        "{}",
+        String::from_utf8_lossy(&simulate.stderr)
+    );
+    for name in [
+        "signals.csv",
+        "impacts.csv",
+        "summary.json",
+        "manifest.json",
+    ] {
+        assert!(scratch.join(name).is_file(), "{name}");
+    }
+    let scenario = format!(
+        "{}/scenarios/aliasing-windowing.toml",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let run = |extra: &[&str]| {
+        let mut args = vec![
+            "run",
+            scenario.as_str(),
+            "--pace",
+            "max",
+            "--duration",
+            "0.5",
+            "--out",
+            dir,
+        ];
+        args.extend(extra);
+        testrig(&args)
+    };
+    let refused = run(&[]);
+    assert!(!refused.status.success());
+    let stderr = String::from_utf8_lossy(&refused.stderr);
+    assert!(
+        stderr.contains("scenario `simulate`") && stderr.contains("--replace"),
+        "{stderr}"
+    );
+    assert!(
+        scratch.join("signals.csv").is_file(),
+        "nothing removed when refused"
+    );
+    let replaced = run(&["--replace"]);
+    assert!(
+        replaced.status.success(),
+        "{}",
+        String::from_utf8_lossy(&replaced.stderr)
+    );
+    for name in ["signals.csv", "impacts.csv", "summary.json"] {
+        assert!(
+            !scratch.join(name).exists(),
+            "{name} of simulate left beside the run"
+        );
+    }
+}

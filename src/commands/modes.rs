@@ -45,10 +45,27 @@ pub fn run(args: &ModesArgs) -> anyhow::Result<()> {
     }
     for (_, title, chain) in named {
         println!("{title}");
-        println!("  {:>10}  {}", "f (Hz)", chain.bodies.join(" | "));
+        // Each body's column as wide as its name, the shape's entries right-aligned under it.
+        let widths: Vec<usize> = chain
+            .bodies
+            .iter()
+            .map(|b| b.chars().count().max(7))
+            .collect();
+        let head: Vec<String> = chain
+            .bodies
+            .iter()
+            .zip(&widths)
+            .map(|(b, w)| format!("{b:>w$}"))
+            .collect();
+        println!("  {:>10}  {}", "f (Hz)", head.join("  "));
         for mode in chain.modes() {
-            let shape: Vec<String> = mode.shape.iter().map(|v| format!("{v:+.4}")).collect();
-            println!("  {:>10.3}  {}", mode.frequency_hz, shape.join(" "));
+            let shape: Vec<String> = mode
+                .shape
+                .iter()
+                .zip(&widths)
+                .map(|(v, w)| format!("{v:>+w$.4}"))
+                .collect();
+            println!("  {:>10.3}  {}", mode.frequency_hz, shape.join("  "));
         }
         println!();
     }

@@ -66,22 +66,62 @@ pub fn run(args: &ParamsArgs) -> anyhow::Result<()> {
         return Ok(());
     }
     println!("preset {}", args.rig.preset);
-    println!("{:<36} {:>14} {:<10} meaning", "name", "value", "unit");
-    let print_rows = |specs: &[ParamSpec]| {
-        for spec in specs {
-            let value = spec.value(&params);
-            println!(
-                "{:<36} {value:>14} {:<10} {}",
-                spec.name, spec.unit, spec.meaning
-            );
-        }
+    let rows = |specs: &[ParamSpec]| -> Vec<[String; 4]> {
+        specs
+            .iter()
+            .map(|s| {
+                let value = s.value(&params).to_string();
+                [
+                    s.name.to_string(),
+                    value,
+                    s.unit.to_string(),
+                    s.meaning.to_string(),
+                ]
+            })
+            .collect()
     };
-    print_rows(PARAM_SPECS);
-    println!("\nderived, settable by name");
-    print_rows(DERIVED_SPECS);
-    println!("\nderived");
-    for (name, value, unit, meaning) in derived {
-        println!("{name:<36} {value:>14.6e} {unit:<10} {meaning}");
-    }
+    let derived: Vec<[String; 4]> = derived
+        .iter()
+        .map(|(n, v, u, m)| {
+            [
+                n.to_string(),
+                format!("{v:.6e}"),
+                u.to_string(),
+                m.to_string(),
+            ]
+        })
+        .collect();
+    let sections = [
+        ("", rows(PARAM_SPECS)),
+        ("derived, settable by name", rows(DERIVED_SPECS)),
+        ("derived", derived),
+    ];
+    print_table(&sections);
     Ok(())
+}
+
+/// Prints titled sections of (name, value, unit, meaning) rows, each column as wide as its
+/// widest entry in any section, so that every row lines up whatever its values.
+fn print_table(sections: &[(&str, Vec<[String; 4]>)]) {
+    let all = sections.iter().flat_map(|(_, rows)| rows);
+    let width = |k: usize, head: &str| {
+        all.clone()
+            .map(|r| r[k].chars().count())
+            .chain([head.len()])
+            .max()
+            .unwrap_or(0)
+    };
+    let (name_w, value_w, unit_w) = (width(0, "name"), width(1, "value"), width(2, "unit"));
+    println!(
+        "{:<name_w$} {:>value_w$} {:<unit_w$} meaning",
+        "name", "value", "unit"
+    );
+    for (title, rows) in sections {
+        if !title.is_empty() {
+            println!("\n{title}");
+        }
+        for [name, value, unit, meaning] in rows {
+            println!("{name:<name_w$} {value:>value_w$} {unit:<unit_w$} {meaning}");
+        }
+    }
 }

@@ -10,6 +10,8 @@ use serde::Serialize;
 
 use crate::cli::SimulateArgs;
 use testrig::plots::{RasterImpact, write_impact_raster};
+use testrig::recording::{PartialFile, start_journal};
+use testrig::runtime::{clear_previous_run, write_command_manifest};
 use testrig::steady_point::{FLAG_NAMES, PointRun, PointSpec, run_point};
 
 /// The JSON summary of one run.
@@ -37,7 +39,7 @@ pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
         rate_hz: args.rate,
     };
     let mut writer = match &args.out {
-        Some(dir) => Some(SignalWriter::create(dir)?),
+        Some(dir) => Some(SignalWriter::create(dir, args.replace)?),
         None => None,
     };
     let PointRun {
@@ -65,12 +67,34 @@ pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
         summary,
     };
     if let (Some(dir), Some(w)) = (&args.out, writer) {
-        w.finish()?;
-        write_impacts(&dir.join("impacts.csv"), plant.impacts())?;
-        write_raster(dir, &report, plant.impacts(), plant.params().teeth)?;
-        let path = dir.join("summary.json");
-        std::fs::write(&path, serde_json::to_string_pretty(&report)?)
-            .with_context(|| format!("writing {}", path.display()))?;
+        let mut files = vec![w.finish()?];
+        files.push(write_impacts(&dir.join("impacts.csv"), plant.impacts())?);
+        files.extend(write_raster(
+            dir,
+            &report,
+            plant.impacts(),
+            plant.params().teeth,
+        )?);
+        let summary = serde_json::to_string_pretty(&report)?;
+        files.push(PartialFile::write_whole(
+            &dir.join("summary.json"),
+            summary,
+        )?);
+        let details = serde_json::json!({
+            "preset": args.rig.preset, "set": args.rig.overrides, "rpm": args.rpm,
+            "load_nm": args.load, "settle_s": args.settle, "duration_s": args.duration,
+            "rate_hz": args.rate,
+        });
+        write_command_manifest(dir, "simulate", &files, details)?;
+        let bytes = std::fs::metadata(&files[0]).map_or(0, |m| m.len());
+        eprintln!(
+            "testrig: {} files and manifest.json in {}; signals.csv holds {:.1} MB ({} columns at {} Hz: --rate sets it)",
+            files.len(),
+            dir.display(),
+            bytes as f64 / 1e6,
+            COLUMN_NAMES.len(),
+            args.rate
+        );
     }
     if args.json {
         println!("{}", serde_json::to_string(&report)?);
@@ -127,26 +151,22 @@ fn print_text(r: &Report) {
 /// Streams the true signals to `signals.csv`, under a temporary name until finished.
 struct SignalWriter {
     csv: csv::Writer<BufWriter<File>>,
-    partial: PathBuf,
-    path: PathBuf,
+    file: PartialFile,
 }
 
 impl SignalWriter {
-    fn create(dir: &Path) -> anyhow::Result<Self> {
+    /// Prepares `dir` as simulate's output folder (an earlier simulate's files removed;
+    /// another run's refused unless `replace`; a journal of finished files started) and
+    /// opens `signals.csv` in it.
+    fn create(dir: &Path, replace: bool) -> anyhow::Result<Self> {
         std::fs::create_dir_all(dir)
             .with_context(|| format!("--out {}: cannot create the folder", dir.display()))?;
-        let path = dir.join("signals.csv");
-        let partial = dir.join("signals.csv.partial");
-        let file = File::create(&partial).with_context(|| {
-            format!(
-                "--out {}: cannot write {}",
-                dir.display(),
-                partial.display()
-            )
-        })?;
-        let mut csv = csv::Writer::from_writer(BufWriter::new(file));
+        clear_previous_run(dir, "simulate", replace)?;
+        start_journal(dir, "simulate")?;
+        let file = PartialFile::new(&dir.join("signals.csv"));
+        let mut csv = csv::Writer::from_writer(file.create()?);
         csv.write_record(COLUMN_NAMES)?;
-        Ok(Self { csv, partial, path })
+        Ok(Self { csv, file })
     }
 
     fn write(&mut self, block: &SignalBlock) -> anyhow::Result<()> {
@@ -158,16 +178,22 @@ impl SignalWriter {
         Ok(())
     }
 
-    fn finish(mut self) -> anyhow::Result<()> {
+    fn finish(mut self) -> anyhow::Result<PathBuf> {
         self.csv.flush().context("writing signals.csv")?;
-        std::fs::rename(&self.partial, &self.path).context("closing signals.csv")?;
-        Ok(())
+        drop(self.csv);
+        self.file.commit()
     }
 }
 
 /// The impact raster of the measuring window (at most its first [`RASTER_REVOLUTIONS`]
-/// revolutions, so that the pattern stays legible): `impact-raster.png` and `.svg`.
-fn write_raster(dir: &Path, report: &Report, impacts: &[Impact], teeth: u32) -> anyhow::Result<()> {
+/// revolutions, so that the pattern stays legible; the title says how many of how many):
+/// `impact-raster.png` and `.svg`.
+fn write_raster(
+    dir: &Path,
+    report: &Report,
+    impacts: &[Impact],
+    teeth: u32,
+) -> anyhow::Result<Vec<PathBuf>> {
     let running_hz = report.rpm / 60.0;
     let start_s = report.settle_s;
     let points: Vec<RasterImpact> = impacts
@@ -179,28 +205,35 @@ fn write_raster(dir: &Path, report: &Report, impacts: &[Impact], teeth: u32) -> 
         })
         .filter(|p| (0.0..RASTER_REVOLUTIONS).contains(&p.revolution))
         .collect();
+    let revolutions = report.summary.revolutions;
+    let shown = if revolutions as f64 > RASTER_REVOLUTIONS {
+        format!("first {RASTER_REVOLUTIONS} of {revolutions} revolutions")
+    } else {
+        format!("{revolutions} revolutions")
+    };
     let title = format!(
-        "impacts by tooth: {} rev/min, {} N m, {}",
+        "impacts by tooth, {shown}: {} rev/min, {} N m, {}",
         report.rpm, report.load_nm, report.summary.motion.motion
     );
-    write_impact_raster(&dir.join("impact-raster"), &title, teeth, &points)?;
-    Ok(())
+    write_impact_raster(&dir.join("impact-raster"), &title, teeth, &points)
 }
 
 /// Revolutions the impact raster shows.
 const RASTER_REVOLUTIONS: f64 = 40.0;
 
-fn write_impacts(path: &Path, impacts: &[Impact]) -> anyhow::Result<()> {
+fn write_impacts(path: &Path, impacts: &[Impact]) -> anyhow::Result<PathBuf> {
     // The header is written here, so that a window without impacts still has one;
     // `serialize` would write another before the first row.
+    let file = PartialFile::new(path);
     let mut csv = csv::WriterBuilder::new()
         .has_headers(false)
-        .from_path(path)
-        .with_context(|| format!("writing {}", path.display()))?;
+        .from_writer(file.create()?);
     csv.write_record(["time_s", "flank", "tooth", "closing_speed_rad_s"])?;
     for i in impacts {
         csv.serialize(i)?;
     }
-    csv.flush()?;
-    Ok(())
+    csv.flush()
+        .with_context(|| format!("writing {}", path.display()))?;
+    drop(csv);
+    file.commit()
 }

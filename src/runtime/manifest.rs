@@ -105,6 +105,29 @@ pub fn write_manifest(
     end_journal(dir)
 }
 
+/// Writes `dir/manifest.json` for a command other than `run` that wrote `files` into
+/// `dir` (`simulate`): named `command` in the field the output-folder guard reads as the
+/// run's scenario, with `details` beside the file list; ends the folder's journal.
+pub fn write_command_manifest(
+    dir: &Path,
+    command: &str,
+    files: &[std::path::PathBuf],
+    details: Value,
+) -> anyhow::Result<()> {
+    let mut names: Vec<String> = files.iter().map(|f| relative(dir, f)).collect();
+    names.push("manifest.json".into());
+    names.sort();
+    let manifest = json!({
+        "scenario": command,
+        "version": env!("CARGO_PKG_VERSION"),
+        "files": names,
+        "details": details,
+    });
+    let text = serde_json::to_string_pretty(&manifest).context("manifest.json")?;
+    PartialFile::write_whole(&dir.join("manifest.json"), text)?;
+    end_journal(dir)
+}
+
 fn relative(dir: &Path, file: &Path) -> String {
     file.strip_prefix(dir).unwrap_or(file).display().to_string()
 }

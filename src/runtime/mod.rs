@@ -16,7 +16,7 @@ pub(crate) mod threaded_run;
 pub(crate) mod wiring;
 
 pub use folder_run::{FolderRun, run_into_folder, run_into_folder_with_status};
-pub use manifest::{Ending, write_manifest};
+pub use manifest::{Ending, write_command_manifest, write_manifest};
 pub use pacing::{LatenessHistogram, Pace};
 pub use previous_run::clear_previous_run;
 pub use status::{LatestBlock, SharedStatus, Status};

@@ -126,8 +126,18 @@ impl ScenarioSource {
             return anyhow!("{}: {field}: {message}", self.path.display());
         }
         if let Some(item) = self.set_item_at(span.start) {
+            let message = message.to_string();
+            // An unknown key may have been meant as a rig parameter: list those too.
+            let hint = if message.starts_with("unknown field") {
+                format!(
+                    "; or a rig parameter by its bare name (as `testrig params` lists them): {}",
+                    rig_parameter_names().join(", ")
+                )
+            } else {
+                String::new()
+            };
             return anyhow!(
-                "--set {item} (on {}): {field}: {message}",
+                "--set {item} (on {}): {field}: {message}{hint}",
                 self.path.display()
             );
         }
@@ -169,4 +179,13 @@ impl ScenarioSource {
             None => line.trim().to_string(),
         }
     }
+}
+
+/// Every rig parameter a bare `--set NAME=VALUE` reaches: stored, then derived.
+fn rig_parameter_names() -> Vec<&'static str> {
+    rig::PARAM_SPECS
+        .iter()
+        .chain(rig::DERIVED_SPECS)
+        .map(|s| s.name)
+        .collect()
 }

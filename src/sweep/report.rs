@@ -16,6 +16,9 @@ use super::thesis::{
 };
 use crate::recording::PartialFile;
 
+/// The share of decided points (%) the thesis asks a preset to match, for both scores.
+const TARGET_PERCENT: u32 = 90;
+
 /// The thesis, as the report cites it.
 const THESIS: &str = "F. Basmaji, Dynamic response of geared system with backlash, PhD thesis, The City University, London, 1983";
 
@@ -37,7 +40,7 @@ pub fn write_report(
         "no points finished yet".to_string()
     } else {
         format!(
-            "**{hits} of {total} = {:.0} %** (target 95 %)",
+            "**{hits} of {total} = {:.0} %** (target {TARGET_PERCENT} %)",
             100.0 * hits as f64 / total as f64
         )
     };
@@ -87,14 +90,15 @@ fn physics(md: &mut String, cases: &[CaseResult]) {
         };
         let _ = writeln!(
             md,
-            "- {direction}: **{hits} of {total} decided points ({share:.0} %)** move as the thesis saw (target 90 %)."
+            "- {direction}: **{hits} of {total} decided points ({share:.0} %)** move as the thesis saw (target {TARGET_PERCENT} %)."
         );
     }
     hysteresis(md, cases);
     motor_holding(md, cases);
     let _ = writeln!(
         md,
-        "\nEach cell: the judged motion, the half-order height over the floor (dB), the 0-1 test's K; ✓ where it is the thesis's motion, ✗ where not, blank where the thesis decides nothing.\n"
+        "\nEach cell: the judged motion, the half-order height over the floor (dB; \"≥ {MAX:.0} dB\" where the floor is rounding noise, the judge's cap), the 0-1 test's K; ✓ where it is the thesis's motion, ✗ where not, blank where the thesis decides nothing.\n",
+        MAX = rig::judge::MAX_HEIGHT_DB
     );
     motion_table(md, cases);
 }
@@ -224,16 +228,23 @@ fn speed_table(
     }
 }
 
+/// A line's height over the broadband floor (dB), as "≥ 150 dB" at the judge's cap: there
+/// the floor is rounding noise, and no larger number would mean more.
+fn height_over_floor(height_db: f64) -> String {
+    if height_db >= rig::judge::MAX_HEIGHT_DB - 0.5 {
+        format!("≥ {:.0} dB", rig::judge::MAX_HEIGHT_DB)
+    } else {
+        format!("{height_db:.0} dB")
+    }
+}
+
 fn motion_cell(c: &CaseResult) -> String {
     let mark = match thesis_motion(c.rpm, c.load_nm) {
         None => "",
         Some(_) if physics_match(c) => " ✓",
         Some(_) => " ✗",
     };
-    let height = c
-        .motion
-        .half_order_db
-        .map_or("–".into(), |h| format!("{h:.0} dB"));
+    let height = c.motion.half_order_db.map_or("–".into(), height_over_floor);
     let k = c.motion.chaos_k.map_or("–".into(), |k| format!("{k:.2}"));
     format!("{}, {height}, K {k}{mark}", c.motion.motion)
 }

@@ -5,7 +5,7 @@ Starts `testrig panel`, opens the page, moves the speed to 1300 rev/min and the 
 2.712 N m with the page's own controls, sees the tacho DVM follow, starts an average and
 reads the half-order line with the marker; keeps screenshots. Run by .ci/run:
 
-    python3 tests/browser/panel_browser.py --binary target/debug/testrig --shots target/panel-screenshots
+    python3 tests/browser/panel_browser.py --binary target/release/testrig --shots target/panel-screenshots
 """
 
 import argparse
@@ -44,7 +44,7 @@ def wait_until(what, test, limit_s=120):
 
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("--binary", default="target/debug/testrig")
+    parser.add_argument("--binary", default="target/release/testrig")
     parser.add_argument("--shots", default="target/panel-screenshots")
     args = parser.parse_args()
     shots = Path(args.shots)

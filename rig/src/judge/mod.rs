@@ -7,7 +7,7 @@ mod spread;
 mod verdict;
 mod zero_one;
 
-pub use order_lines::{OrderSpectrum, subharmonic_height_db};
+pub use order_lines::{MAX_HEIGHT_DB, OrderSpectrum, subharmonic_height_db};
 pub use spread::section_spread;
 pub use verdict::{
     CHAOS_K_MIN, JudgeInput, Judgement, LINE_FRACTION_MIN, MAX_PERIOD, Motion, REST_AC_RMS_NM,

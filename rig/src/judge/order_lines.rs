@@ -10,7 +10,7 @@ const LINE_HALF_WIDTH: usize = 2;
 /// Lines of one family closer than this many bins are not told apart from broadband.
 const MIN_LINE_SPACING_BINS: f64 = 10.0;
 /// Heights are capped here (dB): a floor this far down is rounding, not broadband motion.
-const MAX_HEIGHT_DB: f64 = 150.0;
+pub const MAX_HEIGHT_DB: f64 = 150.0;
 /// Lowest bins left out as the mean's leakage.
 const DC_BINS: usize = LINE_HALF_WIDTH + 1;
 
