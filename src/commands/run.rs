@@ -6,9 +6,7 @@ use std::process::ExitCode;
 use anyhow::{Context, bail};
 use testrig::runtime::Ending;
 use testrig::runtime::{FolderRun, Pace, RunOptions, RunResult, StopSignals, run_into_folder};
-use testrig::scenario::{
-    CommandLine, ScenarioSource, build, measurement_warnings, recording_warnings,
-};
+use testrig::scenario::{CommandLine, ScenarioSource, build, measurement_warnings};
 use testrig::vocabulary::check_simulated_s;
 
 use crate::cli::RunArgs;
@@ -36,9 +34,6 @@ pub fn run(args: &RunArgs) -> anyhow::Result<ExitCode> {
             args.scenario.display(),
             predicted.join("\n  ")
         );
-    }
-    for warning in recording_warnings(&plan) {
-        eprintln!("warning: {warning}");
     }
     for warning in &predicted {
         eprintln!("warning: {warning}");

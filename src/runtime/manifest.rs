@@ -9,7 +9,7 @@ use sha2::{Digest, Sha256};
 use super::pacing::Pace;
 use super::threaded_run::RunResult;
 use crate::recording::{PartialFile, end_journal};
-use crate::scenario::{AnalyserPlan, Plan};
+use crate::scenario::{AnalyserPlan, Plan, measurement_warnings};
 
 /// How the run ended.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -86,7 +86,7 @@ pub fn write_manifest(
         "impacts_per_rev": p.steady.impacts_per_rev,
         "torque_mean_nm": p.steady.torque_mean_nm,
         "torque_ac_rms_nm": p.steady.torque_ac_rms_nm,
-        "warnings": result.warnings(),
+        "warnings": all_warnings(plan, result),
         "files": files,
         "analyser": plan.analyser.as_ref().map(analyser_settings),
     });
@@ -126,6 +126,18 @@ pub fn write_command_manifest(
     let text = serde_json::to_string_pretty(&manifest).context("manifest.json")?;
     PartialFile::write_whole(&dir.join("manifest.json"), text)?;
     end_journal(dir)
+}
+
+/// Every warning of the run: those foreseen from the plan before it started (what `run`
+/// prints first), then those of the run itself, each once.
+fn all_warnings(plan: &Plan, result: &RunResult) -> Vec<String> {
+    let mut warnings = measurement_warnings(plan);
+    for warning in result.warnings() {
+        if !warnings.contains(&warning) {
+            warnings.push(warning);
+        }
+    }
+    warnings
 }
 
 fn relative(dir: &Path, file: &Path) -> String {

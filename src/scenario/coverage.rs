@@ -6,7 +6,6 @@
 use instruments::AnalyserSettings;
 
 use super::run_plan::Plan;
-use crate::chain::Instrument;
 
 /// Time (s) the analyser needs for its whole average: the first block and a hop
 /// for each further one.
@@ -66,35 +65,4 @@ pub fn measurement_warnings(plan: &Plan) -> Vec<String> {
         }
     }
     warnings
-}
-
-/// One warning per recorded signal that `record.decimate` can alias: every M-th sample is
-/// kept with no anti-alias filter below the kept rate's Nyquist frequency before it (only
-/// a low-pass stage with such a cut-off protects a signal).
-pub fn recording_warnings(plan: &Plan) -> Vec<String> {
-    let Some(record) = &plan.record else {
-        return Vec::new();
-    };
-    if record.decimate <= 1 {
-        return Vec::new();
-    }
-    let nyquist_hz = plan.rate_hz / record.decimate as f64 / 2.0;
-    record
-        .signals
-        .iter()
-        .filter(|name| {
-            let filtered = plan.chain.stages.producing(name).is_some_and(|stage| {
-                matches!(&stage.instrument, Instrument::LowPass(Some(spec)) if spec.cutoff_hz < nyquist_hz)
-            });
-            !filtered
-        })
-        .map(|name| {
-            format!(
-                "record.decimate = {} keeps every {}th sample of `{name}` ({} Hz) with no low-pass below {nyquist_hz} Hz before it: what it holds above {nyquist_hz} Hz aliases in the recording",
-                record.decimate,
-                record.decimate,
-                2.0 * nyquist_hz
-            )
-        })
-        .collect()
 }

@@ -16,7 +16,7 @@ pub(crate) mod source;
 pub(crate) mod values;
 
 pub use build::{CommandLine, build};
-pub use coverage::{measurement_warnings, recording_warnings};
+pub use coverage::measurement_warnings;
 pub use overrides::apply_override;
 pub use preset_file::preset_with_overrides;
 pub use run_plan::{AnalyserPlan, ChainPlan, Measure, Plan, RecordPlan, ScopePlan};

@@ -3,6 +3,7 @@
 
 use std::path::{Path, PathBuf};
 
+use instruments::{AntiAliasFilter, FilterKind, LowPassSpec};
 use rig::Impact;
 
 use super::{Sink, SinkReport};
@@ -18,10 +19,20 @@ use crate::vocabulary::choices::WavFormat;
 use crate::vocabulary::frame::{Frame, SignalNames};
 use crate::vocabulary::signal_names::STRAIN;
 
+/// Order of the Butterworth low-pass a decimated recording passes each signal through.
+const DECIMATION_FILTER_ORDER: usize = 8;
+/// Its cut-off as a share of the kept rate's Nyquist frequency (as scipy's `decimate`).
+const DECIMATION_CUTOFF_OF_NYQUIST: f64 = 0.8;
+/// Signals that are states or counts, kept sample by sample when decimating (a low-pass
+/// of a tooth number means nothing).
+const STATE_SIGNALS: [&str; 3] = ["time_s", "contact", "tooth"];
+
 /// Writes every recorded frame.
 pub struct RecorderSink {
     indices: Vec<usize>,
     decimate: u64,
+    /// Per recorded signal, the decimation's anti-alias filter (`None`: kept as sampled).
+    decimators: Vec<Option<AntiAliasFilter>>,
     writers: Vec<Box<dyn FrameWriter>>,
     impacts: CsvRecorder,
     row: Vec<f64>,
@@ -47,6 +58,7 @@ impl RecorderSink {
         let mut sink = Self {
             indices: Vec::new(),
             decimate: 1,
+            decimators: Vec::new(),
             writers: Vec::new(),
             impacts,
             row: Vec::new(),
@@ -72,6 +84,11 @@ impl RecorderSink {
             })
             .collect::<anyhow::Result<_>>()?;
         sink.decimate = record.decimate as u64;
+        sink.decimators = record
+            .signals
+            .iter()
+            .map(|name| decimation_filter(name, plan.rate_hz, record.decimate))
+            .collect::<anyhow::Result<_>>()?;
         sink.plan = Some(Box::new(plan.clone()));
         if record.from_start {
             sink.start_recording(dir)?;
@@ -123,6 +140,31 @@ impl RecorderSink {
             self.impacts.write_row(impact)?;
         }
         Ok(())
+    }
+}
+
+/// The anti-alias filter that keeps signal `name`, sampled at `rate_hz`, free of aliases
+/// when every `decimate`-th sample is kept: a Butterworth low-pass of order
+/// [`DECIMATION_FILTER_ORDER`] at [`DECIMATION_CUTOFF_OF_NYQUIST`] of the kept rate's
+/// Nyquist frequency. None without decimation and for states and counts.
+fn decimation_filter(
+    name: &str,
+    rate_hz: f64,
+    decimate: usize,
+) -> anyhow::Result<Option<AntiAliasFilter>> {
+    if decimate <= 1 || STATE_SIGNALS.contains(&name) {
+        return Ok(None);
+    }
+    let spec = decimation_spec(rate_hz, decimate);
+    Ok(Some(AntiAliasFilter::new(Some(spec), rate_hz)?))
+}
+
+/// The decimation filter's design for a stream at `rate_hz` kept every `decimate`-th sample.
+pub fn decimation_spec(rate_hz: f64, decimate: usize) -> LowPassSpec {
+    LowPassSpec {
+        kind: FilterKind::Butterworth,
+        order: DECIMATION_FILTER_ORDER,
+        cutoff_hz: DECIMATION_CUTOFF_OF_NYQUIST * rate_hz / decimate as f64 / 2.0,
     }
 }
 
@@ -228,12 +270,18 @@ impl Sink for RecorderSink {
         }
         for i in 0..frame.len() {
             let sample = frame.start_sample + i as u64;
-            if !sample.is_multiple_of(self.decimate) {
+            let keep = sample.is_multiple_of(self.decimate);
+            if self.decimators.is_empty() && !keep {
                 continue;
             }
             self.row.clear();
-            self.row
-                .extend(self.indices.iter().map(|&c| frame.channels[c][i]));
+            for (&c, filter) in self.indices.iter().zip(&mut self.decimators) {
+                let x = frame.channels[c][i];
+                self.row.push(filter.as_mut().map_or(x, |f| f.tick(x)));
+            }
+            if !keep {
+                continue;
+            }
             let time_s = sample as f64 / self.rate_hz;
             for writer in &mut self.writers {
                 writer.write_frame(time_s, &self.row)?;
@@ -256,6 +304,77 @@ impl Sink for RecorderSink {
         report
             .facts
             .push(("recording_gaps_blocks", self.gaps.into()));
+        if self.decimate > 1 {
+            let spec = decimation_spec(self.rate_hz, self.decimate as usize);
+            report.facts.push((
+                "recording_decimation",
+                format!(
+                    "every {}th sample kept after a Butterworth low-pass of order {} at {} Hz (states and counts kept as sampled)",
+                    self.decimate, spec.order, spec.cutoff_hz
+                )
+                .into(),
+            ));
+        }
         Ok(report)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// RMS of every `decimate`-th sample of a `hz` sine at `rate_hz` through the recorder's
+    /// decimation filter, after the filter's first second.
+    fn kept_rms(hz: f64, rate_hz: f64, decimate: usize) -> f64 {
+        let mut filter = decimation_filter("torque_intermediate_shaft_nm", rate_hz, decimate)
+            .expect("designed")
+            .expect("a continuous signal is filtered");
+        let n = (3.0 * rate_hz) as usize;
+        let kept: Vec<f64> = (0..n)
+            .map(|i| filter.tick((std::f64::consts::TAU * hz * i as f64 / rate_hz).sin()))
+            .enumerate()
+            .filter(|(i, _)| i % decimate == 0 && *i as f64 >= rate_hz)
+            .map(|(_, y)| y)
+            .collect();
+        (kept.iter().map(|y| y * y).sum::<f64>() / kept.len() as f64).sqrt()
+    }
+
+    #[test]
+    fn a_decimated_recording_keeps_the_band_and_does_not_fold_what_lies_above_it() {
+        // 51.2 kHz kept every 64th sample: 800 Hz, Nyquist 400 Hz, the filter at 320 Hz.
+        let unit_sine_rms = std::f64::consts::FRAC_1_SQRT_2;
+        let passed = kept_rms(100.0, 51_200.0, 64);
+        assert!(
+            (passed / unit_sine_rms - 1.0).abs() < 0.01,
+            "100 Hz: {passed}"
+        );
+        // The gears' 650 Hz mesh line would fold to 150 Hz; the filter takes it down by
+        // (650/320)^8 ≈ 290 (8th-order Butterworth), about 49 dB.
+        let folded = kept_rms(650.0, 51_200.0, 64);
+        let expected = unit_sine_rms / (1.0 + (650.0f64 / 320.0).powi(16)).sqrt();
+        assert!(
+            (folded / expected - 1.0).abs() < 0.05,
+            "650 Hz: {folded} against {expected}"
+        );
+        assert!(folded < 0.005 * unit_sine_rms);
+    }
+
+    #[test]
+    fn states_and_counts_are_kept_as_sampled_and_no_decimation_filters_nothing() {
+        assert!(
+            decimation_filter("tooth", 51_200.0, 8)
+                .expect("ok")
+                .is_none()
+        );
+        assert!(
+            decimation_filter("contact", 51_200.0, 8)
+                .expect("ok")
+                .is_none()
+        );
+        assert!(
+            decimation_filter("filter_v", 51_200.0, 1)
+                .expect("ok")
+                .is_none()
+        );
     }
 }
