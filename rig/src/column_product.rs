@@ -12,6 +12,31 @@ pub fn product<const ROWS: usize>(
     u: &[f64; Layout::MAX_LEN],
     len: usize,
 ) -> [f64; ROWS] {
+    #[cfg(target_arch = "x86_64")]
+    if crate::fma::available() {
+        // SAFETY: the CPU has AVX2 and FMA, checked at run time.
+        return unsafe { product_v3::<ROWS>(columns, u, len) };
+    }
+    product_any::<ROWS>(columns, u, len)
+}
+
+/// [`product`] compiled for AVX2 and FMA.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+fn product_v3<const ROWS: usize>(
+    columns: &[[f64; ROWS]; Layout::MAX_LEN],
+    u: &[f64; Layout::MAX_LEN],
+    len: usize,
+) -> [f64; ROWS] {
+    product_any::<ROWS>(columns, u, len)
+}
+
+#[inline(always)]
+fn product_any<const ROWS: usize>(
+    columns: &[[f64; ROWS]; Layout::MAX_LEN],
+    u: &[f64; Layout::MAX_LEN],
+    len: usize,
+) -> [f64; ROWS] {
     match len {
         16 => product_of::<ROWS, 16>(columns, u),
         18 => product_of::<ROWS, 18>(columns, u),
@@ -47,6 +72,31 @@ fn product_of<const ROWS: usize, const N: usize>(
 /// each), the rest of the result is zero.
 #[inline]
 pub fn square_product(
+    columns: &[[f64; Layout::MAX_LEN]; Layout::MAX_LEN],
+    u: &[f64; Layout::MAX_LEN],
+    len: usize,
+) -> [f64; Layout::MAX_LEN] {
+    #[cfg(target_arch = "x86_64")]
+    if crate::fma::available() {
+        // SAFETY: the CPU has AVX2 and FMA, checked at run time.
+        return unsafe { square_product_v3(columns, u, len) };
+    }
+    square_product_any(columns, u, len)
+}
+
+/// [`square_product`] compiled for AVX2 and FMA.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+fn square_product_v3(
+    columns: &[[f64; Layout::MAX_LEN]; Layout::MAX_LEN],
+    u: &[f64; Layout::MAX_LEN],
+    len: usize,
+) -> [f64; Layout::MAX_LEN] {
+    square_product_any(columns, u, len)
+}
+
+#[inline(always)]
+fn square_product_any(
     columns: &[[f64; Layout::MAX_LEN]; Layout::MAX_LEN],
     u: &[f64; Layout::MAX_LEN],
     len: usize,

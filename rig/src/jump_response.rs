@@ -45,6 +45,23 @@ impl JumpResponse {
     /// Adds e^{A s h} Δ to the mechanical states of `out`, Δ being `jump` (rad) on the
     /// gear angles, from the series up to `order` (the Taylor order for a step of s·h).
     pub fn add_to(&self, jump: [f64; 2], s: f64, order: usize, out: &mut [f64; Layout::MAX_LEN]) {
+        #[cfg(target_arch = "x86_64")]
+        if crate::fma::available() {
+            // SAFETY: the CPU has AVX2 and FMA, checked at run time.
+            return unsafe { self.add_to_v3(jump, s, order, out) };
+        }
+        self.add_to_any(jump, s, order, out);
+    }
+
+    /// [`Self::add_to`] compiled for AVX2 and FMA.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,fma")]
+    fn add_to_v3(&self, jump: [f64; 2], s: f64, order: usize, out: &mut [f64; Layout::MAX_LEN]) {
+        self.add_to_any(jump, s, order, out);
+    }
+
+    #[inline(always)]
+    fn add_to_any(&self, jump: [f64; 2], s: f64, order: usize, out: &mut [f64; Layout::MAX_LEN]) {
         let [first, second] = &*self.series;
         let term = |k: usize, row: usize| first[k][row] * jump[0] + second[k][row] * jump[1];
         let mut sum: [f64; N_MECH] = std::array::from_fn(|row| term(order, row));

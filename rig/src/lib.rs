@@ -25,6 +25,7 @@ mod derivative;
 pub mod energy;
 pub mod error;
 mod events;
+mod fma;
 mod fused_step;
 pub mod geometry;
 pub mod judge;

@@ -113,6 +113,23 @@ impl ModeSystem {
 
     /// u(s δ) = Σ_k v_k s^k from Taylor vectors of the given order (Horner in s).
     pub fn taylor_state(&self, vectors: &TaylorVectors, order: usize, s: f64, out: &mut [f64]) {
+        #[cfg(target_arch = "x86_64")]
+        if crate::fma::available() {
+            // SAFETY: the CPU has AVX2 and FMA, checked at run time.
+            return unsafe { self.taylor_state_v3(vectors, order, s, out) };
+        }
+        self.taylor_state_any(vectors, order, s, out);
+    }
+
+    /// [`Self::taylor_state`] compiled for AVX2 and FMA.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,fma")]
+    fn taylor_state_v3(&self, vectors: &TaylorVectors, order: usize, s: f64, out: &mut [f64]) {
+        self.taylor_state_any(vectors, order, s, out);
+    }
+
+    #[inline(always)]
+    fn taylor_state_any(&self, vectors: &TaylorVectors, order: usize, s: f64, out: &mut [f64]) {
         out[..self.len].copy_from_slice(&vectors[order][..self.len]);
         for v in vectors[..order].iter().rev() {
             for (o, &vk) in out[..self.len].iter_mut().zip(&v[..self.len]) {
