@@ -97,24 +97,42 @@ fn strict_fails_a_run_that_ends_with_warnings_and_keeps_its_files() {
     std::fs::remove_dir_all(&out).ok();
 }
 
-/// Issue 24: a recording that keeps every 8th sample says which of its signals can alias
-/// (no low-pass below the kept rate's Nyquist frequency before them): the unfiltered
-/// shaft torque, not the anti-alias filter's output (cut at 180 Hz).
+/// The main job warns of nothing: its decimated recording is low-passed before every 8th
+/// sample is kept. A run that does warn (cut short before its measurements) has every
+/// warning it printed in its manifest.
 #[test]
-fn a_decimated_recording_warns_of_the_signals_that_can_alias() {
-    let out = folder("decimate-warning");
-    let output = run("subharmonic-2712nm", &out, &["--duration", "1"]);
+fn the_main_job_warns_of_nothing_and_every_printed_warning_is_in_the_manifest() {
+    let out = folder("no-warning");
+    let output = run("subharmonic-2712nm", &out, &[]);
     let stderr = String::from_utf8_lossy(&output.stderr);
     assert!(output.status.success(), "{stderr}");
-    let warned: Vec<&str> = stderr
-        .lines()
-        .filter(|l| l.contains("record.decimate = 8"))
-        .collect();
-    assert_eq!(warned.len(), 1, "{stderr}");
+    assert!(!stderr.contains("warning"), "{stderr}");
+    let manifest = read_manifest(&out);
+    assert_eq!(manifest["warnings"].as_array().map(Vec::len), Some(0));
+    let decimation = manifest["recording_decimation"].as_str().expect("stated");
     assert!(
-        warned[0].contains("`torque_intermediate_shaft_nm` (6400 Hz)")
-            && warned[0].contains("3200 Hz"),
-        "{stderr}"
+        decimation.contains("every 8th sample") && decimation.contains("2560 Hz"),
+        "{decimation}"
     );
-    std::fs::remove_dir_all(&out).ok();
+
+    let short = folder("short-warnings");
+    let output = run("subharmonic-2712nm", &short, &["--duration", "30"]);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(output.status.success(), "{stderr}");
+    let printed: Vec<&str> = stderr
+        .lines()
+        .filter_map(|l| l.strip_prefix("warning: "))
+        .collect();
+    assert!(!printed.is_empty(), "{stderr}");
+    let listed = read_manifest(&short)["warnings"].clone();
+    for warning in printed {
+        assert!(
+            listed
+                .as_array()
+                .expect("warnings")
+                .iter()
+                .any(|w| w == warning),
+            "printed but not in the manifest: {warning}"
+        );
+    }
 }

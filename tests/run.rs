@@ -92,10 +92,16 @@ fn every_shipped_scenario_runs_end_to_end_shortened() {
             "lateness_ms",
             "overruns",
             "impacts",
-            "regime",
+            "points",
             "files",
         ] {
             assert!(!manifest[key].is_null(), "{name}: manifest lacks {key}");
+        }
+        for point in manifest["points"].as_array().expect("points") {
+            assert!(
+                point["motion"]["motion"].is_string() && point["label"].is_string(),
+                "{name}: {point}"
+            );
         }
         assert_eq!(manifest["overruns"], 0, "{name}");
         assert!(
@@ -121,7 +127,16 @@ fn the_subharmonic_scenario_shows_the_half_order_line_through_the_whole_chain() 
             &[],
         ),
     );
-    assert_eq!(manifest["regime"], "period-2");
+    // One point, judged over its 6 s settled window, the same verdict in the manifest,
+    // readings.csv and the spectrum's metadata.
+    let points = manifest["points"].as_array().expect("points");
+    assert_eq!(points.len(), 1);
+    assert_eq!(points[0]["motion"]["motion"], "period-2");
+    assert!((points[0]["measured_s"].as_f64().expect("s") - 6.0).abs() < 0.05);
+    let readings = csv_rows(&out.join("readings.csv"));
+    assert_eq!(readings[0]["motion"], "period-2");
+    let text = std::fs::read_to_string(out.join("spectrum-01.csv")).expect("spectrum");
+    assert!(text.contains("# motion: period-2"), "{text}");
     let lines = spectrum(&out.join("spectrum-01.csv"));
     let half_order_hz = 1300.0 / 60.0 / 2.0;
     let at = |f: f64| {

@@ -21,8 +21,10 @@ Errors are ``TestrigError`` with the command line's message, the argument named.
 
 import csv
 import json
+import shutil
 import tempfile
 import time
+import weakref
 from pathlib import Path
 
 import numpy as np
@@ -39,19 +41,18 @@ class _Folder:
     object (when the result holding it is dropped) unless `keep`."""
 
     def __init__(self, out, prefix, keep):
-        self._temporary = None
+        self._remover = None
         if out is not None:
             self.path = Path(out)
-        elif keep:
-            self.path = Path(tempfile.mkdtemp(prefix=prefix))
-        else:
-            self._temporary = tempfile.TemporaryDirectory(prefix=prefix)
-            self.path = Path(self._temporary.name)
+            return
+        self.path = Path(tempfile.mkdtemp(prefix=prefix))
+        if not keep:
+            self._remover = weakref.finalize(self, shutil.rmtree, str(self.path), True)
 
     def remove(self):
         """Removes the folder now if it is a temporary one not kept."""
-        if self._temporary is not None:
-            self._temporary.cleanup()
+        if self._remover is not None:
+            self._remover()
 
 
 class RunResult(dict):

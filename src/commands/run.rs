@@ -59,7 +59,7 @@ pub fn run(args: &RunArgs) -> anyhow::Result<ExitCode> {
         );
     }
     let failed = ending == Ending::Failed;
-    print_summary(&plan.name, &args.out, &result, pace);
+    print_summary(&plan, &args.out, &result, pace);
     if failed {
         let all = result.failures();
         bail!(
@@ -97,18 +97,37 @@ pub fn run(args: &RunArgs) -> anyhow::Result<ExitCode> {
     Ok(ExitCode::SUCCESS)
 }
 
-fn print_summary(name: &str, out: &std::path::Path, result: &RunResult, pace: Pace) {
+fn print_summary(
+    plan: &testrig::scenario::Plan,
+    out: &std::path::Path,
+    result: &RunResult,
+    pace: Pace,
+) {
     let p = &result.plant;
     let files: usize = result.sinks.iter().map(|s| s.files.len()).sum();
     println!(
-        "{name}: {:.1} s simulated in {:.2} s wall (pace {}), regime {}, {} impacts, {} overruns",
+        "{}: {:.1} s simulated in {:.2} s wall (pace {}), {} impacts, {} overruns",
+        plan.name,
         result.simulated_s(),
         result.wall_s,
         pace.label(),
-        p.steady.regime,
         p.impacts,
         p.overruns
     );
+    let measures = plan.measurements();
+    for verdict in &p.points {
+        let motion = &verdict.summary.motion;
+        let half_order = motion.half_order_db.map_or(String::new(), |h| {
+            format!(", half order {h:.0} dB over the floor")
+        });
+        println!(
+            "  {}: {}{half_order} (judged over {:.1} s from {:.1} s)",
+            measures[verdict.index].label,
+            motion.motion,
+            verdict.summary.measured_s,
+            verdict.from_s,
+        );
+    }
     if matches!(pace, Pace::Factor(_)) {
         println!(
             "lateness p50 {:.3} ms, p99 {:.3} ms, max {:.3} ms; CPU {:.1} % of one core",

@@ -79,13 +79,7 @@ pub fn write_manifest(
         "overruns": p.overruns,
         "overrun_times_s": p.overrun_times_s,
         "impacts": p.impacts,
-        "regime": p.steady.regime,
-        "motion": p.steady.motion,
-        "regime_window_s": p.steady.measured_s,
-        "separates": p.steady.separates,
-        "impacts_per_rev": p.steady.impacts_per_rev,
-        "torque_mean_nm": p.steady.torque_mean_nm,
-        "torque_ac_rms_nm": p.steady.torque_ac_rms_nm,
+        "points": points(plan, result),
         "warnings": all_warnings(plan, result),
         "files": files,
         "analyser": plan.analyser.as_ref().map(analyser_settings),
@@ -126,6 +120,32 @@ pub fn write_command_manifest(
     let text = serde_json::to_string_pretty(&manifest).context("manifest.json")?;
     PartialFile::write_whole(&dir.join("manifest.json"), text)?;
     end_journal(dir)
+}
+
+/// Each measured point with its set points and judged motion (the window's regime,
+/// the judge's verdict and numbers, torques, impacts), in the plan's order.
+fn points(plan: &Plan, result: &RunResult) -> Vec<Value> {
+    let measures = plan.measurements();
+    result
+        .plant
+        .points
+        .iter()
+        .map(|verdict| {
+            let measure = &measures[verdict.index];
+            let mut point = json!({
+                "label": measure.label,
+                "at_s": measure.at_s,
+                "speed_set_rpm": measure.speed_rpm,
+                "load_set_nm": measure.load_nm,
+            });
+            if let (Value::Object(map), Ok(Value::Object(judged))) =
+                (&mut point, serde_json::to_value(verdict.as_ref()))
+            {
+                map.extend(judged);
+            }
+            point
+        })
+        .collect()
 }
 
 /// Every warning of the run: those foreseen from the plan before it started (what `run`

@@ -6,6 +6,7 @@ pub(crate) mod folder_run;
 pub(crate) mod manifest;
 pub(crate) mod pacing;
 pub(crate) mod plant_source;
+pub(crate) mod point_judge;
 pub(crate) mod previous_run;
 pub(crate) mod process_usage;
 pub(crate) mod rolling_regime;

@@ -5,16 +5,17 @@ use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 
 use crossbeam_channel::{Sender, TrySendError};
-use rig::{Plant, RegimeCriteria, RigParams, SetPoints, SignalBlock, SteadySummary, SteadyWindow};
+use rig::{Plant, RigParams, SetPoints, SignalBlock};
 
 use super::pacing::{LatenessHistogram, Pace, Pacer};
-use super::rolling_regime::{REGIME_WINDOW_S, RollingRegime};
+use super::point_judge::PointJudge;
+use super::rolling_regime::RollingRegime;
 use super::status::SharedStatus;
 use crate::scenario::Overflow;
 use crate::vocabulary::Refusal;
 use crate::vocabulary::frame::Frame;
 use crate::vocabulary::limits::{check_load_nm, check_load_within_motor, check_speed_rpm};
-use crate::vocabulary::{CommandInbox, Pending, RigCommand};
+use crate::vocabulary::{CommandInbox, Pending, PointVerdict, RigCommand};
 
 /// Overrun times kept (the count goes on beyond).
 const OVERRUN_TIMES_KEPT: usize = 1000;
@@ -37,6 +38,8 @@ pub struct PlantJob {
     pub status: SharedStatus,
     /// Commands: the scenario's timed ones and, live, those of scripts and pages.
     pub inbox: CommandInbox,
+    /// Times of the scenario's own measurements (s); each is a point judged on its own.
+    pub measures_s: Vec<f64>,
 }
 
 /// What the plant's thread reports.
@@ -54,8 +57,9 @@ pub struct PlantReport {
     pub overrun_times_s: Vec<f64>,
     /// Contact starts over the whole run.
     pub impacts: u64,
-    /// Summary of the last stretch (up to [`REGIME_WINDOW_S`], at most half the run).
-    pub steady: SteadySummary,
+    /// The judged motion of each measured point whose window ended (a run without
+    /// measurements is one point: its last stretch).
+    pub points: Vec<Arc<PointVerdict>>,
     /// The plant's error, if it stopped the run.
     pub error: Option<String>,
 }
@@ -63,9 +67,12 @@ pub struct PlantReport {
 /// Runs the job, sending frames to `out`; returns when done, stopped or disconnected.
 pub fn run_plant(mut job: PlantJob, out: Sender<Frame>) -> PlantReport {
     let step_s = job.plant.output_step_s();
-    let duration_s = job.total_samples as f64 * step_s;
-    let window_from_s = duration_s - REGIME_WINDOW_S.min(duration_s / 2.0);
-    let mut window = SteadyWindow::new(job.plant.params().teeth, step_s);
+    let mut judge = PointJudge::new(
+        &job.measures_s,
+        job.total_samples,
+        step_s,
+        job.plant.params().teeth,
+    );
     let pacer = match job.pace {
         Pace::Factor(f) => Some(Pacer::new(1.0 / step_s, f)),
         Pace::Max => None,
@@ -77,7 +84,7 @@ pub fn run_plant(mut job: PlantJob, out: Sender<Frame>) -> PlantReport {
         overruns: 0,
         overrun_times_s: Vec::new(),
         impacts: 0,
-        steady: window.summary(&RegimeCriteria::default()),
+        points: Vec::new(),
         error: None,
     };
     let mut block = SignalBlock::default();
@@ -106,16 +113,22 @@ pub fn run_plant(mut job: PlantJob, out: Sender<Frame>) -> PlantReport {
         report.impacts += impacts.len() as u64;
         let start_s = report.samples as f64 * step_s;
         let speed_rad_s = job.plant.set_points().speed_rad_s();
-        if start_s >= window_from_s {
-            window.add_block(&block, speed_rad_s);
-            window.add_impacts(&impacts);
-            window.add_revolutions(&revolutions);
-        }
+        let last = report.samples + n as u64 >= job.total_samples;
+        let verdicts = judge.add(
+            report.samples,
+            &block,
+            &job.plant.set_points(),
+            &impacts,
+            &revolutions,
+            last,
+        );
+        report.points.extend(verdicts.iter().cloned());
         if let Some(rolling) = rolling.as_mut() {
             rolling.add(&block, speed_rad_s, &impacts, &revolutions);
         }
         let frame = Frame::of_block(seq, report.samples, &block, impacts)
-            .with_commands(commands, job.plant.set_points());
+            .with_commands(commands, job.plant.set_points())
+            .with_points(verdicts);
         report.samples += n as u64;
         seq += 1;
         if let Some(pacer) = &pacer {
@@ -132,7 +145,6 @@ pub fn run_plant(mut job: PlantJob, out: Sender<Frame>) -> PlantReport {
             s.impacts = impacts;
         });
     }
-    report.steady = window.summary(&RegimeCriteria::default());
     report
 }
 

@@ -140,6 +140,7 @@ pub fn run_with_status(
         stop: Arc::clone(&options.stop),
         status: status.clone(),
         inbox,
+        measures_s: plan.measures.iter().map(|m| m.at_s).collect(),
     };
     let (cpu_before, _) = cpu_s_and_peak_rss_mib();
     let started = Instant::now();

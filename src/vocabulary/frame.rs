@@ -6,6 +6,7 @@ use std::sync::Arc;
 use rig::{Impact, SetPoints, SignalBlock};
 
 use crate::vocabulary::Pending;
+use crate::vocabulary::point_verdict::PointVerdict;
 
 /// One block of samples. Channels are shared (`Arc`), so a stage that adds its output
 /// copies only pointers; channel `i` is named by the run's [`SignalNames`] entry `i`.
@@ -24,6 +25,9 @@ pub struct Frame {
     pub commands: Arc<[Pending]>,
     /// The set points the block was made under (live runs and commands use them).
     pub set_points: Option<SetPoints>,
+    /// Measured points whose judged window ended before this block (or with it, on the
+    /// run's last frame): the sinks add the motion to those points' rows.
+    pub points: Arc<[Arc<PointVerdict>]>,
 }
 
 impl Frame {
@@ -37,6 +41,7 @@ impl Frame {
             impacts: Arc::new([]),
             commands: Arc::new([]),
             set_points: None,
+            points: Arc::new([]),
         }
     }
 
@@ -69,7 +74,14 @@ impl Frame {
             impacts: impacts.into(),
             commands: Arc::new([]),
             set_points: None,
+            points: Arc::new([]),
         }
+    }
+
+    /// This frame carrying the verdicts on `points`.
+    pub fn with_points(mut self, points: Vec<Arc<PointVerdict>>) -> Self {
+        self.points = points.into();
+        self
     }
 
     /// This frame carrying `commands`, made under `set_points`.
@@ -101,6 +113,7 @@ impl Frame {
             impacts: Arc::clone(&self.impacts),
             commands: Arc::clone(&self.commands),
             set_points: self.set_points,
+            points: Arc::clone(&self.points),
         }
     }
 }

@@ -10,6 +10,7 @@ pub(crate) mod control;
 pub(crate) mod display;
 pub(crate) mod frame;
 pub(crate) mod limits;
+pub(crate) mod point_verdict;
 pub(crate) mod refusal;
 pub(crate) mod seeds;
 pub(crate) mod signal_names;
@@ -23,5 +24,6 @@ pub use limits::{
     DEFAULT_LIVE_CEILING, MAX_SIMULATED_S, check_load_nm, check_load_within_motor,
     check_simulated_s, check_speed_rpm, max_load_nm,
 };
+pub use point_verdict::{PointVerdict, PointVerdicts, motion_label};
 pub use refusal::Refusal;
 pub use signal_names::FILTER_V;

@@ -3,6 +3,7 @@
 //! as a spectrum (CSV in the `testrig analyse` format, PNG and SVG, UFF58 when asked), with
 //! the ground truth of which lines are aliases.
 
+use std::collections::VecDeque;
 use std::path::{Path, PathBuf};
 
 use instruments::{Adc, AliasTruth, Analyser};
@@ -17,9 +18,8 @@ use crate::recording::{
 };
 use crate::runtime::status::SharedStatus;
 use crate::scenario::{AnalyserPlan, Measure, Plan};
-use crate::vocabulary::Refusal;
-use crate::vocabulary::RigCommand;
 use crate::vocabulary::frame::Frame;
+use crate::vocabulary::{PointVerdict, PointVerdicts, Refusal, RigCommand, motion_label};
 
 /// The analyser with its ADC and the alias truth.
 pub struct AnalyserSink {
@@ -30,6 +30,10 @@ pub struct AnalyserSink {
     filter: String,
     uff: bool,
     pub(super) measures: Vec<Measure>,
+    /// For each of `measures`, the scenario's measurement whose judged motion it takes (a
+    /// measurement restarted by a command keeps its point's; one started by a command,
+    /// and the run's start where the scenario has no measurements, are no point: `None`).
+    pub(super) points_of: Vec<Option<usize>>,
     clock: MeasureClock,
     pub(super) adc: Adc,
     pub(super) analyser: Analyser,
@@ -49,6 +53,19 @@ pub struct AnalyserSink {
     pub(super) rate_hz: f64,
     /// Averages in the display last published.
     pub(super) published: Option<usize>,
+    /// Finished spectra waiting for their point's judged motion, in order.
+    waiting: VecDeque<FinishedSpectrum>,
+    verdicts: PointVerdicts,
+}
+
+/// A finished average, ready to be written once its point's motion is judged.
+struct FinishedSpectrum {
+    base: PathBuf,
+    index: usize,
+    count: usize,
+    lines: Vec<instruments::Line>,
+    alias_of: Vec<Option<f64>>,
+    metadata: Metadata,
 }
 
 impl AnalyserSink {
@@ -79,6 +96,9 @@ impl AnalyserSink {
             filter,
             uff: plan.record.as_ref().is_some_and(|r| r.uff58),
             clock: MeasureClock::new(measures.iter().map(|m| m.at_s), plan.rate_hz),
+            points_of: (0..measures.len())
+                .map(|i| (!plan.measures.is_empty()).then_some(i))
+                .collect(),
             measures,
             adc: setup.adc,
             analyser: setup.analyser,
@@ -94,6 +114,8 @@ impl AnalyserSink {
             saved: 0,
             rate_hz: plan.rate_hz,
             published: None,
+            waiting: VecDeque::new(),
+            verdicts: PointVerdicts::default(),
         })
     }
 
@@ -149,7 +171,14 @@ impl AnalyserSink {
             return Ok(());
         }
         let base = self.dir.join(format!("spectrum-{:02}", index + 1));
-        self.write_spectrum(&base, index, count)?;
+        if self.points_of[index].is_none() {
+            // No point's verdict will come for this average: written as it ends.
+            self.write_spectrum(&base, index, count)?;
+        } else {
+            let finished = self.finish_display(base, index, count);
+            self.waiting.push_back(finished);
+            self.write_judged(false)?;
+        }
         if self.live {
             self.published = None;
             self.publish();
@@ -176,18 +205,66 @@ impl AnalyserSink {
             .quantisation_line_power(self.analyser.enbw_hz(), self.plan.settings.sample_rate_hz())
     }
 
+    /// The display of measurement `index` after `count` averages, to be written as `base`.
+    fn finish_display(&mut self, base: PathBuf, index: usize, count: usize) -> FinishedSpectrum {
+        let (lines, alias_of) = self.lines_and_truth();
+        let metadata = self.metadata(&self.measures[index], count);
+        FinishedSpectrum {
+            base,
+            index,
+            count,
+            lines,
+            alias_of,
+            metadata,
+        }
+    }
+
+    /// Writes the waiting spectra, in order, as far as their points' verdicts have come;
+    /// at the run's `end`, the rest as unjudged.
+    fn write_judged(&mut self, end: bool) -> anyhow::Result<()> {
+        while let Some(front) = self.waiting.front() {
+            let point = self.points_of[front.index];
+            let verdict = point.and_then(|p| self.verdicts.get(p)).cloned();
+            if verdict.is_none() && !end {
+                break;
+            }
+            let mut finished = self.waiting.pop_front().expect("a front");
+            finished.metadata.extend(motion_metadata(verdict.as_ref()));
+            self.write_finished(&finished, Some(motion_label(verdict.as_ref())))?;
+        }
+        Ok(())
+    }
+
     /// Writes the display as `base` (CSV, PNG, SVG, UFF58 when asked), of measurement
-    /// `index` after `count` averages.
+    /// `index` after `count` averages, at once (the panel's saved displays).
     pub(super) fn write_spectrum(
         &mut self,
         base: &Path,
         index: usize,
         count: usize,
     ) -> anyhow::Result<()> {
-        let (lines, alias_of) = self.lines_and_truth();
+        let finished = self.finish_display(base.to_path_buf(), index, count);
+        self.write_finished(&finished, None)
+    }
+
+    /// Writes `finished`, its plot titled with the point's judged `motion` where known.
+    fn write_finished(
+        &mut self,
+        finished: &FinishedSpectrum,
+        motion: Option<String>,
+    ) -> anyhow::Result<()> {
+        let FinishedSpectrum {
+            base,
+            index,
+            count,
+            lines,
+            alias_of,
+            metadata,
+        } = finished;
+        let (index, count) = (*index, *count);
         let measure = &self.measures[index];
         let csv = base.with_extension("csv");
-        write_spectrum_csv(&csv, &self.metadata(measure, count), &lines, &alias_of)?;
+        write_spectrum_csv(&csv, metadata, lines, alias_of)?;
         self.files.push(csv);
         let s = &self.plan.settings;
         // The settings in effect (after any --set), never the scenario's words for them.
@@ -195,8 +272,9 @@ impl AnalyserSink {
             "none" => "no filter",
             described => described,
         };
+        let judged = motion.map_or(String::new(), |m| format!(" ({m})"));
         let title = format!(
-            "{}: {}; {count} av., {} window, {filter}, N = {}",
+            "{}: {}{judged}; {count} av., {} window, {filter}, N = {}",
             self.scenario,
             measure.label,
             s.window.name(),
@@ -205,13 +283,13 @@ impl AnalyserSink {
         let plot = SpectrumPlot {
             title: &title,
             unit: "V",
-            lines: &lines,
-            alias_of: &alias_of,
+            lines,
+            alias_of,
             running_hz: Some(measure.speed_rpm / 60.0),
         };
         self.files.extend(write_spectrum_plots(base, &plot)?);
         if self.uff {
-            self.files.push(write_spectrum_uff(base, &title, &lines)?);
+            self.files.push(write_spectrum_uff(base, &title, lines)?);
         }
         Ok(())
     }
@@ -246,6 +324,22 @@ impl AnalyserSink {
             },
         )
     }
+}
+
+/// The point's judged motion as a spectrum's metadata lines.
+fn motion_metadata(verdict: Option<&PointVerdict>) -> Metadata {
+    let number = |v: Option<f64>| v.map_or(String::new(), |v| v.to_string());
+    let Some(v) = verdict else {
+        return vec![("motion", motion_label(None))];
+    };
+    let m = &v.summary.motion;
+    vec![
+        ("motion", m.motion.to_string()),
+        ("motion_judged_from_s", v.from_s.to_string()),
+        ("motion_judged_over_s", v.summary.measured_s.to_string()),
+        ("half_order_over_floor_db", number(m.half_order_db)),
+        ("chaos_k", number(m.chaos_k)),
+    ]
 }
 
 fn write_spectrum_uff(
@@ -283,6 +377,8 @@ impl Sink for AnalyserSink {
     }
 
     fn consume(&mut self, frame: &Frame) -> anyhow::Result<()> {
+        self.verdicts.add(&frame.points);
+        self.write_judged(false)?;
         let x = frame.channels[self.input].clone();
         let mut offset = 0;
         while let Some((at, index)) = self.clock.next_within(frame.start_sample, x.len()) {
@@ -295,6 +391,7 @@ impl Sink for AnalyserSink {
 
     fn finish(mut self: Box<Self>) -> anyhow::Result<SinkReport> {
         self.close_measurement()?;
+        self.write_judged(true)?;
         self.overloads += self.adc.overloads();
         let mut warnings = std::mem::take(&mut self.incomplete);
         warnings.extend(self.clock.unreached_warnings(&self.measures, "no spectrum"));

@@ -59,6 +59,7 @@ impl AnalyserSink {
             speed_rpm: set.speed_rpm,
             load_nm: set.load_nm,
         });
+        self.points_of.push(None);
         self.start(index).map_err(|e| Refusal::failed(&e))
     }
 
@@ -104,6 +105,7 @@ impl AnalyserSink {
         if let Some(index) = restart {
             let measure = self.measures[index].clone();
             self.measures.push(measure);
+            self.points_of.push(self.points_of[index]);
             self.start(self.measures.len() - 1)
                 .map_err(|e| Refusal::failed(&e))?;
         }

@@ -4,6 +4,7 @@
 //! readings over two or more loads are also drawn as RMS against load per speed with the
 //! static line.
 
+use std::collections::VecDeque;
 use std::path::{Path, PathBuf};
 
 use instruments::CROMPTON_PARKINSON_V_PER_RPM;
@@ -17,6 +18,7 @@ use crate::runtime::status::SharedStatus;
 use crate::scenario::{Measure, Plan};
 use crate::vocabulary::frame::{Frame, SignalNames};
 use crate::vocabulary::signal_names::{DVM_V, METER_V, SHAFT_TORQUE_NM};
+use crate::vocabulary::{PointVerdicts, motion_label};
 
 /// Length of the truth window before each reading (s).
 pub const TRUTH_WINDOW_S: f64 = 1.0;
@@ -36,6 +38,11 @@ struct Reading {
     true_torque_ac_rms_nm: f64,
     true_ac_rms_microstrain: f64,
     static_microstrain: f64,
+    /// The physics judge's motion over the point's settled window ("unjudged" where the
+    /// window did not end; empty where the scenario has no measurements of its own).
+    motion: String,
+    /// The half-order line's height over the broadband floor in that window (dB).
+    half_order_db: Option<f64>,
 }
 
 /// Channels the monitor reads.
@@ -56,6 +63,12 @@ pub struct MonitorSink {
     window: (f64, f64, usize),
     csv: CsvRecorder,
     points: Vec<SurveyPoint>,
+    /// Whether the readings are of the scenario's own measurements, each a judged point
+    /// (else the one reading at the start is no point, and is written at once).
+    judged: bool,
+    /// Readings taken whose point's verdict has not come yet, in order.
+    waiting: VecDeque<(usize, Reading)>,
+    verdicts: PointVerdicts,
     survey_plot: Option<(PathBuf, String)>,
     status: SharedStatus,
 }
@@ -90,6 +103,8 @@ impl MonitorSink {
             "true_torque_ac_rms_nm",
             "true_ac_rms_microstrain",
             "static_microstrain",
+            "motion",
+            "half_order_db",
         ]
         .map(String::from);
         Ok(Self {
@@ -109,6 +124,9 @@ impl MonitorSink {
             window: (0.0, 0.0, 0),
             csv: CsvRecorder::create(&dir.join("readings.csv"), &header)?,
             points: Vec::new(),
+            judged: !plan.measures.is_empty(),
+            waiting: VecDeque::new(),
+            verdicts: PointVerdicts::default(),
             survey_plot: plan
                 .is_survey
                 .then(|| (dir.join("rms-survey"), plan.name.clone())),
@@ -145,20 +163,44 @@ impl MonitorSink {
             true_torque_ac_rms_nm: ac_rms,
             true_ac_rms_microstrain: ac_rms * self.microstrain_per_nm,
             static_microstrain: m.load_nm * self.microstrain_per_nm,
+            motion: String::new(),
+            half_order_db: None,
         };
         self.points.push(SurveyPoint {
             speed_rpm: m.speed_rpm,
             load_nm: m.load_nm,
             rms_microstrain: reading.meter_microstrain,
         });
-        self.csv.write_row(&reading)?;
+        self.waiting.push_back((index, reading));
         self.window = (0.0, 0.0, 0);
+        self.write_judged(false)
+    }
+
+    /// Writes the waiting readings, in order, as far as their points' verdicts have come;
+    /// at the run's `end`, the rest as unjudged.
+    fn write_judged(&mut self, end: bool) -> anyhow::Result<()> {
+        while let Some((index, _)) = self.waiting.front() {
+            let verdict = self.verdicts.get(*index);
+            if self.judged && verdict.is_none() && !end {
+                break;
+            }
+            let (_, mut reading) = self.waiting.pop_front().expect("a front");
+            reading.motion = if self.judged {
+                motion_label(verdict)
+            } else {
+                String::new()
+            };
+            reading.half_order_db = verdict.and_then(|v| v.summary.motion.half_order_db);
+            self.csv.write_row(&reading)?;
+        }
         Ok(())
     }
 }
 
 impl Sink for MonitorSink {
     fn consume(&mut self, frame: &Frame) -> anyhow::Result<()> {
+        self.verdicts.add(&frame.points);
+        self.write_judged(false)?;
         let len = frame.len();
         let torque = frame.channels[self.inputs.torque].clone();
         let mut events: Vec<(usize, bool, usize)> = Vec::new();
@@ -193,7 +235,8 @@ impl Sink for MonitorSink {
         Ok(())
     }
 
-    fn finish(self: Box<Self>) -> anyhow::Result<SinkReport> {
+    fn finish(mut self: Box<Self>) -> anyhow::Result<SinkReport> {
+        self.write_judged(true)?;
         let mut files = vec![self.csv.finish()?];
         let mut loads: Vec<f64> = self.points.iter().map(|p| p.load_nm).collect();
         loads.sort_by(f64::total_cmp);
