@@ -428,3 +428,42 @@ fn beyond_loopback_the_api_answers_only_with_the_printed_token() {
     assert_eq!(status, 401);
     std::fs::remove_dir_all(&out).ok();
 }
+
+/// The panel judges only settled time: "settling" for 15 s after start and after each
+/// change of set points, then the judge's verdict on 10 s windows.
+#[test]
+fn the_panel_says_settling_until_the_rig_has_settled_and_judges_after() {
+    let out = folder("panel-settling");
+    let panel = Panel::start(
+        &out,
+        &[
+            "--pace",
+            "50",
+            "--set",
+            "schedule.speed_rpm=1300",
+            "--set",
+            "schedule.load_nm=2.712",
+        ],
+    );
+    let early = panel.wait_for(WAIT, |s| s["simulated_s"].as_f64().unwrap_or(0.0) > 2.0);
+    assert_eq!(early["motion"], "settling", "{early}");
+    let judged = panel.wait_for(WAIT, |s| {
+        s["motion"].as_str().is_some_and(|m| m != "settling")
+    });
+    let at_s = judged["simulated_s"].as_f64().expect("time");
+    assert!(
+        at_s >= 25.0,
+        "judged at {at_s} s, before 15 s settling + 10 s window"
+    );
+    assert_eq!(judged["motion"], "period-2", "{judged}");
+    let (status, reply) = panel.command(r#"{"cmd": "set_speed", "rpm": 900}"#);
+    assert_eq!(status, 200, "{reply}");
+    let after = panel.wait_for(WAIT, |s| {
+        s["simulated_s"].as_f64().unwrap_or(0.0) > reply["at_s"].as_f64().unwrap_or(0.0) + 1.0
+    });
+    assert_eq!(after["motion"], "settling", "{after}");
+    let (status, reply) = panel.command(r#"{"cmd": "quit"}"#);
+    assert_eq!(status, 200, "{reply}");
+    let (status, stderr) = panel.wait();
+    assert!(status.success(), "{stderr}");
+}

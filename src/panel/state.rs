@@ -38,10 +38,12 @@ pub struct PanelState {
     pub lateness_ms: f64,
     /// Contact starts so far.
     pub impacts: u64,
-    /// Regime of the last full 10 s (`period-k`, `aperiodic`), if one has passed.
+    /// Regime of the last full 10 s after settling (`period-k`, `aperiodic`), or
+    /// `settling` for the first 15 s after the set points change.
     pub regime: Option<String>,
-    /// The physics judge's motion of the last full 10 s (`period-k`, `quasi-periodic`,
-    /// `chaotic`, `at-rest`), if one has passed.
+    /// The physics judge's motion of the last full 10 s after settling (`period-k`,
+    /// `quasi-periodic`, `chaotic`, `at-rest`), or `settling` for the first 15 s after the
+    /// set points change.
     pub motion: Option<String>,
     /// Whether the recorder is writing.
     pub recording: bool,
@@ -76,8 +78,8 @@ impl PanelState {
             overruns: status.overruns,
             lateness_ms: status.lateness_s * 1e3,
             impacts: status.impacts,
-            regime: status.regime.map(|r| r.to_string()),
-            motion: status.motion.map(|m| m.to_string()),
+            regime: status.regime.clone(),
+            motion: status.motion.clone(),
             recording: status.recording,
             spectrum: status.spectrum.clone(),
             trace: status.trace.clone(),

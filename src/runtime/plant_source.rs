@@ -112,7 +112,6 @@ pub fn run_plant(mut job: PlantJob, out: Sender<Frame>) -> PlantReport {
         let revolutions = job.plant.drain_revolutions();
         report.impacts += impacts.len() as u64;
         let start_s = report.samples as f64 * step_s;
-        let speed_rad_s = job.plant.set_points().speed_rad_s();
         let last = report.samples + n as u64 >= job.total_samples;
         let verdicts = judge.add(
             report.samples,
@@ -124,7 +123,7 @@ pub fn run_plant(mut job: PlantJob, out: Sender<Frame>) -> PlantReport {
         );
         report.points.extend(verdicts.iter().cloned());
         if let Some(rolling) = rolling.as_mut() {
-            rolling.add(&block, speed_rad_s, &impacts, &revolutions);
+            rolling.add(&block, &job.plant.set_points(), &impacts, &revolutions);
         }
         let frame = Frame::of_block(seq, report.samples, &block, impacts)
             .with_commands(commands, job.plant.set_points())

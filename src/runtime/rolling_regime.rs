@@ -1,21 +1,38 @@
-//! The motion of the last stretch of a live run: a window of [`REGIME_WINDOW_S`] that is
-//! summarised and started afresh each time it fills. The regime (cheap) is taken in the
-//! plant's thread; the physics judge (a spectrum of the window) runs in a thread of its
-//! own, so that the paced thread is never held up by it.
+//! The motion of the last stretch of a live run: after each change of the set points the
+//! rig is left [`SETTLE_S`] to settle (the panel says "settling"), then windows of
+//! [`REGIME_WINDOW_S`] are summarised, each started afresh when the one before fills. The
+//! regime (cheap) is taken in the plant's thread; the physics judge (a spectrum of the
+//! window) runs in a thread of its own, so that the paced thread is never held up by it.
 
-use rig::{Impact, RegimeCriteria, RevolutionSample, SignalBlock, SteadyWindow};
+use std::sync::Arc;
+use std::sync::atomic::{AtomicU64, Ordering};
+
+use rig::{Impact, RegimeCriteria, RevolutionSample, SetPoints, SignalBlock, SteadyWindow};
 
 use super::status::SharedStatus;
 
 /// Longest stretch at the end of a run whose once-per-revolution samples decide the regime (s).
 pub const REGIME_WINDOW_S: f64 = 10.0;
 
+/// Time left to settle after the set points change before a window starts (s): the
+/// fundamental's transient (17.7 Hz, damping ratio about 0.002, time constant 4.5 s) is
+/// down to about 4 % of its start by then, and the speed loop (0.5 Hz) has settled.
+pub const SETTLE_S: f64 = 15.0;
+
+/// What the panel shows while the rig settles.
+pub const SETTLING: &str = "settling";
+
 /// The window being filled; the shared status receives each full window's verdicts.
 pub struct RollingRegime {
     window: SteadyWindow,
     teeth: u32,
     step_s: f64,
+    /// Time settled so far since the last change of set points (s), up to [`SETTLE_S`].
+    settled_s: f64,
     filled_s: f64,
+    held: Option<SetPoints>,
+    /// Counts set-point changes: a judge's thread reports only if none came since it began.
+    generation: Arc<AtomicU64>,
     status: SharedStatus,
 }
 
@@ -26,38 +43,66 @@ impl RollingRegime {
             window: SteadyWindow::new(teeth, step_s),
             teeth,
             step_s,
+            settled_s: 0.0,
             filled_s: 0.0,
+            held: None,
+            generation: Arc::new(AtomicU64::new(0)),
             status,
         }
     }
 
-    /// Adds a block made at `speed_rad_s`; when a window has just filled, its regime goes
-    /// to the status at once and its judged motion when the judge's thread is done.
+    /// Adds a block made under `set`; when a window has just filled, its regime goes to
+    /// the status at once and its judged motion when the judge's thread is done.
     pub fn add(
         &mut self,
         block: &SignalBlock,
-        speed_rad_s: f64,
+        set: &SetPoints,
         impacts: &[Impact],
         revolutions: &[RevolutionSample],
     ) {
-        self.window.add_block(block, speed_rad_s);
+        if self.held.as_ref() != Some(set) {
+            self.restart(*set);
+        }
+        let block_s = block.len() as f64 * self.step_s;
+        if self.settled_s < SETTLE_S {
+            self.settled_s += block_s;
+            return;
+        }
+        self.window.add_block(block, set.speed_rad_s());
         self.window.add_impacts(impacts);
         self.window.add_revolutions(revolutions);
-        self.filled_s += block.len() as f64 * self.step_s;
+        self.filled_s += block_s;
         if self.filled_s < REGIME_WINDOW_S {
             return;
         }
         let full = std::mem::replace(&mut self.window, SteadyWindow::new(self.teeth, self.step_s));
         self.filled_s = 0.0;
         let regime = full.regime(&RegimeCriteria::default());
-        self.status.update(|s| s.regime = Some(regime));
+        self.status.update(|s| s.regime = Some(regime.to_string()));
         let status = self.status.clone();
+        let generation = Arc::clone(&self.generation);
+        let began = generation.load(Ordering::Relaxed);
         // Without a thread the panel keeps the last motion: nothing else depends on it.
         let _ = std::thread::Builder::new()
             .name("judge".into())
             .spawn(move || {
                 let motion = full.judgement().motion;
-                status.update(|s| s.motion = Some(motion));
+                if generation.load(Ordering::Relaxed) == began {
+                    status.update(|s| s.motion = Some(motion.to_string()));
+                }
             });
+    }
+
+    /// New set points: the window so far is dropped and the rig left to settle again.
+    fn restart(&mut self, set: SetPoints) {
+        self.held = Some(set);
+        self.generation.fetch_add(1, Ordering::Relaxed);
+        self.window = SteadyWindow::new(self.teeth, self.step_s);
+        self.settled_s = 0.0;
+        self.filled_s = 0.0;
+        self.status.update(|s| {
+            s.regime = Some(SETTLING.to_string());
+            s.motion = Some(SETTLING.to_string());
+        });
     }
 }

@@ -31,10 +31,11 @@ pub struct Status {
     pub lateness_s: f64,
     /// Contact starts so far.
     pub impacts: u64,
-    /// Regime of the last full 10 s window (live runs).
-    pub regime: Option<rig::Regime>,
-    /// The physics judge's motion of the last full 10 s window (live runs).
-    pub motion: Option<rig::Motion>,
+    /// Regime of the last full 10 s window after settling, or "settling" (live runs).
+    pub regime: Option<String>,
+    /// The physics judge's motion of the last full 10 s window after settling, or
+    /// "settling" (live runs).
+    pub motion: Option<String>,
     /// The chain's settings in effect (live runs).
     pub chain: AppliedChain,
     /// The latest block of every signal (live runs).

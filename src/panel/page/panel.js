@@ -248,7 +248,7 @@ function show() {
   $("status").textContent =
     `t ${state.simulated_s.toFixed(1)} s | set ${state.speed_set_rpm} rev/min ${state.load_set_nm} N m | ` +
     `late ${state.lateness_ms.toFixed(2)} ms | overruns ${state.overruns} | ADC overloads ${state.adc_overloads} | ` +
-    `pace ${info ? info.pace : "–"} | impacts ${impactRate.toFixed(0)}/s | regime (last 10 s) ${state.regime ?? "–"}, motion ${state.motion ?? "–"}`;
+    `pace ${info ? info.pace : "–"} | impacts ${impactRate.toFixed(0)}/s | motion ${state.motion ?? "–"} (regime ${state.regime ?? "–"}; judged over 10 s once settled)`;
   drawScope();
   drawSpectrum();
 }
