@@ -289,6 +289,9 @@ pub struct AnalyseArgs {
     /// instead of the analyser's averaging: each DISPLAY is written as display-NN.csv.
     #[arg(long)]
     pub program: Option<PathBuf>,
+    /// The running speed of the recorded rig (rev/min): marks its orders on the plot.
+    #[arg(long)]
+    pub rpm: Option<f64>,
     /// Folder for spectrum.csv and spectrum.png.
     #[arg(long)]
     pub out: PathBuf,

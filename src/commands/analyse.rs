@@ -8,8 +8,8 @@ use instruments::{
 
 use crate::cli::{AnalyseArgs, FilterArg};
 use testrig::chain::{AdcChoice, AnalyserSetting, AnalyserSetup, set_up_analyser};
+use testrig::chain::{Instrument, analyse_samples, anti_aliased};
 use testrig::chain::{SpectrumFacts, spectrum_metadata};
-use testrig::chain::{analyse_samples, anti_aliased};
 use testrig::plots::{SpectrumPlot, write_spectrum_plots};
 use testrig::recording::{Metadata, write_spectrum_csv};
 use testrig::wav_input::{WavSignal, read_signal};
@@ -90,8 +90,13 @@ fn run_analyser(
         0 => String::new(),
         n => format!(" (ADC OVERLOADED on {n} samples)"),
     };
+    let filter = Instrument::LowPass(filter_spec(args.filter, args.cutoff.unwrap_or(args.fmax)));
+    let filter = match filter.describe().as_str() {
+        "none" => "no filter".to_string(),
+        described => described.to_string(),
+    };
     let title = format!(
-        "{}{}: {} averages, {} window, N = {}{overload}",
+        "{}{}: {} av., {} window, {filter}, N = {}{overload}",
         args.file
             .file_name()
             .map_or_else(|| "input".into(), |n| n.to_string_lossy()),
@@ -107,11 +112,20 @@ fn run_analyser(
             unit: &wav.unit,
             lines: &lines,
             alias_of: &alias_of,
-            running_hz: None,
+            running_hz: args.rpm.map(|rpm| rpm / 60.0),
         },
     )?;
+    let fewer = if count < args.averages {
+        let block_s = args.block as f64 * ratio / wav.rate_hz;
+        format!(
+            " (the {:.1} s analysed hold {count} blocks of {block_s:.2} s: a shorter --block or more --overlap gives more)",
+            wav.samples.len() as f64 / wav.rate_hz
+        )
+    } else {
+        String::new()
+    };
     println!(
-        "{} lines to {}; {} of {} averages; ADC range ±{} {} ({}), {} overloads",
+        "{} lines to {}; {} of {} averages{fewer}; ADC range ±{} {} ({}), {} overloads",
         lines.len(),
         args.out.display(),
         count,

@@ -77,8 +77,9 @@ pub fn axes_with_right_area<'a, DB: DrawingBackend>(
 ) -> anyhow::Result<Axes<'a, DB>> {
     let err = draw_error("axes");
     root.fill(&WHITE).map_err(&err)?;
+    let size = title_size(title, root.dim_in_pixel().0);
     ChartBuilder::on(root)
-        .caption(title, ("sans-serif", 20))
+        .caption(title, ("sans-serif", size))
         .margin(12)
         // Room for the last x label and for labels drawn at the right edge.
         .margin_right(36)
@@ -87,6 +88,13 @@ pub fn axes_with_right_area<'a, DB: DrawingBackend>(
         .right_y_label_area_size(right_px)
         .build_cartesian_2d(x, y)
         .map_err(err)
+}
+
+/// The title's type size (pt): 20, smaller for a title that would not fit `width_px`
+/// (about 0.55 em a character in DejaVu Sans), never below 11.
+fn title_size(title: &str, width_px: u32) -> f64 {
+    let chars = title.chars().count().max(1) as f64;
+    (0.95 * f64::from(width_px) / (0.55 * chars)).clamp(11.0, 20.0)
 }
 
 /// Draws the grid and the axis descriptions; `style` adjusts the grid (label counts,

@@ -4,6 +4,7 @@ use std::path::{Path, PathBuf};
 
 use plotters::coord::Shift;
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::canvas::{axes_with_right_area, draw_error, mesh, png_and_svg};
 use crate::chain::MICROSTRAIN_UNIT;
@@ -65,11 +66,28 @@ fn draw<DB: DrawingBackend>(
     if strain_axis.is_some() {
         chart
             .configure_secondary_axes()
-            .y_desc(axis_label(MICROSTRAIN_UNIT))
             .y_labels(9)
             .label_style(("sans-serif", 14))
             .draw()
             .map_err(&err)?;
+        // The right axis's name reads upwards, as the left one does (plotters would turn
+        // it to read downwards).
+        let (width_px, _) = root.dim_in_pixel();
+        let (top_px, bottom_px) = (
+            chart.backend_coord(&(0.0, 4.0 * v)).1,
+            chart.backend_coord(&(0.0, -4.0 * v)).1,
+        );
+        let style = ("sans-serif", 14)
+            .into_font()
+            .transform(FontTransform::Rotate270)
+            .into_text_style(&root)
+            .pos(Pos::new(HPos::Center, VPos::Top));
+        root.draw(&Text::new(
+            axis_label(MICROSTRAIN_UNIT),
+            (width_px as i32 - 22, (top_px + bottom_px) / 2),
+            style,
+        ))
+        .map_err(&err)?;
     }
     chart
         .draw_series(LineSeries::new(

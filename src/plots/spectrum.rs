@@ -29,6 +29,10 @@ pub fn write_spectrum_plots(base: &Path, plot: &SpectrumPlot) -> anyhow::Result<
     png_and_svg(base, |root| draw(root, plot), |root| draw(root, plot))
 }
 
+/// Width the upper-right legend takes (px): its longest entry, "orders of the running
+/// speed", in 13-pt type with the sample line and the box's margins.
+const LEGEND_WIDTH_PX: i32 = 240;
+
 /// Most order lines drawn; with more orders in band only every k-th is marked.
 const MAX_ORDER_MARKS: usize = 24;
 
@@ -118,6 +122,8 @@ fn draw_orders<DB: DrawingBackend>(
             .map(|k| (k as f64, k.to_string())),
     );
     let grey = RGBColor(150, 150, 150);
+    let plot_right_px = chart.backend_coord(&(fmax, top)).0;
+    let legend_left_px = plot_right_px - LEGEND_WIDTH_PX;
     let mut labelled = false;
     for (order, label) in orders {
         let f = order * running_hz;
@@ -136,11 +142,15 @@ fn draw_orders<DB: DrawingBackend>(
                 .legend(move |(x, y)| PathElement::new([(x, y), (x + 16, y)], grey));
             labelled = true;
         }
-        chart.draw_series(std::iter::once(Text::new(
-            label,
-            (f, top),
-            ("sans-serif", 12).into_font().color(&grey),
-        )))?;
+        // Every order keeps its line; its label only where the legend leaves room.
+        let x_px = chart.backend_coord(&(f, top)).0;
+        if x_px < legend_left_px {
+            chart.draw_series(std::iter::once(Text::new(
+                label,
+                (f, top),
+                ("sans-serif", 12).into_font().color(&grey),
+            )))?;
+        }
     }
     Ok(())
 }
