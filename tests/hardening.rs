@@ -201,27 +201,37 @@ fn a_stop_signal_ends_a_slowly_paced_run_within_a_second() {
 /// setting (panel, scenario, `analyse`) comes through one check.
 #[test]
 fn an_analyser_block_beyond_the_limit_is_refused_by_name() {
-    let settings = instruments::AnalyserSettings {
-        block: 1 << 20,
-        ..instruments::AnalyserSettings::thesis(1024, 200.0)
-    };
     let adc = testrig::chain::AdcChoice {
         bits: 12,
         range_v: 5.0,
         dither_seed: None,
     };
-    let refused = testrig::chain::set_up_analyser(settings, adc, 51_200.0);
+    let words = testrig::chain::AnalyserWords {
+        block: 1 << 20,
+        ..testrig::chain::AnalyserWords::of(
+            &instruments::AnalyserSettings::thesis(1024, 200.0),
+            adc,
+        )
+    };
+    let refused = words.set_up(51_200.0);
     let error = refused.err().expect("refused");
     assert_eq!(error.setting(), testrig::chain::AnalyserSetting::Block);
     assert!(
         error.to_string().contains("block 1048576: at most 16384"),
         "{error}"
     );
-    let largest = instruments::AnalyserSettings {
+    let largest = testrig::chain::AnalyserWords {
         block: 16_384,
-        ..settings
+        ..words
     };
-    assert!(testrig::chain::set_up_analyser(largest, adc, 51_200.0).is_ok());
+    assert!(largest.set_up(51_200.0).is_ok());
+    // The band's top is checked in the same one place, for every front end.
+    let no_band = testrig::chain::AnalyserWords {
+        fmax_hz: 0.0,
+        ..largest
+    };
+    let error = no_band.set_up(51_200.0).err().expect("refused");
+    assert_eq!(error.setting(), testrig::chain::AnalyserSetting::FmaxHz);
 }
 
 /// A full disk (here a file-size limit, `ulimit -f`, which fails writes the same way)

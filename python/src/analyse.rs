@@ -1,13 +1,13 @@
 //! `testrig.analyse`: the Fourier analyser (with its ADC, and an anti-alias filter if
 //! asked) on any numpy array, with the ground truth of which lines are aliases.
 
-use instruments::{
-    AnalyserSettings, Averaging, FilterKind, LowPassSpec, Sampling, Spectrum, Window,
-};
+use instruments::{FilterKind, Sampling, Window};
 use numpy::{IntoPyArray, PyReadonlyArray1};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use testrig::chain::{AdcChoice, AnalyserSetting, analyse_analogue, anti_aliased, set_up_analyser};
+use testrig::chain::{
+    AdcChoice, AnalyserSetting, AnalyserWords, LowPassWords, analyse_analogue, anti_aliased,
+};
 
 use crate::errors::{TestrigError, to_py};
 
@@ -38,25 +38,39 @@ pub fn analyse<'py>(
     filter_order: usize,
     cutoff_hz: Option<f64>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let settings = settings(fmax_hz, block, window, averages, overlap_pct, sampling)?;
-    let spec = filter_spec(filter, filter_order, cutoff_hz.unwrap_or(fmax_hz))?;
     let samples = signal.as_slice()?;
     if !(rate_hz.is_finite() && rate_hz > 0.0) {
         return Err(TestrigError::new_err(format!(
             "rate_hz {rate_hz}: a sample rate > 0 Hz"
         )));
     }
+    let filter = LowPassWords {
+        kind: filter_kind(filter)?,
+        order: filter_order,
+        cutoff_hz,
+    };
+    let spec = filter
+        .spec(fmax_hz, rate_hz)
+        .map_err(|e| TestrigError::new_err(format!("cutoff_hz: {e}")))?;
     let range_v = range.unwrap_or_else(|| {
         let peak = samples.iter().fold(0.0f64, |m, x| m.max(x.abs()));
         if peak > 0.0 { peak } else { 1.0 }
     });
-    let adc = AdcChoice {
-        bits,
-        range_v,
-        dither_seed: None,
+    let words = AnalyserWords {
+        fmax_hz,
+        block,
+        window: parse_window(window)?,
+        averages,
+        overlap: overlap_pct / 100.0,
+        sampling: parse_sampling(sampling)?,
+        adc: AdcChoice {
+            bits,
+            range_v,
+            dither_seed: None,
+        },
     };
     let spectrum = py.detach(|| -> anyhow::Result<_> {
-        let mut setup = set_up_analyser(settings, adc, rate_hz).map_err(|e| {
+        let setup = words.set_up(rate_hz).map_err(|e| {
             let name = match e.setting() {
                 AnalyserSetting::Block => format!("block {block}"),
                 AnalyserSetting::FmaxHz => format!("fmax_hz {fmax_hz}"),
@@ -67,7 +81,7 @@ pub fn analyse<'py>(
             anyhow::anyhow!("{name}: {e}")
         })?;
         let analogue = anti_aliased(samples, rate_hz, spec)?;
-        analyse_analogue(&mut setup, &analogue).ok_or_else(|| {
+        analyse_analogue(setup, &analogue).ok_or_else(|| {
             anyhow::anyhow!(
                 "signal: {} samples at {rate_hz} Hz are fewer than one block of {block} ADC samples",
                 samples.len()
@@ -95,63 +109,32 @@ pub fn analyse<'py>(
     Ok(out)
 }
 
-/// The analyser's settings from the arguments, each refused under its name.
-fn settings(
-    fmax_hz: f64,
-    block: usize,
-    window: &str,
-    averages: usize,
-    overlap_pct: f64,
-    sampling: &str,
-) -> PyResult<AnalyserSettings> {
-    let refuse = |text: String| Err(TestrigError::new_err(text));
-    if !(fmax_hz.is_finite() && fmax_hz > 0.0) {
-        return refuse(format!("fmax_hz {fmax_hz}: the top of the band, > 0 Hz"));
-    }
-    if !(0.0..100.0).contains(&overlap_pct) {
-        return refuse(format!(
-            "overlap_pct {overlap_pct}: a percentage in [0, 100)"
-        ));
-    }
-    let Some(window) = Window::parse(window) else {
-        return refuse(format!("window `{window}`: one of {}", Window::NAMES));
-    };
-    let sampling = match sampling {
-        "thesis" => Sampling::Thesis,
-        "2.56" | "modern" => Sampling::Modern,
-        other => return refuse(format!("sampling `{other}`: \"thesis\" or \"2.56\"")),
-    };
-    Ok(AnalyserSettings {
-        block,
-        fmax_hz,
-        sampling,
-        window,
-        spectrum: Spectrum::Power,
-        averaging: Averaging::Linear,
-        averages,
-        overlap: overlap_pct / 100.0,
+/// The window named `window`.
+fn parse_window(window: &str) -> PyResult<Window> {
+    Window::parse(window).ok_or_else(|| {
+        TestrigError::new_err(format!("window `{window}`: one of {}", Window::NAMES))
     })
 }
 
-/// The anti-alias filter asked for (`None`: none).
-fn filter_spec(
-    filter: Option<&str>,
-    order: usize,
-    cutoff_hz: f64,
-) -> PyResult<Option<LowPassSpec>> {
-    let kind = match filter {
-        None | Some("none") => return Ok(None),
-        Some("butterworth") => FilterKind::Butterworth,
-        Some("bessel") => FilterKind::Bessel,
-        Some(other) => {
-            return Err(TestrigError::new_err(format!(
-                "filter `{other}`: \"butterworth\", \"bessel\" or None"
-            )));
-        }
-    };
-    Ok(Some(LowPassSpec {
-        kind,
-        order,
-        cutoff_hz,
-    }))
+/// The sampling named `sampling`: "thesis" (fs = 2 fmax) or "2.56".
+fn parse_sampling(sampling: &str) -> PyResult<Sampling> {
+    match sampling {
+        "thesis" => Ok(Sampling::Thesis),
+        "2.56" | "modern" => Ok(Sampling::Modern),
+        other => Err(TestrigError::new_err(format!(
+            "sampling `{other}`: \"thesis\" or \"2.56\""
+        ))),
+    }
+}
+
+/// The filter family named `filter` (`None` or "none": no filter).
+fn filter_kind(filter: Option<&str>) -> PyResult<Option<FilterKind>> {
+    match filter {
+        None | Some("none") => Ok(None),
+        Some("butterworth") => Ok(Some(FilterKind::Butterworth)),
+        Some("bessel") => Ok(Some(FilterKind::Bessel)),
+        Some(other) => Err(TestrigError::new_err(format!(
+            "filter `{other}`: \"butterworth\", \"bessel\" or None"
+        ))),
+    }
 }

@@ -1,9 +1,14 @@
-//! The analyser's one way in: settings, the ADC's resolution, range and dither, and the
-//! stream rate become a checked set-up (analyser, ADC and alias truth built once, as they
-//! will run), or a typed error naming the setting at fault. The scenario reader, the live
-//! panel and `testrig analyse` all come through here.
+//! The analyser's one way in: the user's words for it (band, block, window, averages,
+//! overlap, sampling, and the ADC's resolution, range and dither) on a stream of a given
+//! rate become a checked set-up (analyser, ADC and alias truth built once, as they will
+//! run), or a typed error naming the setting at fault. The scenario reader, the live
+//! panel, the sweeps, `testrig analyse` and Python's `analyse` all come through here:
+//! each front end only parses its own words into [`AnalyserWords`].
 
-use instruments::{Adc, AdcSettings, AliasTruth, Analyser, AnalyserSettings, InstrumentError};
+use instruments::{
+    Adc, AdcSettings, AliasTruth, Analyser, AnalyserSettings, Averaging, InstrumentError, Sampling,
+    Spectrum, Window,
+};
 
 use crate::vocabulary::limits::{LimitError, check_averages, check_block};
 
@@ -26,6 +31,12 @@ pub enum AnalyserSetting {
 /// Why an analyser cannot run as asked.
 #[derive(Debug, thiserror::Error)]
 pub enum AnalyserSetupError {
+    /// The band's top is not a frequency above 0.
+    #[error("the top of the band, a frequency > 0 Hz")]
+    Band {
+        /// The band asked for (Hz).
+        fmax_hz: f64,
+    },
     /// The averages are out of range.
     #[error("{0}")]
     Averages(LimitError),
@@ -64,7 +75,9 @@ impl AnalyserSetupError {
             Self::Averages(_) => AnalyserSetting::Averages,
             Self::Overlap { .. } => AnalyserSetting::OverlapPct,
             Self::Analyser(_) | Self::Block(_) => AnalyserSetting::Block,
-            Self::AdcAboveStream { .. } | Self::Truth(_) => AnalyserSetting::FmaxHz,
+            Self::Band { .. } | Self::AdcAboveStream { .. } | Self::Truth(_) => {
+                AnalyserSetting::FmaxHz
+            }
             Self::Adc(_) => AnalyserSetting::Adc,
         }
     }
@@ -96,8 +109,68 @@ pub struct AnalyserSetup {
     pub truth: AliasTruth,
 }
 
+/// The analyser and its ADC in a user's words, before any check.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AnalyserWords {
+    /// Top of the band (Hz).
+    pub fmax_hz: f64,
+    /// Block size N (ADC samples).
+    pub block: usize,
+    /// Window.
+    pub window: Window,
+    /// Number of linear averages.
+    pub averages: usize,
+    /// Overlap of successive blocks, as a share of a block in [0, 1) (a front end that
+    /// takes per cent divides by 100 once).
+    pub overlap: f64,
+    /// How the ADC's rate follows the band.
+    pub sampling: Sampling,
+    /// The ADC.
+    pub adc: AdcChoice,
+}
+
+impl AnalyserWords {
+    /// The words of settings in effect (to change one of them and check again).
+    pub fn of(settings: &AnalyserSettings, adc: AdcChoice) -> Self {
+        Self {
+            fmax_hz: settings.fmax_hz,
+            block: settings.block,
+            window: settings.window,
+            averages: settings.averages,
+            overlap: settings.overlap,
+            sampling: settings.sampling,
+            adc,
+        }
+    }
+
+    /// The analyser's settings these words ask for: a power spectrum, linearly averaged
+    /// (the thesis's keyboard program), unchecked.
+    fn settings(&self) -> AnalyserSettings {
+        AnalyserSettings {
+            block: self.block,
+            fmax_hz: self.fmax_hz,
+            sampling: self.sampling,
+            window: self.window,
+            spectrum: Spectrum::Power,
+            averaging: Averaging::Linear,
+            averages: self.averages,
+            overlap: self.overlap,
+        }
+    }
+
+    /// Checks the words on a stream at `stream_hz` and builds what runs them.
+    pub fn set_up(&self, stream_hz: f64) -> Result<AnalyserSetup, AnalyserSetupError> {
+        if !(self.fmax_hz.is_finite() && self.fmax_hz > 0.0) {
+            return Err(AnalyserSetupError::Band {
+                fmax_hz: self.fmax_hz,
+            });
+        }
+        set_up_analyser(self.settings(), self.adc, stream_hz)
+    }
+}
+
 /// Checks `settings` and `adc` on a stream at `stream_hz` and builds what runs them.
-pub fn set_up_analyser(
+fn set_up_analyser(
     settings: AnalyserSettings,
     adc: AdcChoice,
     stream_hz: f64,

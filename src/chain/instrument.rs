@@ -6,11 +6,10 @@ use instruments::{
     InstrumentError, LowPassSpec, ShaftStrain, SlipRing, SlipRingSettings, StrainBridge, Tacho,
 };
 
-use super::microstrain::{
-    MICROSTRAIN_PER_STRAIN, MICROSTRAIN_UNIT, MicrostrainBridge, ShaftMicrostrain,
-};
+use super::microstrain::{MICROSTRAIN_PER_STRAIN, MicrostrainBridge, ShaftMicrostrain};
 use super::stage::{Stage, block_stage, slip_ring_stage};
 use super::voltmeters::{DvmSettings, MeterSettings};
+use crate::vocabulary::signal_names::MICROSTRAIN_UNIT;
 
 /// One instrument and its settings.
 #[derive(Clone, Debug)]

@@ -7,9 +7,6 @@ use instruments::{Block, ShaftStrain, StrainBridge};
 /// Microstrain in one unit of strain.
 pub const MICROSTRAIN_PER_STRAIN: f64 = 1.0e6;
 
-/// Unit of the chain's strain signal.
-pub const MICROSTRAIN_UNIT: &str = "µε";
-
 /// Shaft torque (N m) to surface strain at +45° in µε.
 #[derive(Clone, Copy, Debug)]
 pub struct ShaftMicrostrain(pub ShaftStrain);

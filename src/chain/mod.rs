@@ -7,6 +7,8 @@ pub(crate) mod analyser_setup;
 pub(crate) mod chain_stages;
 pub(crate) mod inline;
 pub(crate) mod instrument;
+pub(crate) mod low_pass_words;
+pub(crate) mod measurement;
 pub(crate) mod microstrain;
 pub(crate) mod spectrum_metadata;
 pub(crate) mod stage;
@@ -15,14 +17,14 @@ pub(crate) mod stage_plan;
 pub(crate) mod standard;
 pub(crate) mod voltmeters;
 
-pub use analysed::{AnalysedSpectrum, analyse_analogue, analyse_samples, anti_aliased};
-pub use analyser_setup::{AdcChoice, AnalyserSetting, AnalyserSetup, set_up_analyser};
+pub use analysed::{analyse_analogue, anti_aliased};
+pub use analyser_setup::{AdcChoice, AnalyserSetting, AnalyserSetup, AnalyserWords};
 pub use chain_stages::{ChainStages, WiringError};
 pub use inline::InlineChain;
 pub use instrument::Instrument;
-pub use microstrain::{
-    MICROSTRAIN_PER_STRAIN, MICROSTRAIN_UNIT, MicrostrainBridge, ShaftMicrostrain,
-};
+pub use low_pass_words::{LowPassError, LowPassWords};
+pub use measurement::{AnalysedSpectrum, Measurement, Truth};
+pub use microstrain::{MICROSTRAIN_PER_STRAIN, MicrostrainBridge, ShaftMicrostrain};
 pub use spectrum_metadata::{SpectrumFacts, spectrum_metadata};
 pub use stage::Stage;
 pub use stage_plan::{NamedStage, StagePlan};

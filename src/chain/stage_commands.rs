@@ -2,9 +2,9 @@
 //! carrier amplifier's gain. The stage is rebuilt with the new settings (its state starts
 //! afresh, as when a real filter card is switched); refused, it stays as it was.
 
-use instruments::{FilterKind, LowPassSpec};
+use instruments::FilterKind;
 
-use crate::chain::{Instrument, NamedStage};
+use crate::chain::{Instrument, LowPassWords, NamedStage};
 use crate::vocabulary::command::{RigCommand, Target};
 use crate::vocabulary::signal_names::{AMPLIFIER_V, FILTER_V};
 use crate::vocabulary::{AppliedChain, AppliedFilter, Refusal};
@@ -24,17 +24,17 @@ pub fn apply_to_stage(stage: &mut NamedStage, command: &RigCommand) -> Option<Re
             order,
             cutoff_hz,
         } => {
-            let nyquist_hz = stage.rate_hz / 2.0;
-            if !(cutoff_hz.is_finite() && *cutoff_hz > 0.0 && *cutoff_hz < nyquist_hz) {
-                return Some(Err(Refusal::Setting(format!(
-                    "cutoff_hz {cutoff_hz}: a cut-off lies in (0, {nyquist_hz}) Hz"
-                ))));
-            }
-            Instrument::LowPass(kind.kind().map(|kind| LowPassSpec {
-                kind,
+            let words = LowPassWords {
+                kind: kind.kind(),
                 order: *order,
-                cutoff_hz: *cutoff_hz,
-            }))
+                cutoff_hz: Some(*cutoff_hz),
+            };
+            match words.spec(*cutoff_hz, stage.rate_hz) {
+                Ok(spec) => Instrument::LowPass(spec),
+                Err(e) => {
+                    return Some(Err(Refusal::Setting(format!("cutoff_hz {cutoff_hz}: {e}"))));
+                }
+            }
         }
         RigCommand::SetAmplifierGain { gain } => {
             let Instrument::CarrierDemodulator(mut settings) = stage.plan.instrument.clone() else {

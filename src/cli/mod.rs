@@ -5,4 +5,4 @@ pub(crate) mod args;
 pub(crate) mod values;
 
 pub use args::*;
-pub use values::{FilterArg, TrainingHalf};
+pub use values::TrainingHalf;

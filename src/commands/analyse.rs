@@ -2,28 +2,33 @@
 //! with the ground truth of which lines are aliases.
 
 use anyhow::{Context, bail};
-use instruments::{
-    Adc, Analyser, AnalyserSettings, Averaging, KeyboardProgram, LowPassSpec, Sampling, Spectrum,
-};
+use instruments::{KeyboardProgram, LowPassSpec, Sampling};
 
-use crate::cli::{AnalyseArgs, FilterArg};
-use testrig::chain::{AdcChoice, AnalyserSetting, AnalyserSetup, set_up_analyser};
-use testrig::chain::{Instrument, analyse_samples, anti_aliased};
+use crate::cli::AnalyseArgs;
+use testrig::chain::{AdcChoice, AnalyserSetting, AnalyserSetup, AnalyserWords, LowPassWords};
+use testrig::chain::{Instrument, Measurement, Truth, anti_aliased};
 use testrig::chain::{SpectrumFacts, spectrum_metadata};
 use testrig::plots::{SpectrumPlot, write_spectrum_plots};
 use testrig::recording::{Metadata, write_spectrum_csv};
 use testrig::wav_input::{WavSignal, read_signal};
 
 pub fn run(args: &AnalyseArgs) -> anyhow::Result<()> {
-    let settings = analyser_settings(args)?;
     let wav = read_signal(&args.file, &args.channel, args.start, args.length)?;
     let range = adc_range(args.range, &wav)?;
-    let adc = AdcChoice {
-        bits: args.bits,
-        range_v: range.value,
-        dither_seed: None,
+    let words = AnalyserWords {
+        fmax_hz: args.fmax,
+        block: args.block,
+        window: args.window,
+        averages: args.averages,
+        overlap: args.overlap / 100.0,
+        sampling: Sampling::from(args.sampling),
+        adc: AdcChoice {
+            bits: args.bits,
+            range_v: range.value,
+            dither_seed: None,
+        },
     };
-    let mut setup = set_up_analyser(settings, adc, wav.rate_hz).map_err(|e| {
+    let setup = words.set_up(wav.rate_hz).map_err(|e| {
         let flag = match e.setting() {
             AnalyserSetting::Block => format!("--block {}", args.block),
             AnalyserSetting::FmaxHz => format!("--fmax {}", args.fmax),
@@ -33,34 +38,33 @@ pub fn run(args: &AnalyseArgs) -> anyhow::Result<()> {
         };
         anyhow::anyhow!("{flag}: {e}")
     })?;
-    let filter_spec = filter_spec(args.filter, args.cutoff.unwrap_or(args.fmax));
-    let analogue =
-        anti_aliased(&wav.samples, wav.rate_hz, filter_spec).context("--filter/--cutoff")?;
-    let ratio = setup.adc_settings.ratio;
-    let mut samples = Vec::with_capacity((analogue.len() as f64 / ratio) as usize + 1);
-    setup.adc.convert(&analogue, &mut samples);
+    let filter = filter_spec(args, wav.rate_hz)?;
+    let analogue = anti_aliased(&wav.samples, wav.rate_hz, filter).context("--filter/--cutoff")?;
     std::fs::create_dir_all(&args.out)
         .with_context(|| format!("--out {}: cannot create the folder", args.out.display()))?;
-    let done = match &args.program {
-        Some(program) => run_program(args, program, &settings, &samples),
-        None => run_analyser(args, &mut setup, &wav, &analogue, &samples, &range),
+    let overloads = match &args.program {
+        Some(program) => run_program(args, program, setup, &analogue)?,
+        None => run_analyser(args, setup, &wav, &analogue, filter, &range)?,
     };
-    warn_of_overloads(&setup.adc, &range, &wav.unit);
-    done
+    warn_of_overloads(overloads, &range, &wav.unit);
+    Ok(())
 }
 
-/// The averaged spectrum of the ADC samples with the alias truth: spectrum.csv and plots.
+/// The averaged spectrum of the analogue signal with the alias truth: spectrum.csv and
+/// plots; returns the ADC's overloads.
 fn run_analyser(
     args: &AnalyseArgs,
-    setup: &mut AnalyserSetup,
+    setup: AnalyserSetup,
     wav: &WavSignal,
     analogue: &[f64],
-    samples: &[f64],
+    filter: Option<LowPassSpec>,
     range: &AdcRange,
-) -> anyhow::Result<()> {
+) -> anyhow::Result<u64> {
     let settings = setup.settings;
     let ratio = setup.adc_settings.ratio;
-    let Some(spectrum) = analyse_samples(setup, analogue, samples) else {
+    let mut measurement = Measurement::new(setup, Truth::Kept);
+    measurement.push(analogue);
+    let Some(spectrum) = measurement.spectrum() else {
         bail!(
             "{} (--start {} s, --length {}): {} samples at {} Hz are fewer than one block of {} ADC samples ({:.3} s)",
             args.file.display(),
@@ -74,26 +78,16 @@ fn run_analyser(
         );
     };
     let (lines, alias_of, count) = (spectrum.lines, spectrum.alias_of, spectrum.averages);
-    let analyser = &setup.analyser;
-    let adc = &setup.adc;
-    let metadata = metadata(
-        args,
-        &settings,
-        analyser,
-        wav,
-        count,
-        adc.overloads(),
-        range,
-    );
-    write_spectrum_csv(&args.out.join("spectrum.csv"), &metadata, &lines, &alias_of)?;
-    let overload = match adc.overloads() {
-        0 => String::new(),
-        n => format!(" (ADC OVERLOADED on {n} samples)"),
-    };
-    let filter = Instrument::LowPass(filter_spec(args.filter, args.cutoff.unwrap_or(args.fmax)));
-    let filter = match filter.describe().as_str() {
+    let overloads = spectrum.adc_overloads;
+    let filter = match Instrument::LowPass(filter).describe().as_str() {
         "none" => "no filter".to_string(),
         described => described.to_string(),
+    };
+    let metadata = metadata(args, &measurement, wav, range, &filter);
+    write_spectrum_csv(&args.out.join("spectrum.csv"), &metadata, &lines, &alias_of)?;
+    let overload = match overloads {
+        0 => String::new(),
+        n => format!(" (ADC OVERLOADED on {n} samples)"),
     };
     let title = format!(
         "{}{}: {} av., {} window, {filter}, N = {}{overload}",
@@ -133,24 +127,28 @@ fn run_analyser(
         range.value,
         wav.unit,
         range.source,
-        adc.overloads()
+        overloads
     );
-    Ok(())
+    Ok(overloads)
 }
 
-/// An HP 5451C keyboard program on the ADC samples: each DISPLAY as display-NN.csv.
+/// An HP 5451C keyboard program on the ADC samples of `analogue`: each DISPLAY as
+/// display-NN.csv; returns the ADC's overloads.
 fn run_program(
     args: &AnalyseArgs,
     path: &std::path::Path,
-    settings: &AnalyserSettings,
-    samples: &[f64],
-) -> anyhow::Result<()> {
+    mut setup: AnalyserSetup,
+    analogue: &[f64],
+) -> anyhow::Result<u64> {
+    let settings = &setup.settings;
+    let mut samples = Vec::with_capacity(analogue.len() / setup.adc_settings.ratio as usize + 1);
+    setup.adc.convert(analogue, &mut samples);
     let text = std::fs::read_to_string(path)
         .with_context(|| format!("--program {}: cannot read", path.display()))?;
     let program =
         KeyboardProgram::parse(&text).with_context(|| format!("--program {}", path.display()))?;
     let displays = program
-        .run(settings, samples)
+        .run(settings, &samples)
         .with_context(|| format!("--program {}", path.display()))?;
     for (k, display) in displays.iter().enumerate() {
         let out = args.out.join(format!("display-{:02}.csv", k + 1));
@@ -168,7 +166,7 @@ fn run_program(
         displays.len(),
         args.out.display()
     );
-    Ok(())
+    Ok(setup.adc.overloads())
 }
 
 /// The ADC's ±range and where it came from.
@@ -216,61 +214,38 @@ fn one_two_five_above(peak: f64) -> f64 {
         .unwrap_or(20.0 * decade)
 }
 
-fn warn_of_overloads(adc: &Adc, range: &AdcRange, unit: &str) {
-    if adc.overloads() > 0 {
+fn warn_of_overloads(overloads: u64, range: &AdcRange, unit: &str) {
+    if overloads > 0 {
         eprintln!(
-            "warning: the ADC overloaded on {} samples at ±{} {unit} ({}): raise --range",
-            adc.overloads(),
-            range.value,
-            range.source
+            "warning: the ADC overloaded on {overloads} samples at ±{} {unit} ({}): raise --range",
+            range.value, range.source
         );
     }
 }
 
-fn analyser_settings(args: &AnalyseArgs) -> anyhow::Result<AnalyserSettings> {
-    if !(args.fmax.is_finite() && args.fmax > 0.0) {
-        bail!(
-            "--fmax {}: the top of the band, a frequency > 0 Hz",
-            args.fmax
-        );
-    }
-    if let Some(cutoff) = args.cutoff
-        && !(cutoff.is_finite() && cutoff > 0.0)
-    {
-        bail!("--cutoff {cutoff}: a frequency > 0 Hz");
-    }
-    if !(0.0..100.0).contains(&args.overlap) {
-        bail!("--overlap {}: a percentage in [0, 100)", args.overlap);
-    }
-    Ok(AnalyserSettings {
-        block: args.block,
-        fmax_hz: args.fmax,
-        sampling: Sampling::from(args.sampling),
-        window: args.window,
-        spectrum: Spectrum::Power,
-        averaging: Averaging::Linear,
-        averages: args.averages,
-        overlap: args.overlap / 100.0,
-    })
+/// The anti-alias filter `--filter`, `--cutoff` ask for (the cut-off left out follows
+/// `--fmax`) on a recording at `rate_hz`.
+fn filter_spec(args: &AnalyseArgs, rate_hz: f64) -> anyhow::Result<Option<LowPassSpec>> {
+    let words = LowPassWords {
+        kind: args.filter.kind,
+        order: args.filter.order,
+        cutoff_hz: args.cutoff,
+    };
+    words
+        .spec(args.fmax, rate_hz)
+        .map_err(|e| anyhow::anyhow!("--cutoff: {e}"))
 }
 
-fn filter_spec(filter: FilterArg, cutoff_hz: f64) -> Option<LowPassSpec> {
-    filter.kind.map(|kind| LowPassSpec {
-        kind,
-        order: filter.order,
-        cutoff_hz,
-    })
-}
-
+/// The spectrum's `# key: value` lines: the file and section analysed, then the
+/// measurement's settings and facts.
 fn metadata(
     args: &AnalyseArgs,
-    settings: &AnalyserSettings,
-    analyser: &Analyser,
+    measurement: &Measurement,
     wav: &WavSignal,
-    count: usize,
-    overloads: u64,
     range: &AdcRange,
+    filter: &str,
 ) -> Metadata {
+    let overloads = measurement.overloads();
     let section_s = wav.samples.len() as f64 / wav.rate_hz;
     let head = vec![
         ("file", args.file.display().to_string()),
@@ -290,14 +265,10 @@ fn metadata(
     spectrum_metadata(
         head,
         SpectrumFacts {
-            settings,
-            enbw_hz: analyser.enbw_hz(),
-            averages_done: count,
-            filter: format!(
-                "{} cut-off {} Hz",
-                args.filter,
-                args.cutoff.unwrap_or(args.fmax)
-            ),
+            settings: &measurement.setup.settings,
+            enbw_hz: measurement.setup.analyser.enbw_hz(),
+            averages_done: measurement.average_count(),
+            filter: filter.to_string(),
             adc: format!(
                 "{} bits over +-{} {} ({}), {overloads} overloads",
                 args.bits, range.value, wav.unit, range.source

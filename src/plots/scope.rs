@@ -7,7 +7,7 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::canvas::{axes_with_right_area, draw_error, mesh, png_and_svg};
-use crate::chain::MICROSTRAIN_UNIT;
+use crate::vocabulary::signal_names::MICROSTRAIN_UNIT;
 
 /// The scope's scales: horizontal (s per division) and vertical (the signal's unit per
 /// division), and the strain a unit of the signal stands for.

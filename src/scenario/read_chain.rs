@@ -1,8 +1,8 @@
 //! The measuring chain, the analyser and the recordings of a scenario.
 
 use instruments::{
-    AcCoupling, AnalyserSettings, Averaging, BridgeArrangement, CarrierSettings, Sampling, Scope,
-    ScopeSettings, ShaftStrain, SlipRingSettings, Slope, Spectrum, StrainBridge, SweepMode,
+    AcCoupling, BridgeArrangement, CarrierSettings, Sampling, Scope, ScopeSettings, ShaftStrain,
+    SlipRingSettings, Slope, StrainBridge, SweepMode,
 };
 use toml::Spanned;
 
@@ -12,7 +12,7 @@ use super::read_stages::{read_signal, wired_stages};
 use super::run_plan::{AnalyserPlan, ChainPlan, RecordPlan, ScopePlan};
 use super::scenario_toml::{AnalyserFile, ChainFile, RecordFile};
 use super::source::ScenarioSource;
-use crate::chain::analyser_setup::{AdcChoice, AnalyserSetting, set_up_analyser};
+use crate::chain::analyser_setup::{AdcChoice, AnalyserSetting, AnalyserWords};
 use crate::chain::{ChainStages, DvmSettings, StandardChain};
 use crate::vocabulary::choices::RecordFormatChoice;
 use crate::vocabulary::choices::WavFormat;
@@ -144,22 +144,20 @@ pub fn analyser_plan(
     seed: u64,
 ) -> anyhow::Result<AnalyserPlan> {
     let overlap_pct = file.overlap_pct.as_ref().map_or(0.0, |o| o.get_ref().0);
-    let settings = AnalyserSettings {
-        block: *file.block.get_ref(),
+    let words = AnalyserWords {
         fmax_hz: file.fmax_hz.get_ref().0,
-        sampling: Sampling::from(file.sampling),
+        block: *file.block.get_ref(),
         window: file.window.0,
-        spectrum: Spectrum::Power,
-        averaging: Averaging::Linear,
         averages: *file.averages.get_ref(),
         overlap: overlap_pct / 100.0,
+        sampling: Sampling::from(file.sampling),
+        adc: AdcChoice {
+            bits: *file.bits.get_ref(),
+            range_v: file.range_v.0,
+            dither_seed: file.dither.then_some(NoiseSource::AdcDither.seed(seed)),
+        },
     };
-    let adc = AdcChoice {
-        bits: *file.bits.get_ref(),
-        range_v: file.range_v.0,
-        dither_seed: file.dither.then_some(NoiseSource::AdcDither.seed(seed)),
-    };
-    let setup = set_up_analyser(settings, adc, rate_hz).map_err(|e| {
+    let setup = words.set_up(rate_hz).map_err(|e| {
         let (span, field) = match e.setting() {
             AnalyserSetting::Block => (file.block.span(), "analyser"),
             AnalyserSetting::FmaxHz => (file.fmax_hz.span(), "analyser.fmax_hz"),
@@ -177,7 +175,7 @@ pub fn analyser_plan(
             .input
             .as_ref()
             .map_or(FILTER_V.to_string(), |i| i.get_ref().clone()),
-        settings,
+        settings: setup.settings,
         adc: setup.adc_settings,
     })
 }

@@ -5,7 +5,7 @@ use instruments::LowPassSpec;
 
 use super::chain_toml::{DEFAULT_CUTOFF_HZ, FilterFile, MeterFile};
 use super::source::ScenarioSource;
-use crate::chain::MeterSettings;
+use crate::chain::{LowPassWords, MeterSettings};
 
 /// A low-pass filter's spec (`None`: none), written at `field`; its cut-off defaults to
 /// `band_hz` and must lie below the stream's Nyquist frequency.
@@ -16,31 +16,15 @@ pub fn filter_spec(
     rate_hz: f64,
     band_hz: Option<f64>,
 ) -> anyhow::Result<Option<LowPassSpec>> {
-    let Some(kind) = f.kind.kind() else {
-        return Ok(None);
-    };
-    let (cutoff, span, origin) = match &f.cutoff_hz {
-        Some(c) => (c.get_ref().0, c.span(), ""),
-        None => match band_hz {
-            Some(band) => (band, 0..0, " (left out: the analyser's fmax_hz)"),
-            None => (DEFAULT_CUTOFF_HZ, 0..0, " (left out: the default)"),
-        },
-    };
-    if cutoff >= rate_hz / 2.0 {
-        return Err(src.error(
-            span,
-            &format!("{field}.cutoff_hz"),
-            format!(
-                "{cutoff} Hz{origin} is at or above the analogue Nyquist rate {} Hz (half of rate_hz); a cut-off below it is allowed",
-                rate_hz / 2.0
-            ),
-        ));
-    }
-    Ok(Some(LowPassSpec {
-        kind,
+    let words = LowPassWords {
+        kind: f.kind.kind(),
         order: *f.order.get_ref(),
-        cutoff_hz: cutoff,
-    }))
+        cutoff_hz: f.cutoff_hz.as_ref().map(|c| c.get_ref().0),
+    };
+    let span = f.cutoff_hz.as_ref().map_or(0..0, |c| c.span());
+    words
+        .spec(band_hz.unwrap_or(DEFAULT_CUTOFF_HZ), rate_hz)
+        .map_err(|e| src.error(span, &format!("{field}.cutoff_hz"), e))
 }
 
 /// An RMS meter's settings.

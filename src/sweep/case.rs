@@ -1,7 +1,7 @@
 //! One case of a sweep: the plant at fixed set points, settled, then measured through the
 //! chain (one thread, stage after stage) into the analyser.
 
-use instruments::{Adc, Analyser, Line};
+use instruments::Line;
 use rig::{
     Judgement, Plant, PlantConfig, Regime, RegimeCriteria, SignalBlock, SteadySummary, SteadyWindow,
 };
@@ -10,7 +10,7 @@ use serde::{Deserialize, Serialize};
 use super::grid::{Case, SweepPlan};
 use super::lines::{OrderLine, order_line, peaks};
 use super::sequence::Direction;
-use crate::chain::InlineChain;
+use crate::chain::{AdcChoice, AnalyserWords, InlineChain, Measurement, Truth};
 use crate::runtime::rolling_regime::REGIME_WINDOW_S;
 use crate::vocabulary::frame::{Frame, SignalNames};
 use crate::vocabulary::seeds::NoiseSource;
@@ -135,12 +135,13 @@ pub fn measure_case(
     let input = names
         .index(&plan.analyser.input)
         .ok_or_else(|| anyhow::anyhow!("internal wiring: no {}", plan.analyser.input))?;
-    let mut adc_settings = plan.analyser.adc;
-    adc_settings.dither_seed = adc_settings
+    let mut adc = AdcChoice::of(&plan.analyser.adc);
+    adc.dither_seed = adc
         .dither_seed
         .map(|_| NoiseSource::AdcDither.case_seed(case.seed));
-    let mut adc = Adc::new(adc_settings)?;
-    let mut analyser = Analyser::new(plan.analyser.settings)?;
+    let setup = AnalyserWords::of(&plan.analyser.settings, adc).set_up(plan.rate_hz)?;
+    // A case reads the heights of lines, never which are aliases: no truth kept.
+    let mut measurement = Measurement::new(setup, Truth::NotKept);
     let mut window = SteadyWindow::new(case.params.teeth, plant.output_step_s());
     // The regime from the last stretch only, as `testrig simulate` and `testrig run` take it.
     let mut late = SteadyWindow::new(case.params.teeth, plant.output_step_s());
@@ -149,7 +150,6 @@ pub fn measure_case(
     let late_from =
         total - (REGIME_WINDOW_S.min(plan.measure_s / 2.0) * plan.rate_hz).round() as usize;
     let mut block = SignalBlock::default();
-    let mut adc_out = Vec::new();
     let mut done = 0;
     while done < total {
         let until = if done < lead_samples {
@@ -176,9 +176,7 @@ pub fn measure_case(
         }
         if done >= lead_samples {
             window.add_block(&block, plant.set_points().speed_rad_s());
-            adc_out.clear();
-            adc.convert(&frame.channels[input], &mut adc_out);
-            analyser.push(&adc_out);
+            measurement.push(&frame.channels[input]);
         } else {
             plant.drain_impacts();
             plant.drain_revolutions();
@@ -192,8 +190,8 @@ pub fn measure_case(
         plan,
         case,
         &summary,
-        &analyser.display(),
-        analyser.average_count(),
+        &measurement.setup.analyser.display(),
+        measurement.average_count(),
     );
     result.revolution_torque_nm = window.last_revolution_torques_nm(KEPT_REVOLUTIONS);
     Ok(result)

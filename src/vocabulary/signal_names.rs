@@ -11,6 +11,8 @@ pub const MOTOR_SPEED_RAD_S: &str = "speed1_rad_s";
 pub const SLIP_RING_SPEED_RAD_S: &str = "speed3_rad_s";
 /// Surface strain at +45° on the gauged shaft (µε).
 pub const STRAIN: &str = "strain";
+/// Unit of the chain's strain signal ([`STRAIN`]).
+pub const MICROSTRAIN_UNIT: &str = "µε";
 /// Bridge output (V).
 pub const BRIDGE_V: &str = "bridge_v";
 /// Carrier-modulated bridge output (V).

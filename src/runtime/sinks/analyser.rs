@@ -6,12 +6,11 @@
 use std::collections::VecDeque;
 use std::path::{Path, PathBuf};
 
-use instruments::{Adc, AliasTruth, Analyser};
-
 use super::measure_clock::MeasureClock;
 use super::{Sink, SinkReport};
-use crate::chain::analyser_setup::{AdcChoice, set_up_analyser};
+use crate::chain::analyser_setup::{AdcChoice, AnalyserWords};
 use crate::chain::spectrum_metadata::{SpectrumFacts, spectrum_metadata};
+use crate::chain::{Measurement, Truth};
 use crate::plots::{SpectrumPlot, write_spectrum_plots};
 use crate::recording::{
     Metadata, PartialFile, Uff58Abscissa, Uff58Record, write_spectrum_csv, write_uff58,
@@ -35,12 +34,10 @@ pub struct AnalyserSink {
     /// and the run's start where the scenario has no measurements, are no point: `None`).
     pub(super) points_of: Vec<Option<usize>>,
     clock: MeasureClock,
-    pub(super) adc: Adc,
-    pub(super) analyser: Analyser,
-    pub(super) truth: AliasTruth,
+    /// The analyser, its ADC and the alias truth at work.
+    pub(super) measurement: Measurement,
     pub(super) active: Option<usize>,
-    pub(super) analogue: Vec<f64>,
-    adc_out: Vec<f64>,
+    /// ADC overloads of the measurements before the one under way.
     pub(super) overloads: u64,
     files: Vec<PathBuf>,
     incomplete: Vec<String>,
@@ -78,11 +75,8 @@ impl AnalyserSink {
         measures: Vec<Measure>,
         status: SharedStatus,
     ) -> anyhow::Result<Self> {
-        let setup = set_up_analyser(
-            analyser.settings,
-            AdcChoice::of(&analyser.adc),
-            plan.rate_hz,
-        )?;
+        let setup = AnalyserWords::of(&analyser.settings, AdcChoice::of(&analyser.adc))
+            .set_up(plan.rate_hz)?;
         let filter = plan
             .chain
             .stages
@@ -100,12 +94,8 @@ impl AnalyserSink {
                 .map(|i| (!plan.measures.is_empty()).then_some(i))
                 .collect(),
             measures,
-            adc: setup.adc,
-            analyser: setup.analyser,
-            truth: setup.truth,
+            measurement: Measurement::new(setup, Truth::Kept),
             active: None,
-            analogue: Vec::new(),
-            adc_out: Vec::new(),
             overloads: 0,
             files: Vec::new(),
             incomplete: Vec::new(),
@@ -121,11 +111,8 @@ impl AnalyserSink {
 
     pub(super) fn start(&mut self, index: usize) -> anyhow::Result<()> {
         self.close_measurement()?;
-        self.overloads += self.adc.overloads();
-        self.adc.reset();
-        self.analyser.restart();
-        self.truth.restart();
-        self.analogue.clear();
+        self.overloads += self.measurement.overloads();
+        self.measurement.restart();
         self.active = Some(index);
         Ok(())
     }
@@ -134,12 +121,12 @@ impl AnalyserSink {
         if self.active.is_none() || analogue.is_empty() {
             return Ok(());
         }
-        self.analogue.extend_from_slice(analogue);
-        self.adc_out.clear();
-        self.adc.convert(analogue, &mut self.adc_out);
-        self.analyser.push(&self.adc_out);
-        let (n, of) = (self.analyser.average_count(), self.plan.settings.averages);
-        let overloads = self.overloads + self.adc.overloads();
+        self.measurement.push(analogue);
+        let (n, of) = (
+            self.measurement.average_count(),
+            self.plan.settings.averages,
+        );
+        let overloads = self.overloads + self.measurement.overloads();
         self.status.update(|s| {
             s.averages = (n, of);
             s.adc_overloads = overloads;
@@ -147,7 +134,7 @@ impl AnalyserSink {
         if self.live {
             self.publish();
         }
-        if self.analyser.is_complete() {
+        if self.measurement.is_complete() {
             self.close_measurement()?;
         }
         Ok(())
@@ -158,7 +145,7 @@ impl AnalyserSink {
         let Some(index) = self.active.take() else {
             return Ok(());
         };
-        let count = self.analyser.average_count();
+        let count = self.measurement.average_count();
         if count < self.plan.settings.averages {
             self.incomplete.push(format!(
                 "measurement {} ({}): spectrum of {count} of {} averages",
@@ -186,28 +173,9 @@ impl AnalyserSink {
         Ok(())
     }
 
-    /// The display's lines and, for each, the alias truth from the blocks averaged.
-    /// The truth is restarted with each average and takes only the blocks it lacks, so a
-    /// live run, which keeps it up to date block by block, does not redo it here.
-    pub(super) fn lines_and_truth(&mut self) -> (Vec<instruments::Line>, Vec<Option<f64>>) {
-        let count = self.analyser.average_count();
-        self.truth
-            .add_blocks(&self.analogue, count, self.plan.settings.hop());
-        let lines = self.analyser.display();
-        let alias_of = self.truth.flags(lines.len(), self.noise_floor_v2());
-        (lines, alias_of)
-    }
-
-    /// The chain's own noise floor per displayed line (V² rms): the ADC's quantisation
-    /// noise through the window. No line below it can be told from the converter.
-    pub(super) fn noise_floor_v2(&self) -> f64 {
-        self.adc
-            .quantisation_line_power(self.analyser.enbw_hz(), self.plan.settings.sample_rate_hz())
-    }
-
     /// The display of measurement `index` after `count` averages, to be written as `base`.
     fn finish_display(&mut self, base: PathBuf, index: usize, count: usize) -> FinishedSpectrum {
-        let (lines, alias_of) = self.lines_and_truth();
+        let (lines, alias_of) = self.measurement.lines_and_truth();
         let metadata = self.metadata(&self.measures[index], count);
         FinishedSpectrum {
             base,
@@ -311,14 +279,14 @@ impl AnalyserSink {
             head,
             SpectrumFacts {
                 settings: &self.plan.settings,
-                enbw_hz: self.analyser.enbw_hz(),
+                enbw_hz: self.measurement.setup.analyser.enbw_hz(),
                 averages_done: count,
                 filter: self.filter.clone(),
                 adc: format!(
                     "{} bits over +-{} V, {} overloads",
                     adc.bits,
                     adc.range_v,
-                    self.adc.overloads()
+                    self.measurement.overloads()
                 ),
                 unit: "V",
             },
@@ -392,7 +360,7 @@ impl Sink for AnalyserSink {
     fn finish(mut self: Box<Self>) -> anyhow::Result<SinkReport> {
         self.close_measurement()?;
         self.write_judged(true)?;
-        self.overloads += self.adc.overloads();
+        self.overloads += self.measurement.overloads();
         let mut warnings = std::mem::take(&mut self.incomplete);
         warnings.extend(self.clock.unreached_warnings(&self.measures, "no spectrum"));
         if self.overloads > 0 {

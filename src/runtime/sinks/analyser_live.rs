@@ -3,12 +3,11 @@
 
 use std::sync::Arc;
 
-use instruments::{Adc, AdcSettings, AnalyserSettings};
+use instruments::{Adc, AdcSettings};
 
 use super::analyser::AnalyserSink;
-use crate::chain::analyser_setup::{
-    AdcChoice, AnalyserSetting, AnalyserSetupError, set_up_analyser,
-};
+use crate::chain::analyser_setup::{AdcChoice, AnalyserSetting, AnalyserSetupError, AnalyserWords};
+use crate::chain::{Measurement, Truth};
 use crate::scenario::Measure;
 use crate::vocabulary::Refusal;
 use crate::vocabulary::frame::Frame;
@@ -71,8 +70,9 @@ impl AnalyserSink {
 
     /// Puts `adc` (built from `settings`) in place, its predecessor's overloads counted.
     fn replace_adc(&mut self, adc: Adc, settings: AdcSettings) {
-        self.overloads += self.adc.overloads();
-        self.adc = adc;
+        self.overloads += self.measurement.overloads();
+        self.measurement.setup.adc = adc;
+        self.measurement.setup.adc_settings = settings;
         self.plan.adc = settings;
     }
 
@@ -88,20 +88,21 @@ impl AnalyserSink {
         else {
             return Err(Refusal::NotFor("not an analyser setting".into()));
         };
-        let mut s = self.plan.settings;
-        s.fmax_hz = fmax_hz.unwrap_or(s.fmax_hz);
-        s.block = block.unwrap_or(s.block);
-        s.window = window.map_or(s.window, |w| w.0);
-        s.averages = averages.unwrap_or(s.averages);
-        s.overlap = overlap_pct.map_or(s.overlap, |pct| pct / 100.0);
-        let setup = set_up_analyser(s, AdcChoice::of(&self.plan.adc), self.rate_hz)
-            .map_err(|e| live_refusal(&e, &s))?;
+        let mut words = AnalyserWords::of(&self.plan.settings, AdcChoice::of(&self.plan.adc));
+        words.fmax_hz = fmax_hz.unwrap_or(words.fmax_hz);
+        words.block = block.unwrap_or(words.block);
+        words.window = window.map_or(words.window, |w| w.0);
+        words.averages = averages.unwrap_or(words.averages);
+        words.overlap = overlap_pct.map_or(words.overlap, |pct| pct / 100.0);
+        let setup = words
+            .set_up(self.rate_hz)
+            .map_err(|e| live_refusal(&e, &words))?;
         let restart = self.active;
         self.close_measurement().map_err(|e| Refusal::failed(&e))?;
-        self.replace_adc(setup.adc, setup.adc_settings);
-        self.analyser = setup.analyser;
-        self.truth = setup.truth;
-        self.plan.settings = s;
+        self.overloads += self.measurement.overloads();
+        self.plan.settings = setup.settings;
+        self.plan.adc = setup.adc_settings;
+        self.measurement = Measurement::new(setup, Truth::Kept);
         if let Some(index) = restart {
             let measure = self.measures[index].clone();
             self.measures.push(measure);
@@ -115,7 +116,7 @@ impl AnalyserSink {
     /// Writes the display as it stands as `saved-NN-spectrum`.
     fn save(&mut self) -> anyhow::Result<()> {
         self.saved += 1;
-        let count = self.analyser.average_count();
+        let count = self.measurement.average_count();
         let Some(index) = self.active.or(self.measures.len().checked_sub(1)) else {
             anyhow::bail!("no average has been started");
         };
@@ -125,13 +126,13 @@ impl AnalyserSink {
 
     /// Puts the display (and the truth of the blocks averaged so far) on the panel.
     pub(super) fn publish(&mut self) {
-        let count = self.analyser.average_count();
+        let count = self.measurement.average_count();
         if self.published == Some(count) {
             return;
         }
         self.published = Some(count);
         let s = self.plan.settings;
-        let (lines, flags) = self.lines_and_truth();
+        let (lines, flags) = self.measurement.lines_and_truth();
         let alias_of_hz = if count > 0 {
             flags
         } else {
@@ -143,7 +144,7 @@ impl AnalyserSink {
             .map_or(0.0, |i| self.measures[i].speed_rpm / 60.0);
         // Shown down to the chain's own noise floor, never at the −300 dB of a silent
         // stream's round-off.
-        let floor_v2 = self.noise_floor_v2();
+        let floor_v2 = self.measurement.floor();
         let spectrum = LiveSpectrum {
             frequency_hz: lines.iter().map(|l| l.frequency_hz).collect(),
             power_v2: lines.iter().map(|l| l.value.max(floor_v2)).collect(),
@@ -167,10 +168,10 @@ impl AnalyserSink {
 
 /// The panel's words for a refused analyser setting: the field and value at fault, then
 /// why.
-fn live_refusal(e: &AnalyserSetupError, s: &AnalyserSettings) -> Refusal {
+fn live_refusal(e: &AnalyserSetupError, words: &AnalyserWords) -> Refusal {
     Refusal::Setting(match e.setting() {
-        AnalyserSetting::FmaxHz => format!("fmax_hz {}: {e}", s.fmax_hz),
-        AnalyserSetting::OverlapPct => format!("overlap_pct {}: {e}", 100.0 * s.overlap),
+        AnalyserSetting::FmaxHz => format!("fmax_hz {}: {e}", words.fmax_hz),
+        AnalyserSetting::OverlapPct => format!("overlap_pct {}: {e}", 100.0 * words.overlap),
         AnalyserSetting::Averages | AnalyserSetting::Block | AnalyserSetting::Adc => e.to_string(),
     })
 }
