@@ -62,7 +62,9 @@ pub use judge::{JudgeInput, Judgement, Motion, judge};
 pub use modal::{Chain, NaturalMode, RigChains};
 pub use mode::{MeshMode, Mode, MotorMode, PairZone};
 pub use options::{ContactLaw, MeshPairs};
-pub use param_table::{DERIVED_SPECS, PARAM_SPECS, ParamSpec, param_spec, set_param};
+pub use param_table::{
+    DERIVED_SPECS, PARAM_SPECS, ParamSpec, ParamValue, param_spec, set_param, set_param_value,
+};
 pub use params::RigParams;
 pub use plant::{CHECK_EVERY, Plant, PlantConfig};
 pub use presets::{DEFAULT_PRESET, PRESET_NAMES, preset};

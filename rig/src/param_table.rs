@@ -14,7 +14,20 @@ pub struct ParamSpec {
     /// What it means and where the preset value comes from.
     pub meaning: &'static str,
     get: fn(&RigParams) -> String,
-    set: fn(&mut RigParams, &str) -> Result<(), String>,
+    set: fn(&mut RigParams, &ParamValue) -> Result<(), String>,
+}
+
+/// A parameter's value as a caller holds it, before it is checked against the
+/// parameter's type: a number, a switch, or text (a name such as `no-pull`, or a number
+/// written out, as `--set NAME=VALUE` gives it).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ParamValue<'a> {
+    /// A number (an integer parameter takes a whole one).
+    Number(f64),
+    /// On or off.
+    Switch(bool),
+    /// Text, parsed as the parameter's type.
+    Text(&'a str),
 }
 
 impl ParamSpec {
@@ -24,10 +37,19 @@ impl ParamSpec {
     }
 }
 
-/// A value type that can be read from and written to text.
+/// A value type that can be read from and written to text, or taken from a
+/// [`ParamValue`] of its own kind.
 trait ParamText: Sized {
     fn parse_text(text: &str) -> Result<Self, String>;
     fn show(&self) -> String;
+    /// The value of a number or switch (without text between); text is parsed.
+    fn from_value(value: &ParamValue) -> Result<Self, String> {
+        match value {
+            ParamValue::Text(text) => Self::parse_text(text),
+            ParamValue::Number(x) => Err(format!("{x} is not a value of this parameter")),
+            ParamValue::Switch(b) => Err(format!("{b} is not a value of this parameter")),
+        }
+    }
 }
 
 impl ParamText for f64 {
@@ -45,6 +67,14 @@ impl ParamText for f64 {
     fn show(&self) -> String {
         format!("{self}")
     }
+    fn from_value(value: &ParamValue) -> Result<Self, String> {
+        match *value {
+            ParamValue::Number(x) if x.is_finite() => Ok(x),
+            ParamValue::Number(x) => Err(format!("{x} is not a finite number")),
+            ParamValue::Switch(b) => Err(format!("{b} is not a number")),
+            ParamValue::Text(text) => Self::parse_text(text),
+        }
+    }
 }
 
 impl ParamText for u32 {
@@ -55,6 +85,18 @@ impl ParamText for u32 {
     }
     fn show(&self) -> String {
         format!("{self}")
+    }
+    fn from_value(value: &ParamValue) -> Result<Self, String> {
+        match *value {
+            ParamValue::Number(x)
+                if x.fract() == 0.0 && (0.0..=f64::from(u32::MAX)).contains(&x) =>
+            {
+                Ok(x as u32)
+            }
+            ParamValue::Number(x) => Err(format!("{x} is not a whole number ≥ 0")),
+            ParamValue::Switch(b) => Err(format!("{b} is not a whole number")),
+            ParamValue::Text(text) => Self::parse_text(text),
+        }
     }
 }
 
@@ -68,6 +110,13 @@ impl ParamText for bool {
     }
     fn show(&self) -> String {
         format!("{self}")
+    }
+    fn from_value(value: &ParamValue) -> Result<Self, String> {
+        match *value {
+            ParamValue::Switch(b) => Ok(b),
+            ParamValue::Number(x) => Err(format!("{x} is not true/false")),
+            ParamValue::Text(text) => Self::parse_text(text),
+        }
     }
 }
 
@@ -98,8 +147,8 @@ macro_rules! param_specs {
                 unit: $unit,
                 meaning: $meaning,
                 get: |p| ParamText::show(&p.$field),
-                set: |p, text| {
-                    p.$field = ParamText::parse_text(text)?;
+                set: |p, value| {
+                    p.$field = ParamText::from_value(value)?;
                     Ok(())
                 },
             }, )*
@@ -156,10 +205,10 @@ pub static DERIVED_SPECS: &[ParamSpec] = &[ParamSpec {
     unit: "mm",
     meaning: "total circular backlash 2B1 at the pitch circle, > 0; sets centre_distance_shift_m (experiments: 1.0 mm)",
     get: |p| format!("{}", GearGeometry::of(p).circular_backlash_m * 1e3),
-    set: |p, text| {
-        let backlash_mm = f64::parse_text(text)?;
+    set: |p, value| {
+        let backlash_mm = f64::from_value(value)?;
         if backlash_mm <= 0.0 {
-            return Err(format!("`{text}`: a circular backlash > 0 (mm)"));
+            return Err(format!("{backlash_mm}: a circular backlash > 0 (mm)"));
         }
         p.centre_distance_shift_m = centre_distance_shift_m(p, backlash_mm * 1e-3);
         Ok(())
@@ -179,11 +228,25 @@ pub fn param_spec(name: &str) -> Result<&'static ParamSpec, RigError> {
 
 /// Sets one parameter by name from its text form, then validates the whole set.
 pub fn set_param(params: &mut RigParams, name: &str, text: &str) -> Result<(), RigError> {
+    set_param_value(params, name, ParamValue::Text(text))
+}
+
+/// Sets one parameter by name to `value` (a number, a switch or text, checked against
+/// the parameter's type), then validates the whole set.
+pub fn set_param_value(
+    params: &mut RigParams,
+    name: &str,
+    value: ParamValue,
+) -> Result<(), RigError> {
     let spec = param_spec(name)?;
     let mut changed = params.clone();
-    (spec.set)(&mut changed, text).map_err(|allowed| RigError::InvalidParameter {
+    (spec.set)(&mut changed, &value).map_err(|allowed| RigError::InvalidParameter {
         name: name.to_string(),
-        value: text.to_string(),
+        value: match value {
+            ParamValue::Number(x) => x.to_string(),
+            ParamValue::Switch(b) => b.to_string(),
+            ParamValue::Text(text) => text.to_string(),
+        },
         allowed,
     })?;
     changed.validate()?;

@@ -95,3 +95,31 @@ fn a_blow_up_is_reported_with_time_and_state() {
         other => panic!("{other}"),
     }
 }
+
+#[test]
+fn values_set_by_kind_are_checked_against_the_parameter_without_text() {
+    use rig::{ParamValue, set_param_value};
+    let mut p = preset("basmaji-1983").expect("preset");
+    set_param_value(&mut p, "teeth", ParamValue::Number(31.0)).expect("a whole number");
+    assert_eq!(p.teeth, 31);
+    assert!(set_param_value(&mut p, "teeth", ParamValue::Number(31.5)).is_err());
+    assert!(set_param_value(&mut p, "teeth", ParamValue::Switch(true)).is_err());
+    set_param_value(&mut p, "tooth_shifting", ParamValue::Switch(false)).expect("a switch");
+    assert!(!p.tooth_shifting);
+    set_param_value(&mut p, "contact_law", ParamValue::Text("no-pull")).expect("a name");
+    assert!(
+        set_param_value(
+            &mut p,
+            "k12_input_shaft_nm_per_rad",
+            ParamValue::Number(f64::NAN)
+        )
+        .is_err()
+    );
+    // A number is kept to the bit.
+    let x = 0.1 + 0.2;
+    set_param_value(&mut p, "brake_drag_nm", ParamValue::Number(x)).expect("a number");
+    assert_eq!(p.brake_drag_nm.to_bits(), x.to_bits());
+    set_param_value(&mut p, "backlash_mm", ParamValue::Number(0.73)).expect("backlash");
+    assert!((rig::GearGeometry::of(&p).circular_backlash_m - 0.73e-3).abs() < 1e-12);
+    assert!(set_param_value(&mut p, "backlash_mm", ParamValue::Number(-1.0)).is_err());
+}

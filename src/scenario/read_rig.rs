@@ -1,12 +1,13 @@
 //! The rig, the schedule and the measurements of a scenario.
 
-use rig::{DEFAULT_PRESET, RigParams, Schedule, Track};
+use rig::{DEFAULT_PRESET, ParamValue, RigParams, Schedule, Track};
 use toml::Spanned;
 
 use super::preset_file::preset_params;
 use super::run_plan::Measure;
 use super::scenario_toml::{ChangeFile, RigFile, ScenarioFile, ScheduleFile, SurveyFile};
 use super::source::ScenarioSource;
+use super::values::param_value;
 
 /// The preset with the backlash setting and every `[rig.set]` override applied.
 pub fn rig_params(src: &ScenarioSource, rig: &RigFile) -> anyhow::Result<(String, RigParams)> {
@@ -18,17 +19,16 @@ pub fn rig_params(src: &ScenarioSource, rig: &RigFile) -> anyhow::Result<(String
     let mut params =
         preset_params(&name, dir).map_err(|e| src.error(span, "rig.preset", format!("{e:#}")))?;
     if let Some(backlash) = &rig.backlash_mm {
-        let text = backlash.get_ref().0.to_string();
-        rig::set_param(&mut params, "backlash_mm", &text)
+        let value = ParamValue::Number(backlash.get_ref().0);
+        rig::set_param_value(&mut params, "backlash_mm", value)
             .map_err(|e| src.error(backlash.span(), "rig.backlash_mm", e))?;
     }
     for (key, value) in &rig.set {
-        let text = match value.get_ref() {
-            toml::Value::String(s) => s.clone(),
-            other => other.to_string(),
-        };
-        rig::set_param(&mut params, key, &text)
-            .map_err(|e| src.error(value.span(), &format!("rig.set.{key}"), e))?;
+        let field = format!("rig.set.{key}");
+        let checked =
+            param_value(value.get_ref()).map_err(|e| src.error(value.span(), &field, e))?;
+        rig::set_param_value(&mut params, key, checked)
+            .map_err(|e| src.error(value.span(), &field, e))?;
     }
     params.validate().map_err(|e| src.error(0..0, "rig", e))?;
     Ok((name, params))

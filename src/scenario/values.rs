@@ -91,3 +91,18 @@ impl TryFrom<f64> for SpeedRpm {
         check_speed_rpm(value).map(Self)
     }
 }
+
+/// A rig parameter's value as a TOML file holds it (a number, a switch or a name),
+/// handed to `rig::set_param_value` as it is, without a trip through text; arrays and
+/// tables are refused.
+pub fn param_value(value: &toml::Value) -> Result<rig::ParamValue<'_>, String> {
+    match value {
+        toml::Value::Float(x) => Ok(rig::ParamValue::Number(*x)),
+        toml::Value::Integer(n) => Ok(rig::ParamValue::Number(*n as f64)),
+        toml::Value::Boolean(b) => Ok(rig::ParamValue::Switch(*b)),
+        toml::Value::String(s) => Ok(rig::ParamValue::Text(s)),
+        other => Err(format!(
+            "{other} is not one value (a number, true/false or a name)"
+        )),
+    }
+}

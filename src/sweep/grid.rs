@@ -6,6 +6,7 @@ use crate::scenario::build::stream_rate_hz;
 use crate::scenario::read_chain::{analyser_plan, chain_plan};
 use crate::scenario::read_rig::rig_params;
 use crate::scenario::read_stages::read_signal;
+use crate::scenario::values::param_value;
 use crate::scenario::{AnalyserPlan, ChainPlan, ScenarioSource};
 use crate::vocabulary::limits::{check_load_within_motor, check_simulated_s};
 
@@ -89,11 +90,12 @@ pub fn build_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<Swe
         variants = expand(
             variants,
             grid.backlash_mm.iter().map(|b| {
-                let text = b.0.to_string();
+                let backlash_mm = b.0;
                 (
-                    text.clone(),
+                    backlash_mm.to_string(),
                     move |p: &mut RigParams| -> anyhow::Result<()> {
-                        Ok(rig::set_param(p, "backlash_mm", &text)?)
+                        let value = rig::ParamValue::Number(backlash_mm);
+                        Ok(rig::set_param_value(p, "backlash_mm", value)?)
                     },
                 )
             }),
@@ -101,22 +103,21 @@ pub fn build_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<Swe
     }
     for (name, values) in &grid.set {
         swept.push(name.clone());
-        let texts: Vec<String> = values
-            .get_ref()
-            .iter()
-            .map(|v| match v {
-                toml::Value::String(s) => s.clone(),
-                other => other.to_string(),
-            })
-            .collect();
+        let field = format!("grid.set.{name}");
         variants = expand(
             variants,
-            texts.into_iter().map(|text| {
-                let t = text.clone();
-                (text, move |p: &mut RigParams| -> anyhow::Result<()> {
-                    rig::set_param(p, name, &t)
+            values.get_ref().iter().map(|v| {
+                // The case's label: a name as written, a number or switch as TOML shows it.
+                let label = match v {
+                    toml::Value::String(s) => s.clone(),
+                    other => other.to_string(),
+                };
+                let field = field.clone();
+                (label, move |p: &mut RigParams| -> anyhow::Result<()> {
+                    let value = param_value(v).map_err(|e| src.error(values.span(), &field, e))?;
+                    rig::set_param_value(p, name, value)
                         .and_then(|()| p.validate())
-                        .map_err(|e| src.error(values.span(), &format!("grid.set.{name}"), e))
+                        .map_err(|e| src.error(values.span(), &field, e))
                 })
             }),
         )?;
