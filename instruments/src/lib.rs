@@ -6,6 +6,22 @@
 //! (Butterworth and Bessel as cascaded second-order sections); the ADC; and the
 //! analyser's windows and spectrum scalings (Heinzel, Rüdiger & Schilling 2002).
 //!
+//! Blocks. Every block implements `Block` (`reset`, `process(&input, &mut output)` without
+//! allocating, `response(hz)`, `latency`) and keeps its state across buffers. `strain.rs`
+//! (torque → ±45° strain), `bridge.rs` (full/half/quarter Wheatstone), `carrier.rs` (3C66
+//! as modulator before and synchronous demodulator after the slip rings, sharing one
+//! carrier), `slip_ring.rs` (contact resistance fluctuation and contact noise, seeded),
+//! `voltmeter.rs` (HP 400E and true RMS), `tacho.rs` (AC tacho and its DVM), `lowpass.rs`
+//! with `analog.rs` and `biquad.rs` (Butterworth/Bessel as second-order sections by the
+//! bilinear transform), `adc.rs` (samples the stream at its own rate: every M-th sample, or
+//! Kaiser-windowed sinc between samples; bits, range, clipping, TPDF dither), `window.rs`
+//! and `spectrum.rs` (scalings after Heinzel et al.), `analyser.rs` (5451C: conventions,
+//! averaging, overlap), `truth.rs` (which displayed lines are aliases, from the analogue
+//! signal), `keyboard_program.rs` (the App. E program from text), `scope.rs`,
+//! `brake_drive.rs` (function generator, coil lag, brake torque), `noise.rs` (seeded
+//! Gaussian), `ac_coupling.rs` (the AC input of the 400E and the scope); `block.rs` the
+//! trait, `error.rs` the errors.
+//!
 //! ```
 //! use instruments::{AntiAliasFilter, Block, FilterKind, LowPassSpec};
 //!

@@ -2,6 +2,74 @@
 //! a 1:1 spur pair with backlash, speed-controlled DC motor, eddy-current brake), advanced
 //! exactly between contact switches. See `ARCHITECTURE.md` at the project root.
 //!
+//! Modules. One concept per file; `lib.rs` only declares and re-exports.
+//!
+//! `params.rs` the parameter set (SI, units in names) and its validation; `param_table.rs`
+//! access by name (`--set`), with unit and meaning; `presets.rs` named sets
+//! (`basmaji-1983`, the thesis's numbers; `basmaji-1983-calibrated`, the second search's
+//! best, and `basmaji-1983-hand`, the calibration before the searches; see
+//! `docs/calibration.md`); `options.rs` contact law, tooth pairs. The model options beyond
+//! the thesis (bearing drag, the eddy-current brake's characteristic, the transmission
+//! error as a displacement once per revolution and at mesh frequency, smoothed mesh
+//! stiffness) are parameters, 0 in `basmaji-1983`.
+//!
+//! `geometry.rs` pitch radius, backlash from the centre-distance shift, contact ratio.
+//!
+//! `layout.rs` the augmented state: X1..X5, V1..V5 relative to the set rotation φ(t), the
+//! controller's filtered speed Vf and integral z, then forcing states: unit, load, (cos φ,
+//! sin φ), optionally (cos 2φ, sin 2φ), the oscillating load pair and (cos zφ, sin zφ) for
+//! the profile error at mesh frequency (z the teeth), and the spacing error of the tooth
+//! pair in mesh (set at each tooth pass; `spacing.rs` draws the seeded errors).
+//!
+//! `mode.rs` the discrete state (mesh: apart / drive / back / clipped; mesh stiffness
+//! level: one pair, two, or a step between; motor linear or at its limit). `model.rs`
+//! builds the matrix A of u' = A u per mode (with the brake's characteristic linearised at
+//! the set point, the bearing drag and the transmission error's forcing). `pair_zones.rs`
+//! the stiffness zones of a tooth period (sharp, or each change a staircase).
+//!
+//! `events.rs` the switching functions of each mode (gap, contact force, pair-zone and
+//! tooth-pass angles, motor limit, revolution marker); `roots.rs` where a polynomial first
+//! crosses zero on a step, and whether a Hermite cubic between steps may cross.
+//!
+//! `propagator.rs` per mode: e^{A h} for whole steps, the Taylor expansion of e^{A τ} for
+//! any τ inside a step; `derivative.rs` A·u for the expansion; `jump_response.rs` e^{A s h}
+//! applied to a jump of the gear angles (tooth passes); `stride.rs` several steps at once
+//! where the mode is slow. `system_cache.rs` builds them on first use. Below them, shared
+//! by all: `column_product.rs` (the fixed-shape matrix–state product), `fused_step.rs` (a
+//! step's mechanical rows with the row events' values and slopes), `matrix_exp.rs`
+//! (balanced Padé e^{A h}, spectral radius), `taylor.rs` (order, coefficients, vectors).
+//!
+//! `plant/` the plant: `state.rs` (the struct, construction, steady initial state,
+//! accessors), `fast.rs` (runs of strides and steps in one mode), `chunk.rs` (their states
+//! column-wise and the true signals from them), `stepping.rs` (one step at a time, the
+//! switch checks, the exact path), `switches.rs` (what each switch does: impacts,
+//! separations, tooth shifting, pair zones, motor limits, revolution samples),
+//! `segment_start.rs` (set-point segments, phase, harmonic states), `output.rs` (samples,
+//! bounds); below them `segment.rs` (one stretch of set points) and `mesh_position.rs`
+//! (flank overlap, tooth in mesh).
+//!
+//! Layers: no module imports one that imports it (`rig/tests/module_layers.rs` reads the
+//! source and fails on a cycle). Only the model's interface is public (`params`,
+//! `param_table`, `presets`, `geometry`, `options`, `schedule`, `signals`, `records`,
+//! `regime`, `judge`, `steady`, `modal`, `energy`, and `Plant`); the numerics are private
+//! to the crate.
+//!
+//! `schedule.rs` set points over time. `signals.rs` the true-signal block. `records.rs`
+//! impacts and revolution samples. `regime.rs` period-k classification of the Poincaré
+//! samples (the old classifier, kept for the regime map and the panel). `judge/` the
+//! physics judge of a settled motion from the output-shaft torque: `spread.rs` (scatter of
+//! samples every k revolutions), `order_lines.rs` (Hann spectrum in orders: power on the
+//! period-k lines, a subharmonic's height over the broadband floor), `zero_one.rs` (the 0-1
+//! test for chaos), `verdict.rs` (period-k / quasi-periodic / chaotic / at rest, thresholds
+//! and their reasons; see `docs/physics.md`). `steady.rs` settle-then-measure runs
+//! (`SteadyWindow` keeps the window's torque for the judge and the motor's mean speed
+//! against the set speed; its `regime()` is the cheap part a paced thread uses). `modal.rs`
+//! natural frequencies and shapes. `energy.rs` energy terms for tests.
+//!
+//! `fma.rs` the fused multiply-add path chosen at run time: the inner loops
+//! (`column_product.rs`, `propagator.rs`, `jump_response.rs`) run compiled for AVX2 and FMA
+//! where the CPU has them, for baseline x86-64 elsewhere, with the same bytes.
+//!
 //! ```
 //! use rig::{Plant, PlantConfig, RigChains, Schedule, SignalBlock, preset};
 //!

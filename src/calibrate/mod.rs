@@ -1,5 +1,14 @@
 //! `testrig calibrate`: a search (CMA-ES with restarts) over free parameters for the rig
 //! that best reproduces target findings, each point judged from more than one approach.
+//!
+//! Files: `testrig calibrate`: `calibration_toml.rs` the file (a campaign, `[[target]]`
+//! points, `[[natural]]` frequencies, `[[free]]` parameters, `[search]`),
+//! `calibration_plan.rs` it checked, `free_param.rs` a parameter's range on [0, 1],
+//! `cma_es.rs` CMA-ES with IPOP restarts (ask/tell), `objective.rs` the line-height hinge
+//! or the judged motion, `evaluate.rs` every candidate's points as sweep cases in parallel,
+//! `log.rs` the JSON-lines log, `search.rs` the loop (budget, resume, shards,
+//! cross-validation), `report.rs` `preset.toml`, `result.json`, the convergence plot,
+//! `report.md`
 
 pub(crate) mod calibration_plan;
 pub(crate) mod calibration_toml;

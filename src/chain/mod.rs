@@ -1,6 +1,25 @@
 //! The measuring chain as data: each stage a described instrument (output signal, unit,
 //! full scale, inputs, how it is built), one table of the rig's standard stages, and the
 //! builder that the scenario check, the threaded run and the sweeps' inline chain share.
+//!
+//! Files: the measuring chain as data: `instrument.rs` every kind of stage with its
+//! settings (unit, full scale, inputs, how it is built); `microstrain.rs` the strain signal
+//! in µε (the gauged shaft's stage writes it, the bridge reads it); `analysed.rs` a sampled
+//! signal through filter, ADC and analyser with its alias truth (`analyse` and Python's
+//! `testrig.analyse`); `stage_plan.rs` a described stage (`StagePlan`) and a built one
+//! (`NamedStage`); `chain_stages.rs` the list in running order (unknown, duplicate or
+//! looping names refused) and built; `standard.rs` the rig's standard chain as one table;
+//! `stage.rs` a stage at work on frames; `stage_commands.rs` filter and gain changes on a
+//! stage; `inline.rs` the stages driven in turn on one thread (sweep cases, `analyse`);
+//! `analyser_setup.rs` the analyser's one way in (settings + ADC + stream rate → built
+//! analyser, ADC and alias truth, or an `AnalyserSetupError` naming the setting), used by
+//! the scenario reader, the panel and `analyse`; `spectrum_metadata.rs` a written
+//! spectrum's `# key: value` lines; `voltmeters.rs` the meter's and DVM's settings;
+//! `measurement.rs` one measurement: an analogue stream through the ADC into the analyser,
+//! with its alias truth (`Measurement`, the one driver of ADC → analyser);
+//! `analyser_setup.rs` also holds `AnalyserWords`, the analyser in a user's words checked
+//! in one place; `low_pass_words.rs` the anti-alias filter in a user's words
+//! (`LowPassWords`: the cut-off follows the band where left out, checked against Nyquist).
 
 pub(crate) mod analysed;
 pub(crate) mod analyser_setup;

@@ -1,6 +1,17 @@
 //! The front panel (`testrig panel`): the HTTP and WebSocket server, the page it serves,
 //! the state it shows and the session file it keeps. It sits above the runtime: it reads
 //! the run's status and sends commands through the control channel.
+//!
+//! Files: the front panel above the runtime: `server.rs` (page, `/api/info`, `/api/state`,
+//! `/api/command`; tungstenite WebSocket `/api/stream`; 405 with `Allow`; at most 512
+//! connections and 256 streams, 503 beyond, refused ones closed by one closer thread; the
+//! streams share one serialised state), `descriptors.rs` (raises the open-file limit, keeps
+//! 128 descriptors for the run), `http.rs` (HTTP/1.1 read with bounds on head, body and
+//! time, parsed by httparse; one request a connection), `guard.rs` (what it trusts: Host,
+//! Origin, JSON commands, the token beyond loopback; `docs/security.md`), `state.rs` the
+//! API's state, `session.rs` `session.toml` (its head written at start, each command
+//! appended as it takes effect through `ControlHandle::journal_to`, the whole rewritten at
+//! the end), `page/` the HTML and script, embedded with `include_str!`
 
 pub(crate) mod descriptors;
 pub(crate) mod guard;

@@ -1,5 +1,11 @@
 //! Plots as the thesis draws them, as PNG and SVG (plotters with an embedded font, so no
 //! system font libraries are needed).
+//!
+//! Files: one drawing to PNG and SVG (`canvas.rs`: embedded DejaVu font, a title's size
+//! fitted to the width): `spectrum.rs` (orders marked, labels kept clear of the legend),
+//! `scope.rs` (a µε axis where the signal has a strain calibration), `survey.rs`,
+//! `frequency_map.rs`, `waterfall.rs`, `regime_map.rs`, `bifurcation.rs`,
+//! `impact_raster.rs`, `convergence.rs`.
 
 pub(crate) mod bifurcation;
 pub(crate) mod canvas;

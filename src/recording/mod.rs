@@ -1,5 +1,10 @@
 //! Recorders: streams of samples to files that other tools read, each written under a
 //! `.partial` name until complete.
+//!
+//! Files: `partial.rs` (written as `NAME.partial`, renamed when complete, and then named in
+//! the folder's `journal.rs`: `files.journal`, so that a killed run's files are known),
+//! `cleanup.rs`, `frame_writer.rs` (the face of every recording), `wav.rs` (float32/int24 +
+//! JSON sidecar), `csv_stream.rs`, `uff58.rs`/`uff58_stream.rs`, `spectrum_csv.rs`.
 
 pub(crate) mod cleanup;
 pub(crate) mod csv_stream;

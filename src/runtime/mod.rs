@@ -1,5 +1,22 @@
 //! The runtime of `testrig run`: the paced plant, the instrument stages and the sinks as
 //! threads joined by crossbeam channels, and the run's manifest.
+//!
+//! Files: `testrig run`'s threads: `plant_source.rs` (the paced plant, overruns; a paced
+//! wait looks at the stop flag every 50 ms), `rolling_regime.rs` (the regime and the
+//! judge's motion of each full 10 s window once settled, live: "settling" for 15 s after a change of set points), `pacing.rs` (deadlines, lateness
+//! histogram), `wiring.rs` (stage and sink threads; a panic in one fails the run by name),
+//! `sinks/` (`monitor`, `recorder`, `analyser` with `analyser_live` (commands, the display
+//! published), `scope` with `scope_live` (the panel's scope, owned by the storage scope),
+//! `measure_clock`), `status.rs` + `console.rs`, `process_usage.rs` (CPU, peak RSS),
+//! `manifest.rs`, `threaded_run.rs` (spawns and joins everything), `folder_run.rs` (a run
+//! into its folder whole: the earlier run's files removed, the run, the manifest; `run` and
+//! Python's `testrig.run`), `sinks/tap.rs` (live runs: the latest block of every signal
+//! kept in the status, for Python's `Rig.read`), `stop_signals.rs`, `previous_run.rs` (a
+//! rerun removes the earlier run's files: its manifest's, or its journal's when it was
+//! killed); `point_judge.rs` the judged motion of each measured point over its settled
+//! window (until the set points change, the next measurement or the end), sent to the sinks
+//! on a frame and kept for the manifest; `sinks/recorder.rs` low-passes each decimated
+//! signal before keeping every M-th sample.
 
 pub(crate) mod console;
 pub(crate) mod folder_run;

@@ -1,4 +1,17 @@
 //! Scenario files (TOML): what a rehearsal runs, checked with errors at file, line and field.
+//!
+//! Files: scenario files (TOML) to a checked `Plan`, errors at file:line:column:
+//! `scenario_toml.rs` and `chain_toml.rs` the schema (serde, unknown keys rejected, spans
+//! kept; `chain_toml.rs` the `[chain.*]` and `[analyser]` tables sweeps share); `values.rs`
+//! checked numbers (`NumberError`); `source.rs` the text and its errors (a line written by
+//! `--set` names the `--set`); `overrides.rs` `--set KEY=VALUE` as an edit of the text;
+//! `read_rig.rs` (preset, backlash, overrides, schedule, survey, measurements),
+//! `read_chain.rs` (the standard chain, scope, analyser, recordings), `read_stages.rs` (the
+//! standard table plus the file's `[[chain.stage]]`s, each fault at its line),
+//! `read_instrument.rs` (a filter's or meter's settings from its table); `preset_file.rs`
+//! presets from files and `preset_with_overrides` (every command's `--preset` and `--set`);
+//! `run_plan.rs` the result; `build.rs` it all together; `coverage.rs` whether each
+//! measurement fits the run
 
 pub(crate) mod build;
 pub(crate) mod chain_toml;

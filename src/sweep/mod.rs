@@ -1,5 +1,18 @@
 //! Sweeps: a grid of cases (speed, load, backlash, any parameter), each run at fixed set
 //! points through the chain and the analyser, in parallel, shardable and resumable.
+//!
+//! Files: `sweep_toml.rs` (grid, case timing, chain and analyser as in a scenario),
+//! `grid.rs` (the grid expanded into cases), `approach.rs` (from the static load, or ramped
+//! from below or above), `sequence.rs` (`Sequence`: each point on its own, or up and down;
+//! `Direction`), `case.rs` (one case: plant settled, the chain inline into ADC and
+//! analyser, regime and the judge's motion), `series.rs` (the lab's run: one plant per load
+//! stepping the speeds up and back down; a series is one unit of work), `lines.rs` (order
+//! lines over their local floor), `table.rs` (a JSON per case, `cases.csv`), `meta.rs`
+//! (`sweep.json`), `shard.rs` (`--shard`, SLURM arrays), `runner.rs` (rayon pool, resume,
+//! assembly of table and plots, also for `merge`), `thesis.rs` (what the thesis saw at each
+//! point and how a case is held against it), `facts.rs` (the thesis's facts against the
+//! judged motion), `report.rs` (`report.md`: the scores, hysteresis, where the motor cannot
+//! hold the set speed)
 
 pub(crate) mod approach;
 pub(crate) mod case;

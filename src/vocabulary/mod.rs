@@ -3,6 +3,18 @@
 //! samples and the signals' names, the display types of the panel, and the choices a
 //! scenario names (window, filter, WAV format…). It depends on no other module of this
 //! crate.
+//!
+//! Files: the words all share: `command.rs` the rig's commands (`RigCommand`, JSON and
+//! TOML) and replies; `control.rs` how they travel (`ControlHandle` for senders with the
+//! session's log, `CommandInbox` in the plant's thread, `Pending` on a frame with its reply
+//! channel); `frame.rs` the block of samples passed between threads and `SignalNames`;
+//! `signal_names.rs` every signal's name, the plant's units from `rig::COLUMN_UNITS`;
+//! `display.rs` the panel's spectrum and trace and the chain's settings in effect (what the
+//! page echoes); `choices.rs` a scenario's named choices (window, filter, sampling, WAV
+//! format…) mapped onto the instruments' types; `limits.rs` every input bound (speed, load
+//! — with the residual drag, within the motor's limit — simulated time, averages) with its
+//! typed `LimitError`; `seeds.rs` every derived seed (each noise source in a run and in a
+//! sweep case, each case of a grid)
 
 pub(crate) mod choices;
 pub(crate) mod command;
