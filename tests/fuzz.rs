@@ -236,8 +236,10 @@ fn cli_numbers_are_used_or_refused_naming_the_flag() {
         }
         let mut args = vec![flags[0].0.to_string()];
         match flags[0].0 {
-            "analyse" => args.extend([wav.clone(), "--out".into(), out.clone()]),
-            "run" => args.extend([scenario.clone(), "--out".into(), out.clone()]),
+            // A folder for each command: the output-folder guard keeps one command's
+            // files from another's.
+            "analyse" => args.extend([wav.clone(), "--out".into(), format!("{out}-analyse")]),
+            "run" => args.extend([scenario.clone(), "--out".into(), format!("{out}-run")]),
             _ => {}
         }
         for (k, (flag, _)) in flags.iter().enumerate().skip(1) {

@@ -295,4 +295,8 @@ pub struct AnalyseArgs {
     /// Folder for spectrum.csv and spectrum.png.
     #[arg(long)]
     pub out: PathBuf,
+    /// Remove another command's or scenario's files from --out first (only those its
+    /// manifest or journal lists); an earlier `analyse` there is replaced without it.
+    #[arg(long)]
+    pub replace: bool,
 }

@@ -1,6 +1,8 @@
 //! `testrig analyse`: a WAV file through anti-alias filter, ADC and the Fourier analyser,
 //! with the ground truth of which lines are aliases.
 
+use std::path::PathBuf;
+
 use anyhow::{Context, bail};
 use instruments::{KeyboardProgram, LowPassSpec, Sampling};
 
@@ -9,7 +11,8 @@ use testrig::chain::{AdcChoice, AnalyserSetting, AnalyserSetup, AnalyserWords, L
 use testrig::chain::{Instrument, Measurement, Truth, anti_aliased};
 use testrig::chain::{SpectrumFacts, spectrum_metadata};
 use testrig::plots::{SpectrumPlot, write_spectrum_plots};
-use testrig::recording::{Metadata, write_spectrum_csv};
+use testrig::recording::{Metadata, PartialFile, start_journal, write_spectrum_csv};
+use testrig::runtime::{clear_previous_run, write_command_manifest};
 use testrig::wav_input::{WavSignal, read_signal};
 
 pub fn run(args: &AnalyseArgs) -> anyhow::Result<()> {
@@ -42,10 +45,17 @@ pub fn run(args: &AnalyseArgs) -> anyhow::Result<()> {
     let analogue = anti_aliased(&wav.samples, wav.rate_hz, filter).context("--filter/--cutoff")?;
     std::fs::create_dir_all(&args.out)
         .with_context(|| format!("--out {}: cannot create the folder", args.out.display()))?;
-    let overloads = match &args.program {
+    clear_previous_run(&args.out, "analyse", args.replace)?;
+    start_journal(&args.out, "analyse")?;
+    let (overloads, files) = match &args.program {
         Some(program) => run_program(args, program, setup, &analogue)?,
         None => run_analyser(args, setup, &wav, &analogue, filter, &range)?,
     };
+    let details = serde_json::json!({
+        "file": args.file.display().to_string(), "channel": args.channel,
+        "fmax_hz": args.fmax, "block": args.block, "averages": args.averages,
+    });
+    write_command_manifest(&args.out, "analyse", &files, details)?;
     warn_of_overloads(overloads, &range, &wav.unit);
     Ok(())
 }
@@ -59,7 +69,7 @@ fn run_analyser(
     analogue: &[f64],
     filter: Option<LowPassSpec>,
     range: &AdcRange,
-) -> anyhow::Result<u64> {
+) -> anyhow::Result<(u64, Vec<PathBuf>)> {
     let settings = setup.settings;
     let ratio = setup.adc_settings.ratio;
     let mut measurement = Measurement::new(setup, Truth::Kept);
@@ -84,7 +94,8 @@ fn run_analyser(
         described => described.to_string(),
     };
     let metadata = metadata(args, &measurement, wav, range, &filter);
-    write_spectrum_csv(&args.out.join("spectrum.csv"), &metadata, &lines, &alias_of)?;
+    let csv = args.out.join("spectrum.csv");
+    write_spectrum_csv(&csv, &metadata, &lines, &alias_of)?;
     let overload = match overloads {
         0 => String::new(),
         n => format!(" (ADC OVERLOADED on {n} samples)"),
@@ -99,7 +110,8 @@ fn run_analyser(
         settings.window.name(),
         args.block
     );
-    write_spectrum_plots(
+    let mut files = vec![csv];
+    files.extend(write_spectrum_plots(
         &args.out.join("spectrum"),
         &SpectrumPlot {
             title: &title,
@@ -108,7 +120,7 @@ fn run_analyser(
             alias_of: &alias_of,
             running_hz: args.rpm.map(|rpm| rpm / 60.0),
         },
-    )?;
+    )?);
     let fewer = if count < args.averages {
         let block_s = args.block as f64 * ratio / wav.rate_hz;
         format!(
@@ -129,7 +141,7 @@ fn run_analyser(
         range.source,
         overloads
     );
-    Ok(overloads)
+    Ok((overloads, files))
 }
 
 /// An HP 5451C keyboard program on the ADC samples of `analogue`: each DISPLAY as
@@ -139,7 +151,7 @@ fn run_program(
     path: &std::path::Path,
     mut setup: AnalyserSetup,
     analogue: &[f64],
-) -> anyhow::Result<u64> {
+) -> anyhow::Result<(u64, Vec<PathBuf>)> {
     let settings = &setup.settings;
     let mut samples = Vec::with_capacity(analogue.len() / setup.adc_settings.ratio as usize + 1);
     setup.adc.convert(analogue, &mut samples);
@@ -150,15 +162,18 @@ fn run_program(
     let displays = program
         .run(settings, &samples)
         .with_context(|| format!("--program {}", path.display()))?;
+    let mut files = Vec::new();
     for (k, display) in displays.iter().enumerate() {
-        let out = args.out.join(format!("display-{:02}.csv", k + 1));
-        let mut csv = csv::Writer::from_path(&out)
-            .with_context(|| format!("cannot write {}", out.display()))?;
+        let file = PartialFile::new(&args.out.join(format!("display-{:02}.csv", k + 1)));
+        let mut csv = csv::Writer::from_writer(file.create()?);
         csv.write_record(["frequency_hz", "value"])?;
         for line in display {
             csv.write_record([line.frequency_hz.to_string(), format!("{:e}", line.value)])?;
         }
-        csv.flush()?;
+        csv.flush()
+            .with_context(|| format!("cannot write {}", file.path().display()))?;
+        drop(csv);
+        files.push(file.commit()?);
     }
     println!(
         "{}: {} displays to {} (display-NN.csv: the block as shown, in dB after LOG)",
@@ -166,7 +181,7 @@ fn run_program(
         displays.len(),
         args.out.display()
     );
-    Ok(setup.adc.overloads())
+    Ok((setup.adc.overloads(), files))
 }
 
 /// The ADC's ±range and where it came from.

@@ -11,12 +11,25 @@ use anyhow::Context;
 
 use crate::recording::{JOURNAL_NAME, journaled_files, journaled_scenario, remove_partial_files};
 
+/// The file that marks a sweep's folder (`testrig sweep`, `merge`, `calibrate`'s cases).
+const SWEEP_MARKER: &str = "sweep.json";
+
 /// Removes the files of the run recorded in `dir` (its manifest and its journal) before a
 /// run of scenario `scenario`; returns how many. A folder that does not exist yet holds
 /// nothing to remove; one holding another scenario's run is refused unless `replace`.
 pub fn clear_previous_run(dir: &Path, scenario: &str, replace: bool) -> anyhow::Result<usize> {
     if !dir.is_dir() {
         return Ok(0);
+    }
+    if let Ok(text) = std::fs::read_to_string(dir.join(SWEEP_MARKER)) {
+        let name = serde_json::from_str::<serde_json::Value>(&text)
+            .ok()
+            .and_then(|v| v["name"].as_str().map(str::to_string))
+            .unwrap_or_default();
+        anyhow::bail!(
+            "--out {}: holds a sweep's cases (`{name}`, its {SWEEP_MARKER}); a sweep lists no files to replace: choose another folder",
+            dir.display()
+        );
     }
     let (listed, earlier) = manifest_files(dir)?;
     let earlier = earlier.or_else(|| journaled_scenario(dir));

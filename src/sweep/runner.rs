@@ -163,10 +163,21 @@ fn work_units(plan: &SweepPlan, shard: Shard) -> Vec<Vec<&Case>> {
     units
 }
 
-/// A folder holding the cases of another sweep (its `sweep.json` differs) has them removed,
+/// A folder holding a run's files (its `manifest.json`: `run`, `simulate`, `analyse`) is
+/// refused. A folder holding the cases of another sweep (its `sweep.json` differs) has them removed,
 /// so that they are not assembled with this one's; with `--resume` that is an error.
 /// Cases of this same sweep (other shards writing to one folder) stay.
 fn clear_other_sweep(dir: &Path, meta: &SweepMeta, resume: bool) -> anyhow::Result<()> {
+    if let Ok(text) = std::fs::read_to_string(dir.join("manifest.json")) {
+        let earlier = serde_json::from_str::<serde_json::Value>(&text)
+            .ok()
+            .and_then(|v| v["scenario"].as_str().map(str::to_string))
+            .unwrap_or_default();
+        anyhow::bail!(
+            "--out {}: holds the files of a run (`{earlier}`, its manifest.json), not a sweep's cases: choose another folder",
+            dir.display()
+        );
+    }
     let Ok(earlier) = read_meta(dir) else {
         return Ok(());
     };
