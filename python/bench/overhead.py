@@ -15,7 +15,7 @@ from pathlib import Path
 import testrig
 
 BINARY = Path(__file__).resolve().parents[2] / "target" / "release" / "testrig"
-POINT = ["--rpm", "1300", "--load", "2.712", "--duration", "10", "--preset", "basmaji-1983-rig"]
+POINT = ["--rpm", "1300", "--load", "2.712", "--duration", "10"]  # the one default preset
 
 
 def wall_s(run):
