@@ -36,6 +36,6 @@ pub use limits::{
     DEFAULT_LIVE_CEILING, MAX_SIMULATED_S, check_load_nm, check_load_within_motor,
     check_simulated_s, check_speed_rpm, max_load_nm,
 };
-pub use point_verdict::{PointVerdict, PointVerdicts, motion_label};
+pub use point_verdict::{AwaitingVerdicts, PointVerdict, RowMotion};
 pub use refusal::Refusal;
 pub use signal_names::FILTER_V;

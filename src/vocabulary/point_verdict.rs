@@ -2,6 +2,7 @@
 //! the point's settled window, sent on a frame to the sinks that write the point's rows
 //! (readings, spectra) and kept for the manifest and the terminal.
 
+use std::collections::VecDeque;
 use std::sync::Arc;
 
 use rig::SteadySummary;
@@ -21,11 +22,10 @@ pub struct PointVerdict {
 
 /// The verdicts a sink has been sent so far, by measurement.
 #[derive(Clone, Debug, Default)]
-pub struct PointVerdicts(Vec<Option<Arc<PointVerdict>>>);
+struct PointVerdicts(Vec<Option<Arc<PointVerdict>>>);
 
 impl PointVerdicts {
-    /// Keeps `verdicts` (those a frame carried).
-    pub fn add(&mut self, verdicts: &[Arc<PointVerdict>]) {
+    fn add(&mut self, verdicts: &[Arc<PointVerdict>]) {
         for verdict in verdicts {
             if self.0.len() <= verdict.index {
                 self.0.resize(verdict.index + 1, None);
@@ -34,14 +34,112 @@ impl PointVerdicts {
         }
     }
 
-    /// The verdict on measurement `index`, once it has come.
-    pub fn get(&self, index: usize) -> Option<&PointVerdict> {
-        self.0.get(index).and_then(|v| v.as_deref())
+    fn get(&self, index: usize) -> Option<&Arc<PointVerdict>> {
+        self.0.get(index).and_then(Option::as_ref)
     }
 }
 
-/// The motion's name for a row of measurement `index`: the judged motion, or
-/// "unjudged" where the point's window did not end (a stopped run).
-pub fn motion_label(verdict: Option<&PointVerdict>) -> String {
-    verdict.map_or("unjudged".into(), |v| v.summary.motion.motion.to_string())
+/// What a row learns of its point's motion.
+#[derive(Clone, Debug)]
+pub enum RowMotion {
+    /// The row belongs to no judged point (a run without measurements of its own, an
+    /// average started by a command).
+    NoPoint,
+    /// Its point's verdict.
+    Judged(Arc<PointVerdict>),
+    /// Its point's window never ended (a stopped run).
+    Unjudged,
+}
+
+impl RowMotion {
+    /// The motion's name as a row shows it: the judged motion, "unjudged", or nothing.
+    pub fn label(&self) -> String {
+        match self {
+            Self::NoPoint => String::new(),
+            Self::Judged(v) => v.summary.motion.motion.to_string(),
+            Self::Unjudged => "unjudged".into(),
+        }
+    }
+}
+
+/// A sink's rows waiting, in the order they were made, for the verdicts on their points
+/// (which come on later frames): each row is let go once its verdict is in, or at once
+/// when it belongs to no point, or at the run's end as unjudged.
+pub struct AwaitingVerdicts<T> {
+    waiting: VecDeque<(Option<usize>, T)>,
+    verdicts: PointVerdicts,
+}
+
+impl<T> Default for AwaitingVerdicts<T> {
+    fn default() -> Self {
+        Self {
+            waiting: VecDeque::new(),
+            verdicts: PointVerdicts::default(),
+        }
+    }
+}
+
+impl<T> AwaitingVerdicts<T> {
+    /// Keeps the verdicts a frame carried.
+    pub fn add_verdicts(&mut self, verdicts: &[Arc<PointVerdict>]) {
+        self.verdicts.add(verdicts);
+    }
+
+    /// Queues `row` of measurement `point` (`None`: of no judged point).
+    pub fn push(&mut self, point: Option<usize>, row: T) {
+        self.waiting.push_back((point, row));
+    }
+
+    /// The rows ready, in order, with their motion; at the run's `end`, all of them.
+    pub fn take_ready(&mut self, end: bool) -> Vec<(T, RowMotion)> {
+        let mut ready = Vec::new();
+        while let Some((point, _)) = self.waiting.front() {
+            let motion = match point.map(|p| self.verdicts.get(p)) {
+                None => RowMotion::NoPoint,
+                Some(Some(verdict)) => RowMotion::Judged(Arc::clone(verdict)),
+                Some(None) if end => RowMotion::Unjudged,
+                Some(None) => break,
+            };
+            let (_, row) = self.waiting.pop_front().expect("a front");
+            ready.push((row, motion));
+        }
+        ready
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn verdict(index: usize) -> Arc<PointVerdict> {
+        let window = rig::SteadyWindow::new(30, 1.0 / 51_200.0);
+        Arc::new(PointVerdict {
+            index,
+            from_s: 0.0,
+            summary: window.summary(&rig::RegimeCriteria::default()),
+        })
+    }
+
+    #[test]
+    fn rows_wait_in_order_for_their_points_and_the_rest_go_unjudged_at_the_end() {
+        let mut rows = AwaitingVerdicts::default();
+        rows.push(None, "start");
+        rows.push(Some(0), "point 1");
+        rows.push(Some(1), "point 2");
+        let ready = rows.take_ready(false);
+        assert_eq!(ready.len(), 1, "a row of no point goes at once");
+        assert!(matches!(ready[0].1, RowMotion::NoPoint));
+        // The verdict on point 2 alone lets nothing go: point 1 is still ahead of it.
+        rows.add_verdicts(&[verdict(1)]);
+        assert!(rows.take_ready(false).is_empty());
+        rows.add_verdicts(&[verdict(0)]);
+        let ready = rows.take_ready(false);
+        let names: Vec<&str> = ready.iter().map(|(r, _)| *r).collect();
+        assert_eq!(names, ["point 1", "point 2"]);
+        rows.push(Some(2), "point 3");
+        assert!(rows.take_ready(false).is_empty());
+        let last = rows.take_ready(true);
+        assert!(matches!(last[0].1, RowMotion::Unjudged));
+        assert_eq!(last[0].1.label(), "unjudged");
+    }
 }

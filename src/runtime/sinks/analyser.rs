@@ -3,7 +3,6 @@
 //! as a spectrum (CSV in the `testrig analyse` format, PNG and SVG, UFF58 when asked), with
 //! the ground truth of which lines are aliases.
 
-use std::collections::VecDeque;
 use std::path::{Path, PathBuf};
 
 use super::measure_clock::MeasureClock;
@@ -18,7 +17,7 @@ use crate::recording::{
 use crate::runtime::status::SharedStatus;
 use crate::scenario::{AnalyserPlan, Measure, Plan};
 use crate::vocabulary::frame::Frame;
-use crate::vocabulary::{PointVerdict, PointVerdicts, Refusal, RigCommand, motion_label};
+use crate::vocabulary::{AwaitingVerdicts, Refusal, RigCommand, RowMotion};
 
 /// The analyser with its ADC and the alias truth.
 pub struct AnalyserSink {
@@ -50,9 +49,8 @@ pub struct AnalyserSink {
     pub(super) rate_hz: f64,
     /// Averages in the display last published.
     pub(super) published: Option<usize>,
-    /// Finished spectra waiting for their point's judged motion, in order.
-    waiting: VecDeque<FinishedSpectrum>,
-    verdicts: PointVerdicts,
+    /// Finished spectra, waiting for their points' judged motion.
+    waiting: AwaitingVerdicts<FinishedSpectrum>,
 }
 
 /// A finished average, ready to be written once its point's motion is judged.
@@ -104,8 +102,7 @@ impl AnalyserSink {
             saved: 0,
             rate_hz: plan.rate_hz,
             published: None,
-            waiting: VecDeque::new(),
-            verdicts: PointVerdicts::default(),
+            waiting: AwaitingVerdicts::default(),
         })
     }
 
@@ -158,14 +155,9 @@ impl AnalyserSink {
             return Ok(());
         }
         let base = self.dir.join(format!("spectrum-{:02}", index + 1));
-        if self.points_of[index].is_none() {
-            // No point's verdict will come for this average: written as it ends.
-            self.write_spectrum(&base, index, count)?;
-        } else {
-            let finished = self.finish_display(base, index, count);
-            self.waiting.push_back(finished);
-            self.write_judged(false)?;
-        }
+        let finished = self.finish_display(base, index, count);
+        self.waiting.push(self.points_of[index], finished);
+        self.write_judged(false)?;
         if self.live {
             self.published = None;
             self.publish();
@@ -190,15 +182,9 @@ impl AnalyserSink {
     /// Writes the waiting spectra, in order, as far as their points' verdicts have come;
     /// at the run's `end`, the rest as unjudged.
     fn write_judged(&mut self, end: bool) -> anyhow::Result<()> {
-        while let Some(front) = self.waiting.front() {
-            let point = self.points_of[front.index];
-            let verdict = point.and_then(|p| self.verdicts.get(p)).cloned();
-            if verdict.is_none() && !end {
-                break;
-            }
-            let mut finished = self.waiting.pop_front().expect("a front");
-            finished.metadata.extend(motion_metadata(verdict.as_ref()));
-            self.write_finished(&finished, Some(motion_label(verdict.as_ref())))?;
+        for (mut finished, motion) in self.waiting.take_ready(end) {
+            finished.metadata.extend(motion_metadata(&motion));
+            self.write_finished(&finished, &motion)?;
         }
         Ok(())
     }
@@ -212,14 +198,14 @@ impl AnalyserSink {
         count: usize,
     ) -> anyhow::Result<()> {
         let finished = self.finish_display(base.to_path_buf(), index, count);
-        self.write_finished(&finished, None)
+        self.write_finished(&finished, &RowMotion::NoPoint)
     }
 
-    /// Writes `finished`, its plot titled with the point's judged `motion` where known.
+    /// Writes `finished`, its plot titled with the point's judged `motion` where it has one.
     fn write_finished(
         &mut self,
         finished: &FinishedSpectrum,
-        motion: Option<String>,
+        motion: &RowMotion,
     ) -> anyhow::Result<()> {
         let FinishedSpectrum {
             base,
@@ -240,7 +226,10 @@ impl AnalyserSink {
             "none" => "no filter",
             described => described,
         };
-        let judged = motion.map_or(String::new(), |m| format!(" ({m})"));
+        let judged = match motion {
+            RowMotion::NoPoint => String::new(),
+            point => format!(" ({})", point.label()),
+        };
         let title = format!(
             "{}: {}{judged}; {count} av., {} window, {filter}, N = {}",
             self.scenario,
@@ -294,11 +283,13 @@ impl AnalyserSink {
     }
 }
 
-/// The point's judged motion as a spectrum's metadata lines.
-fn motion_metadata(verdict: Option<&PointVerdict>) -> Metadata {
+/// The point's judged motion as a spectrum's metadata lines (none for no point).
+fn motion_metadata(motion: &RowMotion) -> Metadata {
     let number = |v: Option<f64>| v.map_or(String::new(), |v| v.to_string());
-    let Some(v) = verdict else {
-        return vec![("motion", motion_label(None))];
+    let v = match motion {
+        RowMotion::NoPoint => return Vec::new(),
+        RowMotion::Unjudged => return vec![("motion", motion.label())],
+        RowMotion::Judged(v) => v,
     };
     let m = &v.summary.motion;
     vec![
@@ -345,7 +336,7 @@ impl Sink for AnalyserSink {
     }
 
     fn consume(&mut self, frame: &Frame) -> anyhow::Result<()> {
-        self.verdicts.add(&frame.points);
+        self.waiting.add_verdicts(&frame.points);
         self.write_judged(false)?;
         let x = frame.channels[self.input].clone();
         let mut offset = 0;

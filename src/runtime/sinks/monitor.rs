@@ -4,7 +4,6 @@
 //! readings over two or more loads are also drawn as RMS against load per speed with the
 //! static line.
 
-use std::collections::VecDeque;
 use std::path::{Path, PathBuf};
 
 use instruments::CROMPTON_PARKINSON_V_PER_RPM;
@@ -18,7 +17,7 @@ use crate::runtime::status::SharedStatus;
 use crate::scenario::{Measure, Plan};
 use crate::vocabulary::frame::{Frame, SignalNames};
 use crate::vocabulary::signal_names::{DVM_V, METER_V, SHAFT_TORQUE_NM};
-use crate::vocabulary::{PointVerdicts, motion_label};
+use crate::vocabulary::{AwaitingVerdicts, RowMotion};
 
 /// Length of the truth window before each reading (s).
 pub const TRUTH_WINDOW_S: f64 = 1.0;
@@ -66,9 +65,8 @@ pub struct MonitorSink {
     /// Whether the readings are of the scenario's own measurements, each a judged point
     /// (else the one reading at the start is no point, and is written at once).
     judged: bool,
-    /// Readings taken whose point's verdict has not come yet, in order.
-    waiting: VecDeque<(usize, Reading)>,
-    verdicts: PointVerdicts,
+    /// Readings taken, waiting for their points' verdicts.
+    waiting: AwaitingVerdicts<Reading>,
     survey_plot: Option<(PathBuf, String)>,
     status: SharedStatus,
 }
@@ -125,8 +123,7 @@ impl MonitorSink {
             csv: CsvRecorder::create(&dir.join("readings.csv"), &header)?,
             points: Vec::new(),
             judged: !plan.measures.is_empty(),
-            waiting: VecDeque::new(),
-            verdicts: PointVerdicts::default(),
+            waiting: AwaitingVerdicts::default(),
             survey_plot: plan
                 .is_survey
                 .then(|| (dir.join("rms-survey"), plan.name.clone())),
@@ -171,26 +168,19 @@ impl MonitorSink {
             load_nm: m.load_nm,
             rms_microstrain: reading.meter_microstrain,
         });
-        self.waiting.push_back((index, reading));
+        self.waiting.push(self.judged.then_some(index), reading);
         self.window = (0.0, 0.0, 0);
         self.write_judged(false)
     }
 
-    /// Writes the waiting readings, in order, as far as their points' verdicts have come;
-    /// at the run's `end`, the rest as unjudged.
+    /// Writes the readings whose points' verdicts have come, in order; at the run's
+    /// `end`, the rest as unjudged.
     fn write_judged(&mut self, end: bool) -> anyhow::Result<()> {
-        while let Some((index, _)) = self.waiting.front() {
-            let verdict = self.verdicts.get(*index);
-            if self.judged && verdict.is_none() && !end {
-                break;
+        for (mut reading, motion) in self.waiting.take_ready(end) {
+            reading.motion = motion.label();
+            if let RowMotion::Judged(verdict) = &motion {
+                reading.half_order_db = verdict.summary.motion.half_order_db;
             }
-            let (_, mut reading) = self.waiting.pop_front().expect("a front");
-            reading.motion = if self.judged {
-                motion_label(verdict)
-            } else {
-                String::new()
-            };
-            reading.half_order_db = verdict.and_then(|v| v.summary.motion.half_order_db);
             self.csv.write_row(&reading)?;
         }
         Ok(())
@@ -199,7 +189,7 @@ impl MonitorSink {
 
 impl Sink for MonitorSink {
     fn consume(&mut self, frame: &Frame) -> anyhow::Result<()> {
-        self.verdicts.add(&frame.points);
+        self.waiting.add_verdicts(&frame.points);
         self.write_judged(false)?;
         let len = frame.len();
         let torque = frame.channels[self.inputs.torque].clone();
