@@ -26,6 +26,13 @@ fn mutated_scenarios_are_built_or_refused_with_the_place_named() {
 }
 
 #[test]
+fn mutated_rig_files_are_read_or_refused_with_the_place_named() {
+    fuzz_mutated("rig", 1_000, |source| {
+        testrig::scenario::rig_topology(source).map(|rig| rig.natural_frequencies_hz())
+    });
+}
+
+#[test]
 fn mutated_sweeps_are_built_or_refused_with_the_place_named() {
     fuzz_mutated("sweep", 2_000, |source| -> anyhow::Result<SweepPlan> {
         source

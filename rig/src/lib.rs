@@ -120,6 +120,9 @@ pub mod steady;
 mod stride;
 mod system_cache;
 mod taylor;
+pub mod topology;
+mod topology_check;
+mod topology_modes;
 
 #[cfg(test)]
 mod jump_response_tests;
@@ -141,3 +144,5 @@ pub use regime::{Regime, RegimeCriteria, classify, classify_scaled};
 pub use schedule::{LiveCeiling, Schedule, SetPoints, Track};
 pub use signals::{COLUMN_NAMES, COLUMN_UNITS, INTERMEDIATE_SHAFT, SignalBlock};
 pub use steady::{SteadySummary, SteadyWindow, run_steady};
+pub use topology::{Body, LockedTorque, MAX_BODIES, MAX_MESHES, Mesh, RigTopology, Shaft};
+pub use topology_check::{TopologyError, TopologyPlace};

@@ -36,26 +36,33 @@ impl Chain {
             k[(i, i + 1)] -= spring;
             k[(i + 1, i)] -= spring;
         }
-        let inv_sqrt = DVector::from_iterator(n, self.inertia_kgm2.iter().map(|j| 1.0 / j.sqrt()));
-        let scaled: DMatrix<f64> =
-            DMatrix::from_fn(n, n, |r, c| inv_sqrt[r] * k[(r, c)] * inv_sqrt[c]);
-        let eigen = SymmetricEigen::new(scaled);
-        let mut modes: Vec<NaturalMode> = (0..n)
-            .map(|m| {
-                let omega_sq = eigen.eigenvalues[m].max(0.0);
-                let raw: Vec<f64> = (0..n)
-                    .map(|r| eigen.eigenvectors[(r, m)] * inv_sqrt[r])
-                    .collect();
-                NaturalMode {
-                    frequency_hz: omega_sq.sqrt() / (2.0 * std::f64::consts::PI),
-                    shape: normalised(&raw),
-                }
-            })
-            .collect();
-        modes.sort_by(|a, b| a.frequency_hz.total_cmp(&b.frequency_hz));
-        modes.remove(0);
-        modes
+        free_modes(&k, &self.inertia_kgm2)
     }
+}
+
+/// The flexible modes of free bodies of inertias `inertia_kgm2` (kg m²) joined by the
+/// stiffness matrix `k` (N m/rad), in ascending frequency: the eigen-solution of
+/// K − ω² M, the one rigid-body mode of a connected free system left out.
+pub(crate) fn free_modes(k: &DMatrix<f64>, inertia_kgm2: &[f64]) -> Vec<NaturalMode> {
+    let n = inertia_kgm2.len();
+    let inv_sqrt = DVector::from_iterator(n, inertia_kgm2.iter().map(|j| 1.0 / j.sqrt()));
+    let scaled: DMatrix<f64> = DMatrix::from_fn(n, n, |r, c| inv_sqrt[r] * k[(r, c)] * inv_sqrt[c]);
+    let eigen = SymmetricEigen::new(scaled);
+    let mut modes: Vec<NaturalMode> = (0..n)
+        .map(|m| {
+            let omega_sq = eigen.eigenvalues[m].max(0.0);
+            let raw: Vec<f64> = (0..n)
+                .map(|r| eigen.eigenvectors[(r, m)] * inv_sqrt[r])
+                .collect();
+            NaturalMode {
+                frequency_hz: omega_sq.sqrt() / (2.0 * std::f64::consts::PI),
+                shape: normalised(&raw),
+            }
+        })
+        .collect();
+    modes.sort_by(|a, b| a.frequency_hz.total_cmp(&b.frequency_hz));
+    modes.remove(0);
+    modes
 }
 
 fn normalised(shape: &[f64]) -> Vec<f64> {

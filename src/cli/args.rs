@@ -185,6 +185,10 @@ pub struct ModesArgs {
     /// Parameters.
     #[command(flatten)]
     pub rig: RigArgs,
+    /// A rig file (docs/rig-files.md) instead of a preset: its natural frequencies with
+    /// every mesh in contact and no speed controller.
+    #[arg(long = "rig", value_name = "FILE", conflicts_with = "overrides")]
+    pub rig_file: Option<PathBuf>,
     /// Print one JSON object instead of tables.
     #[arg(long)]
     pub json: bool,

@@ -65,6 +65,21 @@ impl ScenarioSource {
         self.parse_as()
     }
 
+    /// Parses the text as a rig file (`[[body]]`, `[[shaft]]`, `[[mesh]]` …); a scenario or
+    /// a sweep is refused naming what it is.
+    pub fn parse_rig_file<T: serde::de::DeserializeOwned>(&self) -> anyhow::Result<T> {
+        if ["grid", "schedule", "survey"]
+            .iter()
+            .any(|t| self.has_table(t))
+        {
+            return Err(anyhow!(
+                "{}: this is a scenario or sweep file, not a rig file (a rig file has [[body]], [[shaft]] and [[mesh]] tables; docs/rig-files.md)",
+                self.path.display()
+            ));
+        }
+        self.parse_as()
+    }
+
     /// Parses the text as a calibration file. A sweep or a scenario is refused with the
     /// command that runs it.
     pub fn parse_calibration<T: serde::de::DeserializeOwned>(&self) -> anyhow::Result<T> {

@@ -13,7 +13,13 @@ use testrig::scenario::ScenarioSource;
 pub const HANG: Duration = Duration::from_secs(5);
 
 pub fn shipped(kind: &str) -> Vec<(PathBuf, String)> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios");
+    let scenarios = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenarios");
+    // Rig files live in their own folder; scenarios and sweeps beside it.
+    let dir = if kind == "rig" {
+        scenarios.join("rigs")
+    } else {
+        scenarios
+    };
     let mut files: Vec<(PathBuf, String)> = std::fs::read_dir(&dir)
         .expect("scenarios/")
         .map(|e| e.expect("entry").path())
@@ -22,7 +28,9 @@ pub fn shipped(kind: &str) -> Vec<(PathBuf, String)> {
             let text = std::fs::read_to_string(&p).expect("readable");
             (p, text)
         })
-        .filter(|(_, text)| (kind == "sweep") == text.lines().any(|l| l.trim() == "[grid]"))
+        .filter(|(_, text)| {
+            kind == "rig" || (kind == "sweep") == text.lines().any(|l| l.trim() == "[grid]")
+        })
         .collect();
     files.sort();
     files

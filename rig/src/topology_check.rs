@@ -1,0 +1,260 @@
+//! What makes a rig file's rig one the plant can run: positive, finite numbers, bodies
+//! that exist and are all joined into one rig, gears with teeth, loops whose gear ratios
+//! close, and the limits on size. Each fault names the item and field, and what is
+//! allowed.
+
+use crate::topology::{MAX_BODIES, MAX_MESHES, RigTopology};
+
+/// Where in a rig a fault lies: a table of the rig file (`body`, `shaft`, `mesh`,
+/// `motor`, `brake`, `locked_torque`), the item's index in it, and the field.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct TopologyPlace {
+    /// The table.
+    pub table: &'static str,
+    /// The item's index in its table (0 for a single table).
+    pub index: usize,
+    /// The field.
+    pub field: &'static str,
+}
+
+/// A fault of a rig, at its place.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("{message}")]
+pub struct TopologyError {
+    /// Where.
+    pub place: TopologyPlace,
+    /// What is wrong and what is allowed.
+    pub message: String,
+}
+
+fn fault(table: &'static str, index: usize, field: &'static str, message: String) -> TopologyError {
+    TopologyError {
+        place: TopologyPlace {
+            table,
+            index,
+            field,
+        },
+        message,
+    }
+}
+
+/// `value` as a positive finite number, or the fault at its place.
+fn positive(
+    value: f64,
+    (table, index, field): (&'static str, usize, &'static str),
+) -> Result<(), TopologyError> {
+    if value.is_finite() && value > 0.0 {
+        return Ok(());
+    }
+    Err(fault(
+        table,
+        index,
+        field,
+        format!("{value}: must be a finite number > 0"),
+    ))
+}
+
+/// `value` as a finite number ≥ 0, or the fault at its place.
+fn non_negative(
+    value: f64,
+    (table, index, field): (&'static str, usize, &'static str),
+) -> Result<(), TopologyError> {
+    if value.is_finite() && value >= 0.0 {
+        return Ok(());
+    }
+    Err(fault(
+        table,
+        index,
+        field,
+        format!("{value}: must be a finite number ≥ 0"),
+    ))
+}
+
+impl RigTopology {
+    /// Checks the rig: every number, every connection, the loops, the limits.
+    pub fn check(&self) -> Result<(), TopologyError> {
+        self.check_sizes()?;
+        self.check_numbers()?;
+        self.check_connected()?;
+        self.check_loops_close()?;
+        if let Some(locked) = &self.locked_torque
+            && !locked.torque_nm.is_finite()
+        {
+            return Err(fault(
+                "locked_torque",
+                0,
+                "torque_nm",
+                format!("{}: must be a finite number", locked.torque_nm),
+            ));
+        }
+        Ok(())
+    }
+
+    fn check_sizes(&self) -> Result<(), TopologyError> {
+        if self.bodies.len() < 2 || self.bodies.len() > MAX_BODIES {
+            return Err(fault(
+                "body",
+                self.bodies.len().saturating_sub(1),
+                "name",
+                format!(
+                    "{} bodies: a rig has 2 to {MAX_BODIES} bodies",
+                    self.bodies.len()
+                ),
+            ));
+        }
+        if self.meshes.len() > MAX_MESHES {
+            return Err(fault(
+                "mesh",
+                MAX_MESHES,
+                "name",
+                format!(
+                    "{} meshes: a rig has at most {MAX_MESHES}",
+                    self.meshes.len()
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    fn check_numbers(&self) -> Result<(), TopologyError> {
+        for (i, b) in self.bodies.iter().enumerate() {
+            positive(b.inertia_kgm2, ("body", i, "inertia_kgm2"))?;
+        }
+        for (i, s) in self.shafts.iter().enumerate() {
+            positive(s.stiffness_nm_per_rad, ("shaft", i, "stiffness_nm_per_rad"))?;
+            non_negative(s.damping_nms_per_rad, ("shaft", i, "damping_nms_per_rad"))?;
+            if s.between[0] == s.between[1] {
+                return Err(fault(
+                    "shaft",
+                    i,
+                    "between",
+                    "joins a body to itself: name two bodies".into(),
+                ));
+            }
+        }
+        for (i, m) in self.meshes.iter().enumerate() {
+            if m.teeth.iter().any(|&z| z < 5) {
+                return Err(fault(
+                    "mesh",
+                    i,
+                    "teeth",
+                    format!("{:?}: each gear needs at least 5 teeth", m.teeth),
+                ));
+            }
+            if m.gears[0] == m.gears[1] {
+                return Err(fault(
+                    "mesh",
+                    i,
+                    "driven",
+                    "the driven gear is the driver: name two bodies".into(),
+                ));
+            }
+            positive(m.module_m, ("mesh", i, "module_m"))?;
+            positive(m.backlash_mm, ("mesh", i, "backlash_mm"))?;
+            positive(m.stiffness_n_per_m, ("mesh", i, "stiffness_n_per_m"))?;
+            non_negative(m.damping_ns_per_m, ("mesh", i, "damping_ns_per_m"))?;
+            if !(m.pressure_angle_deg > 0.0 && m.pressure_angle_deg < 45.0) {
+                return Err(fault(
+                    "mesh",
+                    i,
+                    "pressure_angle_deg",
+                    format!(
+                        "{}: a pressure angle lies in (0, 45) degrees",
+                        m.pressure_angle_deg
+                    ),
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// Every body joined to the first by shafts and meshes.
+    fn check_connected(&self) -> Result<(), TopologyError> {
+        let speeds = self.relative_speeds();
+        match speeds.iter().position(Option::is_none) {
+            None => Ok(()),
+            Some(i) => Err(fault(
+                "body",
+                i,
+                "name",
+                format!(
+                    "`{}` is connected to nothing: join it by a shaft or a mesh to the rest of the rig",
+                    self.bodies[i].name
+                ),
+            )),
+        }
+    }
+
+    /// Each body's speed per unit speed of the first, propagated through shafts (1) and
+    /// meshes (−z₁/z₂) from the first body; `None` for a body not reached.
+    pub fn relative_speeds(&self) -> Vec<Option<f64>> {
+        let mut speed: Vec<Option<f64>> = vec![None; self.bodies.len()];
+        if speed.is_empty() {
+            return speed;
+        }
+        speed[0] = Some(1.0);
+        loop {
+            let mut changed = false;
+            for (a, b, ratio) in self.joints() {
+                match (speed[a], speed[b]) {
+                    (Some(x), None) => {
+                        speed[b] = Some(x * ratio);
+                        changed = true;
+                    }
+                    (None, Some(y)) => {
+                        speed[a] = Some(y / ratio);
+                        changed = true;
+                    }
+                    _ => {}
+                }
+            }
+            if !changed {
+                return speed;
+            }
+        }
+    }
+
+    /// Every joint as (body, body, speed of the second per unit speed of the first).
+    fn joints(&self) -> impl Iterator<Item = (usize, usize, f64)> + '_ {
+        let shafts = self
+            .shafts
+            .iter()
+            .map(|s| (s.between[0], s.between[1], 1.0));
+        let meshes = self
+            .meshes
+            .iter()
+            .map(|m| (m.gears[0], m.gears[1], m.speed_ratio()));
+        shafts.chain(meshes)
+    }
+
+    /// A closed loop turns as one only if the ratios around it multiply to 1: each joint
+    /// must agree with the speeds the others give its two bodies.
+    fn check_loops_close(&self) -> Result<(), TopologyError> {
+        let speeds = self.relative_speeds();
+        let shafts = self.shafts.len();
+        for (k, (a, b, ratio)) in self.joints().enumerate() {
+            let (Some(x), Some(y)) = (speeds[a], speeds[b]) else {
+                continue;
+            };
+            if (y - x * ratio).abs() > 1e-9 * x.abs().max(y.abs()) {
+                let (table, index, field) = if k < shafts {
+                    ("shaft", k, "between")
+                } else {
+                    ("mesh", k - shafts, "teeth")
+                };
+                return Err(fault(
+                    table,
+                    index,
+                    field,
+                    format!(
+                        "closes a loop whose ratios do not close: the rest of the rig turns `{}` at {:.6} times the speed of `{}`, this joint at {ratio:.6}; a back-to-back rig needs two gearboxes of equal ratio",
+                        self.bodies[b].name,
+                        y / x,
+                        self.bodies[a].name
+                    ),
+                ));
+            }
+        }
+        Ok(())
+    }
+}

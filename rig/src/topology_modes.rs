@@ -1,0 +1,50 @@
+//! The undamped natural modes of a rig of any topology with every mesh in contact and no
+//! speed controller (as the thesis's App. C takes the 1983 rig), the rigid-body mode left
+//! out. In absolute angles an external pair's deflection along the line of action is
+//! δ = r_b1 θ1 + r_b2 θ2, so its stiffness k adds k r_b1², k r_b2² to the gears' diagonal
+//! entries and k r_b1 r_b2 off the diagonal; a shaft adds k to each end and −k between.
+
+use nalgebra::DMatrix;
+
+use crate::modal::{NaturalMode, free_modes};
+use crate::topology::RigTopology;
+
+impl RigTopology {
+    /// The stiffness matrix in the bodies' absolute angles, meshes in contact (N m/rad).
+    pub fn stiffness_matrix(&self) -> DMatrix<f64> {
+        let n = self.bodies.len();
+        let mut k = DMatrix::zeros(n, n);
+        for s in &self.shafts {
+            let [a, b] = s.between;
+            let spring = s.stiffness_nm_per_rad;
+            k[(a, a)] += spring;
+            k[(b, b)] += spring;
+            k[(a, b)] -= spring;
+            k[(b, a)] -= spring;
+        }
+        for m in &self.meshes {
+            let [a, b] = m.gears;
+            let [ra, rb] = m.base_radii_m();
+            let spring = m.stiffness_n_per_m;
+            k[(a, a)] += spring * ra * ra;
+            k[(b, b)] += spring * rb * rb;
+            k[(a, b)] += spring * ra * rb;
+            k[(b, a)] += spring * ra * rb;
+        }
+        k
+    }
+
+    /// The flexible modes in ascending frequency (a checked rig: one connected body).
+    pub fn natural_modes(&self) -> Vec<NaturalMode> {
+        let inertia: Vec<f64> = self.bodies.iter().map(|b| b.inertia_kgm2).collect();
+        free_modes(&self.stiffness_matrix(), &inertia)
+    }
+
+    /// The undamped natural frequencies (Hz), ascending, rigid-body mode left out.
+    pub fn natural_frequencies_hz(&self) -> Vec<f64> {
+        self.natural_modes()
+            .iter()
+            .map(|m| m.frequency_hz)
+            .collect()
+    }
+}

@@ -1,0 +1,237 @@
+//! A rig file read into a checked `rig::RigTopology`: names resolved to bodies and
+//! shafts, defaults filled in, the topology checked (`RigTopology::check`); every fault
+//! at file:line:column with its field and what is allowed.
+
+use std::collections::HashMap;
+use std::ops::Range;
+use std::path::Path;
+
+use rig::{Body, LockedTorque, Mesh, RigTopology, Shaft, TopologyPlace};
+use toml::Spanned;
+
+use super::rig_file_toml::{MeshToml, RigFileToml, ShaftToml};
+use super::source::ScenarioSource;
+
+/// Pressure angle where a mesh leaves it out (degrees): the standard 20°.
+const DEFAULT_PRESSURE_ANGLE_DEG: f64 = 20.0;
+
+/// Reads and checks the rig file at `path`.
+pub fn read_rig_file(path: &Path) -> anyhow::Result<RigTopology> {
+    rig_topology(&ScenarioSource::read(path)?)
+}
+
+/// The checked rig of a rig file's text.
+pub fn rig_topology(src: &ScenarioSource) -> anyhow::Result<RigTopology> {
+    let file: RigFileToml = src.parse_rig_file()?;
+    let rig = build(src, &file)?;
+    rig.check()
+        .map_err(|e| src.error(span_of(&file, &e.place), &field_name(&file, &e.place), &e))?;
+    Ok(rig)
+}
+
+/// The rig the file describes, its names resolved.
+fn build(src: &ScenarioSource, file: &RigFileToml) -> anyhow::Result<RigTopology> {
+    let bodies = names(src, "body", file.bodies.iter().map(|b| &b.name))?;
+    let shaft_names = names(src, "shaft", file.shafts.iter().map(|s| &s.name))?;
+    names(src, "mesh", file.meshes.iter().map(|m| &m.name))?;
+    let body = |name: &Spanned<String>, field: &str| -> anyhow::Result<usize> {
+        bodies.get(name.get_ref().as_str()).copied().ok_or_else(|| {
+            src.error(
+                name.span(),
+                field,
+                format!(
+                    "no body `{}`; the bodies are {}",
+                    name.get_ref(),
+                    listed(file.bodies.iter().map(|b| b.name.get_ref()))
+                ),
+            )
+        })
+    };
+    let shafts = file
+        .shafts
+        .iter()
+        .map(|s| shaft(src, s, &body))
+        .collect::<anyhow::Result<Vec<_>>>()?;
+    let meshes = file
+        .meshes
+        .iter()
+        .map(|m| mesh(src, m, &body))
+        .collect::<anyhow::Result<Vec<_>>>()?;
+    let locked_torque = match &file.locked_torque {
+        None => None,
+        Some(l) => {
+            let shaft = *shaft_names.get(l.shaft.get_ref().as_str()).ok_or_else(|| {
+                src.error(
+                    l.shaft.span(),
+                    "locked_torque.shaft",
+                    format!(
+                        "no shaft `{}`; the shafts are {}",
+                        l.shaft.get_ref(),
+                        listed(file.shafts.iter().map(|s| s.name.get_ref()))
+                    ),
+                )
+            })?;
+            Some(LockedTorque {
+                shaft,
+                torque_nm: *l.torque_nm.get_ref(),
+            })
+        }
+    };
+    Ok(RigTopology {
+        name: file.name.get_ref().clone(),
+        description: file.description.clone().unwrap_or_default(),
+        bodies: file
+            .bodies
+            .iter()
+            .map(|b| Body {
+                name: b.name.get_ref().clone(),
+                inertia_kgm2: *b.inertia_kgm2.get_ref(),
+            })
+            .collect(),
+        shafts,
+        meshes,
+        motor: file
+            .motor
+            .as_ref()
+            .map(|m| body(&m.body, "motor.body"))
+            .transpose()?,
+        brake: file
+            .brake
+            .as_ref()
+            .map(|b| body(&b.body, "brake.body"))
+            .transpose()?,
+        locked_torque,
+    })
+}
+
+/// Each name of a `table`'s items to its index; a repeated name is refused at its place.
+fn names<'a>(
+    src: &ScenarioSource,
+    table: &str,
+    items: impl Iterator<Item = &'a Spanned<String>>,
+) -> anyhow::Result<HashMap<&'a str, usize>> {
+    let mut map = HashMap::new();
+    for (i, name) in items.enumerate() {
+        if map.insert(name.get_ref().as_str(), i).is_some() {
+            return Err(src.error(
+                name.span(),
+                &format!("{table}.name"),
+                format!(
+                    "`{}` names two {table}s: each needs its own name",
+                    name.get_ref()
+                ),
+            ));
+        }
+    }
+    Ok(map)
+}
+
+fn shaft(
+    src: &ScenarioSource,
+    s: &ShaftToml,
+    body: &impl Fn(&Spanned<String>, &str) -> anyhow::Result<usize>,
+) -> anyhow::Result<Shaft> {
+    let field = format!("shaft `{}`.between", s.name.get_ref());
+    let [a, b] = s.between.get_ref().as_slice() else {
+        return Err(src.error(
+            s.between.span(),
+            &field,
+            format!(
+                "{} bodies: a shaft joins two, e.g. between = [\"motor\", \"pinion\"]",
+                s.between.get_ref().len()
+            ),
+        ));
+    };
+    Ok(Shaft {
+        name: s.name.get_ref().clone(),
+        between: [body(a, &field)?, body(b, &field)?],
+        stiffness_nm_per_rad: *s.stiffness_nm_per_rad.get_ref(),
+        damping_nms_per_rad: s.damping_nms_per_rad.as_ref().map_or(0.0, |d| *d.get_ref()),
+    })
+}
+
+fn mesh(
+    src: &ScenarioSource,
+    m: &MeshToml,
+    body: &impl Fn(&Spanned<String>, &str) -> anyhow::Result<usize>,
+) -> anyhow::Result<Mesh> {
+    let name = m.name.get_ref();
+    let [z1, z2] = m.teeth.get_ref().as_slice() else {
+        return Err(src.error(
+            m.teeth.span(),
+            &format!("mesh `{name}`.teeth"),
+            format!(
+                "{:?}: the teeth of the driver and the driven gear, e.g. teeth = [20, 60]",
+                m.teeth.get_ref()
+            ),
+        ));
+    };
+    Ok(Mesh {
+        name: name.clone(),
+        gears: [
+            body(&m.driver, &format!("mesh `{name}`.driver"))?,
+            body(&m.driven, &format!("mesh `{name}`.driven"))?,
+        ],
+        teeth: [*z1, *z2],
+        module_m: *m.module_m.get_ref(),
+        pressure_angle_deg: m
+            .pressure_angle_deg
+            .as_ref()
+            .map_or(DEFAULT_PRESSURE_ANGLE_DEG, |a| *a.get_ref()),
+        backlash_mm: *m.backlash_mm.get_ref(),
+        stiffness_n_per_m: *m.stiffness_n_per_m.get_ref(),
+        damping_ns_per_m: m.damping_ns_per_m.as_ref().map_or(0.0, |d| *d.get_ref()),
+    })
+}
+
+/// `names` as "`a`, `b`, `c`".
+fn listed<'a>(names: impl Iterator<Item = &'a String>) -> String {
+    names
+        .map(|n| format!("`{n}`"))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// The field a check's fault names, as the file writes it (`shaft `input`.stiffness…`).
+fn field_name(file: &RigFileToml, place: &TopologyPlace) -> String {
+    let item = match place.table {
+        "body" => file.bodies.get(place.index).map(|b| b.name.get_ref()),
+        "shaft" => file.shafts.get(place.index).map(|s| s.name.get_ref()),
+        "mesh" => file.meshes.get(place.index).map(|m| m.name.get_ref()),
+        _ => None,
+    };
+    match item {
+        Some(name) => format!("{} `{name}`.{}", place.table, place.field),
+        None => format!("{}.{}", place.table, place.field),
+    }
+}
+
+/// Where in the file a check's fault lies (0..0, no line, where the file has no such value).
+fn span_of(file: &RigFileToml, place: &TopologyPlace) -> Range<usize> {
+    let i = place.index;
+    let span = match (place.table, place.field) {
+        ("body", "inertia_kgm2") => file.bodies.get(i).map(|b| b.inertia_kgm2.span()),
+        ("body", _) => file.bodies.get(i).map(|b| b.name.span()),
+        ("shaft", "stiffness_nm_per_rad") => {
+            file.shafts.get(i).map(|s| s.stiffness_nm_per_rad.span())
+        }
+        ("shaft", "damping_nms_per_rad") => file
+            .shafts
+            .get(i)
+            .and_then(|s| s.damping_nms_per_rad.as_ref().map(Spanned::span)),
+        ("shaft", _) => file.shafts.get(i).map(|s| s.between.span()),
+        ("mesh", field) => file.meshes.get(i).and_then(|m| match field {
+            "teeth" => Some(m.teeth.span()),
+            "module_m" => Some(m.module_m.span()),
+            "backlash_mm" => Some(m.backlash_mm.span()),
+            "stiffness_n_per_m" => Some(m.stiffness_n_per_m.span()),
+            "damping_ns_per_m" => m.damping_ns_per_m.as_ref().map(Spanned::span),
+            "pressure_angle_deg" => m.pressure_angle_deg.as_ref().map(Spanned::span),
+            "driven" => Some(m.driven.span()),
+            _ => Some(m.name.span()),
+        }),
+        ("locked_torque", _) => file.locked_torque.as_ref().map(|l| l.torque_nm.span()),
+        _ => None,
+    };
+    span.unwrap_or(0..0)
+}

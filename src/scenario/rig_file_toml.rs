@@ -1,0 +1,101 @@
+//! The rig file's schema (TOML; `docs/rig-files.md`): bodies, shafts, meshes, the motor's
+//! and the brake's body, the torque locked into a loop. Unknown keys are refused; every
+//! value keeps its place in the file for errors.
+
+use serde::Deserialize;
+use toml::Spanned;
+
+/// A rig file.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RigFileToml {
+    /// The rig's name.
+    pub name: Spanned<String>,
+    /// What it is.
+    #[serde(default)]
+    pub description: Option<String>,
+    /// `[[body]]` tables.
+    #[serde(default, rename = "body")]
+    pub bodies: Vec<BodyToml>,
+    /// `[[shaft]]` tables.
+    #[serde(default, rename = "shaft")]
+    pub shafts: Vec<ShaftToml>,
+    /// `[[mesh]]` tables.
+    #[serde(default, rename = "mesh")]
+    pub meshes: Vec<MeshToml>,
+    /// `[motor]`: the body the motor drives.
+    pub motor: Option<EndToml>,
+    /// `[brake]`: the body the brake loads.
+    pub brake: Option<EndToml>,
+    /// `[locked_torque]`: a back-to-back loop's locked-in torque.
+    pub locked_torque: Option<LockedTorqueToml>,
+}
+
+/// `[[body]]`: one rotating inertia.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BodyToml {
+    /// Unique name.
+    pub name: Spanned<String>,
+    /// Moment of inertia (kg m²).
+    pub inertia_kgm2: Spanned<f64>,
+}
+
+/// `[[shaft]]`: a torsional spring-damper between two bodies.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ShaftToml {
+    /// Unique name.
+    pub name: Spanned<String>,
+    /// The two bodies it joins, by name.
+    pub between: Spanned<Vec<Spanned<String>>>,
+    /// Torsional stiffness (N m/rad).
+    pub stiffness_nm_per_rad: Spanned<f64>,
+    /// Torsional damping (N m s/rad); 0 when left out.
+    #[serde(default)]
+    pub damping_nms_per_rad: Option<Spanned<f64>>,
+}
+
+/// `[[mesh]]`: an external spur pair with backlash.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MeshToml {
+    /// Unique name.
+    pub name: Spanned<String>,
+    /// The driving gear's body.
+    pub driver: Spanned<String>,
+    /// The driven gear's body.
+    pub driven: Spanned<String>,
+    /// Teeth of the driver and the driven gear.
+    pub teeth: Spanned<Vec<u32>>,
+    /// Module (m).
+    pub module_m: Spanned<f64>,
+    /// Pressure angle (degrees); 20 when left out.
+    #[serde(default)]
+    pub pressure_angle_deg: Option<Spanned<f64>>,
+    /// Total circular backlash at the pitch circles (mm).
+    pub backlash_mm: Spanned<f64>,
+    /// Stiffness of one tooth pair along the line of action (N/m).
+    pub stiffness_n_per_m: Spanned<f64>,
+    /// Damping along the line of action (N s/m); 0 when left out.
+    #[serde(default)]
+    pub damping_ns_per_m: Option<Spanned<f64>>,
+}
+
+/// `[motor]` or `[brake]`: the body it acts on.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct EndToml {
+    /// The body, by name.
+    pub body: Spanned<String>,
+}
+
+/// `[locked_torque]`: the twist locked into one shaft of a back-to-back loop.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LockedTorqueToml {
+    /// The shaft, by name.
+    pub shaft: Spanned<String>,
+    /// The torque it carries at rest (N m).
+    pub torque_nm: Spanned<f64>,
+}

@@ -1,0 +1,272 @@
+//! Rig files (`docs/rig-files.md`): the 1983 rig as a file gives the preset's natural
+//! frequencies; rigs nobody tuned (a two-stage reduction, an FZG-type back-to-back loop)
+//! give frequencies that are roots of det(K − ω²M) for K and M assembled here from the
+//! file's numbers, independently of the application; bad files are refused at their
+//! line, naming the field and what is allowed.
+
+mod common;
+
+use nalgebra::DMatrix;
+
+use common::{folder, testrig};
+
+fn rig_file(name: &str) -> String {
+    format!("{}/scenarios/rigs/{name}.toml", env!("CARGO_MANIFEST_DIR"))
+}
+
+fn json_of(args: &[&str]) -> serde_json::Value {
+    let out = testrig(args);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).expect("JSON")
+}
+
+fn numbers(value: &serde_json::Value) -> Vec<f64> {
+    value
+        .as_array()
+        .expect("array")
+        .iter()
+        .map(|v| v.as_f64().expect("number"))
+        .collect()
+}
+
+#[test]
+fn the_1983_rig_file_has_the_presets_natural_frequencies() {
+    let from_file = json_of(&["modes", "--rig", &rig_file("basmaji-1983"), "--json"]);
+    let preset = json_of(&["modes", "--json"]);
+    let (file_hz, preset_hz) = (
+        numbers(&from_file["natural_hz"]),
+        numbers(&preset["locked_mesh_hz"]),
+    );
+    assert_eq!(file_hz.len(), 4);
+    for (a, b) in file_hz.iter().zip(&preset_hz) {
+        assert!(
+            (a / b - 1.0).abs() < 1e-4,
+            "{file_hz:?} against {preset_hz:?}"
+        );
+    }
+    // App. C's five-inertia rig with the teeth locked: 17.71 Hz fundamental, 1977 Hz mesh.
+    assert!((file_hz[0] - 17.71).abs() < 0.01 && (file_hz[3] - 1976.6).abs() < 0.1);
+}
+
+/// K and M of a rig file, assembled from its TOML here: shafts k(θa − θb)², meshes
+/// k(r_b1 θ1 + r_b2 θ2)² with r_b = m z cos α / 2.
+fn matrices(path: &str) -> (DMatrix<f64>, DMatrix<f64>) {
+    let text = std::fs::read_to_string(path).expect("rig file");
+    let file: toml::Table = toml::from_str(&text).expect("TOML");
+    let bodies = file["body"].as_array().expect("bodies");
+    let index = |name: &toml::Value| {
+        bodies
+            .iter()
+            .position(|b| b["name"] == *name)
+            .expect("a body")
+    };
+    let n = bodies.len();
+    let mass = DMatrix::from_fn(n, n, |r, c| {
+        if r == c {
+            bodies[r]["inertia_kgm2"].as_float().expect("inertia")
+        } else {
+            0.0
+        }
+    });
+    let mut k = DMatrix::zeros(n, n);
+    for shaft in file["shaft"].as_array().expect("shafts") {
+        let between = shaft["between"].as_array().expect("between");
+        let (a, b) = (index(&between[0]), index(&between[1]));
+        let s = shaft["stiffness_nm_per_rad"].as_float().expect("stiffness");
+        k[(a, a)] += s;
+        k[(b, b)] += s;
+        k[(a, b)] -= s;
+        k[(b, a)] -= s;
+    }
+    for mesh in file["mesh"].as_array().expect("meshes") {
+        let (a, b) = (index(&mesh["driver"]), index(&mesh["driven"]));
+        let teeth = mesh["teeth"].as_array().expect("teeth");
+        let module = mesh["module_m"].as_float().expect("module");
+        let cos = mesh["pressure_angle_deg"]
+            .as_float()
+            .expect("angle")
+            .to_radians()
+            .cos();
+        let radius = |z: &toml::Value| module * z.as_integer().expect("teeth") as f64 * cos / 2.0;
+        let (ra, rb) = (radius(&teeth[0]), radius(&teeth[1]));
+        let s = mesh["stiffness_n_per_m"].as_float().expect("stiffness");
+        k[(a, a)] += s * ra * ra;
+        k[(b, b)] += s * rb * rb;
+        k[(a, b)] += s * ra * rb;
+        k[(b, a)] += s * ra * rb;
+    }
+    (k, mass)
+}
+
+/// det(K − ω²M) at `hz`.
+fn characteristic(k: &DMatrix<f64>, m: &DMatrix<f64>, hz: f64) -> f64 {
+    let omega = std::f64::consts::TAU * hz;
+    (k - m * (omega * omega)).determinant()
+}
+
+#[test]
+fn rigs_nobody_tuned_have_the_roots_of_their_own_characteristic_equation() {
+    for name in ["two-stage", "fzg-back-to-back"] {
+        let path = rig_file(name);
+        let modes = json_of(&["modes", "--rig", &path, "--json"]);
+        let hz = numbers(&modes["natural_hz"]);
+        let (k, m) = matrices(&path);
+        // One rigid-body mode left out: a connected rig of n bodies has n − 1 others.
+        assert_eq!(hz.len(), k.nrows() - 1, "{name}: {hz:?}");
+        // Each reported frequency is a root: the determinant changes sign within 0.01 %.
+        for &f in &hz {
+            let (below, above) = (
+                characteristic(&k, &m, f * (1.0 - 1e-4)),
+                characteristic(&k, &m, f * (1.0 + 1e-4)),
+            );
+            assert!(
+                below * above < 0.0,
+                "{name}: {f} Hz is no root ({below}, {above})"
+            );
+        }
+        // …and there is no other below the highest: between neighbours no sign change
+        // is missed (the determinant's sign flips once per root).
+        let mut sign = characteristic(&k, &m, hz[0] * 0.5).signum();
+        let mut roots = 0;
+        let top = hz[hz.len() - 1] * 1.5;
+        let steps = 200_000;
+        for i in 1..=steps {
+            let f = top * i as f64 / steps as f64;
+            let s = characteristic(&k, &m, f).signum();
+            if f > hz[0] * 0.5 && s != sign {
+                roots += 1;
+                sign = s;
+            }
+        }
+        assert_eq!(
+            roots,
+            hz.len(),
+            "{name}: {roots} roots up to {top} Hz, {hz:?}"
+        );
+    }
+}
+
+/// Writes `text` as a rig file in `dir` and runs `modes --rig` on it: its stderr.
+fn refused(dir: &std::path::Path, name: &str, text: &str) -> String {
+    let path = dir.join(format!("{name}.toml"));
+    std::fs::write(&path, text).expect("written");
+    let out = testrig(&["modes", "--rig", path.to_str().expect("utf-8")]);
+    assert!(!out.status.success(), "{name} accepted");
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    stderr
+}
+
+#[test]
+fn bad_rig_files_are_refused_at_their_line_naming_the_field_and_what_is_allowed() {
+    let dir = folder("bad-rigs");
+    let good = std::fs::read_to_string(rig_file("two-stage")).expect("rig");
+    // (name, the line as written, the line as mangled, what the error must say); the
+    // error's line is the mangled line's, where the file has one.
+    let cases: Vec<(&str, &str, &str, Vec<&str>)> = vec![
+        (
+            "unknown-body",
+            "between = [\"wheel1\", \"pinion2\"]",
+            "between = [\"wheel1\", \"pinion9\"]",
+            vec![
+                "shaft `intermediate`.between",
+                "no body `pinion9`",
+                "`pinion2`",
+            ],
+        ),
+        (
+            "zero-inertia",
+            "inertia_kgm2 = 0.012",
+            "inertia_kgm2 = 0.0",
+            vec!["body `wheel1`.inertia_kgm2", "must be a finite number > 0"],
+        ),
+        (
+            "negative-stiffness",
+            "stiffness_nm_per_rad = 5000.0",
+            "stiffness_nm_per_rad = -5000.0",
+            vec!["shaft `input`.stiffness_nm_per_rad", "> 0"],
+        ),
+        (
+            "teeth-missing",
+            "teeth = [20, 60]",
+            "teeth = [20]",
+            vec![
+                "mesh `stage1`.teeth",
+                "the teeth of the driver and the driven gear",
+            ],
+        ),
+        (
+            "duplicate-name",
+            "name = \"coupling\"",
+            "name = \"motor\"",
+            vec!["body.name", "`motor` names two bodys"],
+        ),
+        (
+            "unknown-key",
+            "module_m = 0.003",
+            "modul_m = 0.003",
+            vec!["unknown field `modul_m`", "module_m"],
+        ),
+    ];
+    for (name, old, new, expected) in cases {
+        let at = good.find(old).expect("the line is in the file");
+        let line = good[..at].lines().count() + usize::from(good[..at].ends_with('\n'));
+        let stderr = refused(&dir, name, &good.replacen(old, new, 1));
+        let place = format!("{name}.toml:{line}:");
+        assert!(stderr.contains(&place), "{name}: `{place}` not in {stderr}");
+        for e in expected {
+            assert!(stderr.contains(e), "{name}: `{e}` not in {stderr}");
+        }
+    }
+    // A body joined to nothing (the brake's shaft moved onto another body).
+    let stderr = refused(
+        &dir,
+        "connected-to-nothing",
+        &good.replacen(
+            "between = [\"flywheel\", \"brake\"]",
+            "between = [\"flywheel\", \"wheel2\"]",
+            1,
+        ),
+    );
+    assert!(
+        stderr.contains("body `brake`.name") && stderr.contains("connected to nothing"),
+        "{stderr}"
+    );
+    // A back-to-back loop whose two gearboxes differ does not turn as one.
+    let loop_rig = std::fs::read_to_string(rig_file("fzg-back-to-back")).expect("rig");
+    let stderr = refused(
+        &dir,
+        "unequal-loop",
+        &loop_rig.replacen("teeth = [24, 16]", "teeth = [25, 16]", 1),
+    );
+    // Which joint of the loop is named depends on the order the speeds were found in:
+    // any of them closes the loop wrongly.
+    assert!(
+        stderr.contains("unequal-loop.toml:")
+            && stderr.contains("ratios do not close")
+            && stderr.contains("two gearboxes of equal ratio"),
+        "{stderr}"
+    );
+    // Too many bodies, too many meshes.
+    let mut many = String::from("name = \"many\"\n");
+    for i in 0..33 {
+        many.push_str(&format!("[[body]]\nname = \"b{i}\"\ninertia_kgm2 = 1.0\n"));
+    }
+    let stderr = refused(&dir, "too-many-bodies", &many);
+    assert!(
+        stderr.contains("33 bodies: a rig has 2 to 32 bodies"),
+        "{stderr}"
+    );
+    let mut meshes = good.clone();
+    for i in 0..3 {
+        meshes.push_str(&format!(
+            "[[mesh]]\nname = \"extra{i}\"\ndriver = \"pinion1\"\ndriven = \"wheel1\"\nteeth = [20, 60]\nmodule_m = 0.003\nbacklash_mm = 0.2\nstiffness_n_per_m = 2.8e8\n"
+        ));
+    }
+    let stderr = refused(&dir, "too-many-meshes", &meshes);
+    assert!(stderr.contains("5 meshes: a rig has at most 4"), "{stderr}");
+}
