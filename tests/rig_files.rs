@@ -270,3 +270,34 @@ fn bad_rig_files_are_refused_at_their_line_naming_the_field_and_what_is_allowed(
     let stderr = refused(&dir, "too-many-meshes", &meshes);
     assert!(stderr.contains("5 meshes: a rig has at most 4"), "{stderr}");
 }
+
+#[test]
+fn params_of_a_rig_file_list_every_field_by_path_and_the_speed_ratios() {
+    let two = json_of(&["params", "--rig", &rig_file("two-stage"), "--json"]);
+    let value = |rows: &serde_json::Value, name: &str| -> String {
+        rows.as_array()
+            .expect("rows")
+            .iter()
+            .find(|r| r["name"] == name)
+            .unwrap_or_else(|| panic!("no {name}"))["value"]
+            .as_str()
+            .expect("text")
+            .to_string()
+    };
+    assert_eq!(value(&two["fields"], "mesh.stage1.backlash_mm"), "0.2");
+    assert_eq!(
+        value(&two["fields"], "shaft.output.stiffness_nm_per_rad"),
+        "60000"
+    );
+    // 20/60 then 18/54: the brake turns at 1/9 of the motor's speed, the same way.
+    let brake: f64 = value(&two["derived"], "body.brake.speed_ratio")
+        .parse()
+        .expect("number");
+    assert!((brake - 1.0 / 9.0).abs() < 1e-6, "{brake}");
+    let fzg = json_of(&["params", "--rig", &rig_file("fzg-back-to-back"), "--json"]);
+    let wheel: f64 = value(&fzg["derived"], "body.test_wheel.speed_ratio")
+        .parse()
+        .expect("number");
+    assert!((wheel + 16.0 / 24.0).abs() < 1e-6, "{wheel}");
+    assert_eq!(value(&fzg["fields"], "locked_torque.torque_nm"), "302");
+}

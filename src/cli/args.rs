@@ -237,6 +237,10 @@ pub struct ParamsArgs {
     /// Parameters.
     #[command(flatten)]
     pub rig: RigArgs,
+    /// A rig file (docs/rig-files.md) instead of a preset: every field by its path
+    /// (`mesh.stage1.backlash_mm`), with unit, and what follows from them.
+    #[arg(long = "rig", value_name = "FILE", conflicts_with = "overrides")]
+    pub rig_file: Option<PathBuf>,
     /// Print JSON instead of a table.
     #[arg(long)]
     pub json: bool,

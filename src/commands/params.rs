@@ -4,9 +4,12 @@ use rig::{DERIVED_SPECS, GearGeometry, PARAM_SPECS, ParamSpec};
 use serde_json::json;
 
 use crate::cli::ParamsArgs;
-use testrig::scenario::preset_with_overrides;
+use testrig::scenario::{preset_with_overrides, read_rig_file};
 
 pub fn run(args: &ParamsArgs) -> anyhow::Result<()> {
+    if let Some(path) = &args.rig_file {
+        return rig_file_params(path, args.json);
+    }
     let params = preset_with_overrides(&args.rig.preset, &args.rig.overrides)?;
     let geometry = GearGeometry::of(&params);
     let (kp, ki) = params.speed_loop_gains();
@@ -124,4 +127,120 @@ fn print_table(sections: &[(&str, Vec<[String; 4]>)]) {
             println!("{name:<name_w$} {value:>value_w$} {unit:<unit_w$} {meaning}");
         }
     }
+}
+
+/// Every field of the rig file at `path` by its path, with unit and meaning, then what
+/// follows from them (base radii, each body's speed per unit motor speed).
+fn rig_file_params(path: &std::path::Path, as_json: bool) -> anyhow::Result<()> {
+    let rig = read_rig_file(path)?;
+    let row = |name: String, value: String, unit: &str, meaning: &str| {
+        [name, value, unit.to_string(), meaning.to_string()]
+    };
+    let mut fields = Vec::new();
+    for b in &rig.bodies {
+        fields.push(row(
+            format!("body.{}.inertia_kgm2", b.name),
+            b.inertia_kgm2.to_string(),
+            "kg m^2",
+            "moment of inertia",
+        ));
+    }
+    for s in &rig.shafts {
+        let between = format!(
+            "between {} and {}",
+            rig.bodies[s.between[0]].name, rig.bodies[s.between[1]].name
+        );
+        fields.push(row(
+            format!("shaft.{}.stiffness_nm_per_rad", s.name),
+            s.stiffness_nm_per_rad.to_string(),
+            "N m/rad",
+            &between,
+        ));
+        fields.push(row(
+            format!("shaft.{}.damping_nms_per_rad", s.name),
+            s.damping_nms_per_rad.to_string(),
+            "N m s/rad",
+            &between,
+        ));
+    }
+    let mut derived = Vec::new();
+    for m in &rig.meshes {
+        let gears = format!(
+            "{} drives {}",
+            rig.bodies[m.gears[0]].name, rig.bodies[m.gears[1]].name
+        );
+        let p = |field: &str| format!("mesh.{}.{field}", m.name);
+        fields.push(row(
+            p("teeth"),
+            format!("{}/{}", m.teeth[0], m.teeth[1]),
+            "1",
+            &gears,
+        ));
+        fields.push(row(p("module_m"), m.module_m.to_string(), "m", "module"));
+        fields.push(row(
+            p("pressure_angle_deg"),
+            m.pressure_angle_deg.to_string(),
+            "deg",
+            "pressure angle",
+        ));
+        fields.push(row(
+            p("backlash_mm"),
+            m.backlash_mm.to_string(),
+            "mm",
+            "total circular backlash at the pitch circles",
+        ));
+        fields.push(row(
+            p("stiffness_n_per_m"),
+            m.stiffness_n_per_m.to_string(),
+            "N/m",
+            "one tooth pair, along the line of action",
+        ));
+        fields.push(row(
+            p("damping_ns_per_m"),
+            m.damping_ns_per_m.to_string(),
+            "N s/m",
+            "along the line of action",
+        ));
+        let [ra, rb] = m.base_radii_m();
+        derived.push(row(
+            p("base_radii_m"),
+            format!("{ra:.6e}/{rb:.6e}"),
+            "m",
+            "r_b = m z cos(alpha) / 2",
+        ));
+    }
+    if let Some(locked) = &rig.locked_torque {
+        fields.push(row(
+            "locked_torque.torque_nm".into(),
+            locked.torque_nm.to_string(),
+            "N m",
+            &format!("locked into shaft {}", rig.shafts[locked.shaft].name),
+        ));
+    }
+    let speeds = rig.relative_speeds();
+    let reference = rig.motor.and_then(|m| speeds[m]).unwrap_or(1.0);
+    for (b, speed) in rig.bodies.iter().zip(&speeds) {
+        let ratio = speed.map_or(f64::NAN, |s| s / reference);
+        derived.push(row(
+            format!("body.{}.speed_ratio", b.name),
+            format!("{ratio:.6}"),
+            "1",
+            "speed per unit speed of the motor's body (negative: turns the other way)",
+        ));
+    }
+    if as_json {
+        let as_json = |rows: &[[String; 4]]| -> Vec<serde_json::Value> {
+            rows.iter()
+                .map(|[n, v, u, m]| json!({"name": n, "value": v, "unit": u, "meaning": m}))
+                .collect()
+        };
+        println!(
+            "{}",
+            json!({"rig": rig.name, "fields": as_json(&fields), "derived": as_json(&derived)})
+        );
+        return Ok(());
+    }
+    println!("rig {} ({})", rig.name, rig.description);
+    print_table(&[("", fields), ("derived", derived)]);
+    Ok(())
 }
