@@ -53,6 +53,11 @@ pub fn clear_previous_run(dir: &Path, scenario: &str, replace: bool) -> anyhow::
     Ok(removed + remove_partial_files(dir)?)
 }
 
+/// The scenario (or command) of the run whose manifest is in `dir`, if one is.
+pub fn manifest_scenario(dir: &Path) -> Option<String> {
+    manifest_files(dir).ok()?.1
+}
+
 /// The files `dir/manifest.json` lists, as paths in `dir`, and the scenario it ran
 /// (nothing without a manifest).
 fn manifest_files(dir: &Path) -> anyhow::Result<(Vec<PathBuf>, Option<String>)> {

@@ -1,6 +1,7 @@
 //! Running a sweep: this shard's cases in parallel (rayon) with a progress bar, each
 //! written as it finishes; then the table and the plots from every finished case.
 
+use crate::runtime::previous_run::manifest_scenario;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -168,11 +169,7 @@ fn work_units(plan: &SweepPlan, shard: Shard) -> Vec<Vec<&Case>> {
 /// so that they are not assembled with this one's; with `--resume` that is an error.
 /// Cases of this same sweep (other shards writing to one folder) stay.
 fn clear_other_sweep(dir: &Path, meta: &SweepMeta, resume: bool) -> anyhow::Result<()> {
-    if let Ok(text) = std::fs::read_to_string(dir.join("manifest.json")) {
-        let earlier = serde_json::from_str::<serde_json::Value>(&text)
-            .ok()
-            .and_then(|v| v["scenario"].as_str().map(str::to_string))
-            .unwrap_or_default();
+    if let Some(earlier) = manifest_scenario(dir) {
         anyhow::bail!(
             "--out {}: holds the files of a run (`{earlier}`, its manifest.json), not a sweep's cases: choose another folder",
             dir.display()
