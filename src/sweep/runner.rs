@@ -1,7 +1,6 @@
 //! Running a sweep: this shard's cases in parallel (rayon) with a progress bar, each
 //! written as it finishes; then the table and the plots from every finished case.
 
-use crate::runtime::previous_run::manifest_scenario;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -24,6 +23,7 @@ use crate::plots::{
     write_regime_map, write_waterfall,
 };
 use crate::recording::remove_files_with_extension;
+use crate::runtime::previous_run::manifest_scenario;
 
 /// How to run.
 #[derive(Clone, Debug)]
