@@ -248,7 +248,7 @@ function show() {
   $("status").textContent =
     `t ${state.simulated_s.toFixed(1)} s | set ${state.speed_set_rpm} rev/min ${state.load_set_nm} N m | ` +
     `late ${state.lateness_ms.toFixed(2)} ms | overruns ${state.overruns} | ADC overloads ${state.adc_overloads} | ` +
-    `pace ${info ? info.pace : "–"} | impacts ${impactRate.toFixed(0)}/s | motion ${state.motion ?? "–"} (regime ${state.regime ?? "–"}; judged over 10 s once settled)`;
+    `pace ${info ? info.pace : "–"} | impacts ${impactRate.toFixed(0)}/s | ${motionText(state)}`;
   drawScope();
   drawSpectrum();
 }
@@ -267,3 +267,12 @@ async function connect() {
   ws.onclose = () => { $("status").textContent = "disconnected: the session has ended"; };
 }
 connect();
+
+// The judged motion for the status line: "settling" until the rig has settled after a
+// change of set points, then the verdict on the last 10 s with the old regime beside it.
+function motionText(state) {
+  if (state.motion == null || state.motion === "settling") {
+    return "motion settling (judged over 10 s once settled)";
+  }
+  return `motion ${state.motion} (last 10 s; regime ${state.regime ?? "–"})`;
+}
