@@ -44,6 +44,7 @@ mod block;
 mod brake_drive;
 mod bridge;
 mod carrier;
+mod condition_indicators;
 mod error;
 mod keyboard_program;
 mod lowpass;
@@ -52,6 +53,7 @@ mod scope;
 mod slip_ring;
 mod spectrum;
 mod strain;
+mod synchronous_average;
 mod tacho;
 mod truth;
 mod voltmeter;
@@ -64,6 +66,10 @@ pub use block::Block;
 pub use brake_drive::{BrakeDrive, BrakeDriveSettings};
 pub use bridge::{BridgeArrangement, StrainBridge};
 pub use carrier::{CarrierDemodulator, CarrierModulator, CarrierSettings};
+pub use condition_indicators::{
+    ConditionIndicators, GearSignals, SHAFT_ORDERS, condition_indicators, gear_signals,
+    normalised_moment,
+};
 pub use error::InstrumentError;
 pub use keyboard_program::{KeyboardProgram, ProgramStep};
 pub use lowpass::{AntiAliasFilter, FilterKind, LowPassSpec};
@@ -72,6 +78,7 @@ pub use scope::{Scope, ScopeSettings, Slope, SweepMode};
 pub use slip_ring::{SlipRing, SlipRingSettings};
 pub use spectrum::{Spectrum, SpectrumEstimator};
 pub use strain::ShaftStrain;
+pub use synchronous_average::synchronous_average;
 pub use tacho::{CROMPTON_PARKINSON_V_PER_RPM, DigitalVoltmeter, Tacho};
 pub use truth::AliasTruth;
 pub use voltmeter::{Detector, Voltmeter};

@@ -1,0 +1,59 @@
+//! Time-synchronous averaging: a signal cut into revolutions at the tacho's
+//! once-per-revolution pulses, each revolution resampled to the same number of points
+//! (linear interpolation between the stream's samples), and the revolutions averaged.
+//! What is not locked to the shaft (noise, other shafts) averages away as 1/√revolutions.
+
+use crate::error::InstrumentError;
+
+/// The average revolution of `signal` (sampled at `rate_hz`) over the revolutions that
+/// start at each of `pulses_s` (s; ascending) and end at the next: `points` values per
+/// revolution. At least one whole revolution must lie inside the signal.
+pub fn synchronous_average(
+    signal: &[f64],
+    rate_hz: f64,
+    pulses_s: &[f64],
+    points: usize,
+) -> Result<Vec<f64>, InstrumentError> {
+    if points < 8 || !(rate_hz.is_finite() && rate_hz > 0.0) {
+        return Err(InstrumentError::setting(
+            "synchronous average",
+            "points per revolution",
+            points as f64,
+            "at least 8 points on a stream of a positive rate",
+        ));
+    }
+    let last_s = signal.len().saturating_sub(1) as f64 / rate_hz;
+    let mut sum = vec![0.0; points];
+    let mut revolutions = 0usize;
+    for pair in pulses_s.windows(2) {
+        let (start, end) = (pair[0], pair[1]);
+        if !(start >= 0.0 && end > start && end <= last_s) {
+            continue;
+        }
+        for (j, total) in sum.iter_mut().enumerate() {
+            let t = start + (end - start) * j as f64 / points as f64;
+            *total += interpolate(signal, t * rate_hz);
+        }
+        revolutions += 1;
+    }
+    if revolutions == 0 {
+        return Err(InstrumentError::setting(
+            "synchronous average",
+            "revolutions",
+            0.0,
+            "at least one whole revolution between two pulses inside the signal",
+        ));
+    }
+    Ok(sum.iter().map(|s| s / revolutions as f64).collect())
+}
+
+/// `signal` at fractional sample position `x` (linear between neighbours).
+fn interpolate(signal: &[f64], x: f64) -> f64 {
+    let i = x.floor() as usize;
+    let frac = x - i as f64;
+    match (signal.get(i), signal.get(i + 1)) {
+        (Some(&a), Some(&b)) => a + (b - a) * frac,
+        (Some(&a), None) => a,
+        _ => 0.0,
+    }
+}
