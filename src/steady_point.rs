@@ -3,6 +3,7 @@
 //! every block handed to the caller. The one path of `testrig simulate` and of the Python
 //! package's `testrig.simulate`.
 
+use crate::chain::{GearCondition, GearConditionReport};
 use std::time::Instant;
 
 use anyhow::{Context, bail};
@@ -68,6 +69,9 @@ pub struct PointRun {
     pub simulated_s: f64,
     /// Wall time (s).
     pub wall_s: f64,
+    /// The condition indicators of the window's synchronous average of the output-shaft
+    /// torque over the driven gear's revolutions (`None` under two revolutions).
+    pub condition: Option<GearConditionReport>,
 }
 
 /// Checks `spec` (each input refused under its name in `names`), runs it, and hands
@@ -103,18 +107,25 @@ pub fn run_point(
     if let Some(e) = stopped.filter(|_| settled < settle) {
         return Err(e);
     }
+    let mut condition = GearCondition::new(spec.rate_hz);
+    let mut sink = sink;
     let summary = run_steady(
         &mut plant,
         0.0,
         spec.duration_s,
         &RegimeCriteria::default(),
-        sink,
+        |block| {
+            condition.add(block);
+            sink(block)
+        },
     )?;
+    let condition = condition.report(plant.params().teeth as usize);
     Ok(PointRun {
         simulated_s: spec.settle_s + summary.measured_s,
         wall_s: started.elapsed().as_secs_f64(),
         plant,
         summary,
+        condition,
     })
 }
 

@@ -365,3 +365,61 @@ fn an_unknown_set_name_lists_the_scenario_sections_and_the_rig_parameters() {
         "nothing is run on a bad --set"
     );
 }
+
+/// `simulate` averages the output-shaft torque synchronously over the driven gear's
+/// revolutions: a period-1 motion is all synchronous (the average keeps its whole AC RMS),
+/// a period-2 motion's half-order content averages away.
+#[test]
+fn the_synchronous_average_keeps_a_period_1_motion_and_drops_the_half_order_of_period_2() {
+    let point = |rpm: &str| -> serde_json::Value {
+        let out = testrig(&[
+            "simulate",
+            "--rpm",
+            rpm,
+            "--load",
+            "2.712",
+            "--duration",
+            "10",
+            "--json",
+        ]);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        serde_json::from_slice(&out.stdout).expect("JSON")
+    };
+    let share = |p: &serde_json::Value| {
+        p["condition"]["rms_nm"].as_f64().expect("rms")
+            / p["torque_ac_rms_nm"].as_f64().expect("ac rms")
+    };
+    let slow = point("600");
+    assert_eq!(slow["motion"]["motion"], "period-1");
+    assert!((share(&slow) - 1.0).abs() < 1e-3, "{}", share(&slow));
+    let revolutions = slow["revolutions"].as_u64().expect("count");
+    let averaged = slow["condition"]["revolutions_averaged"]
+        .as_u64()
+        .expect("count");
+    assert!(
+        revolutions - averaged <= 1,
+        "{revolutions} against {averaged}"
+    );
+    let fast = point("1300");
+    assert_eq!(fast["motion"]["motion"], "period-2");
+    assert!(share(&fast) < 0.5, "{}", share(&fast));
+    for key in [
+        "fm0",
+        "fm4",
+        "m6a",
+        "m8a",
+        "na4",
+        "sideband_level",
+        "crest_factor",
+        "kurtosis",
+    ] {
+        assert!(
+            fast["condition"][key].as_f64().is_some_and(f64::is_finite),
+            "{key}"
+        );
+    }
+}

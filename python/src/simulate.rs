@@ -167,6 +167,11 @@ fn result_dict<'py>(
                 "realtime_factor",
                 (run.simulated_s / run.wall_s.max(1e-9)).into(),
             ),
+            (
+                "condition",
+                run.condition
+                    .map_or(serde_json::Value::Null, |c| c.to_json()),
+            ),
         ] {
             map.insert(key.to_string(), value);
         }

@@ -27,7 +27,10 @@ class Simulation(TypedDict):
     impacts: Impacts
     summary: dict[str, Any]
     """As `testrig simulate --json`: regime, motion (the physics judge), impacts per
-    tooth, torque mean and RMS (N m), simulated_s, wall_s, realtime_factor."""
+    tooth, torque mean and RMS (N m), simulated_s, wall_s, realtime_factor, and
+    condition (the synchronous average's indicators: fm0, fm4, m6a, m8a, na4,
+    sideband_level, rms_nm, crest_factor, kurtosis, revolutions_averaged; None under
+    two revolutions)."""
 
 def simulate(
     rpm: float,

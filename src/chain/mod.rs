@@ -24,6 +24,7 @@
 pub(crate) mod analysed;
 pub(crate) mod analyser_setup;
 pub(crate) mod chain_stages;
+pub(crate) mod gear_condition;
 pub(crate) mod inline;
 pub(crate) mod instrument;
 pub(crate) mod low_pass_words;
@@ -39,6 +40,7 @@ pub(crate) mod voltmeters;
 pub use analysed::{analyse_analogue, anti_aliased};
 pub use analyser_setup::{AdcChoice, AnalyserSetting, AnalyserSetup, AnalyserWords};
 pub use chain_stages::{ChainStages, WiringError};
+pub use gear_condition::{GearCondition, GearConditionReport};
 pub use inline::InlineChain;
 pub use instrument::Instrument;
 pub use low_pass_words::{LowPassError, LowPassWords};

@@ -26,6 +26,8 @@ struct Report<'a> {
     realtime_factor: f64,
     #[serde(flatten)]
     summary: SteadySummary,
+    /// The condition indicators of the synchronous average (null under two revolutions).
+    condition: serde_json::Value,
 }
 
 pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
@@ -47,6 +49,7 @@ pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
         summary,
         simulated_s,
         wall_s,
+        condition,
     } = run_point(
         &spec,
         FLAG_NAMES,
@@ -65,6 +68,7 @@ pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
         wall_s,
         realtime_factor: simulated_s / wall_s.max(1e-9),
         summary,
+        condition: condition.map_or(serde_json::Value::Null, |c| c.to_json()),
     };
     if let (Some(dir), Some(w)) = (&args.out, writer) {
         let mut files = vec![w.finish()?];
@@ -146,6 +150,22 @@ fn print_text(r: &Report) {
         "motor speed      {:+.2} rev/min from the set speed (mean over the window)",
         s.speed_offset_rpm
     );
+    let c = &r.condition;
+    if !c.is_null() {
+        let n = |k: &str| c[k].as_f64().unwrap_or(f64::NAN);
+        println!(
+            "gear condition   synchronous average of the output-shaft torque over {} revolutions of the driven gear:\n  FM0 {:.3}, FM4 {:.3}, M6A {:.3}, M8A {:.3}, NA4 {:.3}, sideband level {:.3}, crest factor {:.3}, kurtosis {:.3}",
+            c["revolutions_averaged"],
+            n("fm0"),
+            n("fm4"),
+            n("m6a"),
+            n("m8a"),
+            n("na4"),
+            n("sideband_level"),
+            n("crest_factor"),
+            n("kurtosis")
+        );
+    }
 }
 
 /// Streams the true signals to `signals.csv`, under a temporary name until finished.

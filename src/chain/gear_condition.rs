@@ -1,0 +1,115 @@
+//! The driven gear's condition from a steady window: its once-per-revolution pulses (its
+//! absolute angle crossing whole turns, as a marker on its shaft gives them), the
+//! output-shaft torque averaged synchronously over those revolutions, and the condition
+//! indicators of that average (`instruments::condition_indicators`, Lebold et al. 2000).
+
+use instruments::{ConditionIndicators, condition_indicators, synchronous_average};
+use rig::{INTERMEDIATE_SHAFT, SignalBlock};
+use serde_json::{Value, json};
+
+/// Points per averaged revolution: 1 024 resolve the mesh harmonics of up to 512 orders.
+pub const POINTS_PER_REVOLUTION: usize = 1024;
+/// Most torque samples kept (the latest): 2^22, 32 MiB.
+const KEPT_SAMPLES_MAX: usize = 1 << 22;
+/// The driven gear among the rig's five bodies (M3).
+const DRIVEN_GEAR: usize = 2;
+
+/// A window's torque and the driven gear's pulses, block by block.
+#[derive(Clone, Debug)]
+pub struct GearCondition {
+    rate_hz: f64,
+    start_s: Option<f64>,
+    torque_nm: Vec<f64>,
+    pulses_s: Vec<f64>,
+    previous: Option<(f64, f64)>,
+}
+
+/// What a window's synchronous average shows.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GearConditionReport {
+    /// Whole revolutions averaged.
+    pub revolutions: usize,
+    /// The indicators of the averaged revolution of the output-shaft torque.
+    pub indicators: ConditionIndicators,
+}
+
+impl GearCondition {
+    /// An empty window of a stream at `rate_hz`.
+    pub fn new(rate_hz: f64) -> Self {
+        Self {
+            rate_hz,
+            start_s: None,
+            torque_nm: Vec::new(),
+            pulses_s: Vec::new(),
+            previous: None,
+        }
+    }
+
+    /// Adds a block of true signals.
+    pub fn add(&mut self, block: &SignalBlock) {
+        let angles = &block.angle_rad[DRIVEN_GEAR];
+        for (&t, &angle) in block.time_s.iter().zip(angles) {
+            let turns = angle / std::f64::consts::TAU;
+            if let Some((t0, turns0)) = self.previous
+                && turns.floor() > turns0.floor()
+            {
+                // The crossing of the whole turn between the two samples, linearly.
+                let whole = turns.floor();
+                self.pulses_s
+                    .push(t0 + (t - t0) * (whole - turns0) / (turns - turns0));
+            }
+            self.previous = Some((t, turns));
+        }
+        self.start_s
+            .get_or_insert(block.time_s.first().copied().unwrap_or(0.0));
+        self.torque_nm
+            .extend_from_slice(&block.shaft_torque_nm[INTERMEDIATE_SHAFT]);
+        if self.torque_nm.len() > 2 * KEPT_SAMPLES_MAX {
+            let drop = self.torque_nm.len() - KEPT_SAMPLES_MAX;
+            self.torque_nm.drain(..drop);
+            *self.start_s.get_or_insert(0.0) += drop as f64 / self.rate_hz;
+        }
+    }
+
+    /// The indicators of the window's average revolution for a gear of `teeth` teeth;
+    /// `None` with fewer than two whole revolutions kept.
+    pub fn report(&self, teeth: usize) -> Option<GearConditionReport> {
+        let start_s = self.start_s?;
+        let pulses: Vec<f64> = self
+            .pulses_s
+            .iter()
+            .map(|t| t - start_s)
+            .filter(|t| *t >= 0.0)
+            .collect();
+        let last_s = self.torque_nm.len().saturating_sub(1) as f64 / self.rate_hz;
+        let revolutions = pulses.windows(2).filter(|p| p[1] <= last_s).count();
+        if revolutions < 2 {
+            return None;
+        }
+        let average = synchronous_average(
+            &self.torque_nm,
+            self.rate_hz,
+            &pulses,
+            POINTS_PER_REVOLUTION,
+        )
+        .ok()?;
+        Some(GearConditionReport {
+            revolutions,
+            indicators: condition_indicators(&average, teeth, &[]),
+        })
+    }
+}
+
+impl GearConditionReport {
+    /// As JSON, every indicator by name.
+    pub fn to_json(&self) -> Value {
+        let i = &self.indicators;
+        json!({
+            "revolutions_averaged": self.revolutions,
+            "points_per_revolution": POINTS_PER_REVOLUTION,
+            "fm0": i.fm0, "fm4": i.fm4, "m6a": i.m6a, "m8a": i.m8a, "na4": i.na4,
+            "sideband_level": i.sideband_level, "rms_nm": i.rms,
+            "crest_factor": i.crest_factor, "kurtosis": i.kurtosis,
+        })
+    }
+}
