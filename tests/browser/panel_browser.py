@@ -12,6 +12,7 @@ import argparse
 import re
 import subprocess
 import sys
+import shutil
 import tempfile
 import time
 from pathlib import Path
@@ -118,6 +119,12 @@ def main():
         if not (Path(out) / "session.toml").exists():
             sys.exit("FAILED: no session.toml")
         print(f"browser test passed; screenshots in {shots}")
+        # The panel's folder goes once the test passed; a failure (sys.exit above) keeps
+        # it, and says where.
+        shutil.rmtree(out, ignore_errors=True)
+    except SystemExit:
+        print(f"the panel's files are kept in {out}", file=sys.stderr)
+        raise
     finally:
         if panel.poll() is None:
             panel.kill()
