@@ -111,18 +111,18 @@ pub fn gear_signals(average: &[f64], teeth: usize) -> GearSignals {
     }
 }
 
-/// The normalised `order`-th moment of `x` about its mean: N^(p/2 − 1) Σ(x − x̄)^p /
-/// (Σ(x − x̄)²)^(p/2); 4 gives the kurtosis.
-pub fn normalised_moment(x: &[f64], order: i32) -> f64 {
+/// The `order`-th central moment of `x`: the mean of (x − x̄)^p (2 gives the variance).
+pub fn central_moment(x: &[f64], order: i32) -> f64 {
     let n = x.len() as f64;
     let mean = x.iter().sum::<f64>() / n;
-    let (mut second, mut pth) = (0.0, 0.0);
-    for &v in x {
-        let d = v - mean;
-        second += d * d;
-        pth += d.powi(order);
-    }
-    n.powi(order / 2 - 1) * pth / second.powi(order / 2)
+    x.iter().map(|v| (v - mean).powi(order)).sum::<f64>() / n
+}
+
+/// The normalised `order`-th moment of `x` about its mean: N^(p/2 − 1) Σ(x − x̄)^p /
+/// (Σ(x − x̄)²)^(p/2), the central moment over the variance to the power p/2; 4 gives
+/// the kurtosis.
+pub fn normalised_moment(x: &[f64], order: i32) -> f64 {
+    central_moment(x, order) / central_moment(x, 2).powi(order / 2)
 }
 
 /// The indicators of `average` (one revolution of a gear of `teeth` teeth), NA4 against
@@ -133,30 +133,18 @@ pub fn condition_indicators(
     earlier_residual_variances: &[f64],
 ) -> ConditionIndicators {
     let parts = gear_signals(average, teeth);
-    let n = average.len() as f64;
-    let mean = average.iter().sum::<f64>() / n;
-    let rms = (average.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / n).sqrt();
+    let mean = average.iter().sum::<f64>() / average.len() as f64;
+    let rms = central_moment(average, 2).sqrt();
     let peak = average.iter().map(|x| (x - mean).abs()).fold(0.0, f64::max);
     let (max, min) = average
         .iter()
         .fold((f64::NEG_INFINITY, f64::INFINITY), |(hi, lo), &x| {
             (hi.max(x), lo.min(x))
         });
-    let r_mean = parts.residual.iter().sum::<f64>() / n;
-    let variance = parts
-        .residual
-        .iter()
-        .map(|r| (r - r_mean).powi(2))
-        .sum::<f64>()
-        / n;
+    let variance = central_moment(&parts.residual, 2);
     let trend = (variance + earlier_residual_variances.iter().sum::<f64>())
         / (1 + earlier_residual_variances.len()) as f64;
-    let fourth = parts
-        .residual
-        .iter()
-        .map(|r| (r - r_mean).powi(4))
-        .sum::<f64>()
-        / n;
+    let fourth = central_moment(&parts.residual, 4);
     ConditionIndicators {
         fm0: (max - min) / parts.mesh_amplitudes.iter().sum::<f64>(),
         fm4: normalised_moment(&parts.difference, 4),

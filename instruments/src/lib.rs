@@ -67,8 +67,8 @@ pub use brake_drive::{BrakeDrive, BrakeDriveSettings};
 pub use bridge::{BridgeArrangement, StrainBridge};
 pub use carrier::{CarrierDemodulator, CarrierModulator, CarrierSettings};
 pub use condition_indicators::{
-    ConditionIndicators, GearSignals, SHAFT_ORDERS, condition_indicators, gear_signals,
-    normalised_moment,
+    ConditionIndicators, GearSignals, SHAFT_ORDERS, central_moment, condition_indicators,
+    gear_signals, normalised_moment,
 };
 pub use error::InstrumentError;
 pub use keyboard_program::{KeyboardProgram, ProgramStep};

@@ -6,7 +6,8 @@
 use std::f64::consts::TAU;
 
 use instruments::{
-    GaussianSource, condition_indicators, gear_signals, normalised_moment, synchronous_average,
+    GaussianSource, central_moment, condition_indicators, gear_signals, normalised_moment,
+    synchronous_average,
 };
 
 fn gaussian(seed: u64, n: usize) -> Vec<f64> {
@@ -120,11 +121,7 @@ fn a_local_tooth_fault_raises_fm4_where_a_healthy_mesh_keeps_it_near_3() {
     assert!(fault.fm4 > 10.0, "faulty FM4 {}", fault.fm4);
     assert!(fault.m6a > ci.m6a && fault.m8a > ci.m8a);
     // NA4 against the healthy run's residual variance grows more than against its own.
-    let healthy_var = {
-        let r = gear_signals(&healthy, teeth).residual;
-        let mean = r.iter().sum::<f64>() / n as f64;
-        r.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / n as f64
-    };
+    let healthy_var = central_moment(&gear_signals(&healthy, teeth).residual, 2);
     let trended = condition_indicators(&faulty, teeth, &[healthy_var]);
     assert!(
         trended.na4 > fault.na4,

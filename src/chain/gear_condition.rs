@@ -67,7 +67,9 @@ impl GearCondition {
         if self.torque_nm.len() > 2 * KEPT_SAMPLES_MAX {
             let drop = self.torque_nm.len() - KEPT_SAMPLES_MAX;
             self.torque_nm.drain(..drop);
-            *self.start_s.get_or_insert(0.0) += drop as f64 / self.rate_hz;
+            if let Some(start_s) = &mut self.start_s {
+                *start_s += drop as f64 / self.rate_hz;
+            }
         }
     }
 
