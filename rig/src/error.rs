@@ -52,6 +52,9 @@ pub enum RigError {
         /// The relative state [X1..X5, V1..V5] when it was seen.
         state: Vec<f64>,
     },
+    /// A rig (from a rig file) the plant cannot run.
+    #[error("rig: {0}")]
+    Topology(#[from] crate::topology_check::TopologyError),
     /// Contact switches without end inside one step (a Zeno sequence).
     #[error("contact chatter at t = {t_s:.9} s: more than {limit} switches within one step")]
     Chatter {

@@ -66,6 +66,11 @@
 //! against the set speed; its `regime()` is the cheap part a paced thread uses). `modal.rs`
 //! natural frequencies and shapes. `energy.rs` energy terms for tests.
 //!
+//! `network/` the plant of any rig a rig file describes (`RigTopology`): any number of
+//! bodies, shafts and up to four meshes, loops with a locked-in torque, the same exact
+//! stepping (per mode e^{A h}, switches on the Taylor expansion); `topology*.rs` the rig
+//! itself, its checks and natural modes.
+//!
 //! `fma.rs` the fused multiply-add path chosen at run time: the inner loops
 //! (`column_product.rs`, `propagator.rs`, `jump_response.rs`) run compiled for AVX2 and FMA
 //! where the CPU has them, for baseline x86-64 elsewhere, with the same bytes.
@@ -103,6 +108,7 @@ mod matrix_exp;
 pub mod modal;
 mod mode;
 mod model;
+pub mod network;
 pub mod options;
 mod pair_zones;
 pub mod param_table;
@@ -132,6 +138,7 @@ pub use geometry::GearGeometry;
 pub use judge::{JudgeInput, Judgement, Motion, judge};
 pub use modal::{Chain, NaturalMode, RigChains};
 pub use mode::{MeshMode, Mode, MotorMode, PairZone};
+pub use network::{Contact, NetworkBlock, NetworkImpact, NetworkPlant, NetworkStart};
 pub use options::{ContactLaw, MeshPairs};
 pub use param_table::{
     DERIVED_SPECS, PARAM_SPECS, ParamSpec, ParamValue, param_spec, set_param, set_param_value,
@@ -144,5 +151,7 @@ pub use regime::{Regime, RegimeCriteria, classify, classify_scaled};
 pub use schedule::{LiveCeiling, Schedule, SetPoints, Track};
 pub use signals::{COLUMN_NAMES, COLUMN_UNITS, INTERMEDIATE_SHAFT, SignalBlock};
 pub use steady::{SteadySummary, SteadyWindow, run_steady};
-pub use topology::{Body, LockedTorque, MAX_BODIES, MAX_MESHES, Mesh, RigTopology, Shaft};
+pub use topology::{
+    Body, DriveSettings, LockedTorque, MAX_BODIES, MAX_MESHES, Mesh, RigTopology, Shaft,
+};
 pub use topology_check::{TopologyError, TopologyPlace};

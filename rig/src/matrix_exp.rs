@@ -11,26 +11,45 @@ use crate::layout::{N_MECH, V0, VF};
 /// rounding in every entry, not only relative to the largest (K/J·h ≈ 3000 for the mesh),
 /// and the constant forcing adds no bias; its powers are taken there too.
 pub fn exp_powers(a: &DMatrix<f64>, step_s: f64, rho: f64, count: usize) -> Vec<DMatrix<f64>> {
-    let len = a.nrows();
     let rho = rho.max(1.0);
-    let mechanical = |i: usize| {
-        if (V0..V0 + 5).contains(&i) || i == VF {
-            rho
-        } else {
-            1.0
-        }
-    };
-    let scale: Vec<f64> = (0..len)
-        .map(|c| {
-            if c < N_MECH {
-                return mechanical(c);
+    let mechanical: Vec<f64> = (0..N_MECH)
+        .map(|i| {
+            if (V0..V0 + 5).contains(&i) || i == VF {
+                rho
+            } else {
+                1.0
             }
-            let largest = (0..N_MECH)
-                .map(|r| a[(r, c)].abs() / mechanical(r))
+        })
+        .collect();
+    exp_powers_balanced(a, step_s, &forcing_scales(a, &mechanical, rho), count)
+}
+
+/// The balancing scale of every state: `mechanical` for the first states as given (ρ for
+/// speeds, 1 for angles), and for each later (forcing) state the scale that brings its
+/// column's largest entry in the mechanical rows to ρ.
+pub fn forcing_scales(a: &DMatrix<f64>, mechanical: &[f64], rho: f64) -> Vec<f64> {
+    let n_mech = mechanical.len();
+    (0..a.ncols())
+        .map(|c| {
+            if c < n_mech {
+                return mechanical[c];
+            }
+            let largest = (0..n_mech)
+                .map(|r| a[(r, c)].abs() / mechanical[r])
                 .fold(0.0, f64::max);
             if largest > 0.0 { rho / largest } else { 1.0 }
         })
-        .collect();
+        .collect()
+}
+
+/// e^{A k h} for k = 1..=`count`, computed on D⁻¹AD with D = diag(`scale`).
+pub fn exp_powers_balanced(
+    a: &DMatrix<f64>,
+    step_s: f64,
+    scale: &[f64],
+    count: usize,
+) -> Vec<DMatrix<f64>> {
+    let len = a.nrows();
     let balanced = DMatrix::from_fn(len, len, |r, c| a[(r, c)] * scale[c] / scale[r] * step_s);
     let exp = balanced.exp();
     let mut power = exp.clone();

@@ -7,6 +7,8 @@
 
 use serde::Serialize;
 
+use crate::options::MeshPairs;
+
 /// Most bodies a rig may have.
 pub const MAX_BODIES: usize = 32;
 /// Most meshes a rig may have.
@@ -19,6 +21,8 @@ pub struct Body {
     pub name: String,
     /// Moment of inertia about its axis (kg m²).
     pub inertia_kgm2: f64,
+    /// Bearing and windage drag on its absolute speed (N m s/rad); 0 for none.
+    pub drag_nms_per_rad: f64,
 }
 
 /// A torsional spring-damper between two bodies.
@@ -54,6 +58,12 @@ pub struct Mesh {
     pub stiffness_n_per_m: f64,
     /// Damping along the line of action (N s/m).
     pub damping_ns_per_m: f64,
+    /// One tooth pair always, or one and two alternating as the contact ratio says.
+    pub pairs: MeshPairs,
+    /// Stiffness and damping of two pairs over one pair's (with `pairs` alternating).
+    pub double_pair_ratio: f64,
+    /// Addendum over the module (standard teeth: 1), for the contact ratio.
+    pub addendum_coefficient: f64,
 }
 
 impl Mesh {
@@ -61,6 +71,26 @@ impl Mesh {
     pub fn base_radii_m(&self) -> [f64; 2] {
         let cos = self.pressure_angle_deg.to_radians().cos();
         self.teeth.map(|z| self.module_m * f64::from(z) * cos / 2.0)
+    }
+
+    /// Half the free play along the line of action (m): the circular backlash j at the
+    /// pitch circles is j cos α along it.
+    pub fn half_backlash_m(&self) -> f64 {
+        0.5 * self.backlash_mm * 1e-3 * self.pressure_angle_deg.to_radians().cos()
+    }
+
+    /// Transverse contact ratio ε of standard gears at the standard centre distance:
+    /// (√(r_a1² − r_b1²) + √(r_a2² − r_b2²) − a sin α) / (π m cos α).
+    pub fn contact_ratio(&self) -> f64 {
+        let alpha = self.pressure_angle_deg.to_radians();
+        let m = self.module_m;
+        let [rb1, rb2] = self.base_radii_m();
+        let [z1, z2] = self.teeth.map(f64::from);
+        let ra = |z: f64| m * z / 2.0 + self.addendum_coefficient * m;
+        let centre = m * (z1 + z2) / 2.0;
+        let path = (ra(z1).powi(2) - rb1 * rb1).sqrt() + (ra(z2).powi(2) - rb2 * rb2).sqrt()
+            - centre * alpha.sin();
+        path / (std::f64::consts::PI * m * alpha.cos())
     }
 
     /// Speed of the driven gear per unit speed of the driver: −z₁/z₂ (external gears turn
@@ -77,6 +107,36 @@ pub struct LockedTorque {
     pub shaft: usize,
     /// The torque it carries at rest (N m).
     pub torque_nm: f64,
+}
+
+/// The drive and the load: the motor's speed loop and torque limit, the brake's
+/// slope (settings beyond the topology; the 1983 rig's values where a file is silent).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct DriveSettings {
+    /// Most torque the motor gives either way (N m); `None`: no limit.
+    pub torque_limit_nm: Option<f64>,
+    /// Speed-loop natural frequency (Hz) on the whole rig's inertia seen at the motor.
+    pub speed_loop_hz: f64,
+    /// Speed-loop damping ratio.
+    pub speed_loop_damping_ratio: f64,
+    /// Corner of the first-order filter on the fed-back speed (Hz).
+    pub feedback_filter_hz: f64,
+    /// Rise of the brake's torque with its speed about the set speed (N m s/rad).
+    pub brake_slope_nms_per_rad: f64,
+}
+
+impl Default for DriveSettings {
+    /// The 1983 rig's speed loop (0.5 Hz, ζ 0.7, 2 Hz filter; `presets.rs`), no torque
+    /// limit, a brake whose torque does not depend on speed.
+    fn default() -> Self {
+        Self {
+            torque_limit_nm: None,
+            speed_loop_hz: 0.5,
+            speed_loop_damping_ratio: 0.7,
+            feedback_filter_hz: 2.0,
+            brake_slope_nms_per_rad: 0.0,
+        }
+    }
 }
 
 /// A whole rig.
@@ -98,4 +158,6 @@ pub struct RigTopology {
     pub brake: Option<usize>,
     /// The torque locked into a loop's shaft, if any.
     pub locked_torque: Option<LockedTorque>,
+    /// The motor's speed loop and limit, the brake's slope.
+    pub drive: DriveSettings,
 }

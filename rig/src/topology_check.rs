@@ -119,6 +119,7 @@ impl RigTopology {
     fn check_numbers(&self) -> Result<(), TopologyError> {
         for (i, b) in self.bodies.iter().enumerate() {
             positive(b.inertia_kgm2, ("body", i, "inertia_kgm2"))?;
+            non_negative(b.drag_nms_per_rad, ("body", i, "drag_nms_per_rad"))?;
         }
         for (i, s) in self.shafts.iter().enumerate() {
             positive(s.stiffness_nm_per_rad, ("shaft", i, "stiffness_nm_per_rad"))?;
@@ -164,8 +165,54 @@ impl RigTopology {
                     ),
                 ));
             }
+            self.check_pairs(i)?;
+        }
+        self.check_drive()
+    }
+
+    /// A mesh's pair settings: two pairs at least as stiff as one, an addendum, and with
+    /// alternating pairs a contact ratio between 1 and 2.
+    fn check_pairs(&self, i: usize) -> Result<(), TopologyError> {
+        let m = &self.meshes[i];
+        positive(m.addendum_coefficient, ("mesh", i, "addendum_coefficient"))?;
+        if !(m.double_pair_ratio.is_finite() && m.double_pair_ratio >= 1.0) {
+            return Err(fault(
+                "mesh",
+                i,
+                "double_pair_ratio",
+                format!(
+                    "{}: two pairs are at least as stiff as one (≥ 1)",
+                    m.double_pair_ratio
+                ),
+            ));
+        }
+        let ratio = m.contact_ratio();
+        if m.pairs == crate::options::MeshPairs::Alternating && !(1.0..2.0).contains(&ratio) {
+            return Err(fault(
+                "mesh",
+                i,
+                "pairs",
+                format!(
+                    "alternating pairs need a contact ratio in [1, 2); these gears have {ratio:.3}"
+                ),
+            ));
         }
         Ok(())
+    }
+
+    /// The motor's speed loop and limit, the brake's slope.
+    fn check_drive(&self) -> Result<(), TopologyError> {
+        let d = &self.drive;
+        positive(d.speed_loop_hz, ("motor", 0, "speed_loop_hz"))?;
+        positive(
+            d.speed_loop_damping_ratio,
+            ("motor", 0, "speed_loop_damping_ratio"),
+        )?;
+        positive(d.feedback_filter_hz, ("motor", 0, "feedback_filter_hz"))?;
+        if let Some(limit) = d.torque_limit_nm {
+            positive(limit, ("motor", 0, "torque_limit_nm"))?;
+        }
+        non_negative(d.brake_slope_nms_per_rad, ("brake", 0, "slope_nms_per_rad"))
     }
 
     /// Every body joined to the first by shafts and meshes.

@@ -6,10 +6,10 @@ use std::collections::HashMap;
 use std::ops::Range;
 use std::path::Path;
 
-use rig::{Body, LockedTorque, Mesh, RigTopology, Shaft, TopologyPlace};
+use rig::{Body, DriveSettings, LockedTorque, Mesh, MeshPairs, RigTopology, Shaft, TopologyPlace};
 use toml::Spanned;
 
-use super::rig_file_toml::{MeshToml, RigFileToml, ShaftToml};
+use super::rig_file_toml::{MeshToml, MotorToml, RigFileToml, ShaftToml};
 use super::source::ScenarioSource;
 
 /// Pressure angle where a mesh leaves it out (degrees): the standard 20°.
@@ -86,6 +86,7 @@ fn build(src: &ScenarioSource, file: &RigFileToml) -> anyhow::Result<RigTopology
             .map(|b| Body {
                 name: b.name.get_ref().clone(),
                 inertia_kgm2: *b.inertia_kgm2.get_ref(),
+                drag_nms_per_rad: or(&b.drag_nms_per_rad, 0.0),
             })
             .collect(),
         shafts,
@@ -101,7 +102,34 @@ fn build(src: &ScenarioSource, file: &RigFileToml) -> anyhow::Result<RigTopology
             .map(|b| body(&b.body, "brake.body"))
             .transpose()?,
         locked_torque,
+        drive: drive(file),
     })
+}
+
+/// The drive settings of `[motor]` and `[brake]`, defaults where they are silent.
+fn drive(file: &RigFileToml) -> DriveSettings {
+    let d = DriveSettings::default();
+    let motor = file.motor.as_ref();
+    let motor_field = |f: fn(&MotorToml) -> &Option<Spanned<f64>>, default: f64| {
+        motor.map_or(default, |m| or(f(m), default))
+    };
+    DriveSettings {
+        torque_limit_nm: motor.and_then(|m| m.torque_limit_nm.as_ref().map(|t| *t.get_ref())),
+        speed_loop_hz: motor_field(|m| &m.speed_loop_hz, d.speed_loop_hz),
+        speed_loop_damping_ratio: motor_field(
+            |m| &m.speed_loop_damping_ratio,
+            d.speed_loop_damping_ratio,
+        ),
+        feedback_filter_hz: motor_field(|m| &m.feedback_filter_hz, d.feedback_filter_hz),
+        brake_slope_nms_per_rad: file.brake.as_ref().map_or(d.brake_slope_nms_per_rad, |b| {
+            or(&b.slope_nms_per_rad, d.brake_slope_nms_per_rad)
+        }),
+    }
+}
+
+/// An optional number's value, or `default`.
+fn or(value: &Option<Spanned<f64>>, default: f64) -> f64 {
+    value.as_ref().map_or(default, |v| *v.get_ref())
 }
 
 /// Each name of a `table`'s items to its index; a repeated name is refused at its place.
@@ -180,7 +208,24 @@ fn mesh(
             .map_or(DEFAULT_PRESSURE_ANGLE_DEG, |a| *a.get_ref()),
         backlash_mm: *m.backlash_mm.get_ref(),
         stiffness_n_per_m: *m.stiffness_n_per_m.get_ref(),
-        damping_ns_per_m: m.damping_ns_per_m.as_ref().map_or(0.0, |d| *d.get_ref()),
+        damping_ns_per_m: or(&m.damping_ns_per_m, 0.0),
+        pairs: pairs(src, m)?,
+        double_pair_ratio: or(&m.double_pair_ratio, 2.0),
+        addendum_coefficient: or(&m.addendum_coefficient, 1.0),
+    })
+}
+
+/// A mesh's `pairs`: single (the thesis's) when left out.
+fn pairs(src: &ScenarioSource, m: &MeshToml) -> anyhow::Result<MeshPairs> {
+    let Some(text) = &m.pairs else {
+        return Ok(MeshPairs::Single);
+    };
+    MeshPairs::parse(text.get_ref()).ok_or_else(|| {
+        src.error(
+            text.span(),
+            &format!("mesh `{}`.pairs", m.name.get_ref()),
+            format!("`{}`: one of {}", text.get_ref(), MeshPairs::NAMES),
+        )
     })
 }
 
@@ -211,6 +256,10 @@ fn span_of(file: &RigFileToml, place: &TopologyPlace) -> Range<usize> {
     let i = place.index;
     let span = match (place.table, place.field) {
         ("body", "inertia_kgm2") => file.bodies.get(i).map(|b| b.inertia_kgm2.span()),
+        ("body", "drag_nms_per_rad") => file
+            .bodies
+            .get(i)
+            .and_then(|b| b.drag_nms_per_rad.as_ref().map(Spanned::span)),
         ("body", _) => file.bodies.get(i).map(|b| b.name.span()),
         ("shaft", "stiffness_nm_per_rad") => {
             file.shafts.get(i).map(|s| s.stiffness_nm_per_rad.span())
@@ -228,9 +277,24 @@ fn span_of(file: &RigFileToml, place: &TopologyPlace) -> Range<usize> {
             "damping_ns_per_m" => m.damping_ns_per_m.as_ref().map(Spanned::span),
             "pressure_angle_deg" => m.pressure_angle_deg.as_ref().map(Spanned::span),
             "driven" => Some(m.driven.span()),
+            "pairs" => m.pairs.as_ref().map(Spanned::span),
+            "double_pair_ratio" => m.double_pair_ratio.as_ref().map(Spanned::span),
+            "addendum_coefficient" => m.addendum_coefficient.as_ref().map(Spanned::span),
             _ => Some(m.name.span()),
         }),
         ("locked_torque", _) => file.locked_torque.as_ref().map(|l| l.torque_nm.span()),
+        ("motor", field) => file.motor.as_ref().and_then(|m| match field {
+            "torque_limit_nm" => m.torque_limit_nm.as_ref().map(Spanned::span),
+            "speed_loop_hz" => m.speed_loop_hz.as_ref().map(Spanned::span),
+            "speed_loop_damping_ratio" => m.speed_loop_damping_ratio.as_ref().map(Spanned::span),
+            "feedback_filter_hz" => m.feedback_filter_hz.as_ref().map(Spanned::span),
+            _ => Some(m.body.span()),
+        }),
+        ("brake", _) => file.brake.as_ref().and_then(|b| {
+            b.slope_nms_per_rad
+                .as_ref()
+                .map_or(Some(b.body.span()), |s| Some(s.span()))
+        }),
         _ => None,
     };
     span.unwrap_or(0..0)

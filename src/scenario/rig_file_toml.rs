@@ -23,10 +23,10 @@ pub struct RigFileToml {
     /// `[[mesh]]` tables.
     #[serde(default, rename = "mesh")]
     pub meshes: Vec<MeshToml>,
-    /// `[motor]`: the body the motor drives.
-    pub motor: Option<EndToml>,
+    /// `[motor]`: the body the motor drives, its speed loop and torque limit.
+    pub motor: Option<MotorToml>,
     /// `[brake]`: the body the brake loads.
-    pub brake: Option<EndToml>,
+    pub brake: Option<BrakeToml>,
     /// `[locked_torque]`: a back-to-back loop's locked-in torque.
     pub locked_torque: Option<LockedTorqueToml>,
 }
@@ -39,6 +39,9 @@ pub struct BodyToml {
     pub name: Spanned<String>,
     /// Moment of inertia (kg m²).
     pub inertia_kgm2: Spanned<f64>,
+    /// Bearing and windage drag (N m s/rad); 0 when left out.
+    #[serde(default)]
+    pub drag_nms_per_rad: Option<Spanned<f64>>,
 }
 
 /// `[[shaft]]`: a torsional spring-damper between two bodies.
@@ -80,14 +83,46 @@ pub struct MeshToml {
     /// Damping along the line of action (N s/m); 0 when left out.
     #[serde(default)]
     pub damping_ns_per_m: Option<Spanned<f64>>,
+    /// `single` or `alternating`; single when left out.
+    #[serde(default)]
+    pub pairs: Option<Spanned<String>>,
+    /// Two pairs' stiffness over one's; 2 when left out.
+    #[serde(default)]
+    pub double_pair_ratio: Option<Spanned<f64>>,
+    /// Addendum over the module; 1 when left out.
+    #[serde(default)]
+    pub addendum_coefficient: Option<Spanned<f64>>,
 }
 
-/// `[motor]` or `[brake]`: the body it acts on.
+/// `[motor]`: the body it drives, its speed loop and its torque limit.
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct EndToml {
+pub struct MotorToml {
     /// The body, by name.
     pub body: Spanned<String>,
+    /// Most torque either way (N m); no limit when left out.
+    #[serde(default)]
+    pub torque_limit_nm: Option<Spanned<f64>>,
+    /// Speed-loop natural frequency (Hz); 0.5 when left out.
+    #[serde(default)]
+    pub speed_loop_hz: Option<Spanned<f64>>,
+    /// Speed-loop damping ratio; 0.7 when left out.
+    #[serde(default)]
+    pub speed_loop_damping_ratio: Option<Spanned<f64>>,
+    /// Speed feedback filter corner (Hz); 2 when left out.
+    #[serde(default)]
+    pub feedback_filter_hz: Option<Spanned<f64>>,
+}
+
+/// `[brake]`: the body it loads and its torque's slope with speed.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BrakeToml {
+    /// The body, by name.
+    pub body: Spanned<String>,
+    /// Rise of torque with speed (N m s/rad); 0 when left out.
+    #[serde(default)]
+    pub slope_nms_per_rad: Option<Spanned<f64>>,
 }
 
 /// `[locked_torque]`: the twist locked into one shaft of a back-to-back loop.

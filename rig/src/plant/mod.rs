@@ -19,4 +19,5 @@ mod stepping;
 mod switches;
 
 pub use output::CHECK_EVERY;
+pub(crate) use state::SWITCH_LIMIT;
 pub use state::{Plant, PlantConfig};

@@ -1,0 +1,82 @@
+//! What a run of a rig gives: per sample each body's angle and speed, each shaft's
+//! torque, each mesh's force and contact, the motor's torque; and each impact.
+
+use super::mode::Contact;
+
+/// True signals of a rig, one entry per output sample (SI). Angles, speeds and shaft
+/// torques are taken in each body's own sense of rotation: positive the way it turns
+/// when the motor turns forward (a driven gear of an external pair turns the other way),
+/// so a shaft carrying drive torque reads positive on either side of a mesh.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct NetworkBlock {
+    /// Sample times (s).
+    pub time_s: Vec<f64>,
+    /// Each body's angle in its sense of rotation (rad), `[body][sample]`.
+    pub angle_rad: Vec<Vec<f64>>,
+    /// Each body's speed in its sense of rotation (rad/s), `[body][sample]`.
+    pub speed_rad_s: Vec<Vec<f64>>,
+    /// Each shaft's elastic torque k·twist + locked torque (N m), `[shaft][sample]`.
+    pub shaft_torque_nm: Vec<Vec<f64>>,
+    /// Each mesh's force along the line of action (N), `[mesh][sample]`.
+    pub mesh_force_n: Vec<Vec<f64>>,
+    /// Each mesh's contact, +1 drive flank, −1 back flank, 0 apart, `[mesh][sample]`.
+    pub contact: Vec<Vec<i8>>,
+    /// The motor's torque (N m).
+    pub motor_torque_nm: Vec<f64>,
+}
+
+impl NetworkBlock {
+    /// An empty block for a rig of these sizes.
+    pub fn new(bodies: usize, shafts: usize, meshes: usize) -> Self {
+        Self {
+            time_s: Vec::new(),
+            angle_rad: vec![Vec::new(); bodies],
+            speed_rad_s: vec![Vec::new(); bodies],
+            shaft_torque_nm: vec![Vec::new(); shafts],
+            mesh_force_n: vec![Vec::new(); meshes],
+            contact: vec![Vec::new(); meshes],
+            motor_torque_nm: Vec::new(),
+        }
+    }
+
+    /// Number of samples.
+    pub fn len(&self) -> usize {
+        self.time_s.len()
+    }
+
+    /// Whether it holds no sample.
+    pub fn is_empty(&self) -> bool {
+        self.time_s.is_empty()
+    }
+
+    /// Empties it, keeping its shape and memory.
+    pub fn clear(&mut self) {
+        self.time_s.clear();
+        let columns = self
+            .angle_rad
+            .iter_mut()
+            .chain(&mut self.speed_rad_s)
+            .chain(&mut self.shaft_torque_nm)
+            .chain(&mut self.mesh_force_n);
+        for c in columns {
+            c.clear();
+        }
+        for c in &mut self.contact {
+            c.clear();
+        }
+        self.motor_torque_nm.clear();
+    }
+}
+
+/// One impact: teeth of a mesh meeting across the backlash.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NetworkImpact {
+    /// Its instant (s).
+    pub time_s: f64,
+    /// The mesh (index in the rig file's order).
+    pub mesh: usize,
+    /// The flank struck.
+    pub flank: Contact,
+    /// The rate δ' the teeth close at, along the line of action (m/s).
+    pub approach_m_s: f64,
+}

@@ -1,0 +1,188 @@
+//! The steady state of a rig at a set speed and brake load: every body turning at its
+//! share of the motor's speed, each shaft and mesh twisted to carry the torques of load,
+//! drag and a loop's locked-in torque, the motor giving what they take. At 0 rev/min and
+//! no load this is the rig at rest, a loop still carrying its locked torque.
+//!
+//! With the meshes on given flanks the twists solve K θ = f + T_m e_motor (one angle
+//! held: the rigid rotation is free), T_m from the balance of power Σ s_i f_i + T_m = 0.
+//! The meshes' flanks are tried in turn (each drive, back, then apart) until every mesh
+//! is consistent: pressing its flank, or apart within its backlash; a mesh carrying
+//! nothing rests on its drive flank. A loop without locked torque rests with a mesh
+//! apart.
+
+use nalgebra::{DMatrix, DVector};
+
+use crate::error::RigError;
+
+use super::mode::{Contact, MeshState};
+use super::model::NetworkModel;
+
+/// Force (N) a mesh may pull with and still count as resting on its flank.
+const FLANK_TOLERANCE_N: f64 = 1e-6;
+
+/// A steady state.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Equilibrium {
+    /// Each body's angle (rad), the motor's body (or the first) at 0.
+    pub angles_rad: Vec<f64>,
+    /// Each mesh's state.
+    pub meshes: Vec<MeshState>,
+    /// The motor's torque (N m).
+    pub motor_torque_nm: f64,
+}
+
+/// The steady state at `speed_rad_s` of the motor's body and `load_nm` on the brake,
+/// each mesh with `two_pairs` as given.
+pub fn equilibrium(
+    model: &NetworkModel,
+    speed_rad_s: f64,
+    load_nm: f64,
+    two_pairs: &[bool],
+) -> Result<Equilibrium, RigError> {
+    let count = model.meshes.len();
+    for combination in 0..3_usize.pow(count as u32) {
+        let meshes: Vec<MeshState> = (0..count)
+            .map(|i| MeshState {
+                contact: [Contact::Drive, Contact::Back, Contact::Apart]
+                    [combination / 3_usize.pow(i as u32) % 3],
+                two_pairs: two_pairs[i],
+            })
+            .collect();
+        let Ok(solved) = solve(model, speed_rad_s, load_nm, &meshes) else {
+            continue;
+        };
+        if (0..count).all(|i| rests(model, i, meshes[i], &solved.angles_rad)) {
+            return Ok(solved);
+        }
+    }
+    Err(RigError::Schedule(format!(
+        "no steady state at {:.1} rev/min and {load_nm} N m: the meshes find no flanks to rest on",
+        speed_rad_s * 30.0 / std::f64::consts::PI
+    )))
+}
+
+/// Whether mesh `i` in `state` is consistent at `angles`: pressing its flank, or apart
+/// within the backlash.
+fn rests(model: &NetworkModel, i: usize, state: MeshState, angles: &[f64]) -> bool {
+    let force = flank_force(model, i, state, angles);
+    let m = &model.meshes[i];
+    match state.contact {
+        Contact::Drive => force >= -FLANK_TOLERANCE_N,
+        Contact::Back => force <= FLANK_TOLERANCE_N,
+        Contact::Apart => {
+            let delta = m.radii_m[0] * angles[m.gears[0]] + m.radii_m[1] * angles[m.gears[1]];
+            delta.abs() <= m.half_backlash_m
+        }
+    }
+}
+
+/// The spring force (N) of mesh `i` on its flank at `angles`.
+fn flank_force(model: &NetworkModel, i: usize, state: MeshState, angles: &[f64]) -> f64 {
+    let m = &model.meshes[i];
+    let [a, b] = m.gears;
+    let delta = m.radii_m[0] * angles[a] + m.radii_m[1] * angles[b];
+    let (k, _) = m.spring(state);
+    match state.contact {
+        Contact::Drive => k * (delta - m.half_backlash_m),
+        Contact::Back => k * (delta + m.half_backlash_m),
+        Contact::Apart => 0.0,
+    }
+}
+
+/// The twists with the meshes on the flanks of `meshes`.
+fn solve(
+    model: &NetworkModel,
+    speed_rad_s: f64,
+    load_nm: f64,
+    meshes: &[MeshState],
+) -> Result<Equilibrium, RigError> {
+    let n = model.layout.bodies;
+    let mut k = DMatrix::<f64>::zeros(n, n);
+    let mut f = DVector::<f64>::zeros(n);
+    for (i, drag) in model.drag_nms_per_rad.iter().enumerate() {
+        f[i] -= drag * model.speed_ratio[i] * speed_rad_s;
+    }
+    if let Some(b) = &model.brake {
+        f[b.body] -= b.direction * load_nm;
+    }
+    for s in &model.shafts {
+        let [a, b] = s.between;
+        let spring = s.stiffness_nm_per_rad;
+        k[(a, a)] += spring;
+        k[(b, b)] += spring;
+        k[(a, b)] -= spring;
+        k[(b, a)] -= spring;
+        f[a] -= s.preload_nm;
+        f[b] += s.preload_nm;
+    }
+    for (m, state) in model.meshes.iter().zip(meshes) {
+        let [a, b] = m.gears;
+        let r = m.radii_m;
+        let (spring, _) = m.spring(*state);
+        let flank = if state.contact == Contact::Back {
+            -1.0
+        } else {
+            1.0
+        };
+        for (x, rx) in [(a, r[0]), (b, r[1])] {
+            for (y, ry) in [(a, r[0]), (b, r[1])] {
+                k[(x, y)] += spring * rx * ry;
+            }
+            f[x] += flank * spring * rx * m.half_backlash_m;
+        }
+    }
+    let power: f64 = f.iter().zip(&model.speed_ratio).map(|(t, s)| t * s).sum();
+    let reference = model.motor.as_ref().map_or(0, |m| m.body);
+    let motor_torque_nm = -power / model.speed_ratio[reference];
+    match &model.motor {
+        Some(_) => f[reference] += motor_torque_nm,
+        None if power.abs() > 1e-9 * (1.0 + f.amax()) => {
+            return Err(RigError::Schedule(
+                "this rig has no motor to carry its load or drag: run it at rest".into(),
+            ));
+        }
+        None => {}
+    }
+    let keep: Vec<usize> = (0..n).filter(|&i| i != reference).collect();
+    let reduced = DMatrix::from_fn(n - 1, n - 1, |r, c| k[(keep[r], keep[c])]);
+    let rhs = DVector::from_fn(n - 1, |r, _| f[keep[r]]);
+    let twist = reduced.lu().solve(&rhs).ok_or_else(|| {
+        RigError::Schedule("the rig's stiffness is singular: a body is held by nothing".into())
+    })?;
+    let mut angles_rad = vec![0.0; n];
+    for (r, &i) in keep.iter().enumerate() {
+        angles_rad[i] = twist[r];
+    }
+    Ok(Equilibrium {
+        angles_rad,
+        meshes: meshes.to_vec(),
+        motor_torque_nm,
+    })
+}
+
+/// The untwisted torque T0 of a loop's shaft `shaft` that leaves it carrying
+/// `locked_nm` at rest: the loop is linear on fixed flanks, so the torque carried at rest
+/// is a T0 + c; two solves give a and c.
+pub fn assembly_preload_nm(
+    model: &NetworkModel,
+    shaft: usize,
+    locked_nm: f64,
+) -> Result<f64, RigError> {
+    let mut trial = model.clone();
+    let two_pairs = vec![false; model.meshes.len()];
+    let mut carried = |preload: f64| -> Result<(f64, Vec<MeshState>), RigError> {
+        trial.shafts[shaft].preload_nm = preload;
+        let rest = equilibrium(&trial, 0.0, 0.0, &two_pairs)?;
+        let s = &trial.shafts[shaft];
+        let [a, b] = s.between;
+        let twist = rest.angles_rad[a] - rest.angles_rad[b];
+        Ok((s.stiffness_nm_per_rad * twist + preload, rest.meshes))
+    };
+    let (first, flanks) = carried(locked_nm)?;
+    let (second, same) = carried(2.0 * locked_nm)?;
+    let slope = (second - first) / locked_nm;
+    if locked_nm == 0.0 || flanks != same || slope <= 0.0 {
+        return Ok(locked_nm);
+    }
+    Ok(locked_nm + (locked_nm - first) / slope)
+}

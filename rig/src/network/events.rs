@@ -1,0 +1,172 @@
+//! The switching functions of a mode: linear functions g(u) − target whose crossing from
+//! ≤ 0 to > 0 ends the mode. Targets that move as the rig turns (pair-zone ends, the next
+//! revolution) are the plant's; the rest are constants folded in through the unit state.
+
+use nalgebra::DMatrix;
+
+use crate::mode::MotorMode;
+
+use super::mode::{Contact, NetMode};
+use super::model::NetworkModel;
+
+/// What a crossing means.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum NetEvent {
+    /// Mesh `.0`, apart, touches a flank (an impact).
+    Touch(usize, Contact),
+    /// Mesh `.0`'s teeth part.
+    Leave(usize),
+    /// Mesh `.0`'s driver turns past the end of its pair zone.
+    ZoneEnd(usize),
+    /// Mesh `.0`'s driver turns back past the start of its pair zone.
+    ZoneStart(usize),
+    /// The motor's command reaches +limit.
+    LimitHigh,
+    /// The motor's command reaches −limit.
+    LimitLow,
+    /// The held command would move back inside the limits.
+    LimitRelease,
+    /// The motor body turns past its next whole revolution.
+    Revolution,
+}
+
+/// A moving target the plant supplies.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Target {
+    /// None: the form's own constant.
+    Fixed,
+    /// The end of mesh `.0`'s pair zone (rad of its driver).
+    ZoneEnd(usize),
+    /// Minus the start of mesh `.0`'s pair zone.
+    ZoneStartNegated(usize),
+    /// The motor body's next revolution (rad).
+    Revolution,
+}
+
+/// One switching function: g = terms·u − target, and its rate slope·u along u' = A u.
+#[derive(Clone, Debug, PartialEq)]
+pub struct EventForm {
+    /// What its crossing means.
+    pub event: NetEvent,
+    /// Sparse coefficients (index, value).
+    pub terms: Vec<(usize, f64)>,
+    /// The dense row terms·A.
+    pub slope: Vec<f64>,
+    /// The moving target.
+    pub target: Target,
+}
+
+impl EventForm {
+    fn new(event: NetEvent, terms: Vec<(usize, f64)>, target: Target, a: &DMatrix<f64>) -> Self {
+        let slope = (0..a.ncols())
+            .map(|col| terms.iter().map(|&(i, c)| c * a[(i, col)]).sum())
+            .collect();
+        Self {
+            event,
+            terms,
+            slope,
+            target,
+        }
+    }
+
+    /// terms·u (the target not taken off).
+    #[inline]
+    pub fn value(&self, u: &[f64]) -> f64 {
+        self.terms.iter().map(|&(i, c)| c * u[i]).sum()
+    }
+
+    /// slope·u, the rate of the value.
+    #[inline]
+    pub fn rate(&self, u: &[f64]) -> f64 {
+        self.slope.iter().zip(u).map(|(s, x)| s * x).sum()
+    }
+}
+
+/// The switching functions of `mode` with A = `a`.
+pub fn event_forms(model: &NetworkModel, mode: &NetMode, a: &DMatrix<f64>) -> Vec<EventForm> {
+    let mut forms = Vec::new();
+    let mut push = |event, terms: Vec<(usize, f64)>, target| {
+        forms.push(EventForm::new(event, terms, target, a));
+    };
+    let l = model.layout;
+    for (i, m) in model.meshes.iter().enumerate() {
+        let [ga, gb] = m.gears;
+        let [ra, rb] = m.radii_m;
+        let delta = |sign: f64, offset: f64| {
+            vec![
+                (l.angle(ga), sign * ra),
+                (l.angle(gb), sign * rb),
+                (l.unit(), offset),
+            ]
+        };
+        let b = m.half_backlash_m;
+        match mode.meshes[i].contact {
+            Contact::Apart => {
+                push(
+                    NetEvent::Touch(i, Contact::Drive),
+                    delta(1.0, -b),
+                    Target::Fixed,
+                );
+                push(
+                    NetEvent::Touch(i, Contact::Back),
+                    delta(-1.0, -b),
+                    Target::Fixed,
+                );
+            }
+            Contact::Drive => push(NetEvent::Leave(i), delta(-1.0, b), Target::Fixed),
+            Contact::Back => push(NetEvent::Leave(i), delta(1.0, b), Target::Fixed),
+        }
+        if m.alternating && mode.meshes[i].contact != Contact::Apart {
+            push(
+                NetEvent::ZoneEnd(i),
+                vec![(l.angle(ga), 1.0)],
+                Target::ZoneEnd(i),
+            );
+            push(
+                NetEvent::ZoneStart(i),
+                vec![(l.angle(ga), -1.0)],
+                Target::ZoneStartNegated(i),
+            );
+        }
+    }
+    if let Some(m) = &model.motor {
+        let (kp, ki, wf) = (m.kp_nms_per_rad, m.ki_nm_per_rad, m.filter_rad_s);
+        let command = |sign: f64, limit: f64| {
+            vec![
+                (l.set_speed(), sign * kp),
+                (l.filtered(), -sign * kp),
+                (l.integral(), sign * ki),
+                (l.unit(), -limit),
+            ]
+        };
+        // Held at a limit, the command leaves it when the unclamped loop would turn it
+        // back: its rate kp(Ω' − ω_f') + ki(Ω − ω_f) falls below 0 at +limit.
+        let falls_back = |sign: f64| {
+            vec![
+                (l.speed(m.body), sign * kp * wf),
+                (l.filtered(), sign * (ki - kp * wf)),
+                (l.set_speed(), -sign * ki),
+                (l.set_rate(), -sign * kp),
+            ]
+        };
+        match (mode.motor, m.limit_nm) {
+            (_, None) => {}
+            (MotorMode::Linear, Some(limit)) => {
+                push(NetEvent::LimitHigh, command(1.0, limit), Target::Fixed);
+                push(NetEvent::LimitLow, command(-1.0, limit), Target::Fixed);
+            }
+            (MotorMode::LimitHigh, Some(_)) => {
+                push(NetEvent::LimitRelease, falls_back(1.0), Target::Fixed);
+            }
+            (MotorMode::LimitLow, Some(_)) => {
+                push(NetEvent::LimitRelease, falls_back(-1.0), Target::Fixed);
+            }
+        }
+        push(
+            NetEvent::Revolution,
+            vec![(l.angle(m.body), 1.0)],
+            Target::Revolution,
+        );
+    }
+    forms
+}

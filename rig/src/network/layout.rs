@@ -1,0 +1,63 @@
+//! The state of a rig of n bodies: θ_0..θ_{n−1} absolute angles (rad), ω_0..ω_{n−1}
+//! absolute speeds (rad/s), the speed loop's filtered speed and integral, then the
+//! forcing states: 1, the motor body's set speed Ω (rad/s) and its rate (rad/s²), the
+//! brake's load (N m) and its rate (N m/s), the oscillating load (A cos ψ, A sin ψ) (N m).
+//! Set speed and load ramp exactly: Ω' = rate, load' = rate.
+
+/// Where each state sits for a rig of `bodies` bodies.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct NetLayout {
+    /// Number of bodies n.
+    pub bodies: usize,
+}
+
+impl NetLayout {
+    /// Angle of body `i`.
+    pub fn angle(self, i: usize) -> usize {
+        i
+    }
+    /// Speed of body `i`.
+    pub fn speed(self, i: usize) -> usize {
+        self.bodies + i
+    }
+    /// The filtered motor speed (rad/s).
+    pub fn filtered(self) -> usize {
+        2 * self.bodies
+    }
+    /// The speed error's integral (rad).
+    pub fn integral(self) -> usize {
+        2 * self.bodies + 1
+    }
+    /// The mechanical and controller states (the rest are forcing).
+    pub fn mechanical(self) -> usize {
+        2 * self.bodies + 2
+    }
+    /// The constant 1.
+    pub fn unit(self) -> usize {
+        self.mechanical()
+    }
+    /// The motor body's set speed Ω (rad/s).
+    pub fn set_speed(self) -> usize {
+        self.mechanical() + 1
+    }
+    /// Ω's rate (rad/s²).
+    pub fn set_rate(self) -> usize {
+        self.mechanical() + 2
+    }
+    /// The brake's load torque (N m).
+    pub fn load(self) -> usize {
+        self.mechanical() + 3
+    }
+    /// The load's rate (N m/s).
+    pub fn load_rate(self) -> usize {
+        self.mechanical() + 4
+    }
+    /// A cos ψ of the oscillating load (N m); A sin ψ follows.
+    pub fn oscillating(self) -> usize {
+        self.mechanical() + 5
+    }
+    /// Length of the state.
+    pub fn len(self) -> usize {
+        self.mechanical() + 7
+    }
+}

@@ -1,0 +1,28 @@
+//! The plant of any rig a rig file describes ([`crate::RigTopology`]): bodies, shafts and
+//! up to four meshes with backlash, a speed-controlled motor, a brake, a locked-in loop
+//! torque; advanced exactly between the switches of every mesh and of the motor's limit,
+//! each switch found on the exact solution.
+//!
+//! `layout.rs` the state: absolute angles and speeds, the speed loop, then forcing states
+//! (unit, set speed and its ramp rate, brake load and its rate, the oscillating load's
+//! pair). `mode.rs` the discrete state (each mesh apart / drive / back with one or two
+//! pairs, the motor linear or at a limit). `model.rs` the constants of a topology and A of
+//! u' = A u per mode. `events.rs` the switching functions of a mode. `system.rs` per mode
+//! e^{A h} and the events, built on first use and cached. `equilibrium.rs` the steady
+//! state at a set speed and load (and at rest, a loop's locked torque carried).
+//! `block.rs` the samples and impacts a run gives. `plant.rs` the plant, `stepping.rs`
+//! its exact steps and switches.
+
+mod block;
+mod equilibrium;
+mod events;
+mod layout;
+mod mode;
+mod model;
+mod plant;
+mod stepping;
+mod system;
+
+pub use block::{NetworkBlock, NetworkImpact};
+pub use mode::Contact;
+pub use plant::{NetworkPlant, NetworkStart};

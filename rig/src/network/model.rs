@@ -1,0 +1,384 @@
+//! A topology's constants in the form the equations take (SI), and the matrix A of
+//! u' = A u in each mode.
+//!
+//! Angles are absolute, each body about its own axis (a driven gear of an external pair
+//! turns the other way). A shaft carries k(θa − θb) + c(ωa − ωb) + T0 from a to b (T0 the
+//! torque locked into a loop's shaft, 0 elsewhere). A mesh's deflection along the line of
+//! action is δ = r_a θa + r_b θb (both radii negated where the driver turns against the
+//! motor, so that δ > 0 always presses its drive flank); on its drive flank (δ > b, b half the free play) it
+//! pushes with F = k(δ − b) + c δ', on its back flank (δ < −b) with F = k(δ + b) + c δ'
+//! (thesis eq. 5.6: the spring-damper acts on the overlap), −r_a F on the driver and
+//! −r_b F on the driven gear; two pairs multiply k and c by the mesh's double-pair ratio.
+//! The motor's PI loop on the first-order filtered speed gives kp(Ω − ω_f) + ki z,
+//! or its limit, on the motor body; the brake resists with its load, its slope about the
+//! set speed and the oscillating load; each body has its bearing drag.
+
+use nalgebra::DMatrix;
+
+use crate::error::RigError;
+use crate::mode::MotorMode;
+use crate::options::MeshPairs;
+use crate::topology::RigTopology;
+
+use super::layout::NetLayout;
+use super::mode::{Contact, MeshState, NetMode};
+
+/// A shaft's constants.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ShaftModel {
+    /// The bodies it joins (from, to).
+    pub between: [usize; 2],
+    /// Stiffness (N m/rad).
+    pub stiffness_nm_per_rad: f64,
+    /// Damping (N m s/rad).
+    pub damping_nms_per_rad: f64,
+    /// Torque it carries untwisted (N m): for a loop's twisted shaft, what makes it
+    /// carry the locked-in torque at rest once the rest of the loop has yielded; else 0.
+    pub preload_nm: f64,
+}
+
+/// A mesh's constants.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MeshModel {
+    /// Driver and driven body.
+    pub gears: [usize; 2],
+    /// Their base radii (m), both negated where the driver turns against the motor, so
+    /// that δ = r_a θa + r_b θb > 0 presses the driver's drive flank whichever way the
+    /// pair turns.
+    pub radii_m: [f64; 2],
+    /// One pair's stiffness along the line of action (N/m).
+    pub stiffness_n_per_m: f64,
+    /// One pair's damping along the line of action (N s/m).
+    pub damping_ns_per_m: f64,
+    /// Half the free play along the line of action (m).
+    pub half_backlash_m: f64,
+    /// Whether one and two pairs alternate.
+    pub alternating: bool,
+    /// Two pairs' stiffness and damping over one pair's.
+    pub double_pair_ratio: f64,
+    /// The driver's tooth pitch (rad).
+    pub pitch_rad: f64,
+    /// Share of each tooth period with two pairs in contact (ε − 1).
+    pub two_pair_share: f64,
+}
+
+impl MeshModel {
+    /// Stiffness (N/m) and damping (N s/m) in `state`.
+    pub fn spring(&self, state: MeshState) -> (f64, f64) {
+        let ratio = if state.two_pairs {
+            self.double_pair_ratio
+        } else {
+            1.0
+        };
+        (
+            ratio * self.stiffness_n_per_m,
+            ratio * self.damping_ns_per_m,
+        )
+    }
+}
+
+/// The motor's speed loop.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MotorModel {
+    /// The body it drives.
+    pub body: usize,
+    /// Proportional gain (N m s/rad).
+    pub kp_nms_per_rad: f64,
+    /// Integral gain (N m/rad).
+    pub ki_nm_per_rad: f64,
+    /// Speed filter corner (rad/s).
+    pub filter_rad_s: f64,
+    /// Torque limit (N m), if any.
+    pub limit_nm: Option<f64>,
+}
+
+/// The brake.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BrakeModel {
+    /// The body it loads.
+    pub body: usize,
+    /// +1 where the brake body turns the motor's way, −1 where it turns against it.
+    pub direction: f64,
+    /// Rise of its torque with speed (N m s/rad).
+    pub slope_nms_per_rad: f64,
+}
+
+/// The constants of a whole rig.
+#[derive(Clone, Debug, PartialEq)]
+pub struct NetworkModel {
+    /// Where the states sit.
+    pub layout: NetLayout,
+    /// Each body's inertia (kg m²).
+    pub inertia_kgm2: Vec<f64>,
+    /// Each body's drag (N m s/rad).
+    pub drag_nms_per_rad: Vec<f64>,
+    /// Each body's speed per unit speed of the motor's body (signed).
+    pub speed_ratio: Vec<f64>,
+    /// The shafts.
+    pub shafts: Vec<ShaftModel>,
+    /// The meshes.
+    pub meshes: Vec<MeshModel>,
+    /// The motor, if the rig has one.
+    pub motor: Option<MotorModel>,
+    /// The brake, if the rig has one.
+    pub brake: Option<BrakeModel>,
+}
+
+impl NetworkModel {
+    /// The constants of a checked topology.
+    pub fn of(rig: &RigTopology) -> Result<Self, RigError> {
+        let reference = rig.motor.unwrap_or(0);
+        let speeds = rig.relative_speeds();
+        let base = speeds[reference].unwrap_or(1.0);
+        let speed_ratio: Vec<f64> = speeds.iter().map(|s| s.unwrap_or(0.0) / base).collect();
+        let inertia_kgm2: Vec<f64> = rig.bodies.iter().map(|b| b.inertia_kgm2).collect();
+        let shafts = rig
+            .shafts
+            .iter()
+            .enumerate()
+            .map(|(i, s)| ShaftModel {
+                between: s.between,
+                stiffness_nm_per_rad: s.stiffness_nm_per_rad,
+                damping_nms_per_rad: s.damping_nms_per_rad,
+                preload_nm: rig
+                    .locked_torque
+                    .as_ref()
+                    .filter(|l| l.shaft == i)
+                    .map_or(0.0, |l| l.torque_nm),
+            })
+            .collect();
+        let meshes = rig
+            .meshes
+            .iter()
+            .map(|m| MeshModel {
+                gears: m.gears,
+                radii_m: m
+                    .base_radii_m()
+                    .map(|r| r * speed_ratio[m.gears[0]].signum()),
+                stiffness_n_per_m: m.stiffness_n_per_m,
+                damping_ns_per_m: m.damping_ns_per_m,
+                half_backlash_m: m.half_backlash_m(),
+                alternating: m.pairs == MeshPairs::Alternating,
+                double_pair_ratio: m.double_pair_ratio,
+                pitch_rad: 2.0 * std::f64::consts::PI / f64::from(m.teeth[0]),
+                two_pair_share: (m.contact_ratio() - 1.0).clamp(0.0, 1.0),
+            })
+            .collect();
+        // The speed loop on the rig's inertia seen at the motor, Σ J s² (as the 1983
+        // preset's on the sum of its five inertias).
+        let seen: f64 = inertia_kgm2
+            .iter()
+            .zip(&speed_ratio)
+            .map(|(j, s)| j * s * s)
+            .sum();
+        let d = &rig.drive;
+        let wn = 2.0 * std::f64::consts::PI * d.speed_loop_hz;
+        let motor = rig.motor.map(|body| MotorModel {
+            body,
+            kp_nms_per_rad: 2.0 * d.speed_loop_damping_ratio * wn * seen,
+            ki_nm_per_rad: seen * wn * wn,
+            filter_rad_s: 2.0 * std::f64::consts::PI * d.feedback_filter_hz,
+            limit_nm: d.torque_limit_nm,
+        });
+        let brake = rig.brake.map(|body| BrakeModel {
+            body,
+            direction: if speed_ratio[body] < 0.0 { -1.0 } else { 1.0 },
+            slope_nms_per_rad: d.brake_slope_nms_per_rad,
+        });
+        let mut model = Self {
+            layout: NetLayout {
+                bodies: rig.bodies.len(),
+            },
+            inertia_kgm2,
+            drag_nms_per_rad: rig.bodies.iter().map(|b| b.drag_nms_per_rad).collect(),
+            speed_ratio,
+            shafts,
+            meshes,
+            motor,
+            brake,
+        };
+        if let Some(locked) = &rig.locked_torque {
+            model.shafts[locked.shaft].preload_nm =
+                super::equilibrium::assembly_preload_nm(&model, locked.shaft, locked.torque_nm)?;
+        }
+        Ok(model)
+    }
+
+    /// A mesh's deflection δ (m) and its rate (m/s) at state `u`.
+    pub fn deflection(&self, mesh: usize, u: &[f64]) -> (f64, f64) {
+        let m = &self.meshes[mesh];
+        let l = self.layout;
+        let [a, b] = m.gears;
+        let [ra, rb] = m.radii_m;
+        (
+            ra * u[l.angle(a)] + rb * u[l.angle(b)],
+            ra * u[l.speed(a)] + rb * u[l.speed(b)],
+        )
+    }
+
+    /// The force (N) a mesh in `state` pushes with at `u`; 0 apart.
+    pub fn mesh_force_n(&self, mesh: usize, state: MeshState, u: &[f64]) -> f64 {
+        let (delta, rate) = self.deflection(mesh, u);
+        let (k, c) = self.meshes[mesh].spring(state);
+        let b = self.meshes[mesh].half_backlash_m;
+        match state.contact {
+            Contact::Apart => 0.0,
+            Contact::Drive => k * (delta - b) + c * rate,
+            Contact::Back => k * (delta + b) + c * rate,
+        }
+    }
+
+    /// The elastic torque (N m) a shaft carries from its first body to its second,
+    /// k(θa − θb) + T0 (what strain gauges on it read).
+    pub fn shaft_torque_nm(&self, shaft: usize, u: &[f64]) -> f64 {
+        let s = &self.shafts[shaft];
+        let l = self.layout;
+        let [a, b] = s.between;
+        s.stiffness_nm_per_rad * (u[l.angle(a)] - u[l.angle(b)]) + s.preload_nm
+    }
+
+    /// The motor's torque (N m) in `motor` mode at `u`; 0 without a motor.
+    pub fn motor_torque_nm(&self, motor: MotorMode, u: &[f64]) -> f64 {
+        let Some(m) = &self.motor else {
+            return 0.0;
+        };
+        let limit = m.limit_nm.unwrap_or(f64::INFINITY);
+        match motor {
+            MotorMode::Linear => self.controller_nm(u),
+            MotorMode::LimitHigh => limit,
+            MotorMode::LimitLow => -limit,
+        }
+    }
+
+    /// The PI loop's command before any limit (N m).
+    pub fn controller_nm(&self, u: &[f64]) -> f64 {
+        let l = self.layout;
+        self.motor.as_ref().map_or(0.0, |m| {
+            m.kp_nms_per_rad * (u[l.set_speed()] - u[l.filtered()])
+                + m.ki_nm_per_rad * u[l.integral()]
+        })
+    }
+
+    /// A of u' = A u in `mode`, the oscillating load turning at `oscillating_rad_s`.
+    pub fn system_matrix(&self, mode: &NetMode, oscillating_rad_s: f64) -> DMatrix<f64> {
+        let l = self.layout;
+        let mut a = DMatrix::zeros(l.len(), l.len());
+        for i in 0..l.bodies {
+            a[(l.angle(i), l.speed(i))] = 1.0;
+            a[(l.speed(i), l.speed(i))] -= self.drag_nms_per_rad[i] / self.inertia_kgm2[i];
+        }
+        for s in &self.shafts {
+            self.add_shaft(&mut a, s);
+        }
+        for (i, m) in self.meshes.iter().enumerate() {
+            self.add_mesh(&mut a, m, mode.meshes[i]);
+        }
+        self.add_motor(&mut a, mode.motor);
+        self.add_brake(&mut a);
+        a[(l.set_speed(), l.set_rate())] = 1.0;
+        a[(l.load(), l.load_rate())] = 1.0;
+        a[(l.oscillating(), l.oscillating() + 1)] = -oscillating_rad_s;
+        a[(l.oscillating() + 1, l.oscillating())] = oscillating_rad_s;
+        a
+    }
+
+    /// Adds `torque` · (coefficient of each state in `terms`) / J to body `body`'s row.
+    fn add_torque(&self, a: &mut DMatrix<f64>, body: usize, terms: &[(usize, f64)]) {
+        let row = self.layout.speed(body);
+        for &(col, c) in terms {
+            a[(row, col)] += c / self.inertia_kgm2[body];
+        }
+    }
+
+    fn add_shaft(&self, a: &mut DMatrix<f64>, s: &ShaftModel) {
+        let l = self.layout;
+        let [i, j] = s.between;
+        let (k, c) = (s.stiffness_nm_per_rad, s.damping_nms_per_rad);
+        let carried = [
+            (l.angle(i), k),
+            (l.angle(j), -k),
+            (l.speed(i), c),
+            (l.speed(j), -c),
+            (l.unit(), s.preload_nm),
+        ];
+        for (body, sign) in [(i, -1.0), (j, 1.0)] {
+            let terms: Vec<(usize, f64)> =
+                carried.iter().map(|&(col, v)| (col, sign * v)).collect();
+            self.add_torque(a, body, &terms);
+        }
+    }
+
+    fn add_mesh(&self, a: &mut DMatrix<f64>, m: &MeshModel, state: MeshState) {
+        let flank = match state.contact {
+            Contact::Apart => return,
+            Contact::Drive => -1.0,
+            Contact::Back => 1.0,
+        };
+        let l = self.layout;
+        let (k, c) = m.spring(state);
+        let [ga, gb] = m.gears;
+        let [ra, rb] = m.radii_m;
+        // F = k(ra θa + rb θb) + c(ra ωa + rb ωb) + flank·k·b.
+        let force = [
+            (l.angle(ga), k * ra),
+            (l.angle(gb), k * rb),
+            (l.speed(ga), c * ra),
+            (l.speed(gb), c * rb),
+            (l.unit(), flank * k * m.half_backlash_m),
+        ];
+        for (body, r) in [(ga, ra), (gb, rb)] {
+            let terms: Vec<(usize, f64)> = force.iter().map(|&(col, v)| (col, -r * v)).collect();
+            self.add_torque(a, body, &terms);
+        }
+    }
+
+    fn add_motor(&self, a: &mut DMatrix<f64>, motor: MotorMode) {
+        let Some(m) = &self.motor else {
+            return;
+        };
+        let l = self.layout;
+        let (kp, ki, wf) = (m.kp_nms_per_rad, m.ki_nm_per_rad, m.filter_rad_s);
+        a[(l.filtered(), l.speed(m.body))] = wf;
+        a[(l.filtered(), l.filtered())] = -wf;
+        let limit = m.limit_nm.unwrap_or(f64::INFINITY);
+        match motor {
+            MotorMode::Linear => {
+                let command = [(l.set_speed(), kp), (l.filtered(), -kp), (l.integral(), ki)];
+                self.add_torque(a, m.body, &command);
+                a[(l.integral(), l.set_speed())] = 1.0;
+                a[(l.integral(), l.filtered())] = -1.0;
+            }
+            MotorMode::LimitHigh | MotorMode::LimitLow => {
+                let sign = if motor == MotorMode::LimitHigh {
+                    1.0
+                } else {
+                    -1.0
+                };
+                self.add_torque(a, m.body, &[(l.unit(), sign * limit)]);
+                // The integrator tracks so that the command stays at the limit (as the
+                // 1983 plant's drive): ki ż = kp ω̇_f with Ω constant, kp Ω̇ with a ramp.
+                let gain = kp / ki;
+                a[(l.integral(), l.speed(m.body))] = gain * wf;
+                a[(l.integral(), l.filtered())] = -gain * wf;
+                a[(l.integral(), l.set_rate())] = -gain;
+            }
+        }
+    }
+
+    fn add_brake(&self, a: &mut DMatrix<f64>) {
+        let Some(b) = &self.brake else {
+            return;
+        };
+        let l = self.layout;
+        let dir = b.direction;
+        let slope = b.slope_nms_per_rad;
+        let nominal = self.speed_ratio[b.body];
+        let terms = [
+            (l.load(), -dir),
+            (l.oscillating() + 1, -dir),
+            (l.speed(b.body), -slope),
+            (l.set_speed(), slope * nominal),
+        ];
+        self.add_torque(a, b.body, &terms);
+    }
+}

@@ -1,0 +1,391 @@
+//! The plant of a rig file's rig: its state, construction at rest or in steady motion,
+//! set-point segments, and the samples it writes. The exact steps are in `stepping.rs`.
+
+use std::f64::consts::PI;
+
+use crate::error::RigError;
+use crate::mode::MotorMode;
+use crate::schedule::Schedule;
+use crate::taylor::{MAX_RHO_H, TAYLOR_ORDER};
+use crate::topology::RigTopology;
+
+use super::block::{NetworkBlock, NetworkImpact};
+use super::equilibrium::equilibrium;
+use super::mode::{Contact, NetMode};
+use super::model::NetworkModel;
+use super::system::{SystemCache, fastest_rate};
+
+/// Where a run starts.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum NetworkStart {
+    /// In steady motion at the schedule's first set points (shafts and meshes twisted to
+    /// carry the load, every body at its share of the speed).
+    Steady,
+    /// At rest, a loop carrying its locked torque; the motor then follows the schedule.
+    Rest,
+}
+
+/// Longest stretch (s) an oscillating load's ramping amplitude or frequency is held.
+const OSCILLATING_HOLD_S: f64 = 0.1;
+
+/// Fastest any body may turn before the run is called blown up (rad/s).
+const SPEED_LIMIT_RAD_S: f64 = 1.0e5;
+
+/// A rig of any topology, advanced exactly.
+#[derive(Debug)]
+pub struct NetworkPlant {
+    pub(super) model: NetworkModel,
+    schedule: Schedule,
+    output_step_s: f64,
+    pub(super) substeps: u32,
+    pub(super) step_s: f64,
+    pub(super) cache: SystemCache,
+    pub(super) u: Vec<f64>,
+    pub(super) mode: NetMode,
+    sample: u64,
+    segment_end: Option<u64>,
+    /// Each mesh's pair zone as a count of zone boundaries (even: two pairs).
+    pub(super) zones: Vec<i64>,
+    pub(super) next_revolution_rad: f64,
+    pub(super) impacts: Vec<NetworkImpact>,
+    pub(super) revolutions_s: Vec<f64>,
+    /// Start time of the step being taken (s).
+    pub(super) step_start_s: f64,
+    /// Scratch: the step's end state and the Taylor vectors.
+    pub(super) next: Vec<f64>,
+    pub(super) taylor: Vec<Vec<f64>>,
+}
+
+impl NetworkPlant {
+    /// A plant of `rig` following `schedule`, sampled at `output_rate_hz`.
+    pub fn new(
+        rig: &RigTopology,
+        schedule: Schedule,
+        output_rate_hz: f64,
+        start: NetworkStart,
+    ) -> Result<Self, RigError> {
+        rig.check()?;
+        schedule.validate()?;
+        if !(output_rate_hz.is_finite() && output_rate_hz >= 100.0) {
+            return Err(RigError::InvalidOption {
+                name: "output_rate_hz",
+                value: output_rate_hz.to_string(),
+                allowed: "a rate of at least 100 Hz",
+            });
+        }
+        let model = NetworkModel::of(rig)?;
+        let output_step_s = 1.0 / output_rate_hz;
+        let rho = fastest_rate(&model);
+        let substeps = (rho * output_step_s / MAX_RHO_H).ceil().max(1.0) as u32;
+        let step_s = output_step_s / f64::from(substeps);
+        let len = model.layout.len();
+        let meshes = model.meshes.len();
+        let mut plant = Self {
+            model,
+            schedule,
+            output_step_s,
+            substeps,
+            step_s,
+            cache: SystemCache::new(step_s, rho),
+            u: vec![0.0; len],
+            mode: NetMode::apart(),
+            sample: 0,
+            segment_end: Some(0),
+            zones: vec![1; meshes],
+            next_revolution_rad: 2.0 * PI,
+            impacts: Vec::new(),
+            revolutions_s: Vec::new(),
+            step_start_s: 0.0,
+            next: vec![0.0; len],
+            taylor: vec![vec![0.0; len]; TAYLOR_ORDER + 1],
+        };
+        plant.start(start)?;
+        Ok(plant)
+    }
+
+    /// Places the rig in its steady state at the first set points, or at rest.
+    fn start(&mut self, start: NetworkStart) -> Result<(), RigError> {
+        let (speed_rad_s, load_nm) = match start {
+            NetworkStart::Steady => (
+                self.schedule.speed_rpm.value_at(0.0) * PI / 30.0,
+                self.schedule.load_nm.value_at(0.0),
+            ),
+            NetworkStart::Rest => (0.0, 0.0),
+        };
+        let l = self.model.layout;
+        let mut two_pairs = vec![false; self.model.meshes.len()];
+        let mut state = equilibrium(&self.model, speed_rad_s, load_nm, &two_pairs)?;
+        for _ in 0..3 {
+            self.u[..l.bodies].copy_from_slice(&state.angles_rad);
+            self.set_zones_from_angles();
+            let zones: Vec<bool> = self.zones.iter().map(|q| q % 2 == 0).collect();
+            let alternating = self.model.meshes.iter().map(|m| m.alternating);
+            let now: Vec<bool> = zones
+                .iter()
+                .zip(alternating)
+                .map(|(z, a)| *z && a)
+                .collect();
+            if now == two_pairs {
+                break;
+            }
+            two_pairs = now;
+            state = equilibrium(&self.model, speed_rad_s, load_nm, &two_pairs)?;
+        }
+        self.u[..l.bodies].copy_from_slice(&state.angles_rad);
+        for i in 0..l.bodies {
+            self.u[l.speed(i)] = self.model.speed_ratio[i] * speed_rad_s;
+        }
+        for (i, s) in state.meshes.iter().enumerate() {
+            self.mode.meshes[i] = *s;
+        }
+        self.u[l.unit()] = 1.0;
+        self.u[l.set_speed()] = speed_rad_s;
+        self.u[l.load()] = load_nm;
+        if let Some(m) = &self.model.motor {
+            if m.limit_nm
+                .is_some_and(|limit| state.motor_torque_nm.abs() > limit)
+            {
+                return Err(RigError::Schedule(format!(
+                    "the motor's torque limit cannot carry the {:.3} N m this steady point takes",
+                    state.motor_torque_nm
+                )));
+            }
+            self.u[l.filtered()] = speed_rad_s;
+            self.u[l.integral()] = state.motor_torque_nm / m.ki_nm_per_rad;
+            let angle = self.u[l.angle(m.body)];
+            self.next_revolution_rad = ((angle / (2.0 * PI)).floor() + 1.0) * 2.0 * PI;
+        }
+        Ok(())
+    }
+
+    /// Each alternating mesh's pair zone from its driver's angle.
+    pub(super) fn set_zones_from_angles(&mut self) {
+        for i in 0..self.model.meshes.len() {
+            self.zones[i] = self.zone_at(i);
+        }
+    }
+
+    /// The pair zone mesh `i`'s driver is in: 2k with two pairs, 2k + 1 with one.
+    pub(super) fn zone_at(&self, i: usize) -> i64 {
+        let m = &self.model.meshes[i];
+        let phase = self.u[self.model.layout.angle(m.gears[0])] / m.pitch_rad;
+        let period = phase.floor();
+        let single = phase - period >= m.two_pair_share;
+        2 * period as i64 + i64::from(single)
+    }
+
+    /// The start and end (rad of the driver) of pair zone `zone` of mesh `i`.
+    pub(super) fn zone_bounds(&self, i: usize, zone: i64) -> (f64, f64) {
+        let m = &self.model.meshes[i];
+        let period = zone.div_euclid(2) as f64;
+        let split = (period + m.two_pair_share) * m.pitch_rad;
+        if zone.rem_euclid(2) == 0 {
+            (period * m.pitch_rad, split)
+        } else {
+            (split, (period + 1.0) * m.pitch_rad)
+        }
+    }
+
+    /// Runs `samples` output samples, appending them to `block`.
+    pub fn run(&mut self, samples: usize, block: &mut NetworkBlock) -> Result<(), RigError> {
+        for _ in 0..samples {
+            if self.segment_end.is_some_and(|end| self.sample >= end) {
+                self.begin_segment();
+            }
+            for k in 0..self.substeps {
+                self.step_start_s = self.time_s() + f64::from(k) * self.step_s;
+                self.step()?;
+            }
+            self.sample += 1;
+            self.check_bounds()?;
+            self.write_sample(block);
+        }
+        Ok(())
+    }
+
+    /// Starts a stretch of set points at the current sample: speed and load ramp exactly
+    /// to the next knot, the oscillating load holds (at most 0.1 s while it ramps).
+    fn begin_segment(&mut self) {
+        let t = self.time_s();
+        let knot = self.schedule.next_knot_after(t);
+        let s = &self.schedule;
+        let oscillating_ramps =
+            s.oscillating_load_nm.ramping_at(t) || s.oscillating_load_hz.ramping_at(t);
+        let end_s = match (knot, oscillating_ramps) {
+            (Some(k), true) => Some(k.min(t + OSCILLATING_HOLD_S)),
+            (None, true) => Some(t + OSCILLATING_HOLD_S),
+            (k, false) => k,
+        };
+        let end =
+            end_s.map(|e| ((e / self.output_step_s - 1e-9).ceil() as u64).max(self.sample + 1));
+        let span_s = end.map_or(0.0, |e| e as f64 * self.output_step_s - t);
+        let ramp = |track: &crate::schedule::Track, scale: f64| {
+            let now = track.value_at(t) * scale;
+            let rate = match end_s {
+                Some(e) if span_s > 0.0 && track.ramping_at(t) => {
+                    (track.value_at(e) * scale - now) / span_s
+                }
+                _ => 0.0,
+            };
+            (now, rate)
+        };
+        let (speed, speed_rate) = ramp(&s.speed_rpm, PI / 30.0);
+        let (load, load_rate) = ramp(&s.load_nm, 1.0);
+        let held = s.held_over(t, end_s.map_or(0.0, |e| e - t));
+        let l = self.model.layout;
+        self.u[l.set_speed()] = speed;
+        self.u[l.set_rate()] = speed_rate;
+        self.u[l.load()] = load;
+        self.u[l.load_rate()] = load_rate;
+        let (c, si) = (self.u[l.oscillating()], self.u[l.oscillating() + 1]);
+        let phase = if c == 0.0 && si == 0.0 {
+            0.0
+        } else {
+            si.atan2(c)
+        };
+        self.u[l.oscillating()] = held.oscillating_load_nm * phase.cos();
+        self.u[l.oscillating() + 1] = held.oscillating_load_nm * phase.sin();
+        self.cache.set_oscillating(held.oscillating_load_rad_s());
+        self.segment_end = end;
+        self.clamp_motor();
+    }
+
+    /// After a jump of the set speed: a command beyond a limit is held at it.
+    fn clamp_motor(&mut self) {
+        let Some(m) = &self.model.motor else {
+            return;
+        };
+        let Some(limit) = m.limit_nm else {
+            return;
+        };
+        let command = self.model.controller_nm(&self.u);
+        if self.mode.motor == MotorMode::Linear && command.abs() > limit {
+            let l = self.model.layout;
+            let held = limit.copysign(command);
+            self.u[l.integral()] += (held - command) / m.ki_nm_per_rad;
+            self.mode.motor = if command > 0.0 {
+                MotorMode::LimitHigh
+            } else {
+                MotorMode::LimitLow
+            };
+        }
+    }
+
+    /// Refuses a state that is not finite or turns impossibly fast.
+    fn check_bounds(&self) -> Result<(), RigError> {
+        let l = self.model.layout;
+        let speeds = &self.u[l.speed(0)..l.speed(0) + l.bodies];
+        if self.u.iter().all(|x| x.is_finite())
+            && speeds.iter().all(|w| w.abs() < SPEED_LIMIT_RAD_S)
+        {
+            return Ok(());
+        }
+        Err(RigError::BlowUp {
+            t_s: self.time_s(),
+            reason: "a body's speed left the finite range or exceeded 1e5 rad/s".into(),
+            state: self.u[..l.mechanical()].to_vec(),
+        })
+    }
+
+    /// Appends the current sample to `block`.
+    fn write_sample(&self, block: &mut NetworkBlock) {
+        let l = self.model.layout;
+        let u = &self.u;
+        let sense = |body: usize| self.model.speed_ratio[body].signum();
+        block.time_s.push(self.time_s());
+        for i in 0..l.bodies {
+            block.angle_rad[i].push(sense(i) * u[l.angle(i)]);
+            block.speed_rad_s[i].push(sense(i) * u[l.speed(i)]);
+        }
+        for (i, column) in block.shaft_torque_nm.iter_mut().enumerate() {
+            let body = self.model.shafts[i].between[0];
+            column.push(sense(body) * self.model.shaft_torque_nm(i, u));
+        }
+        for i in 0..self.model.meshes.len() {
+            let state = self.mode.meshes[i];
+            block.mesh_force_n[i].push(self.model.mesh_force_n(i, state, u));
+            block.contact[i].push(state.contact.sign());
+        }
+        block
+            .motor_torque_nm
+            .push(self.model.motor_torque_nm(self.mode.motor, u));
+    }
+
+    /// Time of the current sample (s).
+    pub fn time_s(&self) -> f64 {
+        self.sample as f64 * self.output_step_s
+    }
+
+    /// Internal steps per output sample (ρh ≤ 0.5 in the stiffest mode).
+    pub fn substeps(&self) -> u32 {
+        self.substeps
+    }
+
+    /// Each body's speed per unit speed of the motor's body (signed).
+    pub fn speed_ratios(&self) -> &[f64] {
+        &self.model.speed_ratio
+    }
+
+    /// Each mesh's contact now.
+    pub fn contacts(&self) -> Vec<Contact> {
+        (0..self.model.meshes.len())
+            .map(|i| self.mode.meshes[i].contact)
+            .collect()
+    }
+
+    /// The impacts since the last call.
+    pub fn take_impacts(&mut self) -> Vec<NetworkImpact> {
+        std::mem::take(&mut self.impacts)
+    }
+
+    /// The motor body's whole-revolution instants since the last call (s).
+    pub fn take_revolutions(&mut self) -> Vec<f64> {
+        std::mem::take(&mut self.revolutions_s)
+    }
+
+    /// The mechanical state: absolute angles (rad) then absolute speeds (rad/s) of the
+    /// bodies (each about its own axis, signed), the speed loop's two states.
+    pub fn state_rad(&self) -> &[f64] {
+        &self.u[..self.model.layout.mechanical()]
+    }
+
+    /// Adds `delta_rad_s` to body `body`'s speed (a kick, as a hammer blow).
+    pub fn kick(&mut self, body: usize, delta_rad_s: f64) {
+        let l = self.model.layout;
+        self.u[l.speed(body)] += delta_rad_s;
+    }
+
+    /// The mechanical energy (J): kinetic, shafts' k·twist²/2 + T0·twist, meshes'
+    /// k·overlap²/2 on their flank.
+    pub fn energy_j(&self) -> f64 {
+        let l = self.model.layout;
+        let u = &self.u;
+        let kinetic: f64 = (0..l.bodies)
+            .map(|i| 0.5 * self.model.inertia_kgm2[i] * u[l.speed(i)].powi(2))
+            .sum();
+        let shafts: f64 = self
+            .model
+            .shafts
+            .iter()
+            .map(|s| {
+                let twist = u[l.angle(s.between[0])] - u[l.angle(s.between[1])];
+                0.5 * s.stiffness_nm_per_rad * twist * twist + s.preload_nm * twist
+            })
+            .sum();
+        let meshes: f64 = (0..self.model.meshes.len())
+            .map(|i| {
+                let m = &self.model.meshes[i];
+                let state = self.mode.meshes[i];
+                let (delta, _) = self.model.deflection(i, u);
+                let (k, _) = m.spring(state);
+                let overlap = match state.contact {
+                    Contact::Apart => 0.0,
+                    Contact::Drive => delta - m.half_backlash_m,
+                    Contact::Back => delta + m.half_backlash_m,
+                };
+                0.5 * k * overlap * overlap
+            })
+            .sum();
+        kinetic + shafts + meshes
+    }
+}
