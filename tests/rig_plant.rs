@@ -337,3 +337,64 @@ fn impacts_fall_within_1_us_of_a_20_ns_rk4_on_both_example_rigs() {
         }
     }
 }
+
+#[test]
+fn the_1983_rig_file_runs_as_the_thesis_plant_does() {
+    // The thesis plant with the backlash constant and without its numerical tooth
+    // shifting (a rig file's mesh has neither yet) against the rig file's plant, both
+    // from steady running: steady at 600 and 1300 rev/min under 2.712 N m, and rattling
+    // at 600 rev/min under 0.5 N m with 3 N m oscillating at 25 Hz on the brake, where
+    // the teeth part and strike and the two runs drift apart as rattling motions do.
+    let rig = shipped("basmaji-1983");
+    let mut params = rig::preset("basmaji-1983").expect("preset");
+    params.backlash_variation_c1 = 0.0;
+    params.tooth_shifting = false;
+    let rattle = Schedule {
+        oscillating_load_nm: Track::hold(3.0),
+        oscillating_load_hz: Track::hold(25.0),
+        ..Schedule::constant(600.0, 0.5)
+    };
+    let cases = [
+        (Schedule::constant(600.0, 2.712), 3.0, 0),
+        (Schedule::constant(1300.0, 2.712), 3.0, 0),
+        (rattle, 0.3, 6),
+    ];
+    for (schedule, seconds, least_impacts) in cases {
+        let rpm = schedule.speed_rpm.value_at(0.0);
+        let samples = (seconds * RATE_HZ) as usize;
+        let mut thesis = rig::Plant::new(
+            params.clone(),
+            schedule.clone(),
+            rig::PlantConfig::default(),
+        )
+        .expect("thesis plant");
+        let mut thesis_block = rig::SignalBlock::default();
+        thesis.run(samples, &mut thesis_block).expect("run");
+        let mut ours = plant(&rig, schedule, NetworkStart::Steady);
+        let block = run(&mut ours, &rig, seconds);
+        let theirs = &thesis_block.shaft_torque_nm[rig::INTERMEDIATE_SHAFT];
+        let mine = &block.shaft_torque_nm[shaft(&rig, "intermediate")];
+        let scale = theirs.iter().fold(0.0_f64, |m, x| m.max(x.abs()));
+        let worst = theirs
+            .iter()
+            .zip(mine)
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0, f64::max);
+        let impacts = ours.take_impacts();
+        let reference = thesis.drain_impacts();
+        assert!(
+            worst < 1e-6 * scale,
+            "{rpm} rev/min: torques differ by {worst} N m of {scale}"
+        );
+        assert_eq!(impacts.len(), reference.len(), "{rpm} rev/min");
+        assert!(impacts.len() >= least_impacts, "{rpm} rev/min: {impacts:?}");
+        for (a, b) in impacts.iter().zip(&reference) {
+            assert!(
+                (a.time_s - b.time_s).abs() < 1e-6,
+                "{rpm}: {} s against {} s",
+                a.time_s,
+                b.time_s
+            );
+        }
+    }
+}

@@ -164,7 +164,10 @@ pub fn event_forms(model: &NetworkModel, mode: &NetMode, a: &DMatrix<f64>) -> Ve
         }
         push(
             NetEvent::Revolution,
-            vec![(l.angle(m.body), 1.0)],
+            vec![
+                (l.angle(m.body), 1.0),
+                (l.phase(), model.speed_ratio[m.body]),
+            ],
             Target::Revolution,
         );
     }

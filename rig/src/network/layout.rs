@@ -1,8 +1,10 @@
-//! The state of a rig of n bodies: θ_0..θ_{n−1} absolute angles (rad), ω_0..ω_{n−1}
+//! The state of a rig of n bodies: x_0..x_{n−1} each body's angle less its share s_i Φ of
+//! the set rotation Φ (rad; twists, bounded however long the rig runs), ω_0..ω_{n−1}
 //! absolute speeds (rad/s), the speed loop's filtered speed and integral, then the
 //! forcing states: 1, the motor body's set speed Ω (rad/s) and its rate (rad/s²), the
-//! brake's load (N m) and its rate (N m/s), the oscillating load (A cos ψ, A sin ψ) (N m).
-//! Set speed and load ramp exactly: Ω' = rate, load' = rate.
+//! brake's load (N m) and its rate (N m/s), the oscillating load (A cos ψ, A sin ψ) (N m),
+//! and the set rotation Φ (rad; Φ' = Ω, read only by the switching functions of tooth
+//! zones and revolutions). Set speed and load ramp exactly: Ω' = rate, load' = rate.
 
 /// Where each state sits for a rig of `bodies` bodies.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -12,7 +14,7 @@ pub struct NetLayout {
 }
 
 impl NetLayout {
-    /// Angle of body `i`.
+    /// Angle of body `i` less its share of the set rotation, x_i = θ_i − s_i Φ.
     pub fn angle(self, i: usize) -> usize {
         i
     }
@@ -56,8 +58,12 @@ impl NetLayout {
     pub fn oscillating(self) -> usize {
         self.mechanical() + 5
     }
+    /// The set rotation Φ (rad).
+    pub fn phase(self) -> usize {
+        self.mechanical() + 7
+    }
     /// Length of the state.
     pub fn len(self) -> usize {
-        self.mechanical() + 7
+        self.mechanical() + 8
     }
 }

@@ -1,8 +1,10 @@
 //! A topology's constants in the form the equations take (SI), and the matrix A of
 //! u' = A u in each mode.
 //!
-//! Angles are absolute, each body about its own axis (a driven gear of an external pair
-//! turns the other way). A shaft carries k(θa − θb) + c(ωa − ωb) + T0 from a to b (T0 the
+//! Each body turns about its own axis (a driven gear of an external pair turns the other
+//! way); its angle is kept as x = θ − sΦ, less its share of the set rotation, so that
+//! twists keep their precision however far the rig has turned (twists and deflections
+//! are the same in x as in θ: the shares s make every shaft and mesh turn rigidly). A shaft carries k(θa − θb) + c(ωa − ωb) + T0 from a to b (T0 the
 //! torque locked into a loop's shaft, 0 elsewhere). A mesh's deflection along the line of
 //! action is δ = r_a θa + r_b θb (both radii negated where the driver turns against the
 //! motor, so that δ > 0 always presses its drive flank); on its drive flank (δ > b, b half the free play) it
@@ -204,6 +206,12 @@ impl NetworkModel {
         Ok(model)
     }
 
+    /// The absolute angle θ = x + sΦ (rad) of body `body` at `u`.
+    pub fn absolute_angle_rad(&self, body: usize, u: &[f64]) -> f64 {
+        let l = self.layout;
+        u[l.angle(body)] + self.speed_ratio[body] * u[l.phase()]
+    }
+
     /// A mesh's deflection δ (m) and its rate (m/s) at state `u`.
     pub fn deflection(&self, mesh: usize, u: &[f64]) -> (f64, f64) {
         let m = &self.meshes[mesh];
@@ -265,6 +273,7 @@ impl NetworkModel {
         let mut a = DMatrix::zeros(l.len(), l.len());
         for i in 0..l.bodies {
             a[(l.angle(i), l.speed(i))] = 1.0;
+            a[(l.angle(i), l.set_speed())] = -self.speed_ratio[i];
             a[(l.speed(i), l.speed(i))] -= self.drag_nms_per_rad[i] / self.inertia_kgm2[i];
         }
         for s in &self.shafts {
@@ -277,6 +286,7 @@ impl NetworkModel {
         self.add_brake(&mut a);
         a[(l.set_speed(), l.set_rate())] = 1.0;
         a[(l.load(), l.load_rate())] = 1.0;
+        a[(l.phase(), l.set_speed())] = 1.0;
         a[(l.oscillating(), l.oscillating() + 1)] = -oscillating_rad_s;
         a[(l.oscillating() + 1, l.oscillating())] = oscillating_rad_s;
         a

@@ -152,7 +152,7 @@ impl NetworkPlant {
             }
             self.u[l.filtered()] = speed_rad_s;
             self.u[l.integral()] = state.motor_torque_nm / m.ki_nm_per_rad;
-            let angle = self.u[l.angle(m.body)];
+            let angle = self.model.absolute_angle_rad(m.body, &self.u);
             self.next_revolution_rad = ((angle / (2.0 * PI)).floor() + 1.0) * 2.0 * PI;
         }
         Ok(())
@@ -168,7 +168,7 @@ impl NetworkPlant {
     /// The pair zone mesh `i`'s driver is in: 2k with two pairs, 2k + 1 with one.
     pub(super) fn zone_at(&self, i: usize) -> i64 {
         let m = &self.model.meshes[i];
-        let phase = self.u[self.model.layout.angle(m.gears[0])] / m.pitch_rad;
+        let phase = self.model.absolute_angle_rad(m.gears[0], &self.u) / m.pitch_rad;
         let period = phase.floor();
         let single = phase - period >= m.two_pair_share;
         2 * period as i64 + i64::from(single)
@@ -186,19 +186,20 @@ impl NetworkPlant {
         }
     }
 
-    /// Runs `samples` output samples, appending them to `block`.
+    /// Runs `samples` output samples, appending them to `block`: sample n holds the state
+    /// at t = n / rate, then the plant advances to the next.
     pub fn run(&mut self, samples: usize, block: &mut NetworkBlock) -> Result<(), RigError> {
         for _ in 0..samples {
             if self.segment_end.is_some_and(|end| self.sample >= end) {
                 self.begin_segment();
             }
+            self.write_sample(block);
             for k in 0..self.substeps {
                 self.step_start_s = self.time_s() + f64::from(k) * self.step_s;
                 self.step()?;
             }
             self.sample += 1;
             self.check_bounds()?;
-            self.write_sample(block);
         }
         Ok(())
     }
@@ -294,7 +295,7 @@ impl NetworkPlant {
         let sense = |body: usize| self.model.speed_ratio[body].signum();
         block.time_s.push(self.time_s());
         for i in 0..l.bodies {
-            block.angle_rad[i].push(sense(i) * u[l.angle(i)]);
+            block.angle_rad[i].push(sense(i) * self.model.absolute_angle_rad(i, u));
             block.speed_rad_s[i].push(sense(i) * u[l.speed(i)]);
         }
         for (i, column) in block.shaft_torque_nm.iter_mut().enumerate() {
@@ -343,8 +344,9 @@ impl NetworkPlant {
         std::mem::take(&mut self.revolutions_s)
     }
 
-    /// The mechanical state: absolute angles (rad) then absolute speeds (rad/s) of the
-    /// bodies (each about its own axis, signed), the speed loop's two states.
+    /// The mechanical state: the bodies' angles less their share of the set rotation
+    /// (rad; absolute while the set rotation is 0, as at the start), their absolute speeds
+    /// (rad/s; each about its own axis, signed), the speed loop's two states.
     pub fn state_rad(&self) -> &[f64] {
         &self.u[..self.model.layout.mechanical()]
     }

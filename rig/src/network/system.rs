@@ -66,7 +66,8 @@ impl SystemCache {
 }
 
 /// e^{A h} column-major, balanced as the 1983 plant's: angles and the integral at 1,
-/// speeds and the filtered speed at ρ, forcing states scaled to ρ.
+/// speeds and the filtered speed at ρ, forcing states scaled to ρ, the oscillating
+/// load's two states alike.
 fn exp_step(model: &NetworkModel, a: &DMatrix<f64>, step_s: f64, rho: f64) -> Vec<f64> {
     let l = model.layout;
     let rho = rho.max(1.0);
@@ -79,7 +80,13 @@ fn exp_step(model: &NetworkModel, a: &DMatrix<f64>, step_s: f64, rho: f64) -> Ve
             }
         })
         .collect();
-    let scale = forcing_scales(a, &mechanical, rho);
+    let mut scale = forcing_scales(a, &mechanical, rho);
+    // The oscillating pair turns one into the other: one scale for both, else the
+    // balanced rotation's entries would be as large as their ratio.
+    let pair = l.oscillating();
+    let shared = scale[pair].max(scale[pair + 1]);
+    scale[pair] = shared;
+    scale[pair + 1] = shared;
     exp_powers_balanced(a, step_s, &scale, 1)
         .remove(0)
         .as_slice()
