@@ -50,8 +50,8 @@ pub struct EventForm {
     pub event: NetEvent,
     /// Sparse coefficients (index, value).
     pub terms: Vec<(usize, f64)>,
-    /// The dense row terms·A.
-    pub slope: Vec<f64>,
+    /// The row terms·A, its nonzero entries (index, value).
+    pub slope: Vec<(usize, f64)>,
     /// The moving target.
     pub target: Target,
 }
@@ -59,7 +59,13 @@ pub struct EventForm {
 impl EventForm {
     fn new(event: NetEvent, terms: Vec<(usize, f64)>, target: Target, a: &DMatrix<f64>) -> Self {
         let slope = (0..a.ncols())
-            .map(|col| terms.iter().map(|&(i, c)| c * a[(i, col)]).sum())
+            .map(|col| {
+                (
+                    col,
+                    terms.iter().map(|&(i, c)| c * a[(i, col)]).sum::<f64>(),
+                )
+            })
+            .filter(|&(_, v)| v != 0.0)
             .collect();
         Self {
             event,
@@ -78,7 +84,7 @@ impl EventForm {
     /// slope·u, the rate of the value.
     #[inline]
     pub fn rate(&self, u: &[f64]) -> f64 {
-        self.slope.iter().zip(u).map(|(s, x)| s * x).sum()
+        self.slope.iter().map(|&(i, c)| c * u[i]).sum()
     }
 }
 

@@ -66,4 +66,9 @@ impl NetLayout {
     pub fn len(self) -> usize {
         self.mechanical() + 8
     }
+    /// The length rounded up to a multiple of 4: the stored state and each stored column
+    /// of a matrix, padded with zeros so that products run in whole vectors.
+    pub fn padded(self) -> usize {
+        self.len().div_ceil(4) * 4
+    }
 }

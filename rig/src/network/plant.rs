@@ -28,6 +28,9 @@ pub enum NetworkStart {
 /// Longest stretch (s) an oscillating load's ramping amplitude or frequency is held.
 const OSCILLATING_HOLD_S: f64 = 0.1;
 
+/// Samples between checks of the state's bounds (and at the end of every run).
+const CHECK_EVERY: u64 = 64;
+
 /// Fastest any body may turn before the run is called blown up (rad/s).
 const SPEED_LIMIT_RAD_S: f64 = 1.0e5;
 
@@ -51,6 +54,10 @@ pub struct NetworkPlant {
     pub(super) revolutions_s: Vec<f64>,
     /// Start time of the step being taken (s).
     pub(super) step_start_s: f64,
+    /// Each switching function's value and rate at `u`, when known (empty when not).
+    pub(super) edge: Vec<(f64, f64)>,
+    /// The same at the step's end.
+    pub(super) next_edge: Vec<(f64, f64)>,
     /// Scratch: the step's end state and the Taylor vectors.
     pub(super) next: Vec<f64>,
     pub(super) taylor: Vec<Vec<f64>>,
@@ -78,7 +85,7 @@ impl NetworkPlant {
         let rho = fastest_rate(&model);
         let substeps = (rho * output_step_s / MAX_RHO_H).ceil().max(1.0) as u32;
         let step_s = output_step_s / f64::from(substeps);
-        let len = model.layout.len();
+        let len = model.layout.padded();
         let meshes = model.meshes.len();
         let mut plant = Self {
             model,
@@ -96,6 +103,8 @@ impl NetworkPlant {
             impacts: Vec::new(),
             revolutions_s: Vec::new(),
             step_start_s: 0.0,
+            edge: Vec::new(),
+            next_edge: Vec::new(),
             next: vec![0.0; len],
             taylor: vec![vec![0.0; len]; TAYLOR_ORDER + 1],
         };
@@ -189,6 +198,12 @@ impl NetworkPlant {
     /// Runs `samples` output samples, appending them to `block`: sample n holds the state
     /// at t = n / rate, then the plant advances to the next.
     pub fn run(&mut self, samples: usize, block: &mut NetworkBlock) -> Result<(), RigError> {
+        let result = self.run_samples(samples, block);
+        result.and_then(|()| self.check_bounds())
+    }
+
+    /// [`Self::run`] without the final check of bounds.
+    fn run_samples(&mut self, samples: usize, block: &mut NetworkBlock) -> Result<(), RigError> {
         for _ in 0..samples {
             if self.segment_end.is_some_and(|end| self.sample >= end) {
                 self.begin_segment();
@@ -199,7 +214,9 @@ impl NetworkPlant {
                 self.step()?;
             }
             self.sample += 1;
-            self.check_bounds()?;
+            if self.sample.is_multiple_of(CHECK_EVERY) {
+                self.check_bounds()?;
+            }
         }
         Ok(())
     }
@@ -248,6 +265,7 @@ impl NetworkPlant {
         self.u[l.oscillating() + 1] = held.oscillating_load_nm * phase.sin();
         self.cache.set_oscillating(held.oscillating_load_rad_s());
         self.segment_end = end;
+        self.edge.clear();
         self.clamp_motor();
     }
 
@@ -355,6 +373,7 @@ impl NetworkPlant {
     pub fn kick(&mut self, body: usize, delta_rad_s: f64) {
         let l = self.model.layout;
         self.u[l.speed(body)] += delta_rad_s;
+        self.edge.clear();
     }
 
     /// The mechanical energy (J): kinetic, shafts' k·twist²/2 + T0·twist, meshes'

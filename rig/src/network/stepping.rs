@@ -17,26 +17,38 @@ use super::block::NetworkImpact;
 use super::events::{EventForm, NetEvent, Target};
 use super::mode::Contact;
 use super::plant::NetworkPlant;
-use super::system::ModeSystem;
+use super::system::{ModeSystem, SystemCache};
 
 impl NetworkPlant {
     /// Advances one internal step, switching wherever a function crosses.
     pub(super) fn step(&mut self) -> Result<(), RigError> {
+        let mut cache = std::mem::take(&mut self.cache);
+        let result = self.step_with(&mut cache);
+        self.cache = cache;
+        result
+    }
+
+    /// [`Self::step`] with the cache of modes held apart from the plant.
+    fn step_with(&mut self, cache: &mut SystemCache) -> Result<(), RigError> {
         let mut left = 1.0;
         for _ in 0..SWITCH_LIMIT {
-            let system = self.cache.get(&self.model, &self.mode);
+            let system = cache.get(&self.model, &self.mode);
             let span_s = left * self.step_s;
             if left == 1.0 {
-                column_major_product(&system.step, &self.u, &mut self.next);
+                let forcing = self.model.layout.mechanical();
+                column_major_product(&system.step, &self.u, &mut self.next, forcing);
             } else {
-                self.expand(&system, span_s);
+                self.expand(system, span_s);
                 self.next = self.evaluate(1.0);
             }
-            let Some((s, event)) = self.first_switch(&system, span_s, left == 1.0) else {
+            self.next_edge.clear();
+            let Some((s, event)) = self.first_switch(system, span_s, left == 1.0) else {
                 std::mem::swap(&mut self.u, &mut self.next);
+                std::mem::swap(&mut self.edge, &mut self.next_edge);
                 return Ok(());
             };
             self.u = self.evaluate(s);
+            self.edge.clear();
             let at_s = self.step_start_s + (1.0 - left + s * left) * self.step_s;
             self.switch(event, at_s);
             left *= 1.0 - s;
@@ -52,6 +64,7 @@ impl NetworkPlant {
 
     /// The earliest crossing (fraction of the span, event) of any switching function
     /// over the span from `self.u` to `self.next`; expands the span when one may cross.
+    /// Each function's value and rate at the span's end are kept for the next step.
     fn first_switch(
         &mut self,
         system: &ModeSystem,
@@ -60,14 +73,19 @@ impl NetworkPlant {
     ) -> Option<(f64, NetEvent)> {
         let mut expanded = !need_expansion;
         let mut best: Option<(f64, NetEvent)> = None;
-        for form in &system.events {
+        let known = self.edge.len() == system.events.len();
+        for (k, form) in system.events.iter().enumerate() {
             let target = self.target(form);
-            let raw = form.value(&self.u) - target;
-            let g0 = raw.min(0.0);
-            let g1 = form.value(&self.next) - target;
-            let d0 = form.rate(&self.u) * span_s;
-            let d1 = form.rate(&self.next) * span_s;
-            if !may_cross(g0, d0, g1, d1) {
+            let (value_0, rate_0) = if known {
+                self.edge[k]
+            } else {
+                (form.value(&self.u), form.rate(&self.u))
+            };
+            let end = (form.value(&self.next), form.rate(&self.next));
+            self.next_edge.push(end);
+            let g0 = (value_0 - target).min(0.0);
+            let g1 = end.0 - target;
+            if !may_cross(g0, rate_0 * span_s, g1, end.1 * span_s) {
                 continue;
             }
             if !expanded {
@@ -95,22 +113,15 @@ impl NetworkPlant {
 
     /// The Taylor vectors v_k = (A τ)^k u / k! of a span τ = `span_s`.
     fn expand(&mut self, system: &ModeSystem, span_s: f64) {
-        let n = self.u.len();
+        let forcing = self.model.layout.mechanical();
         self.taylor[0].copy_from_slice(&self.u);
         for k in 1..=TAYLOR_ORDER {
             let (done, rest) = self.taylor.split_at_mut(k);
-            let previous = &done[k - 1];
             let out = &mut rest[0];
-            out.fill(0.0);
+            column_major_product(&system.a_columns, &done[k - 1], out, forcing);
             let scale = span_s / k as f64;
-            for (col, &x) in previous.iter().enumerate() {
-                if x == 0.0 {
-                    continue;
-                }
-                let column = &system.a.as_slice()[col * n..(col + 1) * n];
-                for (o, a) in out.iter_mut().zip(column) {
-                    *o += a * x * scale;
-                }
+            for x in out.iter_mut() {
+                *x *= scale;
             }
         }
     }
@@ -172,16 +183,52 @@ impl NetworkPlant {
     }
 }
 
-/// out = M u for a square column-major M.
-fn column_major_product(m: &[f64], u: &[f64], out: &mut [f64]) {
-    let n = u.len();
+/// out = M u for a square M stored as columns padded to the state's padded length (a
+/// multiple of 4, `u.len()`), whose rows from `forcing` on are 0 in the columns before it
+/// (the forcing states evolve by themselves): compiled for AVX2 where the CPU has it (no
+/// fused multiply-add on either path, so both give the same bytes).
+fn column_major_product(m: &[f64], u: &[f64], out: &mut [f64], forcing: usize) {
+    #[cfg(target_arch = "x86_64")]
+    if *HAS_AVX2 {
+        // SAFETY: the CPU has AVX2, checked at run time.
+        return unsafe { product_avx2(m, u, out, forcing) };
+    }
+    product_any(m, u, out, forcing);
+}
+
+/// Whether this CPU has AVX2 (asked once).
+#[cfg(target_arch = "x86_64")]
+static HAS_AVX2: std::sync::LazyLock<bool> =
+    std::sync::LazyLock::new(|| std::arch::is_x86_feature_detected!("avx2"));
+
+/// [`product_any`] compiled for AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn product_avx2(m: &[f64], u: &[f64], out: &mut [f64], forcing: usize) {
+    product_any(m, u, out, forcing);
+}
+
+#[inline(always)]
+fn product_any(m: &[f64], u: &[f64], out: &mut [f64], forcing: usize) {
+    let padded = u.len();
+    let mechanical_rows = forcing.div_ceil(4) * 4;
     out.fill(0.0);
-    for (col, &x) in u.iter().enumerate() {
+    for (col, (column, &x)) in m.chunks_exact(padded).zip(u).enumerate() {
         if x == 0.0 {
             continue;
         }
-        for (o, a) in out.iter_mut().zip(&m[col * n..(col + 1) * n]) {
-            *o += a * x;
+        let rows = if col < forcing {
+            mechanical_rows
+        } else {
+            padded
+        };
+        for (o, a) in out[..rows]
+            .chunks_exact_mut(4)
+            .zip(column[..rows].chunks_exact(4))
+        {
+            for k in 0..4 {
+                o[k] += a[k] * x;
+            }
         }
     }
 }

@@ -2,7 +2,6 @@
 //! and kept until the oscillating load's frequency changes.
 
 use std::collections::HashMap;
-use std::sync::Arc;
 
 use nalgebra::DMatrix;
 
@@ -15,18 +14,22 @@ use super::model::NetworkModel;
 /// One mode's linear system.
 #[derive(Debug)]
 pub struct ModeSystem {
-    /// A of u' = A u.
-    pub a: DMatrix<f64>,
-    /// e^{A h}, column-major.
+    /// A of u' = A u, column-major, each column padded to the layout's padded length.
+    pub a_columns: Vec<f64>,
+    /// e^{A h}, stored as `a_columns`.
     pub step: Vec<f64>,
     /// The switching functions.
     pub events: Vec<EventForm>,
 }
 
 /// The modes met so far.
-#[derive(Debug)]
+#[derive(Debug, Default)]
 pub struct SystemCache {
-    systems: HashMap<NetMode, Arc<ModeSystem>>,
+    /// Where each mode's system sits in `built`.
+    systems: HashMap<NetMode, usize>,
+    built: Vec<ModeSystem>,
+    /// The mode asked for last and where its system sits (most steps stay in one mode).
+    last: Option<(NetMode, usize)>,
     step_s: f64,
     rho: f64,
     oscillating_rad_s: f64,
@@ -37,6 +40,8 @@ impl SystemCache {
     pub fn new(step_s: f64, rho: f64) -> Self {
         Self {
             systems: HashMap::new(),
+            built: Vec::new(),
+            last: None,
             step_s,
             rho,
             oscillating_rad_s: 0.0,
@@ -47,28 +52,58 @@ impl SystemCache {
     pub fn set_oscillating(&mut self, rad_s: f64) {
         if rad_s != self.oscillating_rad_s {
             self.systems.clear();
+            self.built.clear();
+            self.last = None;
             self.oscillating_rad_s = rad_s;
         }
     }
 
     /// The system of `mode`, built if new.
-    pub fn get(&mut self, model: &NetworkModel, mode: &NetMode) -> Arc<ModeSystem> {
-        if let Some(s) = self.systems.get(mode) {
-            return Arc::clone(s);
+    pub fn get(&mut self, model: &NetworkModel, mode: &NetMode) -> &ModeSystem {
+        let index = match self.last {
+            Some((last, index)) if last == *mode => index,
+            _ => {
+                let index = self.index_of(model, mode);
+                self.last = Some((*mode, index));
+                index
+            }
+        };
+        &self.built[index]
+    }
+
+    /// Where the system of `mode` sits, built if new.
+    fn index_of(&mut self, model: &NetworkModel, mode: &NetMode) -> usize {
+        if let Some(&index) = self.systems.get(mode) {
+            return index;
         }
         let a = model.system_matrix(mode, self.oscillating_rad_s);
-        let step = exp_step(model, &a, self.step_s, self.rho);
+        let padded = model.layout.padded();
+        let step = padded_columns(&exp_step(model, &a, self.step_s, self.rho), padded);
         let events = event_forms(model, mode, &a);
-        let system = Arc::new(ModeSystem { a, step, events });
-        self.systems.insert(*mode, Arc::clone(&system));
-        system
+        let a_columns = padded_columns(&a, padded);
+        self.built.push(ModeSystem {
+            a_columns,
+            step,
+            events,
+        });
+        self.systems.insert(*mode, self.built.len() - 1);
+        self.built.len() - 1
     }
 }
 
-/// e^{A h} column-major, balanced as the 1983 plant's: angles and the integral at 1,
+/// `m`'s columns, each padded with zeros to `padded` rows.
+fn padded_columns(m: &DMatrix<f64>, padded: usize) -> Vec<f64> {
+    let mut out = vec![0.0; m.ncols() * padded];
+    for (c, column) in m.column_iter().enumerate() {
+        out[c * padded..c * padded + m.nrows()].copy_from_slice(column.as_slice());
+    }
+    out
+}
+
+/// e^{A h}, balanced as the 1983 plant's: angles and the integral at 1,
 /// speeds and the filtered speed at ρ, forcing states scaled to ρ, the oscillating
 /// load's two states alike.
-fn exp_step(model: &NetworkModel, a: &DMatrix<f64>, step_s: f64, rho: f64) -> Vec<f64> {
+fn exp_step(model: &NetworkModel, a: &DMatrix<f64>, step_s: f64, rho: f64) -> DMatrix<f64> {
     let l = model.layout;
     let rho = rho.max(1.0);
     let mechanical: Vec<f64> = (0..l.mechanical())
@@ -87,10 +122,7 @@ fn exp_step(model: &NetworkModel, a: &DMatrix<f64>, step_s: f64, rho: f64) -> Ve
     let shared = scale[pair].max(scale[pair + 1]);
     scale[pair] = shared;
     scale[pair + 1] = shared;
-    exp_powers_balanced(a, step_s, &scale, 1)
-        .remove(0)
-        .as_slice()
-        .to_vec()
+    exp_powers_balanced(a, step_s, &scale, 1).remove(0)
 }
 
 /// The fastest rate (rad/s) of `model`: A's spectral radius with every mesh on its drive
