@@ -30,6 +30,7 @@ pub mod chain;
 pub mod panel;
 pub mod plots;
 pub mod recording;
+pub mod rig_point;
 pub mod runtime;
 pub mod scenario;
 pub mod steady_point;

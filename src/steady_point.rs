@@ -134,12 +134,22 @@ fn check_point(spec: &PointSpec, names: InputNames) -> anyhow::Result<()> {
     check_speed_rpm(spec.rpm).map_err(|e| anyhow::anyhow!("{} {}: {e}", names.rpm, spec.rpm))?;
     check_load_nm(spec.load_nm)
         .map_err(|e| anyhow::anyhow!("{} {}: {e}", names.load, spec.load_nm))?;
-    if !(spec.rate_hz.is_finite() && spec.rate_hz > 0.0) {
-        bail!("{} {}: a sample rate > 0 Hz", names.rate, spec.rate_hz);
+    check_times(spec.settle_s, spec.duration_s, spec.rate_hz, names)
+}
+
+/// The settling time, the window and the output rate, each refused under its name.
+pub fn check_times(
+    settle_s: f64,
+    duration_s: f64,
+    rate_hz: f64,
+    names: InputNames,
+) -> anyhow::Result<()> {
+    if !(rate_hz.is_finite() && rate_hz > 0.0) {
+        bail!("{} {}: a sample rate > 0 Hz", names.rate, rate_hz);
     }
-    check_simulated_s(spec.duration_s, false)
-        .map_err(|e| anyhow::anyhow!("{} {}: {e}", names.duration, spec.duration_s))?;
-    check_simulated_s(spec.settle_s, true)
-        .map_err(|e| anyhow::anyhow!("{} {}: {e}", names.settle, spec.settle_s))?;
+    check_simulated_s(duration_s, false)
+        .map_err(|e| anyhow::anyhow!("{} {}: {e}", names.duration, duration_s))?;
+    check_simulated_s(settle_s, true)
+        .map_err(|e| anyhow::anyhow!("{} {}: {e}", names.settle, settle_s))?;
     Ok(())
 }

@@ -15,6 +15,7 @@ const LAYERS: &[&[&str]] = &[
     &["scenario"],
     &["runtime"],
     &["steady_point"],
+    &["rig_point"],
     &["panel", "sweep"],
     &["calibrate"],
 ];

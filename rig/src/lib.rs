@@ -69,7 +69,7 @@
 //! `network/` the plant of any rig a rig file describes (`RigTopology`): any number of
 //! bodies, shafts and up to four meshes, loops with a locked-in torque, the same exact
 //! stepping (per mode e^{A h}, switches on the Taylor expansion); `topology*.rs` the rig
-//! itself, its checks and natural modes.
+//! itself, its checks, its numbers by path (`topology_fields.rs`) and natural modes.
 //!
 //! `fma.rs` the fused multiply-add path chosen at run time: the inner loops
 //! (`column_product.rs`, `propagator.rs`, `jump_response.rs`) run compiled for AVX2 and FMA
@@ -128,6 +128,7 @@ mod system_cache;
 mod taylor;
 pub mod topology;
 mod topology_check;
+mod topology_fields;
 mod topology_modes;
 
 #[cfg(test)]
@@ -152,6 +153,7 @@ pub use schedule::{LiveCeiling, Schedule, SetPoints, Track};
 pub use signals::{COLUMN_NAMES, COLUMN_UNITS, INTERMEDIATE_SHAFT, SignalBlock};
 pub use steady::{SteadySummary, SteadyWindow, run_steady};
 pub use topology::{
-    Body, DriveSettings, LockedTorque, MAX_BODIES, MAX_MESHES, Mesh, RigTopology, Shaft,
+    Body, DriveSettings, Gauge, LockedTorque, MAX_BODIES, MAX_MESHES, Mesh, RigTopology, Shaft,
 };
 pub use topology_check::{TopologyError, TopologyPlace};
+pub use topology_fields::TopologyField;

@@ -109,6 +109,25 @@ pub struct LockedTorque {
     pub torque_nm: f64,
 }
 
+/// Strain gauges on a shaft: its surface strain at ±45° from its torque, 16 T/(π d³ G)
+/// shear, half of it as strain.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Gauge {
+    /// The gauged shaft (index).
+    pub shaft: usize,
+    /// Its diameter where gauged (m).
+    pub diameter_m: f64,
+    /// Its shear modulus (Pa).
+    pub shear_modulus_pa: f64,
+}
+
+impl Gauge {
+    /// Strain at +45° in µε per N m of the shaft's torque: 8 / (π d³ G) · 10⁶.
+    pub fn microstrain_per_nm(&self) -> f64 {
+        8.0e6 / (std::f64::consts::PI * self.diameter_m.powi(3) * self.shear_modulus_pa)
+    }
+}
+
 /// The drive and the load: the motor's speed loop and torque limit, the brake's
 /// slope (settings beyond the topology; the 1983 rig's values where a file is silent).
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -160,4 +179,6 @@ pub struct RigTopology {
     pub locked_torque: Option<LockedTorque>,
     /// The motor's speed loop and limit, the brake's slope.
     pub drive: DriveSettings,
+    /// The strain gauges, if the rig has them.
+    pub gauge: Option<Gauge>,
 }

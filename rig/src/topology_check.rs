@@ -212,7 +212,12 @@ impl RigTopology {
         if let Some(limit) = d.torque_limit_nm {
             positive(limit, ("motor", 0, "torque_limit_nm"))?;
         }
-        non_negative(d.brake_slope_nms_per_rad, ("brake", 0, "slope_nms_per_rad"))
+        non_negative(d.brake_slope_nms_per_rad, ("brake", 0, "slope_nms_per_rad"))?;
+        if let Some(g) = &self.gauge {
+            positive(g.diameter_m, ("gauge", 0, "diameter_m"))?;
+            positive(g.shear_modulus_pa, ("gauge", 0, "shear_modulus_pa"))?;
+        }
+        Ok(())
     }
 
     /// Every body joined to the first by shafts and meshes.

@@ -206,6 +206,11 @@ pub struct SimulateArgs {
     /// Parameters.
     #[command(flatten)]
     pub rig: RigArgs,
+    /// A rig file (docs/rig-files.md) instead of a preset: its rig run from steady motion,
+    /// --rpm the motor's body, --load on the brake's, --set by path
+    /// (`mesh.stage1.backlash_mm=0.3`); signals named after its bodies, shafts and meshes.
+    #[arg(long = "rig", value_name = "FILE", conflicts_with = "preset")]
+    pub rig_file: Option<PathBuf>,
     /// Measuring window after settling (s).
     #[arg(long, default_value_t = 10.0)]
     pub duration: f64,

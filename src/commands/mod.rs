@@ -8,6 +8,7 @@ pub(crate) mod panel;
 pub(crate) mod params;
 pub(crate) mod run;
 pub(crate) mod simulate;
+pub(crate) mod simulate_rig;
 pub(crate) mod sweep;
 
 use std::process::ExitCode;

@@ -136,33 +136,11 @@ fn rig_file_params(path: &std::path::Path, as_json: bool) -> anyhow::Result<()> 
     let row = |name: String, value: String, unit: &str, meaning: &str| {
         [name, value, unit.to_string(), meaning.to_string()]
     };
-    let mut fields = Vec::new();
-    for b in &rig.bodies {
-        fields.push(row(
-            format!("body.{}.inertia_kgm2", b.name),
-            b.inertia_kgm2.to_string(),
-            "kg m^2",
-            "moment of inertia",
-        ));
-    }
-    for s in &rig.shafts {
-        let between = format!(
-            "between {} and {}",
-            rig.bodies[s.between[0]].name, rig.bodies[s.between[1]].name
-        );
-        fields.push(row(
-            format!("shaft.{}.stiffness_nm_per_rad", s.name),
-            s.stiffness_nm_per_rad.to_string(),
-            "N m/rad",
-            &between,
-        ));
-        fields.push(row(
-            format!("shaft.{}.damping_nms_per_rad", s.name),
-            s.damping_nms_per_rad.to_string(),
-            "N m s/rad",
-            &between,
-        ));
-    }
+    let mut fields: Vec<[String; 4]> = rig
+        .fields()
+        .into_iter()
+        .map(|f| row(f.path, f.value.to_string(), f.unit, f.meaning))
+        .collect();
     let mut derived = Vec::new();
     for m in &rig.meshes {
         let gears = format!(
@@ -176,45 +154,12 @@ fn rig_file_params(path: &std::path::Path, as_json: bool) -> anyhow::Result<()> 
             "1",
             &gears,
         ));
-        fields.push(row(p("module_m"), m.module_m.to_string(), "m", "module"));
-        fields.push(row(
-            p("pressure_angle_deg"),
-            m.pressure_angle_deg.to_string(),
-            "deg",
-            "pressure angle",
-        ));
-        fields.push(row(
-            p("backlash_mm"),
-            m.backlash_mm.to_string(),
-            "mm",
-            "total circular backlash at the pitch circles",
-        ));
-        fields.push(row(
-            p("stiffness_n_per_m"),
-            m.stiffness_n_per_m.to_string(),
-            "N/m",
-            "one tooth pair, along the line of action",
-        ));
-        fields.push(row(
-            p("damping_ns_per_m"),
-            m.damping_ns_per_m.to_string(),
-            "N s/m",
-            "along the line of action",
-        ));
         let [ra, rb] = m.base_radii_m();
         derived.push(row(
             p("base_radii_m"),
             format!("{ra:.6e}/{rb:.6e}"),
             "m",
             "r_b = m z cos(alpha) / 2",
-        ));
-    }
-    if let Some(locked) = &rig.locked_torque {
-        fields.push(row(
-            "locked_torque.torque_nm".into(),
-            locked.torque_nm.to_string(),
-            "N m",
-            &format!("locked into shaft {}", rig.shafts[locked.shaft].name),
         ));
     }
     let speeds = rig.relative_speeds();

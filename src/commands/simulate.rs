@@ -31,6 +31,9 @@ struct Report<'a> {
 }
 
 pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
+    if let Some(path) = &args.rig_file {
+        return super::simulate_rig::run(args, path);
+    }
     let spec = PointSpec {
         preset: &args.rig.preset,
         overrides: &args.rig.overrides,
@@ -41,7 +44,7 @@ pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
         rate_hz: args.rate,
     };
     let mut writer = match &args.out {
-        Some(dir) => Some(SignalWriter::create(dir, args.replace)?),
+        Some(dir) => Some(SignalWriter::create(dir, args.replace, COLUMN_NAMES)?),
         None => None,
     };
     let PointRun {
@@ -169,7 +172,7 @@ fn print_text(r: &Report) {
 }
 
 /// Streams the true signals to `signals.csv`, under a temporary name until finished.
-struct SignalWriter {
+pub(super) struct SignalWriter {
     csv: csv::Writer<BufWriter<File>>,
     file: PartialFile,
 }
@@ -178,27 +181,34 @@ impl SignalWriter {
     /// Prepares `dir` as simulate's output folder (an earlier simulate's files removed;
     /// another run's refused unless `replace`; a journal of finished files started) and
     /// opens `signals.csv` in it.
-    fn create(dir: &Path, replace: bool) -> anyhow::Result<Self> {
+    pub(super) fn create<S: AsRef<[u8]>>(
+        dir: &Path,
+        replace: bool,
+        header: impl IntoIterator<Item = S>,
+    ) -> anyhow::Result<Self> {
         std::fs::create_dir_all(dir)
             .with_context(|| format!("--out {}: cannot create the folder", dir.display()))?;
         clear_previous_run(dir, "simulate", replace)?;
         start_journal(dir, "simulate")?;
         let file = PartialFile::new(&dir.join("signals.csv"));
         let mut csv = csv::Writer::from_writer(file.create()?);
-        csv.write_record(COLUMN_NAMES)?;
+        csv.write_record(header)?;
         Ok(Self { csv, file })
     }
 
     fn write(&mut self, block: &SignalBlock) -> anyhow::Result<()> {
         for i in 0..block.len() {
-            self.csv
-                .serialize(block.row(i))
-                .context("writing signals.csv")?;
+            self.write_row(&block.row(i))?;
         }
         Ok(())
     }
 
-    fn finish(mut self) -> anyhow::Result<PathBuf> {
+    /// Writes one row of numbers.
+    pub(super) fn write_row(&mut self, row: &[f64]) -> anyhow::Result<()> {
+        self.csv.serialize(row).context("writing signals.csv")
+    }
+
+    pub(super) fn finish(mut self) -> anyhow::Result<PathBuf> {
         self.csv.flush().context("writing signals.csv")?;
         drop(self.csv);
         self.file.commit()

@@ -6,11 +6,18 @@ use std::collections::HashMap;
 use std::ops::Range;
 use std::path::Path;
 
-use rig::{Body, DriveSettings, LockedTorque, Mesh, MeshPairs, RigTopology, Shaft, TopologyPlace};
+use anyhow::Context;
+
+use rig::{
+    Body, DriveSettings, Gauge, LockedTorque, Mesh, MeshPairs, RigTopology, Shaft, TopologyPlace,
+};
 use toml::Spanned;
 
 use super::rig_file_toml::{MeshToml, MotorToml, RigFileToml, ShaftToml};
 use super::source::ScenarioSource;
+
+/// Shear modulus where a gauge leaves it out (Pa): steel's.
+const STEEL_SHEAR_MODULUS_PA: f64 = 80.0e9;
 
 /// Pressure angle where a mesh leaves it out (degrees): the standard 20°.
 const DEFAULT_PRESSURE_ANGLE_DEG: f64 = 20.0;
@@ -18,6 +25,36 @@ const DEFAULT_PRESSURE_ANGLE_DEG: f64 = 20.0;
 /// Reads and checks the rig file at `path`.
 pub fn read_rig_file(path: &Path) -> anyhow::Result<RigTopology> {
     rig_topology(&ScenarioSource::read(path)?)
+}
+
+/// Reads the rig file at `path`, sets each `PATH=VALUE` of `overrides` (`--set
+/// mesh.stage1.backlash_mm=0.3`), and checks the result; a fault an override brings is
+/// named by it.
+pub fn rig_with_overrides(path: &Path, overrides: &[String]) -> anyhow::Result<RigTopology> {
+    let mut rig = read_rig_file(path)?;
+    for item in overrides {
+        let Some((key, value)) = item.split_once('=') else {
+            anyhow::bail!(
+                "--set {item}: expected PATH=VALUE (`testrig params --rig` lists the paths)"
+            );
+        };
+        let number: f64 = value
+            .trim()
+            .parse()
+            .map_err(|_| anyhow::anyhow!("--set {item}: `{}` is not a number", value.trim()))?;
+        rig.set_field(key.trim(), number)
+            .with_context(|| format!("--set {item} (`testrig params --rig` lists the paths)"))?;
+    }
+    if !overrides.is_empty() {
+        rig.check().with_context(|| {
+            format!(
+                "{} with --set {}",
+                path.display(),
+                overrides.join(" --set ")
+            )
+        })?;
+    }
+    Ok(rig)
 }
 
 /// The checked rig of a rig file's text.
@@ -57,6 +94,30 @@ fn build(src: &ScenarioSource, file: &RigFileToml) -> anyhow::Result<RigTopology
         .iter()
         .map(|m| mesh(src, m, &body))
         .collect::<anyhow::Result<Vec<_>>>()?;
+    let shaft_index = |name: &Spanned<String>, field: &str| -> anyhow::Result<usize> {
+        shaft_names
+            .get(name.get_ref().as_str())
+            .copied()
+            .ok_or_else(|| {
+                src.error(
+                    name.span(),
+                    field,
+                    format!(
+                        "no shaft `{}`; the shafts are {}",
+                        name.get_ref(),
+                        listed(file.shafts.iter().map(|s| s.name.get_ref()))
+                    ),
+                )
+            })
+    };
+    let gauge = match &file.gauge {
+        None => None,
+        Some(g) => Some(Gauge {
+            shaft: shaft_index(&g.shaft, "gauge.shaft")?,
+            diameter_m: *g.diameter_m.get_ref(),
+            shear_modulus_pa: or(&g.shear_modulus_pa, STEEL_SHEAR_MODULUS_PA),
+        }),
+    };
     let locked_torque = match &file.locked_torque {
         None => None,
         Some(l) => {
@@ -103,6 +164,7 @@ fn build(src: &ScenarioSource, file: &RigFileToml) -> anyhow::Result<RigTopology
             .transpose()?,
         locked_torque,
         drive: drive(file),
+        gauge,
     })
 }
 
@@ -289,6 +351,13 @@ fn span_of(file: &RigFileToml, place: &TopologyPlace) -> Range<usize> {
             "speed_loop_damping_ratio" => m.speed_loop_damping_ratio.as_ref().map(Spanned::span),
             "feedback_filter_hz" => m.feedback_filter_hz.as_ref().map(Spanned::span),
             _ => Some(m.body.span()),
+        }),
+        ("gauge", field) => file.gauge.as_ref().map(|g| match field {
+            "shear_modulus_pa" => g
+                .shear_modulus_pa
+                .as_ref()
+                .map_or(g.shaft.span(), Spanned::span),
+            _ => g.diameter_m.span(),
         }),
         ("brake", _) => file.brake.as_ref().and_then(|b| {
             b.slope_nms_per_rad

@@ -29,6 +29,21 @@ pub struct RigFileToml {
     pub brake: Option<BrakeToml>,
     /// `[locked_torque]`: a back-to-back loop's locked-in torque.
     pub locked_torque: Option<LockedTorqueToml>,
+    /// `[gauge]`: the strain gauges' shaft.
+    pub gauge: Option<GaugeToml>,
+}
+
+/// `[gauge]`: strain gauges on a shaft.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct GaugeToml {
+    /// The shaft, by name.
+    pub shaft: Spanned<String>,
+    /// Its diameter where gauged (m).
+    pub diameter_m: Spanned<f64>,
+    /// Its shear modulus (Pa); steel's 80 GPa when left out.
+    #[serde(default)]
+    pub shear_modulus_pa: Option<Spanned<f64>>,
 }
 
 /// `[[body]]`: one rotating inertia.

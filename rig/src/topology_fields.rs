@@ -1,0 +1,186 @@
+//! Every number of a rig by its path, as a rig file names it (`body.motor.inertia_kgm2`,
+//! `shaft.input.stiffness_nm_per_rad`, `mesh.stage1.backlash_mm`, `motor.torque_limit_nm`,
+//! `locked_torque.torque_nm` …), with unit and meaning: what `testrig params --rig` lists
+//! and what `--set`, sweeps and calibration change.
+
+use crate::error::RigError;
+use crate::topology::RigTopology;
+
+/// One number of a rig.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TopologyField {
+    /// Its path, `table.item.field` or `table.field`.
+    pub path: String,
+    /// Its value (SI or as the unit says).
+    pub value: f64,
+    /// Its unit.
+    pub unit: &'static str,
+    /// What it is.
+    pub meaning: &'static str,
+}
+
+/// The fields of each table: (field, unit, meaning).
+const BODY: [(&str, &str, &str); 2] = [
+    ("inertia_kgm2", "kg m^2", "moment of inertia"),
+    ("drag_nms_per_rad", "N m s/rad", "bearing and windage drag"),
+];
+const SHAFT: [(&str, &str, &str); 2] = [
+    ("stiffness_nm_per_rad", "N m/rad", "torsional stiffness"),
+    ("damping_nms_per_rad", "N m s/rad", "torsional damping"),
+];
+const MESH: [(&str, &str, &str); 7] = [
+    ("module_m", "m", "module"),
+    ("pressure_angle_deg", "deg", "pressure angle"),
+    (
+        "backlash_mm",
+        "mm",
+        "total circular backlash at the pitch circles",
+    ),
+    (
+        "stiffness_n_per_m",
+        "N/m",
+        "one tooth pair, along the line of action",
+    ),
+    ("damping_ns_per_m", "N s/m", "along the line of action"),
+    (
+        "double_pair_ratio",
+        "1",
+        "two pairs' stiffness over one pair's",
+    ),
+    ("addendum_coefficient", "1", "addendum over the module"),
+];
+const MOTOR: [(&str, &str, &str); 4] = [
+    (
+        "torque_limit_nm",
+        "N m",
+        "most torque either way (none: no limit)",
+    ),
+    ("speed_loop_hz", "Hz", "speed-loop natural frequency"),
+    ("speed_loop_damping_ratio", "1", "speed-loop damping ratio"),
+    ("feedback_filter_hz", "Hz", "speed feedback filter corner"),
+];
+
+impl RigTopology {
+    /// Every number of the rig by its path, in the file's order.
+    pub fn fields(&self) -> Vec<TopologyField> {
+        let mut paths: Vec<(String, &'static str, &'static str)> = Vec::new();
+        let mut add = |prefix: String, table: &[(&'static str, &'static str, &'static str)]| {
+            for (field, unit, meaning) in table {
+                paths.push((format!("{prefix}.{field}"), unit, meaning));
+            }
+        };
+        for b in &self.bodies {
+            add(format!("body.{}", b.name), &BODY);
+        }
+        for s in &self.shafts {
+            add(format!("shaft.{}", s.name), &SHAFT);
+        }
+        for m in &self.meshes {
+            add(format!("mesh.{}", m.name), &MESH);
+        }
+        add("motor".into(), &MOTOR);
+        add(
+            "brake".into(),
+            &[(
+                "slope_nms_per_rad",
+                "N m s/rad",
+                "rise of the brake torque with speed",
+            )],
+        );
+        if self.gauge.is_some() {
+            add(
+                "gauge".into(),
+                &[
+                    ("diameter_m", "m", "the gauged shaft's diameter"),
+                    ("shear_modulus_pa", "Pa", "the gauged shaft's shear modulus"),
+                ],
+            );
+        }
+        if self.locked_torque.is_some() {
+            add(
+                "locked_torque".into(),
+                &[(
+                    "torque_nm",
+                    "N m",
+                    "torque the loop's shaft carries at rest",
+                )],
+            );
+        }
+        let mut copy = self.clone();
+        paths
+            .into_iter()
+            .filter_map(|(path, unit, meaning)| {
+                let value = *copy.slot(&path)?;
+                Some(TopologyField {
+                    path,
+                    value,
+                    unit,
+                    meaning,
+                })
+            })
+            .collect()
+    }
+
+    /// Sets the number at `path` (checked with the whole rig by [`RigTopology::check`]).
+    pub fn set_field(&mut self, path: &str, value: f64) -> Result<(), RigError> {
+        if path == "motor.torque_limit_nm" {
+            self.drive.torque_limit_nm.get_or_insert(value);
+        }
+        let slot = self.slot(path).ok_or_else(|| RigError::UnknownParameter {
+            name: path.to_string(),
+        })?;
+        *slot = value;
+        Ok(())
+    }
+
+    /// The number at `path`, if the rig has it (a motor without a torque limit has none).
+    fn slot(&mut self, path: &str) -> Option<&mut f64> {
+        let parts: Vec<&str> = path.split('.').collect();
+        match parts.as_slice() {
+            ["body", name, field] => {
+                let b = self.bodies.iter_mut().find(|b| b.name == *name)?;
+                match *field {
+                    "inertia_kgm2" => Some(&mut b.inertia_kgm2),
+                    "drag_nms_per_rad" => Some(&mut b.drag_nms_per_rad),
+                    _ => None,
+                }
+            }
+            ["shaft", name, field] => {
+                let s = self.shafts.iter_mut().find(|s| s.name == *name)?;
+                match *field {
+                    "stiffness_nm_per_rad" => Some(&mut s.stiffness_nm_per_rad),
+                    "damping_nms_per_rad" => Some(&mut s.damping_nms_per_rad),
+                    _ => None,
+                }
+            }
+            ["mesh", name, field] => {
+                let m = self.meshes.iter_mut().find(|m| m.name == *name)?;
+                match *field {
+                    "module_m" => Some(&mut m.module_m),
+                    "pressure_angle_deg" => Some(&mut m.pressure_angle_deg),
+                    "backlash_mm" => Some(&mut m.backlash_mm),
+                    "stiffness_n_per_m" => Some(&mut m.stiffness_n_per_m),
+                    "damping_ns_per_m" => Some(&mut m.damping_ns_per_m),
+                    "double_pair_ratio" => Some(&mut m.double_pair_ratio),
+                    "addendum_coefficient" => Some(&mut m.addendum_coefficient),
+                    _ => None,
+                }
+            }
+            ["motor", field] => {
+                let d = &mut self.drive;
+                match *field {
+                    "torque_limit_nm" => d.torque_limit_nm.as_mut(),
+                    "speed_loop_hz" => Some(&mut d.speed_loop_hz),
+                    "speed_loop_damping_ratio" => Some(&mut d.speed_loop_damping_ratio),
+                    "feedback_filter_hz" => Some(&mut d.feedback_filter_hz),
+                    _ => None,
+                }
+            }
+            ["brake", "slope_nms_per_rad"] => Some(&mut self.drive.brake_slope_nms_per_rad),
+            ["gauge", "diameter_m"] => self.gauge.as_mut().map(|g| &mut g.diameter_m),
+            ["gauge", "shear_modulus_pa"] => self.gauge.as_mut().map(|g| &mut g.shear_modulus_pa),
+            ["locked_torque", "torque_nm"] => self.locked_torque.as_mut().map(|l| &mut l.torque_nm),
+            _ => None,
+        }
+    }
+}

@@ -1,0 +1,156 @@
+//! `testrig simulate --rig FILE`: a rig file's rig alone, unpaced, at a set speed and load.
+
+use std::path::{Path, PathBuf};
+
+use anyhow::Context;
+use rig::NetworkImpact;
+use serde::Serialize;
+
+use super::simulate::SignalWriter;
+use crate::cli::SimulateArgs;
+use testrig::recording::PartialFile;
+use testrig::rig_point::{
+    RigPointRun, RigPointSpec, RigPointSummary, column_names, row, run_rig_point,
+};
+use testrig::runtime::write_command_manifest;
+use testrig::scenario::rig_with_overrides;
+use testrig::steady_point::FLAG_NAMES;
+
+/// The JSON summary of one run.
+#[derive(Serialize)]
+struct Report<'a> {
+    rig: &'a str,
+    rig_file: String,
+    rpm: f64,
+    load_nm: f64,
+    settle_s: f64,
+    simulated_s: f64,
+    wall_s: f64,
+    realtime_factor: f64,
+    #[serde(flatten)]
+    summary: RigPointSummary,
+}
+
+pub fn run(args: &SimulateArgs, path: &Path) -> anyhow::Result<()> {
+    let rig = rig_with_overrides(path, &args.rig.overrides)?;
+    let spec = RigPointSpec {
+        rig: &rig,
+        rpm: args.rpm,
+        load_nm: args.load,
+        settle_s: args.settle,
+        duration_s: args.duration,
+        rate_hz: args.rate,
+    };
+    let mut writer = match &args.out {
+        Some(dir) => Some(SignalWriter::create(dir, args.replace, column_names(&rig))?),
+        None => None,
+    };
+    let RigPointRun {
+        impacts,
+        summary,
+        simulated_s,
+        wall_s,
+        ..
+    } = run_rig_point(&spec, FLAG_NAMES, |block| match writer.as_mut() {
+        Some(w) => (0..block.len()).try_for_each(|i| w.write_row(&row(&rig, block, i))),
+        None => Ok(()),
+    })?;
+    let report = Report {
+        rig: &rig.name,
+        rig_file: path.display().to_string(),
+        rpm: args.rpm,
+        load_nm: args.load,
+        settle_s: args.settle,
+        simulated_s,
+        wall_s,
+        realtime_factor: simulated_s / wall_s.max(1e-9),
+        summary,
+    };
+    if let (Some(dir), Some(w)) = (&args.out, writer) {
+        let files = vec![
+            w.finish()?,
+            write_impacts(&dir.join("impacts.csv"), &rig, &impacts)?,
+            PartialFile::write_whole(
+                &dir.join("summary.json"),
+                serde_json::to_string_pretty(&report)?,
+            )?,
+        ];
+        let details = serde_json::json!({
+            "rig_file": path.display().to_string(), "set": args.rig.overrides, "rpm": args.rpm,
+            "load_nm": args.load, "settle_s": args.settle, "duration_s": args.duration,
+            "rate_hz": args.rate,
+        });
+        write_command_manifest(dir, "simulate", &files, details)?;
+        eprintln!(
+            "testrig: {} files and manifest.json in {}; signals.csv holds {} columns at {} Hz",
+            files.len(),
+            dir.display(),
+            column_names(&rig).len(),
+            args.rate
+        );
+    }
+    if args.json {
+        println!("{}", serde_json::to_string(&report)?);
+    } else {
+        print_text(&report);
+    }
+    Ok(())
+}
+
+fn print_text(r: &Report) {
+    let s = &r.summary;
+    println!(
+        "{} at {} rev/min, {} N m: {:.1} s simulated in {:.3} s ({:.0}x real time)",
+        r.rig, r.rpm, r.load_nm, r.simulated_s, r.wall_s, r.realtime_factor
+    );
+    println!(
+        "measured {:.1} s after {:.1} s settling, {} revolutions of the motor's body; motor {:.4} N m",
+        s.measured_s, r.settle_s, s.revolutions, s.motor_torque_mean_nm
+    );
+    println!("motion of shaft {}: {}", s.judged_shaft, s.motion.motion);
+    for b in &s.bodies {
+        println!("  body {:<20} {:>10.2} rev/min", b.name, b.speed_mean_rpm);
+    }
+    for t in &s.shafts {
+        println!(
+            "  shaft {:<19} mean {:>10.4} N m, ac rms {:.4} N m",
+            t.name, t.torque_mean_nm, t.torque_ac_rms_nm
+        );
+    }
+    for m in &s.meshes {
+        println!(
+            "  mesh {:<20} {} impacts, apart {:.1} % of the time",
+            m.name,
+            m.impacts,
+            100.0 * m.apart_fraction
+        );
+    }
+}
+
+/// `impacts.csv`: time, mesh, flank and closing speed of each impact in the window.
+fn write_impacts(
+    path: &Path,
+    rig: &rig::RigTopology,
+    impacts: &[NetworkImpact],
+) -> anyhow::Result<PathBuf> {
+    let file = PartialFile::new(path);
+    let mut csv = csv::Writer::from_writer(file.create()?);
+    csv.write_record(["time_s", "mesh", "flank", "closing_speed_m_s"])?;
+    for i in impacts {
+        let flank = if i.flank == rig::Contact::Drive {
+            "drive"
+        } else {
+            "back"
+        };
+        csv.write_record([
+            i.time_s.to_string(),
+            rig.meshes[i.mesh].name.clone(),
+            flank.to_string(),
+            i.approach_m_s.abs().to_string(),
+        ])?;
+    }
+    csv.flush()
+        .with_context(|| format!("writing {}", path.display()))?;
+    drop(csv);
+    file.commit()
+}

@@ -1,0 +1,309 @@
+//! One steady operating point of a rig file's rig alone, unpaced (`testrig simulate
+//! --rig`): the plant of any topology (`rig::NetworkPlant`) started in steady motion at
+//! the set speed and load, settled, then measured with every block handed to the caller;
+//! its signals named after the rig's bodies, shafts and meshes.
+//!
+//! The motion is judged, as for the 1983 rig (`docs/physics.md`), on the gauged shaft's
+//! torque (the last shaft where the file has no `[gauge]`) in revolutions of the motor's
+//! body.
+
+use std::f64::consts::PI;
+use std::time::Instant;
+
+use anyhow::Context;
+use rig::{
+    JudgeInput, Judgement, NetworkBlock, NetworkImpact, NetworkPlant, NetworkStart, RigTopology,
+    Schedule, judge,
+};
+use serde::Serialize;
+
+use crate::steady_point::{InputNames, check_times};
+use crate::vocabulary::{check_load_nm, check_speed_rpm};
+
+/// What to run.
+#[derive(Clone, Debug)]
+pub struct RigPointSpec<'a> {
+    /// The rig, checked.
+    pub rig: &'a RigTopology,
+    /// The motor body's set speed (rev/min).
+    pub rpm: f64,
+    /// Brake load (N m).
+    pub load_nm: f64,
+    /// Simulated time before measuring (s).
+    pub settle_s: f64,
+    /// Measuring window (s).
+    pub duration_s: f64,
+    /// Output rate of the true signals (Hz).
+    pub rate_hz: f64,
+}
+
+/// One shaft over the window.
+#[derive(Clone, Debug, Serialize)]
+pub struct ShaftSummary {
+    /// Its name.
+    pub name: String,
+    /// Mean torque (N m).
+    pub torque_mean_nm: f64,
+    /// RMS of the torque about its mean (N m).
+    pub torque_ac_rms_nm: f64,
+}
+
+/// One mesh over the window.
+#[derive(Clone, Debug, Serialize)]
+pub struct MeshSummary {
+    /// Its name.
+    pub name: String,
+    /// Impacts in the window.
+    pub impacts: usize,
+    /// Share of the window with the teeth apart.
+    pub apart_fraction: f64,
+}
+
+/// One body over the window.
+#[derive(Clone, Debug, Serialize)]
+pub struct BodySummary {
+    /// Its name.
+    pub name: String,
+    /// Mean speed in its sense of rotation (rev/min).
+    pub speed_mean_rpm: f64,
+}
+
+/// The measuring window of a rig's point.
+#[derive(Clone, Debug, Serialize)]
+pub struct RigPointSummary {
+    /// Window length (s).
+    pub measured_s: f64,
+    /// Whole revolutions of the motor's body in it.
+    pub revolutions: usize,
+    /// The motor's mean torque (N m).
+    pub motor_torque_mean_nm: f64,
+    /// Each body.
+    pub bodies: Vec<BodySummary>,
+    /// Each shaft.
+    pub shafts: Vec<ShaftSummary>,
+    /// Each mesh.
+    pub meshes: Vec<MeshSummary>,
+    /// The shaft judged (the gauged one, else the last).
+    pub judged_shaft: String,
+    /// The motion of its torque.
+    pub motion: Judgement,
+}
+
+/// A point run: the plant as it ended, the window's impacts and summary, and the times.
+pub struct RigPointRun {
+    /// The plant after the window.
+    pub plant: NetworkPlant,
+    /// The window's impacts.
+    pub impacts: Vec<NetworkImpact>,
+    /// The window's summary.
+    pub summary: RigPointSummary,
+    /// Simulated time, settling included (s).
+    pub simulated_s: f64,
+    /// Wall time (s).
+    pub wall_s: f64,
+}
+
+/// Samples per block handed to the caller.
+const BLOCK: usize = 4096;
+
+/// Checks `spec` (each input refused under its name in `names`), runs it and hands `sink`
+/// every block of the measuring window.
+pub fn run_rig_point(
+    spec: &RigPointSpec,
+    names: InputNames,
+    mut sink: impl FnMut(&NetworkBlock) -> anyhow::Result<()>,
+) -> anyhow::Result<RigPointRun> {
+    check_speed_rpm(spec.rpm).map_err(|e| anyhow::anyhow!("{} {}: {e}", names.rpm, spec.rpm))?;
+    check_load_nm(spec.load_nm)
+        .map_err(|e| anyhow::anyhow!("{} {}: {e}", names.load, spec.load_nm))?;
+    check_times(spec.settle_s, spec.duration_s, spec.rate_hz, names)?;
+    let rig = spec.rig;
+    let schedule = Schedule::constant(spec.rpm, spec.load_nm);
+    let mut plant = NetworkPlant::new(rig, schedule, spec.rate_hz, NetworkStart::Steady)
+        .with_context(|| format!("rig `{}` at {} {}", rig.name, names.rpm, spec.rpm))?;
+    let started = Instant::now();
+    let mut block = NetworkBlock::new(rig.bodies.len(), rig.shafts.len(), rig.meshes.len());
+    let mut left = (spec.settle_s * spec.rate_hz).round() as usize;
+    while left > 0 {
+        let n = left.min(BLOCK);
+        block.clear();
+        plant.run(n, &mut block)?;
+        left -= n;
+    }
+    plant.take_impacts();
+    plant.take_revolutions();
+    let mut window = Window::new(rig);
+    let mut left = (spec.duration_s * spec.rate_hz).round() as usize;
+    while left > 0 {
+        let n = left.min(BLOCK);
+        block.clear();
+        plant.run(n, &mut block)?;
+        window.add(&block);
+        sink(&block)?;
+        left -= n;
+    }
+    let impacts = plant.take_impacts();
+    let revolutions = plant.take_revolutions();
+    let summary = window.summary(rig, spec, &impacts, &revolutions);
+    Ok(RigPointRun {
+        plant,
+        impacts,
+        summary,
+        simulated_s: spec.settle_s + spec.duration_s,
+        wall_s: started.elapsed().as_secs_f64(),
+    })
+}
+
+/// The shaft the judge and the strain column watch: the gauged one, else the last.
+pub fn judged_shaft(rig: &RigTopology) -> usize {
+    rig.gauge
+        .as_ref()
+        .map_or(rig.shafts.len().saturating_sub(1), |g| g.shaft)
+}
+
+/// What the window keeps: sums per column and the judged shaft's torque.
+struct Window {
+    start_s: Option<f64>,
+    samples: usize,
+    speed_sum: Vec<f64>,
+    torque: Vec<(f64, f64)>,
+    apart: Vec<usize>,
+    motor_sum: f64,
+    judged: usize,
+    judged_torque: Vec<f64>,
+}
+
+impl Window {
+    fn new(rig: &RigTopology) -> Self {
+        Self {
+            start_s: None,
+            samples: 0,
+            speed_sum: vec![0.0; rig.bodies.len()],
+            torque: vec![(0.0, 0.0); rig.shafts.len()],
+            apart: vec![0; rig.meshes.len()],
+            motor_sum: 0.0,
+            judged: judged_shaft(rig),
+            judged_torque: Vec::new(),
+        }
+    }
+
+    fn add(&mut self, block: &NetworkBlock) {
+        if self.start_s.is_none() {
+            self.start_s = block.time_s.first().copied();
+        }
+        self.samples += block.len();
+        for (sum, column) in self.speed_sum.iter_mut().zip(&block.speed_rad_s) {
+            *sum += column.iter().sum::<f64>();
+        }
+        for (sums, column) in self.torque.iter_mut().zip(&block.shaft_torque_nm) {
+            sums.0 += column.iter().sum::<f64>();
+            sums.1 += column.iter().map(|t| t * t).sum::<f64>();
+        }
+        for (count, column) in self.apart.iter_mut().zip(&block.contact) {
+            *count += column.iter().filter(|&&c| c == 0).count();
+        }
+        self.motor_sum += block.motor_torque_nm.iter().sum::<f64>();
+        if let Some(column) = block.shaft_torque_nm.get(self.judged) {
+            self.judged_torque.extend_from_slice(column);
+        }
+    }
+
+    fn summary(
+        &self,
+        rig: &RigTopology,
+        spec: &RigPointSpec,
+        impacts: &[NetworkImpact],
+        revolutions_s: &[f64],
+    ) -> RigPointSummary {
+        let n = self.samples.max(1) as f64;
+        let start_s = self.start_s.unwrap_or(0.0);
+        let revolution_torque_nm: Vec<f64> = revolutions_s
+            .iter()
+            .filter_map(|t| {
+                let i = ((t - start_s) * spec.rate_hz).round() as usize;
+                self.judged_torque.get(i).copied()
+            })
+            .collect();
+        let motion = judge(&JudgeInput {
+            torque_nm: &self.judged_torque,
+            rate_hz: spec.rate_hz,
+            running_hz: spec.rpm / 60.0,
+            revolution_torque_nm: &revolution_torque_nm,
+        });
+        RigPointSummary {
+            measured_s: spec.duration_s,
+            revolutions: revolutions_s.len(),
+            motor_torque_mean_nm: self.motor_sum / n,
+            bodies: rig
+                .bodies
+                .iter()
+                .zip(&self.speed_sum)
+                .map(|(b, sum)| BodySummary {
+                    name: b.name.clone(),
+                    speed_mean_rpm: sum / n * 30.0 / PI,
+                })
+                .collect(),
+            shafts: rig
+                .shafts
+                .iter()
+                .zip(&self.torque)
+                .map(|(s, (sum, squares))| {
+                    let mean = sum / n;
+                    ShaftSummary {
+                        name: s.name.clone(),
+                        torque_mean_nm: mean,
+                        torque_ac_rms_nm: (squares / n - mean * mean).max(0.0).sqrt(),
+                    }
+                })
+                .collect(),
+            meshes: rig
+                .meshes
+                .iter()
+                .enumerate()
+                .map(|(i, m)| MeshSummary {
+                    name: m.name.clone(),
+                    impacts: impacts.iter().filter(|x| x.mesh == i).count(),
+                    apart_fraction: self.apart[i] as f64 / n,
+                })
+                .collect(),
+            judged_shaft: rig
+                .shafts
+                .get(self.judged)
+                .map_or(String::new(), |s| s.name.clone()),
+            motion,
+        }
+    }
+}
+
+/// The signals' column names, after the rig: `time_s`, `speed_<body>_rpm`,
+/// `angle_<body>_rad`, `torque_<shaft>_nm`, `contact_<mesh>` (+1 drive flank, −1 back
+/// flank, 0 apart), `force_<mesh>_n`, `motor_torque_nm`, and `strain_<shaft>_ue` where the
+/// rig has gauges.
+pub fn column_names(rig: &RigTopology) -> Vec<String> {
+    let mut names = vec!["time_s".to_string()];
+    names.extend(rig.bodies.iter().map(|b| format!("speed_{}_rpm", b.name)));
+    names.extend(rig.bodies.iter().map(|b| format!("angle_{}_rad", b.name)));
+    names.extend(rig.shafts.iter().map(|s| format!("torque_{}_nm", s.name)));
+    names.extend(rig.meshes.iter().map(|m| format!("contact_{}", m.name)));
+    names.extend(rig.meshes.iter().map(|m| format!("force_{}_n", m.name)));
+    names.push("motor_torque_nm".into());
+    if let Some(g) = &rig.gauge {
+        names.push(format!("strain_{}_ue", rig.shafts[g.shaft].name));
+    }
+    names
+}
+
+/// Sample `i` of `block` in the order of [`column_names`].
+pub fn row(rig: &RigTopology, block: &NetworkBlock, i: usize) -> Vec<f64> {
+    let mut row = vec![block.time_s[i]];
+    row.extend(block.speed_rad_s.iter().map(|c| c[i] * 30.0 / PI));
+    row.extend(block.angle_rad.iter().map(|c| c[i]));
+    row.extend(block.shaft_torque_nm.iter().map(|c| c[i]));
+    row.extend(block.contact.iter().map(|c| f64::from(c[i])));
+    row.extend(block.mesh_force_n.iter().map(|c| c[i]));
+    row.push(block.motor_torque_nm[i]);
+    if let Some(g) = &rig.gauge {
+        row.push(block.shaft_torque_nm[g.shaft][i] * g.microstrain_per_nm());
+    }
+    row
+}
