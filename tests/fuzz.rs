@@ -7,6 +7,7 @@
 mod common;
 mod fuzz_support;
 
+use anyhow::Context;
 use std::path::{Path, PathBuf};
 
 use fuzz_support::{
@@ -26,9 +27,18 @@ fn mutated_scenarios_are_built_or_refused_with_the_place_named() {
 }
 
 #[test]
-fn mutated_rig_files_are_read_or_refused_with_the_place_named() {
+fn mutated_rig_files_are_read_and_run_or_refused_with_the_place_named() {
+    // Every rig read is also run: 20 ms at 300 rev/min and 1 N m from steady motion.
     fuzz_mutated("rig", 1_000, |source| {
-        testrig::scenario::rig_topology(source).map(|rig| rig.natural_frequencies_hz())
+        let rig = testrig::scenario::rig_topology(source)?;
+        let frequencies = rig.natural_frequencies_hz();
+        let schedule = rig::Schedule::constant(300.0, 1.0);
+        let mut block =
+            rig::NetworkBlock::new(rig.bodies.len(), rig.shafts.len(), rig.meshes.len());
+        rig::NetworkPlant::new(&rig, schedule, 5_120.0, rig::NetworkStart::Steady)
+            .and_then(|mut plant| plant.run(102, &mut block))
+            .with_context(|| format!("{}: run at 300 rev/min, 1 N m", source.path.display()))?;
+        Ok(frequencies)
     });
 }
 

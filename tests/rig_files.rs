@@ -191,6 +191,22 @@ fn bad_rig_files_are_refused_at_their_line_naming_the_field_and_what_is_allowed(
             vec!["shaft `input`.stiffness_nm_per_rad", "> 0"],
         ),
         (
+            "backlash-wider-than-a-tooth-gap",
+            "backlash_mm = 0.2",
+            "backlash_mm = 20.0",
+            vec![
+                "mesh `stage1`.backlash_mm",
+                "half the circular pitch",
+                "4.712 mm",
+            ],
+        ),
+        (
+            "gauge-on-no-shaft",
+            "shaft = \"output\"",
+            "shaft = \"outpt\"",
+            vec!["gauge.shaft", "no shaft `outpt`"],
+        ),
+        (
             "teeth-missing",
             "teeth = [20, 60]",
             "teeth = [20]",

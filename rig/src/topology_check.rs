@@ -152,6 +152,18 @@ impl RigTopology {
             }
             positive(m.module_m, ("mesh", i, "module_m"))?;
             positive(m.backlash_mm, ("mesh", i, "backlash_mm"))?;
+            let half_pitch_mm = std::f64::consts::PI * m.module_m * 1e3 / 2.0;
+            if m.backlash_mm >= half_pitch_mm {
+                return Err(fault(
+                    "mesh",
+                    i,
+                    "backlash_mm",
+                    format!(
+                        "{}: backlash is a gap between teeth, below half the circular pitch (π m / 2 = {half_pitch_mm:.3} mm)",
+                        m.backlash_mm
+                    ),
+                ));
+            }
             positive(m.stiffness_n_per_m, ("mesh", i, "stiffness_n_per_m"))?;
             non_negative(m.damping_ns_per_m, ("mesh", i, "damping_ns_per_m"))?;
             if !(m.pressure_angle_deg > 0.0 && m.pressure_angle_deg < 45.0) {

@@ -31,6 +31,9 @@ const OSCILLATING_HOLD_S: f64 = 0.1;
 /// Samples between checks of the state's bounds (and at the end of every run).
 const CHECK_EVERY: u64 = 64;
 
+/// Most internal steps per output sample.
+const MAX_SUBSTEPS: u32 = 4096;
+
 /// Fastest any body may turn before the run is called blown up (rad/s).
 const SPEED_LIMIT_RAD_S: f64 = 1.0e5;
 
@@ -83,7 +86,18 @@ impl NetworkPlant {
         let model = NetworkModel::of(rig)?;
         let output_step_s = 1.0 / output_rate_hz;
         let rho = fastest_rate(&model);
-        let substeps = (rho * output_step_s / MAX_RHO_H).ceil().max(1.0) as u32;
+        let steps = (rho * output_step_s / MAX_RHO_H).ceil().max(1.0);
+        if !(steps <= f64::from(MAX_SUBSTEPS)) {
+            return Err(RigError::InvalidOption {
+                name: "output_rate_hz",
+                value: format!(
+                    "{output_rate_hz} (the rig's fastest motion, {:.3e} rad/s, would need {steps:e} steps a sample)",
+                    rho
+                ),
+                allowed: "a rate at which the rig's fastest motion needs at most 4096 internal steps a sample: stiffer or lighter parts than any rig has, or a rate far too low",
+            });
+        }
+        let substeps = steps as u32;
         let step_s = output_step_s / f64::from(substeps);
         let len = model.layout.padded();
         let meshes = model.meshes.len();
