@@ -87,7 +87,7 @@ impl NetworkPlant {
         let output_step_s = 1.0 / output_rate_hz;
         let rho = fastest_rate(&model);
         let steps = (rho * output_step_s / MAX_RHO_H).ceil().max(1.0);
-        if !(steps <= f64::from(MAX_SUBSTEPS)) {
+        if steps.is_nan() || steps > f64::from(MAX_SUBSTEPS) {
             return Err(RigError::InvalidOption {
                 name: "output_rate_hz",
                 value: format!(
