@@ -293,17 +293,30 @@ pub fn column_names(rig: &RigTopology) -> Vec<String> {
     names
 }
 
-/// Sample `i` of `block` in the order of [`column_names`].
-pub fn row(rig: &RigTopology, block: &NetworkBlock, i: usize) -> Vec<f64> {
-    let mut row = vec![block.time_s[i]];
-    row.extend(block.speed_rad_s.iter().map(|c| c[i] * 30.0 / PI));
-    row.extend(block.angle_rad.iter().map(|c| c[i]));
-    row.extend(block.shaft_torque_nm.iter().map(|c| c[i]));
-    row.extend(block.contact.iter().map(|c| f64::from(c[i])));
-    row.extend(block.mesh_force_n.iter().map(|c| c[i]));
-    row.push(block.motor_torque_nm[i]);
+/// The columns of `block` in the order of [`column_names`] (speeds in rev/min, strain
+/// in µε).
+pub fn columns(rig: &RigTopology, block: &NetworkBlock) -> Vec<Vec<f64>> {
+    let rpm = |c: &Vec<f64>| c.iter().map(|w| w * 30.0 / PI).collect::<Vec<f64>>();
+    let mut out = vec![block.time_s.clone()];
+    out.extend(block.speed_rad_s.iter().map(rpm));
+    out.extend(block.angle_rad.iter().cloned());
+    out.extend(block.shaft_torque_nm.iter().cloned());
+    out.extend(
+        block
+            .contact
+            .iter()
+            .map(|c| c.iter().map(|&x| f64::from(x)).collect()),
+    );
+    out.extend(block.mesh_force_n.iter().cloned());
+    out.push(block.motor_torque_nm.clone());
     if let Some(g) = &rig.gauge {
-        row.push(block.shaft_torque_nm[g.shaft][i] * g.microstrain_per_nm());
+        let k = g.microstrain_per_nm();
+        out.push(
+            block.shaft_torque_nm[g.shaft]
+                .iter()
+                .map(|t| t * k)
+                .collect(),
+        );
     }
-    row
+    out
 }

@@ -9,6 +9,7 @@ mod live;
 mod run;
 mod scenario_arg;
 mod simulate;
+mod simulate_rig;
 
 use pyo3::prelude::*;
 

@@ -12,7 +12,7 @@ use testrig::steady_point::{InputNames, PointRun, PointSpec, run_point};
 use crate::interrupt::Interrupt;
 
 /// The Python arguments' names, for messages.
-const ARGUMENT_NAMES: InputNames = InputNames {
+pub(crate) const ARGUMENT_NAMES: InputNames = InputNames {
     rpm: "rpm",
     load: "load_nm",
     settle: "settle_s",
@@ -60,9 +60,12 @@ impl Columns {
 /// units in the names), `impacts` (time_s, flank +1 drive / −1 back, tooth,
 /// closing_speed_rad_s), `summary` (the CLI's `simulate --json`). `set` overrides
 /// parameters by name (`testrig params`). `signals=False` keeps no signal (`signals`
-/// is then empty): the impacts and the summary alone, as fast as the CLI.
+/// is then empty): the impacts and the summary alone, as fast as the CLI. `rig` (a rig
+/// file's path, or a dict of its tables) runs that rig instead of the preset, from
+/// steady motion, as `testrig simulate --rig` does; `set` then takes paths
+/// (`mesh.stage1.backlash_mm`).
 #[pyfunction]
-#[pyo3(signature = (rpm, load_nm, preset=rig::DEFAULT_PRESET, settle_s=60.0, duration_s=10.0, rate_hz=51200.0, set=None, signals=true))]
+#[pyo3(signature = (rpm, load_nm, preset=rig::DEFAULT_PRESET, settle_s=60.0, duration_s=10.0, rate_hz=51200.0, set=None, signals=true, rig=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn simulate<'py>(
     py: Python<'py>,
@@ -74,8 +77,15 @@ pub fn simulate<'py>(
     rate_hz: f64,
     set: Option<HashMap<String, Bound<'py, PyAny>>>,
     signals: bool,
+    rig: Option<Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let overrides = overrides(set)?;
+    if let Some(rig) = rig {
+        let times = (settle_s, duration_s, rate_hz);
+        return crate::simulate_rig::simulate_rig(
+            py, &rig, &overrides, rpm, load_nm, times, signals,
+        );
+    }
     let spec = PointSpec {
         preset,
         overrides: &overrides,

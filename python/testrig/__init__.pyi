@@ -41,11 +41,20 @@ def simulate(
     rate_hz: float = 51200.0,
     set: Optional[Mapping[str, Union[float, int, str, bool]]] = None,
     signals: bool = True,
+    rig: Optional[Union[str, os.PathLike[str], Mapping[str, Any]]] = None,
 ) -> Simulation:
     """The plant at `rpm` rev/min and `load_nm` N m from rest: `settle_s` s settling,
     then `duration_s` s measured at `rate_hz` Hz. `set` overrides parameters by name
     (`testrig params`); `signals=False` returns no signal arrays (impacts and summary
-    only). Releases the GIL; Ctrl-C stops it."""
+    only). Releases the GIL; Ctrl-C stops it.
+
+    `rig`: a rig file (docs/rig-files.md) or a dict of its tables, run instead of the
+    preset from steady motion, as `testrig simulate --rig`: `set` then takes paths
+    (`mesh.stage1.backlash_mm`), the signals are named after the rig
+    (`speed_<body>_rpm`, `angle_<body>_rad`, `torque_<shaft>_nm`, `contact_<mesh>`,
+    `force_<mesh>_n`, `motor_torque_nm`, `strain_<shaft>_ue`), the impacts give
+    time_s, mesh, flank and closing_speed_m_s, and the summary each body, shaft and
+    mesh."""
 
 class Analysed(TypedDict):
     frequency_hz: npt.NDArray[np.float64]

@@ -10,7 +10,7 @@ use super::simulate::SignalWriter;
 use crate::cli::SimulateArgs;
 use testrig::recording::PartialFile;
 use testrig::rig_point::{
-    RigPointRun, RigPointSpec, RigPointSummary, column_names, row, run_rig_point,
+    RigPointRun, RigPointSpec, RigPointSummary, column_names, columns, run_rig_point,
 };
 use testrig::runtime::write_command_manifest;
 use testrig::scenario::rig_with_overrides;
@@ -52,7 +52,13 @@ pub fn run(args: &SimulateArgs, path: &Path) -> anyhow::Result<()> {
         wall_s,
         ..
     } = run_rig_point(&spec, FLAG_NAMES, |block| match writer.as_mut() {
-        Some(w) => (0..block.len()).try_for_each(|i| w.write_row(&row(&rig, block, i))),
+        Some(w) => {
+            let columns = columns(&rig, block);
+            (0..block.len()).try_for_each(|i| {
+                let row: Vec<f64> = columns.iter().map(|c| c[i]).collect();
+                w.write_row(&row)
+            })
+        }
         None => Ok(()),
     })?;
     let report = Report {

@@ -1,0 +1,43 @@
+"""Rig files from Python: the same rig by path and as a dict, its signals named after
+it, and the load carried through both stages of the two-stage example."""
+
+import tomllib
+from pathlib import Path
+
+import numpy as np
+import pytest
+import testrig
+
+ROOT = Path(__file__).resolve().parents[2]
+TWO_STAGE = ROOT / "scenarios" / "rigs" / "two-stage.toml"
+
+
+def test_a_rig_file_runs_by_path_and_as_a_dict_with_the_same_numbers():
+    by_path = testrig.simulate(1200, 45, rig=TWO_STAGE, settle_s=1, duration_s=0.5,
+                               rate_hz=10240)
+    with TWO_STAGE.open("rb") as f:
+        tables = tomllib.load(f)
+    by_dict = testrig.simulate(1200, 45, rig=tables, settle_s=1, duration_s=0.5,
+                               rate_hz=10240)
+    signals = by_path["signals"]
+    assert set(signals) == set(by_dict["signals"])
+    for name in signals:
+        assert np.array_equal(signals[name], by_dict["signals"][name]), name
+    assert len(signals["time_s"]) == 5120
+    # 45 N m at the output, 15 N m on the intermediate shaft, 5 N m at the input.
+    assert np.mean(signals["torque_output_nm"]) == pytest.approx(45, rel=1e-5)
+    assert np.mean(signals["torque_intermediate_nm"]) == pytest.approx(15, rel=1e-5)
+    assert np.mean(signals["speed_brake_rpm"]) == pytest.approx(1200 / 9, rel=1e-6)
+    assert "strain_output_ue" in signals
+    shafts = {s["name"]: s for s in by_path["summary"]["shafts"]}
+    assert shafts["input"]["torque_mean_nm"] == pytest.approx(5, rel=1e-5)
+
+
+def test_set_takes_paths_and_a_bad_one_is_named():
+    dragged = testrig.simulate(1200, 45, rig=str(TWO_STAGE), settle_s=1, duration_s=0.5,
+                               rate_hz=10240, signals=False,
+                               set={"body.wheel1.drag_nms_per_rad": 0.1})
+    motor = dragged["summary"]["motor_torque_mean_nm"]
+    assert motor == pytest.approx(5 + 0.1 / 9 * 1200 * np.pi / 30, rel=1e-4)
+    with pytest.raises(testrig.TestrigError, match="mesh.stage9.backlash_mm"):
+        testrig.simulate(600, 10, rig=TWO_STAGE, set={"mesh.stage9.backlash_mm": 0.3})
