@@ -182,7 +182,10 @@ fn bad_rig_files_are_refused_at_their_line_naming_the_field_and_what_is_allowed(
             "zero-inertia",
             "inertia_kgm2 = 0.012",
             "inertia_kgm2 = 0.0",
-            vec!["body `wheel1`.inertia_kgm2", "must be a finite number > 0"],
+            vec![
+                "body `wheel1`.inertia_kgm2",
+                "must be a number > 0, between 1e-12 and 1e15",
+            ],
         ),
         (
             "negative-stiffness",

@@ -64,6 +64,17 @@ pub struct Mesh {
     pub double_pair_ratio: f64,
     /// Addendum over the module (standard teeth: 1), for the contact ratio.
     pub addendum_coefficient: f64,
+    /// Backlash variation C1: the free play b(1 − C1 cos θ) once per revolution of the
+    /// driver (thesis eq. 5.6's B(t); run-out of the centre distance), 0 ≤ C1 < 1.
+    pub backlash_variation: f64,
+    /// Transmission error once per revolution of the driver, E of
+    /// e = E cos θ + P cos zθ along the line of action (µm).
+    pub te_once_per_rev_um: f64,
+    /// Transmission error at mesh frequency (profile error), P (µm).
+    pub te_mesh_frequency_um: f64,
+    /// The thesis's numerical tooth shifting (§5.4.5): at each tooth pass in contact the
+    /// loaded pair hands its deflection back and the next starts undeflected.
+    pub tooth_shifting: bool,
 }
 
 impl Mesh {
@@ -91,6 +102,14 @@ impl Mesh {
         let path = (ra(z1).powi(2) - rb1 * rb1).sqrt() + (ra(z2).powi(2) - rb2 * rb2).sqrt()
             - centre * alpha.sin();
         path / (std::f64::consts::PI * m * alpha.cos())
+    }
+
+    /// Whether the mesh has a once-per-revolution excitation (backlash variation or
+    /// transmission error): it then turns harmonic states with the driver.
+    pub fn excited(&self) -> bool {
+        self.backlash_variation != 0.0
+            || self.te_once_per_rev_um != 0.0
+            || self.te_mesh_frequency_um != 0.0
     }
 
     /// Speed of the driven gear per unit speed of the driver: −z₁/z₂ (external gears turn

@@ -38,19 +38,25 @@ fn fault(table: &'static str, index: usize, field: &'static str, message: String
     }
 }
 
+/// Smallest positive number a rig takes in its units (kg m², N m/rad, m, …): far
+/// below any real part, far above the subnormal numbers that would overflow A.
+const SMALLEST: f64 = 1e-12;
+/// Largest number a rig takes in its units.
+const LARGEST: f64 = 1e15;
+
 /// `value` as a positive finite number, or the fault at its place.
 fn positive(
     value: f64,
     (table, index, field): (&'static str, usize, &'static str),
 ) -> Result<(), TopologyError> {
-    if value.is_finite() && value > 0.0 {
+    if (SMALLEST..=LARGEST).contains(&value) {
         return Ok(());
     }
     Err(fault(
         table,
         index,
         field,
-        format!("{value}: must be a finite number > 0"),
+        format!("{value}: must be a number > 0, between {SMALLEST:e} and {LARGEST:e}"),
     ))
 }
 
@@ -59,14 +65,14 @@ fn non_negative(
     value: f64,
     (table, index, field): (&'static str, usize, &'static str),
 ) -> Result<(), TopologyError> {
-    if value.is_finite() && value >= 0.0 {
+    if value == 0.0 || (SMALLEST..=LARGEST).contains(&value) {
         return Ok(());
     }
     Err(fault(
         table,
         index,
         field,
-        format!("{value}: must be a finite number ≥ 0"),
+        format!("{value}: must be 0 or a number between {SMALLEST:e} and {LARGEST:e}"),
     ))
 }
 
@@ -187,6 +193,19 @@ impl RigTopology {
     fn check_pairs(&self, i: usize) -> Result<(), TopologyError> {
         let m = &self.meshes[i];
         positive(m.addendum_coefficient, ("mesh", i, "addendum_coefficient"))?;
+        if !(0.0..1.0).contains(&m.backlash_variation) {
+            return Err(fault(
+                "mesh",
+                i,
+                "backlash_variation",
+                format!(
+                    "{}: the free play b(1 − C1 cos θ) needs 0 ≤ C1 < 1",
+                    m.backlash_variation
+                ),
+            ));
+        }
+        non_negative(m.te_once_per_rev_um, ("mesh", i, "te_once_per_rev_um"))?;
+        non_negative(m.te_mesh_frequency_um, ("mesh", i, "te_mesh_frequency_um"))?;
         if !(m.double_pair_ratio.is_finite() && m.double_pair_ratio >= 1.0) {
             return Err(fault(
                 "mesh",

@@ -28,7 +28,7 @@ const SHAFT: [(&str, &str, &str); 2] = [
     ("stiffness_nm_per_rad", "N m/rad", "torsional stiffness"),
     ("damping_nms_per_rad", "N m s/rad", "torsional damping"),
 ];
-const MESH: [(&str, &str, &str); 7] = [
+const MESH: [(&str, &str, &str); 10] = [
     ("module_m", "m", "module"),
     ("pressure_angle_deg", "deg", "pressure angle"),
     (
@@ -48,6 +48,21 @@ const MESH: [(&str, &str, &str); 7] = [
         "two pairs' stiffness over one pair's",
     ),
     ("addendum_coefficient", "1", "addendum over the module"),
+    (
+        "backlash_variation",
+        "1",
+        "C1 of the free play b(1 - C1 cos θ), once per revolution",
+    ),
+    (
+        "te_once_per_rev_um",
+        "um",
+        "transmission error once per revolution of the driver",
+    ),
+    (
+        "te_mesh_frequency_um",
+        "um",
+        "transmission error at mesh frequency",
+    ),
 ];
 const MOTOR: [(&str, &str, &str); 4] = [
     (
@@ -163,6 +178,9 @@ impl RigTopology {
                     "damping_ns_per_m" => Some(&mut m.damping_ns_per_m),
                     "double_pair_ratio" => Some(&mut m.double_pair_ratio),
                     "addendum_coefficient" => Some(&mut m.addendum_coefficient),
+                    "backlash_variation" => Some(&mut m.backlash_variation),
+                    "te_once_per_rev_um" => Some(&mut m.te_once_per_rev_um),
+                    "te_mesh_frequency_um" => Some(&mut m.te_mesh_frequency_um),
                     _ => None,
                 }
             }

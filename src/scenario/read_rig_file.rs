@@ -274,6 +274,10 @@ fn mesh(
         pairs: pairs(src, m)?,
         double_pair_ratio: or(&m.double_pair_ratio, 2.0),
         addendum_coefficient: or(&m.addendum_coefficient, 1.0),
+        backlash_variation: or(&m.backlash_variation, 0.0),
+        te_once_per_rev_um: or(&m.te_once_per_rev_um, 0.0),
+        te_mesh_frequency_um: or(&m.te_mesh_frequency_um, 0.0),
+        tooth_shifting: m.tooth_shifting.unwrap_or(false),
     })
 }
 
@@ -342,6 +346,9 @@ fn span_of(file: &RigFileToml, place: &TopologyPlace) -> Range<usize> {
             "pairs" => m.pairs.as_ref().map(Spanned::span),
             "double_pair_ratio" => m.double_pair_ratio.as_ref().map(Spanned::span),
             "addendum_coefficient" => m.addendum_coefficient.as_ref().map(Spanned::span),
+            "backlash_variation" => m.backlash_variation.as_ref().map(Spanned::span),
+            "te_once_per_rev_um" => m.te_once_per_rev_um.as_ref().map(Spanned::span),
+            "te_mesh_frequency_um" => m.te_mesh_frequency_um.as_ref().map(Spanned::span),
             _ => Some(m.name.span()),
         }),
         ("locked_torque", _) => file.locked_torque.as_ref().map(|l| l.torque_nm.span()),

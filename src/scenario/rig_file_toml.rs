@@ -107,6 +107,18 @@ pub struct MeshToml {
     /// Addendum over the module; 1 when left out.
     #[serde(default)]
     pub addendum_coefficient: Option<Spanned<f64>>,
+    /// Backlash variation C1; 0 when left out.
+    #[serde(default)]
+    pub backlash_variation: Option<Spanned<f64>>,
+    /// Transmission error once per revolution (µm); 0 when left out.
+    #[serde(default)]
+    pub te_once_per_rev_um: Option<Spanned<f64>>,
+    /// Transmission error at mesh frequency (µm); 0 when left out.
+    #[serde(default)]
+    pub te_mesh_frequency_um: Option<Spanned<f64>>,
+    /// The thesis's numerical tooth shifting; false when left out.
+    #[serde(default)]
+    pub tooth_shifting: Option<bool>,
 }
 
 /// `[motor]`: the body it drives, its speed loop and its torque limit.

@@ -23,7 +23,7 @@ const FLANK_TOLERANCE_N: f64 = 1e-6;
 /// A steady state.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Equilibrium {
-    /// Each body's angle (rad), the motor's body (or the first) at 0.
+    /// Each body's angle (rad), the first mesh's driver (or the motor's body) at 0.
     pub angles_rad: Vec<f64>,
     /// Each mesh's state.
     pub meshes: Vec<MeshState>,
@@ -71,7 +71,7 @@ fn rests(model: &NetworkModel, i: usize, state: MeshState, angles: &[f64]) -> bo
         Contact::Back => force <= FLANK_TOLERANCE_N,
         Contact::Apart => {
             let delta = m.radii_m[0] * angles[m.gears[0]] + m.radii_m[1] * angles[m.gears[1]];
-            delta.abs() <= m.half_backlash_m
+            delta + m.start_offset_m(1.0) <= 0.0 && delta + m.start_offset_m(-1.0) >= 0.0
         }
     }
 }
@@ -83,8 +83,8 @@ fn flank_force(model: &NetworkModel, i: usize, state: MeshState, angles: &[f64])
     let delta = m.radii_m[0] * angles[a] + m.radii_m[1] * angles[b];
     let (k, _) = m.spring(state);
     match state.contact {
-        Contact::Drive => k * (delta - m.half_backlash_m),
-        Contact::Back => k * (delta + m.half_backlash_m),
+        Contact::Drive => k * (delta + m.start_offset_m(1.0)),
+        Contact::Back => k * (delta + m.start_offset_m(-1.0)),
         Contact::Apart => 0.0,
     }
 }
@@ -119,16 +119,16 @@ fn solve(
         let [a, b] = m.gears;
         let r = m.radii_m;
         let (spring, _) = m.spring(*state);
-        let flank = if state.contact == Contact::Back {
-            -1.0
-        } else {
-            1.0
+        let offset = match state.contact {
+            Contact::Drive => m.start_offset_m(1.0),
+            Contact::Back => m.start_offset_m(-1.0),
+            Contact::Apart => continue,
         };
         for (x, rx) in [(a, r[0]), (b, r[1])] {
             for (y, ry) in [(a, r[0]), (b, r[1])] {
                 k[(x, y)] += spring * rx * ry;
             }
-            f[x] += flank * spring * rx * m.half_backlash_m;
+            f[x] -= spring * rx * offset;
         }
     }
     let power: f64 = f.iter().zip(&model.speed_ratio).map(|(t, s)| t * s).sum();
@@ -143,7 +143,10 @@ fn solve(
         }
         None => {}
     }
-    let keep: Vec<usize> = (0..n).filter(|&i| i != reference).collect();
+    // The rigid rotation is free: the first mesh's driver is held at angle 0 (as the
+    // thesis starts its driving gear, tooth 0 in mesh), else the motor's body.
+    let held = model.meshes.first().map_or(reference, |m| m.gears[0]);
+    let keep: Vec<usize> = (0..n).filter(|&i| i != held).collect();
     let reduced = DMatrix::from_fn(n - 1, n - 1, |r, c| k[(keep[r], keep[c])]);
     let rhs = DVector::from_fn(n - 1, |r, _| f[keep[r]]);
     let twist = reduced.lu().solve(&rhs).ok_or_else(|| {

@@ -28,6 +28,8 @@ pub enum NetEvent {
     LimitRelease,
     /// The motor body turns past its next whole revolution.
     Revolution,
+    /// Mesh `.0`'s driver turns past its next tooth boundary (tooth shifting).
+    ToothPass(usize),
 }
 
 /// A moving target the plant supplies.
@@ -41,6 +43,8 @@ pub enum Target {
     ZoneStartNegated(usize),
     /// The motor body's next revolution (rad).
     Revolution,
+    /// Mesh `.0`'s driver's next tooth boundary (rad in its sense of rotation).
+    Tooth(usize),
 }
 
 /// One switching function: g = terms·u − target, and its rate slope·u along u' = A u.
@@ -96,31 +100,39 @@ pub fn event_forms(model: &NetworkModel, mode: &NetMode, a: &DMatrix<f64>) -> Ve
     };
     let l = model.layout;
     for (i, m) in model.meshes.iter().enumerate() {
-        let [ga, gb] = m.gears;
-        let [ra, rb] = m.radii_m;
-        let delta = |sign: f64, offset: f64| {
-            vec![
-                (l.angle(ga), sign * ra),
-                (l.angle(gb), sign * rb),
-                (l.unit(), offset),
-            ]
+        let ga = m.gears[0];
+        // The overlap of a flank: its value terms (the rate is A's business).
+        let overlap = |flank: f64, sign: f64| -> Vec<(usize, f64)> {
+            model
+                .overlap_terms(i, flank, 0.0)
+                .into_iter()
+                .filter(|&(_, value, _)| value != 0.0)
+                .map(|(index, value, _)| (index, sign * value))
+                .collect()
         };
-        let b = m.half_backlash_m;
         match mode.meshes[i].contact {
             Contact::Apart => {
                 push(
                     NetEvent::Touch(i, Contact::Drive),
-                    delta(1.0, -b),
+                    overlap(1.0, 1.0),
                     Target::Fixed,
                 );
                 push(
                     NetEvent::Touch(i, Contact::Back),
-                    delta(-1.0, -b),
+                    overlap(-1.0, -1.0),
                     Target::Fixed,
                 );
             }
-            Contact::Drive => push(NetEvent::Leave(i), delta(-1.0, b), Target::Fixed),
-            Contact::Back => push(NetEvent::Leave(i), delta(1.0, b), Target::Fixed),
+            Contact::Drive => push(NetEvent::Leave(i), overlap(1.0, -1.0), Target::Fixed),
+            Contact::Back => push(NetEvent::Leave(i), overlap(-1.0, 1.0), Target::Fixed),
+        }
+        if m.tooth_shifting && mode.meshes[i].contact != Contact::Apart {
+            let sense = m.share.signum();
+            push(
+                NetEvent::ToothPass(i),
+                vec![(l.angle(ga), sense), (l.phase(), sense * m.share)],
+                Target::Tooth(i),
+            );
         }
         if m.alternating && mode.meshes[i].contact != Contact::Apart {
             push(

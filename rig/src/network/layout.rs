@@ -5,15 +5,64 @@
 //! brake's load (N m) and its rate (N m/s), the oscillating load (A cos ψ, A sin ψ) (N m),
 //! and the set rotation Φ (rad; Φ' = Ω, read only by the switching functions of tooth
 //! zones and revolutions). Set speed and load ramp exactly: Ω' = rate, load' = rate.
+//! Then, for each mesh with a backlash variation or transmission error, the harmonic
+//! pairs of its driver's share of the set rotation: (cos θ, sin θ) and, with a
+//! mesh-frequency error, (cos zθ, sin zθ).
+
+use crate::topology::{MAX_MESHES, RigTopology};
 
 /// Where each state sits for a rig of `bodies` bodies.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct NetLayout {
     /// Number of bodies n.
     pub bodies: usize,
+    /// Per mesh: where cos θ of its driver's share of the set rotation sits (sin θ
+    /// follows), if the mesh is excited.
+    pub revolution: [Option<usize>; MAX_MESHES],
+    /// Per mesh: where cos zθ sits (sin zθ follows), if it has a mesh-frequency error.
+    pub tooth: [Option<usize>; MAX_MESHES],
+    len: usize,
 }
 
 impl NetLayout {
+    /// The layout of `rig`.
+    pub fn new(rig: &RigTopology) -> Self {
+        let bodies = rig.bodies.len();
+        let mut len = 2 * bodies + 2 + 8;
+        let mut revolution = [None; MAX_MESHES];
+        let mut tooth = [None; MAX_MESHES];
+        for (i, m) in rig.meshes.iter().enumerate() {
+            if m.excited() {
+                revolution[i] = Some(len);
+                len += 2;
+            }
+            if m.te_mesh_frequency_um != 0.0 {
+                tooth[i] = Some(len);
+                len += 2;
+            }
+        }
+        Self {
+            bodies,
+            revolution,
+            tooth,
+            len,
+        }
+    }
+
+    /// The harmonic pairs: (index of the cos state, mesh, harmonic of the driver's turn).
+    pub fn harmonics(&self, teeth: impl Fn(usize) -> f64) -> Vec<(usize, usize, f64)> {
+        let mut pairs = Vec::new();
+        for i in 0..MAX_MESHES {
+            if let Some(index) = self.revolution[i] {
+                pairs.push((index, i, 1.0));
+            }
+            if let Some(index) = self.tooth[i] {
+                pairs.push((index, i, teeth(i)));
+            }
+        }
+        pairs
+    }
+
     /// Angle of body `i` less its share of the set rotation, x_i = θ_i − s_i Φ.
     pub fn angle(self, i: usize) -> usize {
         i
@@ -64,7 +113,7 @@ impl NetLayout {
     }
     /// Length of the state.
     pub fn len(self) -> usize {
-        self.mechanical() + 8
+        self.len
     }
     /// The length rounded up to a multiple of 4: the stored state and each stored column
     /// of a matrix, padded with zeros so that products run in whole vectors.

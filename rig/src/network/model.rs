@@ -62,9 +62,27 @@ pub struct MeshModel {
     pub pitch_rad: f64,
     /// Share of each tooth period with two pairs in contact (ε − 1).
     pub two_pair_share: f64,
+    /// The driver's teeth z.
+    pub teeth: f64,
+    /// The driver's speed per unit set speed (signed).
+    pub share: f64,
+    /// Half the free play times its variation, b·C1 (m).
+    pub variation_m: f64,
+    /// Transmission error once per revolution, E (m along the line of action).
+    pub te_once_m: f64,
+    /// Transmission error at mesh frequency, P (m along the line of action).
+    pub te_mesh_m: f64,
+    /// The thesis's numerical tooth shifting at each tooth pass in contact.
+    pub tooth_shifting: bool,
 }
 
 impl MeshModel {
+    /// The constant part of the overlap of `flank` (+1 drive, −1 back) with the driver
+    /// at angle 0 of its share of the set rotation (m): −f b (1 − C1) + E + P.
+    pub fn start_offset_m(&self, flank: f64) -> f64 {
+        -flank * (self.half_backlash_m - self.variation_m) + self.te_once_m + self.te_mesh_m
+    }
+
     /// Stiffness (N/m) and damping (N s/m) in `state`.
     pub fn spring(&self, state: MeshState) -> (f64, f64) {
         let ratio = if state.two_pairs {
@@ -164,6 +182,12 @@ impl NetworkModel {
                 double_pair_ratio: m.double_pair_ratio,
                 pitch_rad: 2.0 * std::f64::consts::PI / f64::from(m.teeth[0]),
                 two_pair_share: (m.contact_ratio() - 1.0).clamp(0.0, 1.0),
+                teeth: f64::from(m.teeth[0]),
+                share: speed_ratio[m.gears[0]],
+                variation_m: m.half_backlash_m() * m.backlash_variation,
+                te_once_m: m.te_once_per_rev_um * 1e-6,
+                te_mesh_m: m.te_mesh_frequency_um * 1e-6,
+                tooth_shifting: m.tooth_shifting,
             })
             .collect();
         // The speed loop on the rig's inertia seen at the motor, Σ J s² (as the 1983
@@ -188,9 +212,7 @@ impl NetworkModel {
             slope_nms_per_rad: d.brake_slope_nms_per_rad,
         });
         let mut model = Self {
-            layout: NetLayout {
-                bodies: rig.bodies.len(),
-            },
+            layout: NetLayout::new(rig),
             inertia_kgm2,
             drag_nms_per_rad: rig.bodies.iter().map(|b| b.drag_nms_per_rad).collect(),
             speed_ratio,
@@ -204,6 +226,15 @@ impl NetworkModel {
                 super::equilibrium::assembly_preload_nm(&model, locked.shaft, locked.torque_nm)?;
         }
         Ok(model)
+    }
+
+    /// The fastest harmonic pair (rad/s) at a set speed of `speed_rad_s`.
+    pub fn fastest_harmonic_rad_s(&self, speed_rad_s: f64) -> f64 {
+        self.layout
+            .harmonics(|i| self.meshes[i].teeth)
+            .iter()
+            .map(|&(_, mesh, harmonic)| (harmonic * self.meshes[mesh].share * speed_rad_s).abs())
+            .fold(0.0, f64::max)
     }
 
     /// The absolute angle θ = x + sΦ (rad) of body `body` at `u`.
@@ -224,16 +255,26 @@ impl NetworkModel {
         )
     }
 
+    /// The overlap (m) of mesh `mesh`'s `flank` (+1 drive, −1 back) at `u` and its rate
+    /// (m/s), the set speed held at `speed_rad_s`: > 0 (drive) or < 0 (back) in contact.
+    pub fn overlap(&self, mesh: usize, flank: f64, u: &[f64], speed_rad_s: f64) -> (f64, f64) {
+        self.overlap_terms(mesh, flank, speed_rad_s)
+            .iter()
+            .fold((0.0, 0.0), |(o, r), &(i, a, b)| {
+                (o + a * u[i], r + b * u[i])
+            })
+    }
+
     /// The force (N) a mesh in `state` pushes with at `u`; 0 apart.
-    pub fn mesh_force_n(&self, mesh: usize, state: MeshState, u: &[f64]) -> f64 {
-        let (delta, rate) = self.deflection(mesh, u);
+    pub fn mesh_force_n(&self, mesh: usize, state: MeshState, u: &[f64], speed_rad_s: f64) -> f64 {
+        let flank = match state.contact {
+            Contact::Apart => return 0.0,
+            Contact::Drive => 1.0,
+            Contact::Back => -1.0,
+        };
         let (k, c) = self.meshes[mesh].spring(state);
-        let b = self.meshes[mesh].half_backlash_m;
-        match state.contact {
-            Contact::Apart => 0.0,
-            Contact::Drive => k * (delta - b) + c * rate,
-            Contact::Back => k * (delta + b) + c * rate,
-        }
+        let (overlap, rate) = self.overlap(mesh, flank, u, speed_rad_s);
+        k * overlap + c * rate
     }
 
     /// The elastic torque (N m) a shaft carries from its first body to its second,
@@ -267,8 +308,15 @@ impl NetworkModel {
         })
     }
 
-    /// A of u' = A u in `mode`, the oscillating load turning at `oscillating_rad_s`.
-    pub fn system_matrix(&self, mode: &NetMode, oscillating_rad_s: f64) -> DMatrix<f64> {
+    /// A of u' = A u in `mode`, the set speed held at `speed_rad_s` for the harmonic
+    /// pairs of the meshes' excitation, the oscillating load turning at
+    /// `oscillating_rad_s`.
+    pub fn system_matrix(
+        &self,
+        mode: &NetMode,
+        speed_rad_s: f64,
+        oscillating_rad_s: f64,
+    ) -> DMatrix<f64> {
         let l = self.layout;
         let mut a = DMatrix::zeros(l.len(), l.len());
         for i in 0..l.bodies {
@@ -279,8 +327,13 @@ impl NetworkModel {
         for s in &self.shafts {
             self.add_shaft(&mut a, s);
         }
-        for (i, m) in self.meshes.iter().enumerate() {
-            self.add_mesh(&mut a, m, mode.meshes[i]);
+        for i in 0..self.meshes.len() {
+            self.add_mesh(&mut a, i, mode.meshes[i], speed_rad_s);
+        }
+        for (index, mesh, harmonic) in l.harmonics(|i| self.meshes[i].teeth) {
+            let w = harmonic * self.meshes[mesh].share * speed_rad_s;
+            a[(index, index + 1)] = -w;
+            a[(index + 1, index)] = w;
         }
         self.add_motor(&mut a, mode.motor);
         self.add_brake(&mut a);
@@ -318,28 +371,59 @@ impl NetworkModel {
         }
     }
 
-    fn add_mesh(&self, a: &mut DMatrix<f64>, m: &MeshModel, state: MeshState) {
+    /// The mesh's force terms F = k(δ + e − f b + f b C1 cos θ) + c(δ' + e' + f b C1
+    /// (cos θ)') (f = +1 on the drive flank, −1 on the back flank), −r_a F on its driver
+    /// and −r_b F on its driven gear.
+    fn add_mesh(&self, a: &mut DMatrix<f64>, mesh: usize, state: MeshState, speed_rad_s: f64) {
         let flank = match state.contact {
             Contact::Apart => return,
-            Contact::Drive => -1.0,
-            Contact::Back => 1.0,
+            Contact::Drive => 1.0,
+            Contact::Back => -1.0,
         };
-        let l = self.layout;
+        let force = self.overlap_terms(mesh, flank, speed_rad_s);
+        let m = &self.meshes[mesh];
         let (k, c) = m.spring(state);
         let [ga, gb] = m.gears;
-        let [ra, rb] = m.radii_m;
-        // F = k(ra θa + rb θb) + c(ra ωa + rb ωb) + flank·k·b.
-        let force = [
-            (l.angle(ga), k * ra),
-            (l.angle(gb), k * rb),
-            (l.speed(ga), c * ra),
-            (l.speed(gb), c * rb),
-            (l.unit(), flank * k * m.half_backlash_m),
-        ];
-        for (body, r) in [(ga, ra), (gb, rb)] {
-            let terms: Vec<(usize, f64)> = force.iter().map(|&(col, v)| (col, -r * v)).collect();
+        for (body, r) in [(ga, m.radii_m[0]), (gb, m.radii_m[1])] {
+            let terms: Vec<(usize, f64)> = force
+                .iter()
+                .map(|&(col, stiff, damp)| (col, -r * (k * stiff + c * damp)))
+                .collect();
             self.add_torque(a, body, &terms);
         }
+    }
+
+    /// The overlap of a mesh's `flank` (+1 drive, −1 back) as terms (state, coefficient
+    /// of the overlap, coefficient of its rate): δ + e − f b(1 − C1 cos θ), the harmonic
+    /// pairs turning at the driver's share of `speed_rad_s`.
+    pub fn overlap_terms(
+        &self,
+        mesh: usize,
+        flank: f64,
+        speed_rad_s: f64,
+    ) -> Vec<(usize, f64, f64)> {
+        let l = self.layout;
+        let m = &self.meshes[mesh];
+        let [ga, gb] = m.gears;
+        let [ra, rb] = m.radii_m;
+        let mut terms = vec![
+            (l.angle(ga), ra, 0.0),
+            (l.angle(gb), rb, 0.0),
+            (l.speed(ga), 0.0, ra),
+            (l.speed(gb), 0.0, rb),
+            (l.unit(), -flank * m.half_backlash_m, 0.0),
+        ];
+        let w = m.share * speed_rad_s;
+        if let Some(rev) = l.revolution[mesh] {
+            let amplitude = m.te_once_m + flank * m.variation_m;
+            terms.push((rev, amplitude, 0.0));
+            terms.push((rev + 1, 0.0, -amplitude * w));
+        }
+        if let Some(tooth) = l.tooth[mesh] {
+            terms.push((tooth, m.te_mesh_m, 0.0));
+            terms.push((tooth + 1, 0.0, -m.te_mesh_m * m.teeth * w));
+        }
+        terms
     }
 
     fn add_motor(&self, a: &mut DMatrix<f64>, motor: MotorMode) {

@@ -25,8 +25,10 @@ pub enum NetworkStart {
     Rest,
 }
 
-/// Longest stretch (s) an oscillating load's ramping amplitude or frequency is held.
-const OSCILLATING_HOLD_S: f64 = 0.1;
+/// Longest stretch (s) a ramping oscillating load, or a ramping set speed where meshes
+/// turn harmonic states, is held (the harmonics are then set again from the exact
+/// rotation).
+const OSCILLATING_HOLD_S: f64 = 0.01;
 
 /// Samples between checks of the state's bounds (and at the end of every run).
 const CHECK_EVERY: u64 = 64;
@@ -53,6 +55,10 @@ pub struct NetworkPlant {
     /// Each mesh's pair zone as a count of zone boundaries (even: two pairs).
     pub(super) zones: Vec<i64>,
     pub(super) next_revolution_rad: f64,
+    /// The set speed the harmonic pairs turn with in this segment (rad/s).
+    pub(super) harmonic_speed_rad_s: f64,
+    /// Each mesh's driver's next tooth boundary (rad in its sense of rotation).
+    pub(super) next_tooth_rad: Vec<f64>,
     pub(super) impacts: Vec<NetworkImpact>,
     pub(super) revolutions_s: Vec<f64>,
     /// Start time of the step being taken (s).
@@ -85,7 +91,8 @@ impl NetworkPlant {
         }
         let model = NetworkModel::of(rig)?;
         let output_step_s = 1.0 / output_rate_hz;
-        let rho = fastest_rate(&model);
+        let top_rad_s = schedule.speed_rpm.range().1.abs() * PI / 30.0;
+        let rho = fastest_rate(&model).max(model.fastest_harmonic_rad_s(top_rad_s));
         let steps = (rho * output_step_s / MAX_RHO_H).ceil().max(1.0);
         if steps.is_nan() || steps > f64::from(MAX_SUBSTEPS) {
             return Err(RigError::InvalidOption {
@@ -114,6 +121,8 @@ impl NetworkPlant {
             segment_end: Some(0),
             zones: vec![1; meshes],
             next_revolution_rad: 2.0 * PI,
+            harmonic_speed_rad_s: 0.0,
+            next_tooth_rad: vec![0.0; meshes],
             impacts: Vec::new(),
             revolutions_s: Vec::new(),
             step_start_s: 0.0,
@@ -181,10 +190,47 @@ impl NetworkPlant {
         Ok(())
     }
 
-    /// Each alternating mesh's pair zone from its driver's angle.
+    /// Each alternating mesh's pair zone from its driver's angle, and its next tooth
+    /// boundary.
     pub(super) fn set_zones_from_angles(&mut self) {
         for i in 0..self.model.meshes.len() {
             self.zones[i] = self.zone_at(i);
+            self.next_tooth_rad[i] = f64::NEG_INFINITY;
+            self.catch_up_tooth(i);
+        }
+    }
+
+    /// Moves mesh `i`'s next tooth boundary to the first above its driver's angle (in
+    /// its sense of rotation), never backwards: apart, a tooth pass changes nothing.
+    pub(super) fn catch_up_tooth(&mut self, i: usize) {
+        let m = &self.model.meshes[i];
+        let angle = m.share.signum() * self.model.absolute_angle_rad(m.gears[0], &self.u);
+        let ahead = ((angle / m.pitch_rad).floor() + 1.0) * m.pitch_rad;
+        self.next_tooth_rad[i] = self.next_tooth_rad[i].max(ahead);
+    }
+
+    /// A tooth pass of mesh `i` in contact with tooth shifting (thesis §5.4.5): the
+    /// loaded pair hands its overlap back, each gear moving by half of it along the line
+    /// of action; the next pair stays in contact only while the flanks close.
+    pub(super) fn shift_tooth(&mut self, i: usize) {
+        let l = self.model.layout;
+        let m = &self.model.meshes[i];
+        self.next_tooth_rad[i] += m.pitch_rad;
+        let flank = match self.mode.meshes[i].contact {
+            Contact::Drive => 1.0,
+            Contact::Back => -1.0,
+            Contact::Apart => return,
+        };
+        let speed = self.harmonic_speed_rad_s;
+        let (overlap, rate) = self.model.overlap(i, flank, &self.u, speed);
+        if flank * overlap > 0.0 {
+            let [ga, gb] = m.gears;
+            self.u[l.angle(ga)] -= 0.5 * overlap / m.radii_m[0];
+            self.u[l.angle(gb)] -= 0.5 * overlap / m.radii_m[1];
+        }
+        if flank * rate <= 0.0 {
+            self.mode.meshes[i].contact = Contact::Apart;
+            self.mode.meshes[i].two_pairs = false;
         }
     }
 
@@ -241,8 +287,10 @@ impl NetworkPlant {
         let t = self.time_s();
         let knot = self.schedule.next_knot_after(t);
         let s = &self.schedule;
-        let oscillating_ramps =
-            s.oscillating_load_nm.ramping_at(t) || s.oscillating_load_hz.ramping_at(t);
+        let harmonics_turn = !self.model.layout.harmonics(|_| 1.0).is_empty();
+        let oscillating_ramps = s.oscillating_load_nm.ramping_at(t)
+            || s.oscillating_load_hz.ramping_at(t)
+            || (harmonics_turn && s.speed_rpm.ramping_at(t));
         let end_s = match (knot, oscillating_ramps) {
             (Some(k), true) => Some(k.min(t + OSCILLATING_HOLD_S)),
             (None, true) => Some(t + OSCILLATING_HOLD_S),
@@ -277,10 +325,30 @@ impl NetworkPlant {
         };
         self.u[l.oscillating()] = held.oscillating_load_nm * phase.cos();
         self.u[l.oscillating() + 1] = held.oscillating_load_nm * phase.sin();
-        self.cache.set_oscillating(held.oscillating_load_rad_s());
+        let harmonic_speed = if self.model.layout.harmonics(|_| 1.0).is_empty() {
+            0.0
+        } else {
+            held.speed_rad_s()
+        };
+        self.harmonic_speed_rad_s = harmonic_speed;
+        self.cache
+            .set_frequencies(harmonic_speed, held.oscillating_load_rad_s());
+        self.resync_harmonics();
         self.segment_end = end;
         self.edge.clear();
         self.clamp_motor();
+    }
+
+    /// Sets each harmonic pair from the exact share of the set rotation Φ of its mesh's
+    /// driver.
+    fn resync_harmonics(&mut self) {
+        let l = self.model.layout;
+        let phase = self.u[l.phase()];
+        for (index, mesh, harmonic) in l.harmonics(|i| self.model.meshes[i].teeth) {
+            let angle = harmonic * self.model.meshes[mesh].share * phase;
+            self.u[index] = angle.cos();
+            self.u[index + 1] = angle.sin();
+        }
     }
 
     /// After a jump of the set speed: a command beyond a limit is held at it.
@@ -336,7 +404,8 @@ impl NetworkPlant {
         }
         for i in 0..self.model.meshes.len() {
             let state = self.mode.meshes[i];
-            block.mesh_force_n[i].push(self.model.mesh_force_n(i, state, u));
+            let speed = self.harmonic_speed_rad_s;
+            block.mesh_force_n[i].push(self.model.mesh_force_n(i, state, u, speed));
             block.contact[i].push(state.contact.sign());
         }
         block
@@ -407,16 +476,15 @@ impl NetworkPlant {
                 0.5 * s.stiffness_nm_per_rad * twist * twist + s.preload_nm * twist
             })
             .sum();
+        let speed = self.harmonic_speed_rad_s;
         let meshes: f64 = (0..self.model.meshes.len())
             .map(|i| {
-                let m = &self.model.meshes[i];
                 let state = self.mode.meshes[i];
-                let (delta, _) = self.model.deflection(i, u);
-                let (k, _) = m.spring(state);
+                let (k, _) = self.model.meshes[i].spring(state);
                 let overlap = match state.contact {
                     Contact::Apart => 0.0,
-                    Contact::Drive => delta - m.half_backlash_m,
-                    Contact::Back => delta + m.half_backlash_m,
+                    Contact::Drive => self.model.overlap(i, 1.0, u, speed).0,
+                    Contact::Back => self.model.overlap(i, -1.0, u, speed).0,
                 };
                 0.5 * k * overlap * overlap
             })

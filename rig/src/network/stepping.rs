@@ -108,6 +108,7 @@ impl NetworkPlant {
             Target::ZoneEnd(i) => self.zone_bounds(i, self.zones[i]).1,
             Target::ZoneStartNegated(i) => -self.zone_bounds(i, self.zones[i]).0,
             Target::Revolution => self.next_revolution_rad,
+            Target::Tooth(i) => self.next_tooth_rad[i],
         }
     }
 
@@ -156,6 +157,7 @@ impl NetworkPlant {
                     approach_m_s,
                 });
                 self.zones[i] = self.zone_at(i);
+                self.catch_up_tooth(i);
                 self.mode.meshes[i].contact = flank;
                 self.mode.meshes[i].two_pairs =
                     self.model.meshes[i].alternating && self.zones[i] % 2 == 0;
@@ -175,6 +177,7 @@ impl NetworkPlant {
             NetEvent::LimitHigh => self.mode.motor = MotorMode::LimitHigh,
             NetEvent::LimitLow => self.mode.motor = MotorMode::LimitLow,
             NetEvent::LimitRelease => self.mode.motor = MotorMode::Linear,
+            NetEvent::ToothPass(i) => self.shift_tooth(i),
             NetEvent::Revolution => {
                 self.revolutions_s.push(at_s);
                 self.next_revolution_rad += 2.0 * PI;

@@ -32,6 +32,8 @@ pub struct SystemCache {
     last: Option<(NetMode, usize)>,
     step_s: f64,
     rho: f64,
+    /// The set speed the harmonic pairs turn with (rad/s; 0 where the rig has none).
+    speed_rad_s: f64,
     oscillating_rad_s: f64,
 }
 
@@ -44,17 +46,20 @@ impl SystemCache {
             last: None,
             step_s,
             rho,
+            speed_rad_s: 0.0,
             oscillating_rad_s: 0.0,
         }
     }
 
-    /// Sets the oscillating load's frequency (rad/s); a change empties the cache.
-    pub fn set_oscillating(&mut self, rad_s: f64) {
-        if rad_s != self.oscillating_rad_s {
+    /// Sets the set speed the harmonic pairs turn with and the oscillating load's
+    /// frequency (rad/s); a change empties the cache.
+    pub fn set_frequencies(&mut self, speed_rad_s: f64, oscillating_rad_s: f64) {
+        if (speed_rad_s, oscillating_rad_s) != (self.speed_rad_s, self.oscillating_rad_s) {
             self.systems.clear();
             self.built.clear();
             self.last = None;
-            self.oscillating_rad_s = rad_s;
+            self.speed_rad_s = speed_rad_s;
+            self.oscillating_rad_s = oscillating_rad_s;
         }
     }
 
@@ -76,7 +81,7 @@ impl SystemCache {
         if let Some(&index) = self.systems.get(mode) {
             return index;
         }
-        let a = model.system_matrix(mode, self.oscillating_rad_s);
+        let a = model.system_matrix(mode, self.speed_rad_s, self.oscillating_rad_s);
         let padded = model.layout.padded();
         let step = padded_columns(&exp_step(model, &a, self.step_s, self.rho), padded);
         let events = event_forms(model, mode, &a);
@@ -101,8 +106,8 @@ fn padded_columns(m: &DMatrix<f64>, padded: usize) -> Vec<f64> {
 }
 
 /// e^{A h}, balanced as the 1983 plant's: angles and the integral at 1,
-/// speeds and the filtered speed at ρ, forcing states scaled to ρ, the oscillating
-/// load's two states alike.
+/// speeds and the filtered speed at ρ, forcing states scaled to ρ, the two states of
+/// each harmonic pair alike.
 fn exp_step(model: &NetworkModel, a: &DMatrix<f64>, step_s: f64, rho: f64) -> DMatrix<f64> {
     let l = model.layout;
     let rho = rho.max(1.0);
@@ -116,12 +121,15 @@ fn exp_step(model: &NetworkModel, a: &DMatrix<f64>, step_s: f64, rho: f64) -> DM
         })
         .collect();
     let mut scale = forcing_scales(a, &mechanical, rho);
-    // The oscillating pair turns one into the other: one scale for both, else the
+    // Each harmonic pair turns one state into the other: one scale for both, else the
     // balanced rotation's entries would be as large as their ratio.
-    let pair = l.oscillating();
-    let shared = scale[pair].max(scale[pair + 1]);
-    scale[pair] = shared;
-    scale[pair + 1] = shared;
+    let pairs = l.harmonics(|i| model.meshes[i].teeth);
+    let starts = std::iter::once(l.oscillating()).chain(pairs.iter().map(|p| p.0));
+    for pair in starts {
+        let shared = scale[pair].max(scale[pair + 1]);
+        scale[pair] = shared;
+        scale[pair + 1] = shared;
+    }
     exp_powers_balanced(a, step_s, &scale, 1).remove(0)
 }
 
@@ -133,5 +141,10 @@ pub fn fastest_rate(model: &NetworkModel) -> f64 {
         state.contact = super::mode::Contact::Drive;
         state.two_pairs = m.alternating;
     }
-    spectral_radius(&model.system_matrix(&mode, 0.0))
+    let a = model.system_matrix(&mode, 0.0, 0.0);
+    if a.iter().all(|x| x.is_finite()) {
+        spectral_radius(&a)
+    } else {
+        f64::INFINITY
+    }
 }
