@@ -98,7 +98,7 @@ pub fn event_forms(model: &NetworkModel, mode: &NetMode, a: &DMatrix<f64>) -> Ve
     let mut push = |event, terms: Vec<(usize, f64)>, target| {
         forms.push(EventForm::new(event, terms, target, a));
     };
-    let l = model.layout;
+    let l = &model.layout;
     for (i, m) in model.meshes.iter().enumerate() {
         let ga = m.gears[0];
         // The overlap of a flank: its value terms (the rate is A's business).

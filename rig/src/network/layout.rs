@@ -64,60 +64,60 @@ impl NetLayout {
     }
 
     /// Angle of body `i` less its share of the set rotation, x_i = θ_i − s_i Φ.
-    pub fn angle(self, i: usize) -> usize {
+    pub fn angle(&self, i: usize) -> usize {
         i
     }
     /// Speed of body `i`.
-    pub fn speed(self, i: usize) -> usize {
+    pub fn speed(&self, i: usize) -> usize {
         self.bodies + i
     }
     /// The filtered motor speed (rad/s).
-    pub fn filtered(self) -> usize {
+    pub fn filtered(&self) -> usize {
         2 * self.bodies
     }
     /// The speed error's integral (rad).
-    pub fn integral(self) -> usize {
+    pub fn integral(&self) -> usize {
         2 * self.bodies + 1
     }
     /// The mechanical and controller states (the rest are forcing).
-    pub fn mechanical(self) -> usize {
+    pub fn mechanical(&self) -> usize {
         2 * self.bodies + 2
     }
     /// The constant 1.
-    pub fn unit(self) -> usize {
+    pub fn unit(&self) -> usize {
         self.mechanical()
     }
     /// The motor body's set speed Ω (rad/s).
-    pub fn set_speed(self) -> usize {
+    pub fn set_speed(&self) -> usize {
         self.mechanical() + 1
     }
     /// Ω's rate (rad/s²).
-    pub fn set_rate(self) -> usize {
+    pub fn set_rate(&self) -> usize {
         self.mechanical() + 2
     }
     /// The brake's load torque (N m).
-    pub fn load(self) -> usize {
+    pub fn load(&self) -> usize {
         self.mechanical() + 3
     }
     /// The load's rate (N m/s).
-    pub fn load_rate(self) -> usize {
+    pub fn load_rate(&self) -> usize {
         self.mechanical() + 4
     }
     /// A cos ψ of the oscillating load (N m); A sin ψ follows.
-    pub fn oscillating(self) -> usize {
+    pub fn oscillating(&self) -> usize {
         self.mechanical() + 5
     }
     /// The set rotation Φ (rad).
-    pub fn phase(self) -> usize {
+    pub fn phase(&self) -> usize {
         self.mechanical() + 7
     }
     /// Length of the state.
-    pub fn len(self) -> usize {
+    pub fn len(&self) -> usize {
         self.len
     }
     /// The length rounded up to a multiple of 4: the stored state and each stored column
     /// of a matrix, padded with zeros so that products run in whole vectors.
-    pub fn padded(self) -> usize {
+    pub fn padded(&self) -> usize {
         self.len().div_ceil(4) * 4
     }
 }

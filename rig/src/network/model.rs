@@ -239,14 +239,14 @@ impl NetworkModel {
 
     /// The absolute angle θ = x + sΦ (rad) of body `body` at `u`.
     pub fn absolute_angle_rad(&self, body: usize, u: &[f64]) -> f64 {
-        let l = self.layout;
+        let l = &self.layout;
         u[l.angle(body)] + self.speed_ratio[body] * u[l.phase()]
     }
 
     /// A mesh's deflection δ (m) and its rate (m/s) at state `u`.
     pub fn deflection(&self, mesh: usize, u: &[f64]) -> (f64, f64) {
         let m = &self.meshes[mesh];
-        let l = self.layout;
+        let l = &self.layout;
         let [a, b] = m.gears;
         let [ra, rb] = m.radii_m;
         (
@@ -258,11 +258,22 @@ impl NetworkModel {
     /// The overlap (m) of mesh `mesh`'s `flank` (+1 drive, −1 back) at `u` and its rate
     /// (m/s), the set speed held at `speed_rad_s`: > 0 (drive) or < 0 (back) in contact.
     pub fn overlap(&self, mesh: usize, flank: f64, u: &[f64], speed_rad_s: f64) -> (f64, f64) {
-        self.overlap_terms(mesh, flank, speed_rad_s)
-            .iter()
-            .fold((0.0, 0.0), |(o, r), &(i, a, b)| {
-                (o + a * u[i], r + b * u[i])
-            })
+        let l = &self.layout;
+        let m = &self.meshes[mesh];
+        let (delta, rate) = self.deflection(mesh, u);
+        let mut overlap = delta - flank * m.half_backlash_m;
+        let mut overlap_rate = rate;
+        let w = m.share * speed_rad_s;
+        if let Some(rev) = l.revolution[mesh] {
+            let amplitude = m.te_once_m + flank * m.variation_m;
+            overlap += amplitude * u[rev];
+            overlap_rate -= amplitude * w * u[rev + 1];
+        }
+        if let Some(tooth) = l.tooth[mesh] {
+            overlap += m.te_mesh_m * u[tooth];
+            overlap_rate -= m.te_mesh_m * m.teeth * w * u[tooth + 1];
+        }
+        (overlap, overlap_rate)
     }
 
     /// The force (N) a mesh in `state` pushes with at `u`; 0 apart.
@@ -281,7 +292,7 @@ impl NetworkModel {
     /// k(θa − θb) + T0 (what strain gauges on it read).
     pub fn shaft_torque_nm(&self, shaft: usize, u: &[f64]) -> f64 {
         let s = &self.shafts[shaft];
-        let l = self.layout;
+        let l = &self.layout;
         let [a, b] = s.between;
         s.stiffness_nm_per_rad * (u[l.angle(a)] - u[l.angle(b)]) + s.preload_nm
     }
@@ -301,7 +312,7 @@ impl NetworkModel {
 
     /// The PI loop's command before any limit (N m).
     pub fn controller_nm(&self, u: &[f64]) -> f64 {
-        let l = self.layout;
+        let l = &self.layout;
         self.motor.as_ref().map_or(0.0, |m| {
             m.kp_nms_per_rad * (u[l.set_speed()] - u[l.filtered()])
                 + m.ki_nm_per_rad * u[l.integral()]
@@ -317,7 +328,7 @@ impl NetworkModel {
         speed_rad_s: f64,
         oscillating_rad_s: f64,
     ) -> DMatrix<f64> {
-        let l = self.layout;
+        let l = &self.layout;
         let mut a = DMatrix::zeros(l.len(), l.len());
         for i in 0..l.bodies {
             a[(l.angle(i), l.speed(i))] = 1.0;
@@ -354,7 +365,7 @@ impl NetworkModel {
     }
 
     fn add_shaft(&self, a: &mut DMatrix<f64>, s: &ShaftModel) {
-        let l = self.layout;
+        let l = &self.layout;
         let [i, j] = s.between;
         let (k, c) = (s.stiffness_nm_per_rad, s.damping_nms_per_rad);
         let carried = [
@@ -402,7 +413,7 @@ impl NetworkModel {
         flank: f64,
         speed_rad_s: f64,
     ) -> Vec<(usize, f64, f64)> {
-        let l = self.layout;
+        let l = &self.layout;
         let m = &self.meshes[mesh];
         let [ga, gb] = m.gears;
         let [ra, rb] = m.radii_m;
@@ -430,7 +441,7 @@ impl NetworkModel {
         let Some(m) = &self.motor else {
             return;
         };
-        let l = self.layout;
+        let l = &self.layout;
         let (kp, ki, wf) = (m.kp_nms_per_rad, m.ki_nm_per_rad, m.filter_rad_s);
         a[(l.filtered(), l.speed(m.body))] = wf;
         a[(l.filtered(), l.filtered())] = -wf;
@@ -463,7 +474,7 @@ impl NetworkModel {
         let Some(b) = &self.brake else {
             return;
         };
-        let l = self.layout;
+        let l = &self.layout;
         let dir = b.direction;
         let slope = b.slope_nms_per_rad;
         let nominal = self.speed_ratio[b.body];

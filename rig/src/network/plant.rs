@@ -213,7 +213,7 @@ impl NetworkPlant {
     /// loaded pair hands its overlap back, each gear moving by half of it along the line
     /// of action; the next pair stays in contact only while the flanks close.
     pub(super) fn shift_tooth(&mut self, i: usize) {
-        let l = self.model.layout;
+        let l = &self.model.layout;
         let m = &self.model.meshes[i];
         self.next_tooth_rad[i] += m.pitch_rad;
         let flank = match self.mode.meshes[i].contact {
@@ -312,7 +312,7 @@ impl NetworkPlant {
         let (speed, speed_rate) = ramp(&s.speed_rpm, PI / 30.0);
         let (load, load_rate) = ramp(&s.load_nm, 1.0);
         let held = s.held_over(t, end_s.map_or(0.0, |e| e - t));
-        let l = self.model.layout;
+        let l = &self.model.layout;
         self.u[l.set_speed()] = speed;
         self.u[l.set_rate()] = speed_rate;
         self.u[l.load()] = load;
@@ -342,7 +342,7 @@ impl NetworkPlant {
     /// Sets each harmonic pair from the exact share of the set rotation Φ of its mesh's
     /// driver.
     fn resync_harmonics(&mut self) {
-        let l = self.model.layout;
+        let l = &self.model.layout;
         let phase = self.u[l.phase()];
         for (index, mesh, harmonic) in l.harmonics(|i| self.model.meshes[i].teeth) {
             let angle = harmonic * self.model.meshes[mesh].share * phase;
@@ -361,7 +361,7 @@ impl NetworkPlant {
         };
         let command = self.model.controller_nm(&self.u);
         if self.mode.motor == MotorMode::Linear && command.abs() > limit {
-            let l = self.model.layout;
+            let l = &self.model.layout;
             let held = limit.copysign(command);
             self.u[l.integral()] += (held - command) / m.ki_nm_per_rad;
             self.mode.motor = if command > 0.0 {
@@ -374,7 +374,7 @@ impl NetworkPlant {
 
     /// Refuses a state that is not finite or turns impossibly fast.
     fn check_bounds(&self) -> Result<(), RigError> {
-        let l = self.model.layout;
+        let l = &self.model.layout;
         let speeds = &self.u[l.speed(0)..l.speed(0) + l.bodies];
         if self.u.iter().all(|x| x.is_finite())
             && speeds.iter().all(|w| w.abs() < SPEED_LIMIT_RAD_S)
@@ -390,7 +390,7 @@ impl NetworkPlant {
 
     /// Appends the current sample to `block`.
     fn write_sample(&self, block: &mut NetworkBlock) {
-        let l = self.model.layout;
+        let l = &self.model.layout;
         let u = &self.u;
         let sense = |body: usize| self.model.speed_ratio[body].signum();
         block.time_s.push(self.time_s());
@@ -454,7 +454,7 @@ impl NetworkPlant {
 
     /// Adds `delta_rad_s` to body `body`'s speed (a kick, as a hammer blow).
     pub fn kick(&mut self, body: usize, delta_rad_s: f64) {
-        let l = self.model.layout;
+        let l = &self.model.layout;
         self.u[l.speed(body)] += delta_rad_s;
         self.edge.clear();
     }
@@ -462,7 +462,7 @@ impl NetworkPlant {
     /// The mechanical energy (J): kinetic, shafts' k·twist²/2 + T0·twist, meshes'
     /// k·overlap²/2 on their flank.
     pub fn energy_j(&self) -> f64 {
-        let l = self.model.layout;
+        let l = &self.model.layout;
         let u = &self.u;
         let kinetic: f64 = (0..l.bodies)
             .map(|i| 0.5 * self.model.inertia_kgm2[i] * u[l.speed(i)].powi(2))

@@ -109,7 +109,7 @@ fn padded_columns(m: &DMatrix<f64>, padded: usize) -> Vec<f64> {
 /// speeds and the filtered speed at ρ, forcing states scaled to ρ, the two states of
 /// each harmonic pair alike.
 fn exp_step(model: &NetworkModel, a: &DMatrix<f64>, step_s: f64, rho: f64) -> DMatrix<f64> {
-    let l = model.layout;
+    let l = &model.layout;
     let rho = rho.max(1.0);
     let mechanical: Vec<f64> = (0..l.mechanical())
         .map(|i| {
