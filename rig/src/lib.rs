@@ -1,6 +1,7 @@
 //! The physical plant of testrig: F. Basmaji's 1983 geared rig (five inertias on a line,
-//! a 1:1 spur pair with backlash, speed-controlled DC motor, eddy-current brake), advanced
-//! exactly between contact switches. See `ARCHITECTURE.md` at the project root.
+//! a 1:1 spur pair with backlash, speed-controlled DC motor, eddy-current brake), and any
+//! rig a rig file describes (`network/`), each advanced exactly between contact switches.
+//! See `ARCHITECTURE.md` at the project root.
 //!
 //! Modules. One concept per file; `lib.rs` only declares and re-exports.
 //!
