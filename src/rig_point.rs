@@ -118,6 +118,14 @@ pub fn run_rig_point(
         .map_err(|e| anyhow::anyhow!("{} {}: {e}", names.load, spec.load_nm))?;
     check_times(spec.settle_s, spec.duration_s, spec.rate_hz, names)?;
     let rig = spec.rig;
+    if rig.brake.is_none() && spec.load_nm != 0.0 {
+        anyhow::bail!(
+            "{} {}: rig `{}` has no [brake] to load; give 0",
+            names.load,
+            spec.load_nm,
+            rig.name
+        );
+    }
     let schedule = Schedule::constant(spec.rpm, spec.load_nm);
     let mut plant = NetworkPlant::new(rig, schedule, spec.rate_hz, NetworkStart::Steady)
         .with_context(|| format!("rig `{}` at {} {}", rig.name, names.rpm, spec.rpm))?;

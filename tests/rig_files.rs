@@ -417,6 +417,20 @@ fn simulate_runs_a_rig_file_naming_its_columns_after_the_rig_and_sets_fields_by_
         (motor - expected).abs() < 1e-3,
         "{motor} N m against {expected}"
     );
+    let loop_rig = testrig(&[
+        "simulate",
+        "--rig",
+        &rig_file("fzg-back-to-back"),
+        "--rpm",
+        "1450",
+        "--load",
+        "5",
+    ]);
+    let err = String::from_utf8_lossy(&loop_rig.stderr);
+    assert!(
+        !loop_rig.status.success() && err.contains("--load 5") && err.contains("no [brake]"),
+        "{err}"
+    );
     for (set, says) in [
         ("mesh.stage9.backlash_mm=0.4", "mesh.stage9.backlash_mm"),
         ("mesh.stage1.backlash_mm=-1", "backlash_mm"),

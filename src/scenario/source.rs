@@ -22,7 +22,7 @@ impl ScenarioSource {
     /// Reads `path`.
     pub fn read(path: &Path) -> anyhow::Result<Self> {
         let text = std::fs::read_to_string(path)
-            .map_err(|e| anyhow!("{}: cannot read the scenario: {e}", path.display()))?;
+            .map_err(|e| anyhow!("{}: cannot read the file: {e}", path.display()))?;
         Ok(Self {
             path: path.to_path_buf(),
             text,
