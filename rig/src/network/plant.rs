@@ -47,7 +47,9 @@ pub struct NetworkPlant {
     output_step_s: f64,
     pub(super) substeps: u32,
     pub(super) step_s: f64,
-    pub(super) cache: SystemCache,
+    /// The modes met so far (boxed, so that a step can hold it apart from the plant by
+    /// moving a pointer; `None` only within a step).
+    pub(super) cache: Option<Box<SystemCache>>,
     pub(super) u: Vec<f64>,
     pub(super) mode: NetMode,
     sample: u64,
@@ -114,7 +116,7 @@ impl NetworkPlant {
             output_step_s,
             substeps,
             step_s,
-            cache: SystemCache::new(step_s, rho),
+            cache: Some(Box::new(SystemCache::new(step_s, rho))),
             u: vec![0.0; len],
             mode: NetMode::apart(),
             sample: 0,
@@ -331,8 +333,9 @@ impl NetworkPlant {
             held.speed_rad_s()
         };
         self.harmonic_speed_rad_s = harmonic_speed;
-        self.cache
-            .set_frequencies(harmonic_speed, held.oscillating_load_rad_s());
+        if let Some(cache) = self.cache.as_mut() {
+            cache.set_frequencies(harmonic_speed, held.oscillating_load_rad_s());
+        }
         self.resync_harmonics();
         self.segment_end = end;
         self.edge.clear();

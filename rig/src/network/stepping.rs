@@ -22,9 +22,13 @@ use super::system::{ModeSystem, SystemCache};
 impl NetworkPlant {
     /// Advances one internal step, switching wherever a function crosses.
     pub(super) fn step(&mut self) -> Result<(), RigError> {
-        let mut cache = std::mem::take(&mut self.cache);
+        let Some(mut cache) = self.cache.take() else {
+            return Err(RigError::Schedule(
+                "a step began inside another (the plant's cache was out)".into(),
+            ));
+        };
         let result = self.step_with(&mut cache);
-        self.cache = cache;
+        self.cache = Some(cache);
         result
     }
 

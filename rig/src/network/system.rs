@@ -23,7 +23,7 @@ pub struct ModeSystem {
 }
 
 /// The modes met so far.
-#[derive(Debug, Default)]
+#[derive(Debug)]
 pub struct SystemCache {
     /// Where each mode's system sits in `built`.
     systems: HashMap<NetMode, usize>,
