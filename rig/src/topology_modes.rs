@@ -16,20 +16,12 @@ impl RigTopology {
         let mut k = DMatrix::zeros(n, n);
         for s in &self.shafts {
             let [a, b] = s.between;
-            let spring = s.stiffness_nm_per_rad;
-            k[(a, a)] += spring;
-            k[(b, b)] += spring;
-            k[(a, b)] -= spring;
-            k[(b, a)] -= spring;
+            add_coupling(&mut k, &[(a, 1.0), (b, -1.0)], s.stiffness_nm_per_rad);
         }
         for m in &self.meshes {
             let [a, b] = m.gears;
             let [ra, rb] = m.base_radii_m();
-            let spring = m.stiffness_n_per_m;
-            k[(a, a)] += spring * ra * ra;
-            k[(b, b)] += spring * rb * rb;
-            k[(a, b)] += spring * ra * rb;
-            k[(b, a)] += spring * ra * rb;
+            add_coupling(&mut k, &[(a, ra), (b, rb)], m.stiffness_n_per_m);
         }
         k
     }
@@ -46,5 +38,16 @@ impl RigTopology {
             .iter()
             .map(|m| m.frequency_hz)
             .collect()
+    }
+}
+
+/// Adds a spring `spring` on the deflection Σ c_i θ_i of `terms` (body, c_i) to the
+/// stiffness matrix `k`: spring·c_i·c_j at (i, j). A shaft is [(a, 1), (b, −1)], a mesh
+/// [(driver, r_b1), (driven, r_b2)].
+pub(crate) fn add_coupling(k: &mut DMatrix<f64>, terms: &[(usize, f64)], spring: f64) {
+    for &(x, cx) in terms {
+        for &(y, cy) in terms {
+            k[(x, y)] += spring * cx * cy;
+        }
     }
 }

@@ -13,6 +13,7 @@
 use nalgebra::{DMatrix, DVector};
 
 use crate::error::RigError;
+use crate::topology_modes::add_coupling;
 
 use super::mode::{Contact, MeshState};
 use super::model::NetworkModel;
@@ -107,11 +108,7 @@ fn solve(
     }
     for s in &model.shafts {
         let [a, b] = s.between;
-        let spring = s.stiffness_nm_per_rad;
-        k[(a, a)] += spring;
-        k[(b, b)] += spring;
-        k[(a, b)] -= spring;
-        k[(b, a)] -= spring;
+        add_coupling(&mut k, &[(a, 1.0), (b, -1.0)], s.stiffness_nm_per_rad);
         f[a] -= s.preload_nm;
         f[b] += s.preload_nm;
     }
@@ -124,10 +121,9 @@ fn solve(
             Contact::Back => m.start_offset_m(-1.0),
             Contact::Apart => continue,
         };
-        for (x, rx) in [(a, r[0]), (b, r[1])] {
-            for (y, ry) in [(a, r[0]), (b, r[1])] {
-                k[(x, y)] += spring * rx * ry;
-            }
+        let terms = [(a, r[0]), (b, r[1])];
+        add_coupling(&mut k, &terms, spring);
+        for (x, rx) in terms {
             f[x] -= spring * rx * offset;
         }
     }
