@@ -21,6 +21,8 @@ pub struct NetLayout {
     pub revolution: [Option<usize>; MAX_MESHES],
     /// Per mesh: where cos zθ sits (sin zθ follows), if it has a mesh-frequency error.
     pub tooth: [Option<usize>; MAX_MESHES],
+    /// Per mesh: its driver's teeth z (the harmonic of the mesh-frequency pair).
+    driver_teeth: [u32; MAX_MESHES],
     len: usize,
 }
 
@@ -31,7 +33,9 @@ impl NetLayout {
         let mut len = 2 * bodies + 2 + 8;
         let mut revolution = [None; MAX_MESHES];
         let mut tooth = [None; MAX_MESHES];
+        let mut driver_teeth = [0; MAX_MESHES];
         for (i, m) in rig.meshes.iter().enumerate() {
+            driver_teeth[i] = m.teeth[0];
             if m.excited() {
                 revolution[i] = Some(len);
                 len += 2;
@@ -45,19 +49,25 @@ impl NetLayout {
             bodies,
             revolution,
             tooth,
+            driver_teeth,
             len,
         }
     }
 
+    /// Whether any mesh turns harmonic pairs (their matrix then depends on the set speed).
+    pub fn has_harmonics(&self) -> bool {
+        self.revolution.iter().any(Option::is_some)
+    }
+
     /// The harmonic pairs: (index of the cos state, mesh, harmonic of the driver's turn).
-    pub fn harmonics(&self, teeth: impl Fn(usize) -> f64) -> Vec<(usize, usize, f64)> {
+    pub fn harmonics(&self) -> Vec<(usize, usize, f64)> {
         let mut pairs = Vec::new();
         for i in 0..MAX_MESHES {
             if let Some(index) = self.revolution[i] {
                 pairs.push((index, i, 1.0));
             }
             if let Some(index) = self.tooth[i] {
-                pairs.push((index, i, teeth(i)));
+                pairs.push((index, i, f64::from(self.driver_teeth[i])));
             }
         }
         pairs

@@ -231,7 +231,7 @@ impl NetworkModel {
     /// The fastest harmonic pair (rad/s) at a set speed of `speed_rad_s`.
     pub fn fastest_harmonic_rad_s(&self, speed_rad_s: f64) -> f64 {
         self.layout
-            .harmonics(|i| self.meshes[i].teeth)
+            .harmonics()
             .iter()
             .map(|&(_, mesh, harmonic)| (harmonic * self.meshes[mesh].share * speed_rad_s).abs())
             .fold(0.0, f64::max)
@@ -341,7 +341,7 @@ impl NetworkModel {
         for i in 0..self.meshes.len() {
             self.add_mesh(&mut a, i, mode.meshes[i], speed_rad_s);
         }
-        for (index, mesh, harmonic) in l.harmonics(|i| self.meshes[i].teeth) {
+        for (index, mesh, harmonic) in l.harmonics() {
             let w = harmonic * self.meshes[mesh].share * speed_rad_s;
             a[(index, index + 1)] = -w;
             a[(index + 1, index)] = w;

@@ -289,7 +289,7 @@ impl NetworkPlant {
         let t = self.time_s();
         let knot = self.schedule.next_knot_after(t);
         let s = &self.schedule;
-        let harmonics_turn = !self.model.layout.harmonics(|_| 1.0).is_empty();
+        let harmonics_turn = self.model.layout.has_harmonics();
         let oscillating_ramps = s.oscillating_load_nm.ramping_at(t)
             || s.oscillating_load_hz.ramping_at(t)
             || (harmonics_turn && s.speed_rpm.ramping_at(t));
@@ -327,10 +327,10 @@ impl NetworkPlant {
         };
         self.u[l.oscillating()] = held.oscillating_load_nm * phase.cos();
         self.u[l.oscillating() + 1] = held.oscillating_load_nm * phase.sin();
-        let harmonic_speed = if self.model.layout.harmonics(|_| 1.0).is_empty() {
-            0.0
-        } else {
+        let harmonic_speed = if self.model.layout.has_harmonics() {
             held.speed_rad_s()
+        } else {
+            0.0
         };
         self.harmonic_speed_rad_s = harmonic_speed;
         if let Some(cache) = self.cache.as_mut() {
@@ -347,7 +347,7 @@ impl NetworkPlant {
     fn resync_harmonics(&mut self) {
         let l = &self.model.layout;
         let phase = self.u[l.phase()];
-        for (index, mesh, harmonic) in l.harmonics(|i| self.model.meshes[i].teeth) {
+        for (index, mesh, harmonic) in l.harmonics() {
             let angle = harmonic * self.model.meshes[mesh].share * phase;
             self.u[index] = angle.cos();
             self.u[index + 1] = angle.sin();

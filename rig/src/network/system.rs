@@ -123,7 +123,7 @@ fn exp_step(model: &NetworkModel, a: &DMatrix<f64>, step_s: f64, rho: f64) -> DM
     let mut scale = forcing_scales(a, &mechanical, rho);
     // Each harmonic pair turns one state into the other: one scale for both, else the
     // balanced rotation's entries would be as large as their ratio.
-    let pairs = l.harmonics(|i| model.meshes[i].teeth);
+    let pairs = l.harmonics();
     let starts = std::iter::once(l.oscillating()).chain(pairs.iter().map(|p| p.0));
     for pair in starts {
         let shared = scale[pair].max(scale[pair + 1]);
