@@ -4,9 +4,9 @@
 
 use numpy::IntoPyArray;
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyString};
+use pyo3::types::PyDict;
 use testrig::rig_point::{RigPointRun, RigPointSpec, column_names, columns, run_rig_point};
-use testrig::scenario::{ScenarioSource, rig_topology};
+use testrig::scenario::{ScenarioSource, source_rig_with_overrides};
 
 use crate::errors::TestrigError;
 use crate::interrupt::Interrupt;
@@ -30,37 +30,16 @@ fn read_rig(rig: &Bound<'_, PyAny>, overrides: &[String]) -> PyResult<rig::RigTo
             text,
         }
     } else {
-        let path: std::path::PathBuf = if rig.is_instance_of::<PyString>() {
-            rig.extract::<String>()?.into()
-        } else {
-            rig.py()
-                .import("os")?
-                .call_method1("fspath", (rig,))?
-                .extract::<String>()?
-                .into()
-        };
+        let path: std::path::PathBuf = rig
+            .py()
+            .import("os")?
+            .call_method1("fspath", (rig,))?
+            .extract::<String>()?
+            .into();
         ScenarioSource::read(&path).map_err(|e| TestrigError::new_err(format!("{e:#}")))?
     };
-    let mut topology =
-        rig_topology(&source).map_err(|e| TestrigError::new_err(format!("{e:#}")))?;
-    for item in overrides {
-        let Some((key, value)) = item.split_once('=') else {
-            return Err(TestrigError::new_err(format!(
-                "set {item}: expected PATH=VALUE"
-            )));
-        };
-        let number: f64 = value
-            .trim()
-            .parse()
-            .map_err(|_| TestrigError::new_err(format!("set {item}: not a number")))?;
-        topology
-            .set_field(key.trim(), number)
-            .map_err(|e| TestrigError::new_err(format!("set {item}: {e}")))?;
-    }
-    topology
-        .check()
-        .map_err(|e| TestrigError::new_err(format!("{}: {e}", source.path.display())))?;
-    Ok(topology)
+    source_rig_with_overrides(&source, overrides)
+        .map_err(|e| TestrigError::new_err(format!("{e:#}")))
 }
 
 /// Runs a rig file's rig; the dict `simulate` returns.

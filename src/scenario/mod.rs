@@ -34,7 +34,9 @@ pub use build::{CommandLine, build};
 pub use coverage::measurement_warnings;
 pub use overrides::apply_override;
 pub use preset_file::preset_with_overrides;
-pub use read_rig_file::{read_rig_file, rig_topology, rig_with_overrides};
+pub use read_rig_file::{
+    read_rig_file, rig_topology, rig_with_overrides, source_rig_with_overrides,
+};
 pub use run_plan::{AnalyserPlan, ChainPlan, Measure, Plan, RecordPlan, ScopePlan};
 pub use scenario_toml::Overflow;
 pub use source::ScenarioSource;

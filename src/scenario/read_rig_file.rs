@@ -31,7 +31,15 @@ pub fn read_rig_file(path: &Path) -> anyhow::Result<RigTopology> {
 /// mesh.stage1.backlash_mm=0.3`), and checks the result; a fault an override brings is
 /// named by it.
 pub fn rig_with_overrides(path: &Path, overrides: &[String]) -> anyhow::Result<RigTopology> {
-    let mut rig = read_rig_file(path)?;
+    source_rig_with_overrides(&ScenarioSource::read(path)?, overrides)
+}
+
+/// [`rig_with_overrides`] for a rig file's text (Python's dict of tables, as TOML).
+pub fn source_rig_with_overrides(
+    src: &ScenarioSource,
+    overrides: &[String],
+) -> anyhow::Result<RigTopology> {
+    let mut rig = rig_topology(src)?;
     for item in overrides {
         let Some((key, value)) = item.split_once('=') else {
             anyhow::bail!(
@@ -49,7 +57,7 @@ pub fn rig_with_overrides(path: &Path, overrides: &[String]) -> anyhow::Result<R
         rig.check().with_context(|| {
             format!(
                 "{} with --set {}",
-                path.display(),
+                src.path.display(),
                 overrides.join(" --set ")
             )
         })?;
