@@ -43,7 +43,7 @@ impl NetworkPlant {
                 column_major_product(&system.step, &self.u, &mut self.next, forcing);
             } else {
                 self.expand(system, span_s);
-                self.next = self.evaluate(1.0);
+                evaluate(&self.taylor, 1.0, &mut self.next);
             }
             self.next_edge.clear();
             let Some((s, event)) = self.first_switch(system, span_s, left == 1.0) else {
@@ -51,7 +51,7 @@ impl NetworkPlant {
                 std::mem::swap(&mut self.edge, &mut self.next_edge);
                 return Ok(());
             };
-            self.u = self.evaluate(s);
+            evaluate(&self.taylor, s, &mut self.u);
             self.edge.clear();
             let at_s = self.step_start_s + (1.0 - left + s * left) * self.step_s;
             self.switch(event, at_s);
@@ -131,17 +131,6 @@ impl NetworkPlant {
         }
     }
 
-    /// u(s τ) from the Taylor vectors.
-    fn evaluate(&self, s: f64) -> Vec<f64> {
-        let mut u = self.taylor[TAYLOR_ORDER].clone();
-        for v in self.taylor[..TAYLOR_ORDER].iter().rev() {
-            for (x, c) in u.iter_mut().zip(v) {
-                *x = *x * s + c;
-            }
-        }
-        u
-    }
-
     /// The polynomial in s of a form over the expanded span, target taken off.
     fn coefficients(&self, form: &EventForm, target: f64) -> [f64; TAYLOR_ORDER + 1] {
         let mut c: [f64; TAYLOR_ORDER + 1] = std::array::from_fn(|k| form.value(&self.taylor[k]));
@@ -186,6 +175,16 @@ impl NetworkPlant {
                 self.revolutions_s.push(at_s);
                 self.next_revolution_rad += 2.0 * PI;
             }
+        }
+    }
+}
+
+/// u(s τ) from the Taylor vectors `taylor`, written into `u` (Horner).
+fn evaluate(taylor: &[Vec<f64>], s: f64, u: &mut [f64]) {
+    u.copy_from_slice(&taylor[TAYLOR_ORDER]);
+    for v in taylor[..TAYLOR_ORDER].iter().rev() {
+        for (x, c) in u.iter_mut().zip(v) {
+            *x = *x * s + c;
         }
     }
 }
