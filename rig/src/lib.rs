@@ -140,7 +140,10 @@ pub use geometry::GearGeometry;
 pub use judge::{JudgeInput, Judgement, Motion, judge};
 pub use modal::{Chain, NaturalMode, RigChains};
 pub use mode::{MeshMode, Mode, MotorMode, PairZone};
-pub use network::{Contact, NetworkBlock, NetworkImpact, NetworkPlant, NetworkStart};
+pub use network::{
+    Column, Contact, NetworkBlock, NetworkImpact, NetworkPlant, NetworkStart, column_names,
+    column_specs, columns,
+};
 pub use options::{ContactLaw, MeshPairs};
 pub use param_table::{
     DERIVED_SPECS, PARAM_SPECS, ParamSpec, ParamValue, param_spec, set_param, set_param_value,
@@ -150,7 +153,7 @@ pub use plant::{CHECK_EVERY, Plant, PlantConfig};
 pub use presets::{DEFAULT_PRESET, PRESET_NAMES, preset};
 pub use records::{Flank, Impact, RevolutionSample};
 pub use regime::{Regime, RegimeCriteria, classify, classify_scaled};
-pub use schedule::{LiveCeiling, Schedule, SetPoints, Track};
+pub use schedule::{LiveCeiling, MAX_SPEED_RPM, Schedule, SetPoints, Track};
 pub use signals::{COLUMN_NAMES, COLUMN_UNITS, INTERMEDIATE_SHAFT, SignalBlock};
 pub use steady::{SteadySummary, SteadyWindow, run_steady};
 pub use topology::{

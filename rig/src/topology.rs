@@ -5,7 +5,7 @@
 //! application; checked by [`RigTopology::check`] (`topology_check.rs`); its natural
 //! frequencies by [`RigTopology::natural_frequencies_hz`] (`topology_modes.rs`).
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use crate::options::MeshPairs;
 
@@ -15,7 +15,7 @@ pub const MAX_BODIES: usize = 32;
 pub const MAX_MESHES: usize = 4;
 
 /// One rotating inertia.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Body {
     /// Its name, unique in the rig.
     pub name: String,
@@ -26,7 +26,7 @@ pub struct Body {
 }
 
 /// A torsional spring-damper between two bodies.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Shaft {
     /// Its name, unique in the rig.
     pub name: String,
@@ -40,7 +40,7 @@ pub struct Shaft {
 
 /// An external spur pair with backlash: a spring-damper along the line of action between
 /// the two gears' base circles, apart within the backlash.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Mesh {
     /// Its name, unique in the rig.
     pub name: String,
@@ -120,7 +120,7 @@ impl Mesh {
 }
 
 /// The torque locked into one shaft of a back-to-back loop at assembly.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct LockedTorque {
     /// The shaft twisted (index).
     pub shaft: usize,
@@ -130,7 +130,7 @@ pub struct LockedTorque {
 
 /// Strain gauges on a shaft: its surface strain at ±45° from its torque, 16 T/(π d³ G)
 /// shear, half of it as strain.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Gauge {
     /// The gauged shaft (index).
     pub shaft: usize,
@@ -149,7 +149,7 @@ impl Gauge {
 
 /// The drive and the load: the motor's speed loop and torque limit, the brake's
 /// slope (settings beyond the topology; the 1983 rig's values where a file is silent).
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct DriveSettings {
     /// Most torque the motor gives either way (N m); `None`: no limit.
     pub torque_limit_nm: Option<f64>,
@@ -178,7 +178,7 @@ impl Default for DriveSettings {
 }
 
 /// A whole rig.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct RigTopology {
     /// The rig's name.
     pub name: String,

@@ -10,10 +10,11 @@
 //! u' = A u per mode. `events.rs` the switching functions of a mode. `system.rs` per mode
 //! e^{A h} and the events, built on first use and cached. `equilibrium.rs` the steady
 //! state at a set speed and load (and at rest, a loop's locked torque carried).
-//! `block.rs` the samples and impacts a run gives. `plant.rs` the plant, `stepping.rs`
+//! `block.rs` the samples and impacts a run gives, `columns.rs` them as named columns. `plant.rs` the plant, `stepping.rs`
 //! its exact steps and switches.
 
 mod block;
+mod columns;
 mod equilibrium;
 mod events;
 mod layout;
@@ -24,5 +25,6 @@ mod stepping;
 mod system;
 
 pub use block::{NetworkBlock, NetworkImpact};
+pub use columns::{Column, column_names, column_specs, columns};
 pub use mode::Contact;
 pub use plant::{NetworkPlant, NetworkStart};

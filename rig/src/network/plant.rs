@@ -5,7 +5,7 @@ use std::f64::consts::PI;
 
 use crate::error::RigError;
 use crate::mode::MotorMode;
-use crate::schedule::Schedule;
+use crate::schedule::{Schedule, SetPoints};
 use crate::taylor::{MAX_RHO_H, TAYLOR_ORDER};
 use crate::topology::RigTopology;
 
@@ -39,11 +39,14 @@ const MAX_SUBSTEPS: u32 = 4096;
 /// Fastest any body may turn before the run is called blown up (rad/s).
 const SPEED_LIMIT_RAD_S: f64 = 1.0e5;
 
-/// A rig of any topology, advanced exactly.
-#[derive(Debug)]
+/// A rig of any topology, advanced exactly. A clone is the whole state, its modes met
+/// so far included (an FMU's saved state).
+#[derive(Clone, Debug)]
 pub struct NetworkPlant {
     pub(super) model: NetworkModel,
     schedule: Schedule,
+    /// Highest set speed the internal step is sized for (rev/min).
+    speed_ceiling_rpm: f64,
     output_step_s: f64,
     pub(super) substeps: u32,
     pub(super) step_s: f64,
@@ -82,6 +85,20 @@ impl NetworkPlant {
         output_rate_hz: f64,
         start: NetworkStart,
     ) -> Result<Self, RigError> {
+        let top_rpm = schedule.speed_rpm.range().1.abs();
+        Self::live(rig, schedule, output_rate_hz, start, top_rpm)
+    }
+
+    /// [`Self::new`] for set points changed while it runs ([`Self::hold_set_points`]):
+    /// its internal step is sized for set speeds up to `speed_ceiling_rpm`, and a higher
+    /// one is refused.
+    pub fn live(
+        rig: &RigTopology,
+        schedule: Schedule,
+        output_rate_hz: f64,
+        start: NetworkStart,
+        speed_ceiling_rpm: f64,
+    ) -> Result<Self, RigError> {
         rig.check()?;
         schedule.validate()?;
         if !(output_rate_hz.is_finite() && output_rate_hz >= 100.0) {
@@ -93,7 +110,8 @@ impl NetworkPlant {
         }
         let model = NetworkModel::of(rig)?;
         let output_step_s = 1.0 / output_rate_hz;
-        let top_rad_s = schedule.speed_rpm.range().1.abs() * PI / 30.0;
+        let top_rpm = speed_ceiling_rpm.max(schedule.speed_rpm.range().1.abs());
+        let top_rad_s = top_rpm * PI / 30.0;
         let rho = fastest_rate(&model).max(model.fastest_harmonic_rad_s(top_rad_s));
         let steps = (rho * output_step_s / MAX_RHO_H).ceil().max(1.0);
         if steps.is_nan() || steps > f64::from(MAX_SUBSTEPS) {
@@ -113,6 +131,7 @@ impl NetworkPlant {
         let mut plant = Self {
             model,
             schedule,
+            speed_ceiling_rpm: top_rpm,
             output_step_s,
             substeps,
             step_s,
@@ -264,13 +283,48 @@ impl NetworkPlant {
         result.and_then(|()| self.check_bounds())
     }
 
+    /// From the current sample on, holds `set` (a knob turned while the rig runs, an
+    /// FMU's inputs held over a communication step); the set points it had scheduled
+    /// after now are dropped.
+    pub fn hold_set_points(&mut self, set: SetPoints) -> Result<(), RigError> {
+        let values = [
+            set.speed_rpm,
+            set.load_nm,
+            set.oscillating_load_nm,
+            set.oscillating_load_hz,
+        ];
+        if values.iter().any(|v| !v.is_finite()) {
+            return Err(RigError::Schedule(format!(
+                "set points must be finite, got {values:?}"
+            )));
+        }
+        if set.speed_rpm > self.speed_ceiling_rpm {
+            return Err(RigError::Schedule(format!(
+                "set speed {} rev/min is above the {} rev/min this plant's step was sized for",
+                set.speed_rpm, self.speed_ceiling_rpm
+            )));
+        }
+        let mut schedule = self.schedule.clone();
+        schedule.hold_from(self.time_s(), set);
+        schedule.validate()?;
+        self.schedule = schedule;
+        self.segment_end = Some(self.sample);
+        Ok(())
+    }
+
+    /// Appends the state at the current time to `block`: the sample [`Self::run`] writes
+    /// first (its set points taken up if they change now).
+    pub fn sample_now(&mut self, block: &mut NetworkBlock) {
+        if self.segment_end.is_some_and(|end| self.sample >= end) {
+            self.begin_segment();
+        }
+        self.write_sample(block);
+    }
+
     /// [`Self::run`] without the final check of bounds.
     fn run_samples(&mut self, samples: usize, block: &mut NetworkBlock) -> Result<(), RigError> {
         for _ in 0..samples {
-            if self.segment_end.is_some_and(|end| self.sample >= end) {
-                self.begin_segment();
-            }
-            self.write_sample(block);
+            self.sample_now(block);
             for k in 0..self.substeps {
                 self.step_start_s = self.time_s() + f64::from(k) * self.step_s;
                 self.step()?;
@@ -419,6 +473,11 @@ impl NetworkPlant {
     /// Time of the current sample (s).
     pub fn time_s(&self) -> f64 {
         self.sample as f64 * self.output_step_s
+    }
+
+    /// The current sample's index: samples run so far.
+    pub fn sample(&self) -> u64 {
+        self.sample
     }
 
     /// Internal steps per output sample (ρh ≤ 0.5 in the stiffest mode).

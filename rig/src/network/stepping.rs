@@ -9,7 +9,7 @@ use std::f64::consts::PI;
 
 use crate::error::RigError;
 use crate::mode::MotorMode;
-use crate::plant::SWITCH_LIMIT;
+use crate::plant::{RELEASE_MARGIN_NM, SWITCH_LIMIT};
 use crate::roots::{first_crossing, may_cross};
 use crate::taylor::TAYLOR_ORDER;
 
@@ -116,6 +116,30 @@ impl NetworkPlant {
         }
     }
 
+    /// Leaves the motor's limit: the command, held there up to rounding, starts just
+    /// inside it (by [`RELEASE_MARGIN_NM`], as the 1983 plant's drive) so that rounding
+    /// cannot put it straight back (a tangency of the command with the limit would else
+    /// switch at zero progress until the step gave up).
+    fn release_motor(&mut self) {
+        let Some(m) = &self.model.motor else {
+            return;
+        };
+        let Some(limit) = m.limit_nm else {
+            return;
+        };
+        let inside = match self.mode.motor {
+            MotorMode::LimitHigh => limit - RELEASE_MARGIN_NM,
+            MotorMode::LimitLow => -limit + RELEASE_MARGIN_NM,
+            MotorMode::Linear => return,
+        };
+        let (ki, integral) = (m.ki_nm_per_rad, self.model.layout.integral());
+        if ki > 0.0 {
+            let command = self.model.controller_nm(&self.u);
+            self.u[integral] += (inside - command) / ki;
+        }
+        self.mode.motor = MotorMode::Linear;
+    }
+
     /// The Taylor vectors v_k = (A τ)^k u / k! of a span τ = `span_s`.
     fn expand(&mut self, system: &ModeSystem, span_s: f64) {
         let forcing = self.model.layout.mechanical();
@@ -169,7 +193,7 @@ impl NetworkPlant {
             }
             NetEvent::LimitHigh => self.mode.motor = MotorMode::LimitHigh,
             NetEvent::LimitLow => self.mode.motor = MotorMode::LimitLow,
-            NetEvent::LimitRelease => self.mode.motor = MotorMode::Linear,
+            NetEvent::LimitRelease => self.release_motor(),
             NetEvent::ToothPass(i) => self.shift_tooth(i),
             NetEvent::Revolution => {
                 self.revolutions_s.push(at_s);

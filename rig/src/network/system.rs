@@ -12,7 +12,7 @@ use super::mode::NetMode;
 use super::model::NetworkModel;
 
 /// One mode's linear system.
-#[derive(Debug)]
+#[derive(Clone, Debug)]
 pub struct ModeSystem {
     /// A of u' = A u, column-major, each column padded to the layout's padded length.
     pub a_columns: Vec<f64>,
@@ -23,7 +23,7 @@ pub struct ModeSystem {
 }
 
 /// The modes met so far.
-#[derive(Debug)]
+#[derive(Clone, Debug)]
 pub struct SystemCache {
     /// Where each mode's system sits in `built`.
     systems: HashMap<NetMode, usize>,

@@ -18,6 +18,8 @@ mod state;
 mod stepping;
 mod switches;
 
+pub(crate) use switches::RELEASE_MARGIN_NM;
+
 pub use output::CHECK_EVERY;
 pub(crate) use state::SWITCH_LIMIT;
 pub use state::{Plant, PlantConfig};
