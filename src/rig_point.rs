@@ -35,6 +35,8 @@ pub struct RigPointSpec<'a> {
     pub duration_s: f64,
     /// Output rate of the true signals (Hz).
     pub rate_hz: f64,
+    /// In steady motion at the point, or at rest.
+    pub start: NetworkStart,
 }
 
 /// One shaft over the window.
@@ -127,7 +129,7 @@ pub fn run_rig_point(
         );
     }
     let schedule = Schedule::constant(spec.rpm, spec.load_nm);
-    let mut plant = NetworkPlant::new(rig, schedule, spec.rate_hz, NetworkStart::Steady)
+    let mut plant = NetworkPlant::new(rig, schedule, spec.rate_hz, spec.start)
         .with_context(|| format!("rig `{}` at {} {}", rig.name, names.rpm, spec.rpm))?;
     let started = Instant::now();
     let mut block = NetworkBlock::new(rig.bodies.len(), rig.shafts.len(), rig.meshes.len());
@@ -281,50 +283,4 @@ impl Window {
             motion,
         }
     }
-}
-
-/// The signals' column names, after the rig: `time_s`, `speed_<body>_rpm`,
-/// `angle_<body>_rad`, `torque_<shaft>_nm`, `contact_<mesh>` (+1 drive flank, −1 back
-/// flank, 0 apart), `force_<mesh>_n`, `motor_torque_nm`, and `strain_<shaft>_ue` where the
-/// rig has gauges.
-pub fn column_names(rig: &RigTopology) -> Vec<String> {
-    let mut names = vec!["time_s".to_string()];
-    names.extend(rig.bodies.iter().map(|b| format!("speed_{}_rpm", b.name)));
-    names.extend(rig.bodies.iter().map(|b| format!("angle_{}_rad", b.name)));
-    names.extend(rig.shafts.iter().map(|s| format!("torque_{}_nm", s.name)));
-    names.extend(rig.meshes.iter().map(|m| format!("contact_{}", m.name)));
-    names.extend(rig.meshes.iter().map(|m| format!("force_{}_n", m.name)));
-    names.push("motor_torque_nm".into());
-    if let Some(g) = &rig.gauge {
-        names.push(format!("strain_{}_ue", rig.shafts[g.shaft].name));
-    }
-    names
-}
-
-/// The columns of `block` in the order of [`column_names`] (speeds in rev/min, strain
-/// in µε).
-pub fn columns(rig: &RigTopology, block: &NetworkBlock) -> Vec<Vec<f64>> {
-    let rpm = |c: &Vec<f64>| c.iter().map(|w| w * 30.0 / PI).collect::<Vec<f64>>();
-    let mut out = vec![block.time_s.clone()];
-    out.extend(block.speed_rad_s.iter().map(rpm));
-    out.extend(block.angle_rad.iter().cloned());
-    out.extend(block.shaft_torque_nm.iter().cloned());
-    out.extend(
-        block
-            .contact
-            .iter()
-            .map(|c| c.iter().map(|&x| f64::from(x)).collect()),
-    );
-    out.extend(block.mesh_force_n.iter().cloned());
-    out.push(block.motor_torque_nm.clone());
-    if let Some(g) = &rig.gauge {
-        let k = g.microstrain_per_nm();
-        out.push(
-            block.shaft_torque_nm[g.shaft]
-                .iter()
-                .map(|t| t * k)
-                .collect(),
-        );
-    }
-    out
 }

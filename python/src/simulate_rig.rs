@@ -5,7 +5,8 @@
 use numpy::IntoPyArray;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use testrig::rig_point::{RigPointRun, RigPointSpec, column_names, columns, run_rig_point};
+use rig::{column_names, columns};
+use testrig::rig_point::{RigPointRun, RigPointSpec, run_rig_point};
 use testrig::scenario::{ScenarioSource, source_rig_with_overrides};
 
 use crate::errors::TestrigError;
@@ -65,6 +66,7 @@ pub fn simulate_rig<'py>(
             settle_s,
             duration_s,
             rate_hz,
+            start: rig::NetworkStart::Steady,
         };
         let run = run_rig_point(&spec, ARGUMENT_NAMES, |block| {
             if signals {

@@ -8,7 +8,7 @@ use testrig::runtime::Pace;
 use testrig::sweep::Shard;
 use testrig::vocabulary::SamplingChoice;
 
-use super::values::{self, FilterArg, TrainingHalf};
+use super::values::{self, Approach, FilterArg, TrainingHalf};
 
 /// A virtual test rig: F. Basmaji's 1983 geared rig with backlash.
 #[derive(Debug, Parser)]
@@ -40,6 +40,23 @@ pub enum CliCommand {
     Calibrate(CalibrateArgs),
     /// Operate the rig live from a front panel in the browser (and from scripts, docs/api.md).
     Panel(PanelArgs),
+    /// Export a rig file's plant as an FMI 3.0 co-simulation FMU (docs/fmu.md).
+    Fmu(FmuArgs),
+}
+
+/// `testrig fmu`.
+#[derive(Debug, Args)]
+pub struct FmuArgs {
+    /// The rig file (docs/rig-files.md) whose plant the FMU holds.
+    #[arg(long = "rig", value_name = "FILE")]
+    pub rig_file: PathBuf,
+    /// Set a number of the rig by its path (`mesh.gears.backlash_mm=0.5`): the
+    /// parameter's start value in the FMU.
+    #[arg(long = "set", value_name = "PATH=VALUE")]
+    pub overrides: Vec<String>,
+    /// The FMU to write (`.fmu`).
+    #[arg(long, value_name = "FILE")]
+    pub out: PathBuf,
 }
 
 /// `testrig panel`.
@@ -211,6 +228,10 @@ pub struct SimulateArgs {
     /// (`mesh.stage1.backlash_mm=0.3`); signals named after its bodies, shafts and meshes.
     #[arg(long = "rig", value_name = "FILE", conflicts_with = "preset")]
     pub rig_file: Option<PathBuf>,
+    /// With --rig: start in steady motion at the point, or from rest (then --settle 0
+    /// records the run-up from t = 0, as an FMU of the rig starts).
+    #[arg(long, value_enum, default_value = "steady", requires = "rig_file")]
+    pub approach: Approach,
     /// Measuring window after settling (s).
     #[arg(long, default_value_t = 10.0)]
     pub duration: f64,

@@ -81,3 +81,23 @@ pub enum TrainingHalf {
     /// The points at odd positions.
     Odd,
 }
+
+/// `simulate --approach`: how a rig file's rig reaches its point.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum Approach {
+    /// Started in steady motion at the set speed and load (shafts and meshes twisted to
+    /// carry them).
+    Steady,
+    /// Started at rest, the motor's speed loop then taking it to the set speed.
+    Rest,
+}
+
+impl Approach {
+    /// The plant's start.
+    pub fn start(self) -> rig::NetworkStart {
+        match self {
+            Self::Steady => rig::NetworkStart::Steady,
+            Self::Rest => rig::NetworkStart::Rest,
+        }
+    }
+}

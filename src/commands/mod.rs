@@ -2,6 +2,7 @@
 
 pub(crate) mod analyse;
 pub(crate) mod calibrate;
+pub(crate) mod fmu;
 pub(crate) mod merge;
 pub(crate) mod modes;
 pub(crate) mod panel;
@@ -28,6 +29,7 @@ pub fn run(command: CliCommand) -> anyhow::Result<ExitCode> {
         CliCommand::Merge(args) => merge::run(&args),
         CliCommand::Calibrate(args) => calibrate::run(&args),
         CliCommand::Panel(args) => return panel::run(&args),
+        CliCommand::Fmu(args) => fmu::run(&args),
     };
     done.map(|()| ExitCode::SUCCESS)
 }

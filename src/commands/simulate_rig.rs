@@ -3,15 +3,13 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::Context;
-use rig::NetworkImpact;
+use rig::{NetworkImpact, column_names, columns};
 use serde::Serialize;
 
 use super::simulate::SignalWriter;
 use crate::cli::SimulateArgs;
 use testrig::recording::PartialFile;
-use testrig::rig_point::{
-    RigPointRun, RigPointSpec, RigPointSummary, column_names, columns, run_rig_point,
-};
+use testrig::rig_point::{RigPointRun, RigPointSpec, RigPointSummary, run_rig_point};
 use testrig::runtime::write_command_manifest;
 use testrig::scenario::rig_with_overrides;
 use testrig::steady_point::FLAG_NAMES;
@@ -40,6 +38,7 @@ pub fn run(args: &SimulateArgs, path: &Path) -> anyhow::Result<()> {
         settle_s: args.settle,
         duration_s: args.duration,
         rate_hz: args.rate,
+        start: args.approach.start(),
     };
     let mut writer = match &args.out {
         Some(dir) => Some(SignalWriter::create(dir, args.replace, column_names(&rig))?),
@@ -84,7 +83,7 @@ pub fn run(args: &SimulateArgs, path: &Path) -> anyhow::Result<()> {
         let details = serde_json::json!({
             "rig_file": path.display().to_string(), "set": args.rig.overrides, "rpm": args.rpm,
             "load_nm": args.load, "settle_s": args.settle, "duration_s": args.duration,
-            "rate_hz": args.rate,
+            "rate_hz": args.rate, "approach": format!("{:?}", args.approach).to_lowercase(),
         });
         write_command_manifest(dir, "simulate", &files, details)?;
         eprintln!(

@@ -1,0 +1,380 @@
+//! The FMU (`testrig fmu`, `docs/fmu.md`) through its C functions, as an importer calls
+//! them: outputs equal `simulate --rig --approach rest` of the same point and do not
+//! depend on the communication step; a set point changed between steps is the
+//! schedule's step at that instant; a saved state repeats the same future; a steady
+//! point carries the brake's load through the shafts; bad calls and values are refused
+//! with a message, never a crash. FMPy and a second importer judge it in
+//! `tests/fmu/importers.py` (`fmu_importers_agree`).
+
+mod common;
+mod fmu_support;
+
+use std::io::Read;
+
+use common::{folder, testrig};
+use fmu_support::Fmu;
+use rig::{NetworkBlock, NetworkPlant, NetworkStart, RigTopology, Schedule, Track};
+use testrig::rig_point::{RigPointSpec, run_rig_point};
+use testrig::steady_point::FLAG_NAMES;
+use testrig_fmu::ffi::{self, ERROR, OK};
+use testrig_fmu::{Causality, SAMPLE_RATE_HZ, variables};
+
+fn rig_path() -> String {
+    format!(
+        "{}/scenarios/rigs/basmaji-1983.toml",
+        env!("CARGO_MANIFEST_DIR")
+    )
+}
+
+fn rig() -> RigTopology {
+    testrig::scenario::read_rig_file(std::path::Path::new(&rig_path())).expect("rig file")
+}
+
+/// Runs `fmu` from `from_s` to `to_s` in steps of `h_s`, the outputs after each step.
+fn run(fmu: &mut Fmu, from_s: f64, to_s: f64, h_s: f64) -> Vec<(f64, Vec<f64>)> {
+    let steps = ((to_s - from_s) / h_s).round() as usize;
+    (0..steps)
+        .map(|k| {
+            let t = from_s + k as f64 * h_s;
+            assert_eq!(fmu.step(t, h_s), OK, "{:?}", fmu.messages());
+            (t + h_s, fmu.outputs())
+        })
+        .collect()
+}
+
+fn started(rig: &RigTopology, dir: &std::path::Path, rpm: f64, load_nm: f64) -> Fmu {
+    let mut fmu = Fmu::new(rig, dir, None);
+    assert!(!fmu.instance.is_null(), "{:?}", fmu.messages());
+    assert_eq!(fmu.set("set_speed_rpm", rpm), OK);
+    assert_eq!(fmu.set("load_nm", load_nm), OK);
+    fmu.initialize();
+    fmu
+}
+
+#[test]
+fn outputs_equal_simulate_from_rest_whatever_the_communication_step() {
+    let rig = rig();
+    let dir = folder("fmu-steps");
+    let mut fine = started(&rig, dir.path(), 1300.0, 2.712);
+    let mut coarse = started(&rig, dir.path(), 1300.0, 2.712);
+    let fine_out = run(&mut fine, 0.0, 2.0, 0.001);
+    let coarse_out = run(&mut coarse, 0.0, 2.0, 0.01);
+    // The reference: `testrig simulate --rig … --approach rest --settle 0 --rate 10000`.
+    let spec = RigPointSpec {
+        rig: &rig,
+        rpm: 1300.0,
+        load_nm: 2.712,
+        settle_s: 0.0,
+        duration_s: 2.5,
+        rate_hz: SAMPLE_RATE_HZ,
+        start: NetworkStart::Rest,
+    };
+    let mut reference: Vec<Vec<f64>> = Vec::new();
+    run_rig_point(&spec, FLAG_NAMES, |block| {
+        let columns = rig::columns(&rig, block);
+        for i in 0..block.len() {
+            reference.push(columns.iter().skip(1).map(|c| c[i]).collect());
+        }
+        Ok(())
+    })
+    .expect("simulate");
+    let names: Vec<String> = variables(&rig)
+        .into_iter()
+        .filter(|v| v.causality == Causality::Output)
+        .map(|v| v.name)
+        .collect();
+    let mut compared = 0;
+    for (t, coarse_values) in &coarse_out {
+        let k = (t / 0.001).round() as usize - 1;
+        assert_eq!(
+            fine_out[k].1, *coarse_values,
+            "1 ms and 10 ms steps at {t} s"
+        );
+        let row = &reference[(t * SAMPLE_RATE_HZ).round() as usize];
+        for (j, want) in row.iter().enumerate() {
+            let got = coarse_values[j];
+            let scale = want.abs().max(1e-6);
+            assert!(
+                (got - want).abs() <= 1e-9 * scale,
+                "{} at {t} s: FMU {got}, simulate {want}",
+                names[j]
+            );
+        }
+        compared += 1;
+    }
+    assert_eq!(compared, 200);
+    let impacts = coarse_out.last().expect("steps").1[names.len() - 1];
+    assert!(
+        impacts > 10.0,
+        "the run-up rattles: {impacts} impacts in 2 s"
+    );
+}
+
+#[test]
+fn a_set_point_changed_between_steps_is_the_schedules_step() {
+    let rig = rig();
+    let dir = folder("fmu-input-step");
+    let mut fmu = started(&rig, dir.path(), 600.0, 1.0);
+    run(&mut fmu, 0.0, 2.0, 0.01);
+    assert_eq!(fmu.set("set_speed_rpm", 900.0), OK);
+    assert_eq!(fmu.set("load_nm", 2.0), OK);
+    let last = run(&mut fmu, 2.0, 3.0, 0.01).pop().expect("steps").1;
+    let schedule = Schedule {
+        speed_rpm: Track::hold(600.0).step_to(2.0, 900.0),
+        load_nm: Track::hold(1.0).step_to(2.0, 2.0),
+        oscillating_load_nm: Track::hold(0.0),
+        oscillating_load_hz: Track::hold(0.0),
+    };
+    let mut plant =
+        NetworkPlant::new(&rig, schedule, SAMPLE_RATE_HZ, NetworkStart::Rest).expect("plant");
+    let mut block = NetworkBlock::new(5, 3, 1);
+    plant.run(30_000, &mut block).expect("run");
+    block.clear();
+    plant.sample_now(&mut block);
+    let want: Vec<f64> = rig::columns(&rig, &block)
+        .iter()
+        .skip(1)
+        .map(|c| c[0])
+        .collect();
+    for (got, want) in last.iter().zip(&want) {
+        assert!(
+            (got - want).abs() <= 1e-9 * want.abs().max(1e-6),
+            "{got} vs {want}"
+        );
+    }
+}
+
+#[test]
+fn a_saved_state_repeats_the_same_future() {
+    let rig = rig();
+    let dir = folder("fmu-state");
+    let mut fmu = started(&rig, dir.path(), 1300.0, 2.712);
+    run(&mut fmu, 0.0, 1.0, 0.01);
+    let mut state = std::ptr::null_mut();
+    // SAFETY: a live instance and a writable place.
+    assert_eq!(
+        unsafe { ffi::fmi3GetFMUState(fmu.instance, &mut state) },
+        OK
+    );
+    let first = run(&mut fmu, 1.0, 1.5, 0.01);
+    // SAFETY: the state just saved.
+    assert_eq!(unsafe { ffi::fmi3SetFMUState(fmu.instance, state) }, OK);
+    assert!((fmu.float("time") - 1.0).abs() < 1e-12);
+    let again = run(&mut fmu, 1.0, 1.5, 0.01);
+    assert_eq!(first, again);
+    // SAFETY: the state, freed once.
+    unsafe {
+        assert_eq!(ffi::fmi3FreeFMUState(fmu.instance, &mut state), OK);
+    }
+    assert!(state.is_null());
+}
+
+#[test]
+fn at_a_steady_point_the_shafts_carry_the_brakes_load_at_the_set_speed() {
+    let rig = rig();
+    let dir = folder("fmu-steady");
+    let mut fmu = started(&rig, dir.path(), 400.0, 4.0);
+    let out = run(&mut fmu, 0.0, 60.0, 0.1);
+    let names: Vec<String> = variables(&rig)
+        .into_iter()
+        .filter(|v| v.causality == Causality::Output)
+        .map(|v| v.name)
+        .collect();
+    let at = |name: &str| names.iter().position(|n| n == name).expect("name");
+    let tail = &out[out.len() - 100..];
+    let mean = |j: usize| tail.iter().map(|(_, v)| v[j]).sum::<f64>() / tail.len() as f64;
+    let speed = mean(at("speed_brake_rpm"));
+    assert!((speed - 400.0).abs() < 0.5, "brake at {speed} rev/min");
+    let torque = mean(at("torque_final_nm"));
+    assert!(
+        (torque - 4.0).abs() < 0.02,
+        "final shaft carries {torque} N m"
+    );
+}
+
+#[test]
+fn bad_calls_and_values_are_refused_with_a_message() {
+    let rig = rig();
+    let dir = folder("fmu-refusals");
+    let mut fmu = Fmu::new(&rig, dir.path(), None);
+    let status = fmu.step(0.0, 0.01);
+    assert!(fmu.refused(
+        status,
+        "fmi3DoStep is not allowed in the Instantiated state"
+    ));
+    let speed = fmu.vr("speed_motor_rpm");
+    let status = fmu.get(speed, testrig_fmu::Kind::Float64).unwrap_err();
+    assert!(fmu.refused(status, "is known from fmi3EnterInitializationMode on"));
+    let status = fmu.set("set_speed_rpm", f64::NAN);
+    assert!(fmu.refused(status, "set_speed_rpm = NaN: out of range"));
+    let status = fmu.set("set_speed_rpm", 5000.0);
+    assert!(fmu.refused(status, "above speed_ceiling_rpm = 3000"));
+    let status = fmu.set("load_nm", 9.0);
+    assert!(fmu.refused(status, "load_nm = 9: out of range (min 0, max 7.12"));
+    let status = fmu.set("load_nm", -1.0);
+    assert!(fmu.refused(status, "load_nm = -1: out of range"));
+    let status = fmu.set("speed_motor_rpm", 1.0);
+    assert!(fmu.refused(status, "is an output: it cannot be set"));
+    assert_eq!(
+        fmu.float("set_speed_rpm"),
+        0.0,
+        "a refused value is not taken"
+    );
+    fmu.set("set_speed_rpm", 1000.0);
+    fmu.initialize();
+    let status = fmu.set("body.motor.inertia_kgm2", 1.0);
+    assert!(fmu.refused(status, "is not allowed in the Step state"));
+    let status = fmu.step(0.0, 0.000_15);
+    assert!(fmu.refused(status, "whole number of the FMU's 0.0001 s samples"));
+    let status = fmu.step(0.5, 0.01);
+    assert!(fmu.refused(status, "the FMU is at 0 s"));
+    assert_eq!(fmu.step(0.0, 0.01), OK, "still usable after refusals");
+    let bad = 100_000;
+    // SAFETY: one value reference, one place.
+    let status = unsafe { ffi::fmi3GetFloat64(fmu.instance, &bad, 1, &mut 0.0, 1) };
+    assert!(fmu.refused(status, "no variable has value reference 100000"));
+    // SAFETY: null arrays with counts, a null instance: refused, not dereferenced.
+    unsafe {
+        let status =
+            ffi::fmi3GetFloat64(fmu.instance, std::ptr::null(), 2, std::ptr::null_mut(), 2);
+        assert!(fmu.refused(status, "a null array of 2 values"));
+        assert_eq!(
+            ffi::fmi3DoStep(
+                std::ptr::null_mut(),
+                0.0,
+                0.01,
+                true,
+                std::ptr::null_mut(),
+                std::ptr::null_mut(),
+                std::ptr::null_mut(),
+                std::ptr::null_mut()
+            ),
+            ERROR
+        );
+    }
+    // SAFETY: a live instance; event mode is not offered.
+    let status = unsafe { testrig_fmu::ffi_unoffered::fmi3EnterEventMode(fmu.instance) };
+    assert!(fmu.refused(status, "not offered"));
+}
+
+#[test]
+fn a_parameter_the_rig_cannot_take_is_refused_when_initialization_ends() {
+    let rig = rig();
+    let dir = folder("fmu-parameter");
+    let mut fmu = Fmu::new(&rig, dir.path(), None);
+    assert_eq!(
+        fmu.set("mesh.gears.backlash_mm", 1e3),
+        OK,
+        "checked with the whole rig later"
+    );
+    // SAFETY: a live instance.
+    let status = unsafe {
+        assert_eq!(
+            ffi::fmi3EnterInitializationMode(fmu.instance, false, 0.0, 0.0, false, 0.0),
+            OK
+        );
+        ffi::fmi3ExitInitializationMode(fmu.instance)
+    };
+    assert!(fmu.refused(status, "backlash"), "{:?}", fmu.messages());
+    assert_eq!(fmu.set("mesh.gears.backlash_mm", 0.5), OK);
+    // SAFETY: a live instance.
+    assert_eq!(unsafe { ffi::fmi3ExitInitializationMode(fmu.instance) }, OK);
+    assert_eq!(fmu.step(0.0, 0.01), OK);
+}
+
+#[test]
+fn a_wrong_token_or_missing_resources_give_no_instance_and_say_why() {
+    let rig = rig();
+    let dir = folder("fmu-token");
+    let fmu = Fmu::new(&rig, dir.path(), Some("{not-this-one}"));
+    assert!(fmu.instance.is_null());
+    assert!(
+        fmu.messages()
+            .iter()
+            .any(|m| m.contains("the model description and resources/rig.json differ")),
+        "{:?}",
+        fmu.messages()
+    );
+}
+
+#[test]
+fn the_export_holds_description_binary_rig_and_docs_and_is_reproducible() {
+    let dir = folder("fmu-export");
+    let paths = [dir.path().join("a.fmu"), dir.path().join("b.fmu")];
+    for path in &paths {
+        let out = testrig(&[
+            "fmu",
+            "--rig",
+            &rig_path(),
+            "--set",
+            "mesh.gears.backlash_variation=0.2",
+            "--out",
+            path.to_str().expect("path"),
+        ]);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
+    let bytes = std::fs::read(&paths[0]).expect("fmu");
+    assert_eq!(
+        bytes,
+        std::fs::read(&paths[1]).expect("fmu"),
+        "same rig, same bytes"
+    );
+    let mut zip = zip::ZipArchive::new(std::io::Cursor::new(bytes)).expect("zip");
+    let mut names: Vec<String> = zip.file_names().map(str::to_owned).collect();
+    names.sort();
+    assert_eq!(
+        names,
+        [
+            "binaries/x86_64-linux/testrig_basmaji_1983.so",
+            "documentation/index.html",
+            "modelDescription.xml",
+            "resources/rig.json",
+        ]
+    );
+    let mut xml = String::new();
+    zip.by_name("modelDescription.xml")
+        .expect("xml")
+        .read_to_string(&mut xml)
+        .expect("text");
+    assert!(xml.contains(r#"name="mesh.gears.backlash_variation""#));
+    assert!(
+        xml.contains(r#"start="0.2""#),
+        "--set gives the start value"
+    );
+    let rig = rig();
+    for name in rig::column_names(&rig).iter().skip(1) {
+        assert!(xml.contains(&format!(r#"name="{name}""#)), "{name}");
+    }
+    let bad = testrig(&[
+        "fmu",
+        "--rig",
+        &rig_path(),
+        "--set",
+        "mesh.gears.teeth=3",
+        "--out",
+        "x.fmu",
+    ]);
+    assert!(!bad.status.success());
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("mesh.gears.teeth"));
+}
+
+#[test]
+#[ignore = "needs Python modules (python3 -m pip install -r tests/requirements.txt); run by .ci/run"]
+fn fmu_importers_agree() {
+    common::require_python(&["fmpy", "fmu_manipulation_toolbox", "numpy", "matplotlib"]);
+    let dir = folder("fmu-importers");
+    let status = std::process::Command::new("python3")
+        .arg(format!(
+            "{}/tests/fmu/importers.py",
+            env!("CARGO_MANIFEST_DIR")
+        ))
+        .arg(env!("CARGO_BIN_EXE_testrig"))
+        .arg(dir.path())
+        .status()
+        .expect("python3");
+    assert!(status.success());
+}
