@@ -145,11 +145,11 @@ fn a_set_point_changed_between_steps_is_the_schedules_step() {
 }
 
 #[test]
-fn a_saved_state_repeats_the_same_future() {
+fn a_saved_state_repeats_the_same_future_and_a_reset_the_same_run() {
     let rig = rig();
     let dir = folder("fmu-state");
     let mut fmu = started(&rig, dir.path(), 1300.0, 2.712);
-    run(&mut fmu, 0.0, 1.0, 0.01);
+    let to_one = run(&mut fmu, 0.0, 1.0, 0.01);
     let mut state = std::ptr::null_mut();
     // SAFETY: a live instance and a writable place.
     assert_eq!(
@@ -167,6 +167,20 @@ fn a_saved_state_repeats_the_same_future() {
         assert_eq!(ffi::fmi3FreeFMUState(fmu.instance, &mut state), OK);
     }
     assert!(state.is_null());
+    // SAFETY: a live instance.
+    unsafe {
+        assert_eq!(ffi::fmi3Terminate(fmu.instance), OK);
+        assert_eq!(ffi::fmi3Reset(fmu.instance), OK);
+    }
+    assert_eq!(fmu.float("set_speed_rpm"), 0.0, "reset: start values again");
+    assert_eq!(fmu.set("set_speed_rpm", 1300.0), OK);
+    assert_eq!(fmu.set("load_nm", 2.712), OK);
+    fmu.initialize();
+    assert_eq!(
+        run(&mut fmu, 0.0, 1.0, 0.01),
+        to_one,
+        "after fmi3Reset, the same run"
+    );
 }
 
 #[test]

@@ -450,3 +450,67 @@ fn simulate_runs_a_rig_file_naming_its_columns_after_the_rig_and_sets_fields_by_
         assert!(!out.status.success() && err.contains(says), "{set}: {err}");
     }
 }
+
+#[test]
+fn simulate_approach_rest_starts_the_rig_at_rest_with_the_motor_at_its_limit() {
+    let dir = folder("rig-approach-rest");
+    let out = dir.path().join("run");
+    let args = [
+        "simulate",
+        "--rig",
+        &rig_file("basmaji-1983"),
+        "--rpm",
+        "1300",
+        "--load",
+        "2.712",
+        "--approach",
+        "rest",
+        "--settle",
+        "0",
+        "--duration",
+        "1",
+        "--rate",
+        "1000",
+        "--out",
+        out.to_str().expect("path"),
+    ];
+    let run = testrig(&args);
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    let rows = common::csv_rows(&out.join("signals.csv"));
+    let first = &rows[0];
+    for body in [
+        "motor",
+        "input_flywheel",
+        "driven_gear",
+        "output_flywheel",
+        "brake",
+    ] {
+        assert_eq!(common::number(first, &format!("speed_{body}_rpm")), 0.0);
+    }
+    // 1300 rev/min asked of a rig at rest: the speed loop saturates at the 7.12 N m limit,
+    // and the rig gains speed at (limit − load) / ΣJ at most.
+    let limit = 7.120909241507619;
+    assert!((common::number(first, "motor_torque_nm") - limit).abs() < 1e-9);
+    let last = &rows[rows.len() - 1];
+    let speed_rad_s = common::number(last, "speed_motor_rpm") * std::f64::consts::PI / 30.0;
+    let inertia = 0.0163 + 0.355 + 0.00865 + 0.45 + 0.015;
+    let most = (limit - 2.712) / inertia * 0.999;
+    assert!(
+        speed_rad_s > 0.8 * most && speed_rad_s < 1.05 * most,
+        "{speed_rad_s} rad/s after 1 s; (limit − load)/ΣJ gives {most}"
+    );
+    let preset = testrig(&[
+        "simulate",
+        "--rpm",
+        "1300",
+        "--load",
+        "2.712",
+        "--approach",
+        "rest",
+    ]);
+    assert!(!preset.status.success(), "--approach needs --rig");
+}
