@@ -42,6 +42,15 @@ fn run(fmu: &mut Fmu, from_s: f64, to_s: f64, h_s: f64) -> Vec<(f64, Vec<f64>)> 
         .collect()
 }
 
+/// The outputs' names in value-reference order.
+fn output_names(rig: &RigTopology) -> Vec<String> {
+    variables(rig)
+        .into_iter()
+        .filter(|v| v.causality == Causality::Output)
+        .map(|v| v.name)
+        .collect()
+}
+
 fn started(rig: &RigTopology, dir: &std::path::Path, rpm: f64, load_nm: f64) -> Fmu {
     let mut fmu = Fmu::new(rig, dir, None);
     assert!(!fmu.instance.is_null(), "{:?}", fmu.messages());
@@ -78,11 +87,7 @@ fn outputs_equal_simulate_from_rest_whatever_the_communication_step() {
         Ok(())
     })
     .expect("simulate");
-    let names: Vec<String> = variables(&rig)
-        .into_iter()
-        .filter(|v| v.causality == Causality::Output)
-        .map(|v| v.name)
-        .collect();
+    let names = output_names(&rig);
     let mut compared = 0;
     for (t, coarse_values) in &coarse_out {
         let k = (t / 0.001).round() as usize - 1;
@@ -189,11 +194,7 @@ fn at_a_steady_point_the_shafts_carry_the_brakes_load_at_the_set_speed() {
     let dir = folder("fmu-steady");
     let mut fmu = started(&rig, dir.path(), 400.0, 4.0);
     let out = run(&mut fmu, 0.0, 60.0, 0.1);
-    let names: Vec<String> = variables(&rig)
-        .into_iter()
-        .filter(|v| v.causality == Causality::Output)
-        .map(|v| v.name)
-        .collect();
+    let names = output_names(&rig);
     let at = |name: &str| names.iter().position(|n| n == name).expect("name");
     let tail = &out[out.len() - 100..];
     let mean = |j: usize| tail.iter().map(|(_, v)| v[j]).sum::<f64>() / tail.len() as f64;
