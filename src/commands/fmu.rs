@@ -1,8 +1,8 @@
 //! `testrig fmu --rig FILE --out FILE.fmu`: a rig file's plant as an FMI 3.0
 //! co-simulation FMU. The zip holds `modelDescription.xml` (written by `testrig_fmu`),
-//! the shared library built beside this binary (`libtestrig_fmu.so`, or the file
-//! `TESTRIG_FMU_LIBRARY` names) as `binaries/x86_64-linux/<modelIdentifier>.so`, the
-//! checked rig as `resources/rig.json` and `documentation/index.html`. Entries carry a
+//! the shared library built beside this binary (`libtestrig_fmu.so`, there or in its
+//! `deps/` folder, or the file `TESTRIG_FMU_LIBRARY` names) as
+//! `binaries/x86_64-linux/<modelIdentifier>.so`, the checked rig as `resources/rig.json` and `documentation/index.html`. Entries carry a
 //! fixed date, so the same rig and library give the same bytes.
 
 use std::io::Write;
@@ -65,9 +65,13 @@ fn library() -> anyhow::Result<PathBuf> {
         return Ok(PathBuf::from(path));
     }
     let exe = std::env::current_exe().context("cannot find this program's own path")?;
-    let beside = exe.parent().map(|d| d.join(LIBRARY)).unwrap_or_default();
-    if beside.is_file() {
-        return Ok(beside);
+    let dir = exe.parent().map(PathBuf::from).unwrap_or_default();
+    let beside = dir.join(LIBRARY);
+    // `cargo build` puts the library beside the binary; `cargo test` leaves it in deps/.
+    for candidate in [&beside, &dir.join("deps").join(LIBRARY)] {
+        if candidate.is_file() {
+            return Ok(candidate.clone());
+        }
     }
     anyhow::bail!(
         "the FMU's library {} is not there: build it with `cargo build --release` (the workspace builds it beside testrig), or name it with TESTRIG_FMU_LIBRARY",
