@@ -13,7 +13,7 @@ use std::thread::JoinHandle;
 use numpy::IntoPyArray;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use testrig::panel::PanelState;
+use testrig::panel::{PanelState, ScpiServer, scpi_rack};
 use testrig::runtime::{Pace, RunOptions, SharedStatus, run_into_folder_with_status};
 use testrig::scenario::{CommandLine, build};
 use testrig::vocabulary::{ControlHandle, DEFAULT_LIVE_CEILING, MAX_SIMULATED_S, RigCommand};
@@ -30,19 +30,22 @@ pub struct Rig {
     rate_hz: f64,
     out: PathBuf,
     thread: Option<JoinHandle<anyhow::Result<()>>>,
+    scpi: Option<ScpiServer>,
 }
 
 #[pymethods]
 impl Rig {
     /// Starts `scenario` (a path or a dict) live into `out`, paced at `pace` (1: real
-    /// time), `set` changing scenario keys. It runs until `close()`.
+    /// time), `set` changing scenario keys, with a SCPI server on `scpi` ("host:port")
+    /// if given. It runs until `close()`.
     #[new]
-    #[pyo3(signature = (scenario, out, pace=1.0, set=None))]
+    #[pyo3(signature = (scenario, out, pace=1.0, set=None, scpi=None))]
     fn start(
         scenario: &Bound<'_, PyAny>,
         out: PathBuf,
         pace: f64,
         set: Option<HashMap<String, Bound<'_, PyAny>>>,
+        scpi: Option<String>,
     ) -> PyResult<Self> {
         if !(pace.is_finite() && (1e-3..=1e6).contains(&pace)) {
             return Err(TestrigError::new_err(format!(
@@ -51,10 +54,20 @@ impl Rig {
         }
         let (path, source) = scenario_source(scenario, set)?;
         let mut plan = build(&source, CommandLine::default()).map_err(to_py)?;
-        plan.live_ceiling.get_or_insert(DEFAULT_LIVE_CEILING);
+        let ceiling = *plan.live_ceiling.get_or_insert(DEFAULT_LIVE_CEILING);
         plan.duration_s = MAX_SIMULATED_S;
         let (control, requests) = ControlHandle::new();
         let status = SharedStatus::default();
+        let scpi = match scpi {
+            Some(address) => {
+                let address: std::net::SocketAddr = address.parse().map_err(|e| {
+                    TestrigError::new_err(format!("scpi {address}: not host:port ({e})"))
+                })?;
+                let rack = scpi_rack(&plan, ceiling, control.clone(), status.clone());
+                Some(ScpiServer::start(address, rack).map_err(to_py)?)
+            }
+            None => None,
+        };
         let stop = Arc::new(AtomicBool::new(false));
         let options = RunOptions {
             pace: Pace::Factor(pace),
@@ -77,7 +90,16 @@ impl Rig {
             rate_hz,
             out,
             thread: Some(thread),
+            scpi,
         })
+    }
+
+    /// The SCPI server's VISA address (`TCPIP::127.0.0.1::5025::SOCKET`), if it has one.
+    #[getter]
+    fn scpi_address(&self) -> Option<String> {
+        self.scpi
+            .as_ref()
+            .map(|s| format!("TCPIP::{}::{}::SOCKET", s.address.ip(), s.address.port()))
     }
 
     /// Sends one command (a dict as the panel's API takes it, e.g. `{"cmd": "set_speed",
@@ -134,6 +156,9 @@ impl Rig {
     /// Stops the rig, closes its files and writes its manifest; returns the output
     /// folder. Calling it again does nothing.
     fn close(&mut self, py: Python<'_>) -> PyResult<PathBuf> {
+        if let Some(scpi) = self.scpi.take() {
+            py.detach(move || scpi.shut_down());
+        }
         self.stop.store(true, Ordering::Relaxed);
         if let Some(thread) = self.thread.take() {
             let joined = py.detach(move || thread.join());
@@ -163,6 +188,9 @@ impl Rig {
 impl Drop for Rig {
     /// A rig dropped without `close()` stops all the same.
     fn drop(&mut self) {
+        if let Some(scpi) = self.scpi.take() {
+            scpi.shut_down();
+        }
         self.stop.store(true, Ordering::Relaxed);
         if let Some(thread) = self.thread.take() {
             let _ = thread.join();

@@ -168,12 +168,15 @@ class Rig:
     block; leaving it (normally, by an exception or Ctrl-C) stops the rig and writes its
     manifest. Each method sends the panel's command of the same name (docs/api.md) and
     waits for the rig to carry it out, returning ``{"ok", "at_s"}`` (the virtual time it
-    took effect, s); a refusal raises ``TestrigError`` with the reason."""
+    took effect, s); a refusal raises ``TestrigError`` with the reason. With `scpi`
+    ("127.0.0.1:5025"; port 0 picks a free one) lab scripts drive the same rig over SCPI
+    (docs/scpi.md) at ``scpi_address``, a VISA resource name."""
 
-    def __init__(self, scenario, out=None, pace=1.0, set=None, keep=False):
+    def __init__(self, scenario, out=None, pace=1.0, set=None, keep=False, scpi=None):
         self._folder = _Folder(out, "testrig-rig-", keep)
         self.out = self._folder.path
-        self._rig = _Rig(scenario, str(self.out), pace, set)
+        self._rig = _Rig(scenario, str(self.out), pace, set, scpi)
+        self.scpi_address = self._rig.scpi_address
 
     def __enter__(self):
         return self

@@ -186,6 +186,29 @@ def test_a_live_rig_follows_its_commands_and_stops_cleanly(tmp_path):
     assert manifest["ending"] in ("completed", "interrupted")
 
 
+def test_a_rig_with_scpi_answers_a_socket_client_and_shows_its_settings():
+    import socket
+
+    scenario = ROOT / "scenarios" / "panel.toml"
+    with testrig.Rig(scenario, pace=20, scpi="127.0.0.1:0") as rig:
+        parts = rig.scpi_address.split("::")
+        assert parts[0] == "TCPIP" and parts[3] == "SOCKET", rig.scpi_address
+        with socket.create_connection((parts[1], int(parts[2])), timeout=30) as s:
+            stream = s.makefile("rwb")
+
+            def query(line):
+                stream.write(line.encode() + b"\n")
+                stream.flush()
+                return stream.readline().decode().strip()
+
+            assert query("*IDN?").startswith("testrig,panel")
+            stream.write(b"RIG:SPE 900;LOAD 1.5\n")
+            assert query("SYST:ERR?") == '0,"No error"'
+            assert query("RIG:SPE 9999;:SYST:ERR?").startswith("-222,")
+        state = rig.state()
+        assert state["speed_set_rpm"] == 900 and state["load_set_nm"] == 1.5
+
+
 def test_read_right_after_a_command_waits_for_the_next_block():
     scenario = ROOT / "scenarios" / "panel.toml"
     with testrig.Rig(scenario, pace=20) as rig:

@@ -67,6 +67,10 @@ pub struct PanelArgs {
     /// Address to serve the panel on; anything but loopback is reachable by others.
     #[arg(long, default_value = "127.0.0.1:8080")]
     pub listen: std::net::SocketAddr,
+    /// Also serve SCPI for lab scripts on this address (VISA's
+    /// `TCPIP::host::port::SOCKET`, newline-terminated; docs/scpi.md), e.g. 127.0.0.1:5025.
+    #[arg(long, value_name = "ADDR:PORT")]
+    pub scpi: Option<std::net::SocketAddr>,
     /// 1 for real time, or a factor.
     #[arg(long, default_value = "1", value_parser = values::pace)]
     pub pace: Pace,

@@ -9,7 +9,7 @@ use anyhow::{Context, bail};
 use rig::LiveCeiling;
 use std::io::Write;
 
-use testrig::panel::{PanelInfo, PanelServer};
+use testrig::panel::{PanelInfo, PanelServer, ScpiRack, ScpiServer, scpi_rack};
 use testrig::panel::{Session, commands_toml, session_head};
 use testrig::recording::PartialFile;
 use testrig::runtime::Ending;
@@ -98,6 +98,10 @@ pub fn run(args: &PanelArgs) -> anyhow::Result<ExitCode> {
             );
         }
     }
+    let scpi = match args.scpi {
+        Some(address) => Some(start_scpi(address, &plan, ceiling, &control, &status)?),
+        None => None,
+    };
     let signals = StopSignals::install().context("cannot install the signal handlers")?;
     let options = RunOptions {
         pace,
@@ -109,6 +113,9 @@ pub fn run(args: &PanelArgs) -> anyhow::Result<ExitCode> {
     };
     let result = run_with_status(&plan, &options, status);
     server.shut_down();
+    if let Some(scpi) = scpi {
+        scpi.shut_down();
+    }
     let result = result?;
     let session = Session {
         scenario_text: &plan.text,
@@ -179,4 +186,34 @@ fn info(plan: &Plan, ceiling: LiveCeiling, pace: Pace) -> PanelInfo {
         scope: plan.chain.scope.is_some(),
         record: plan.record.is_some(),
     }
+}
+
+/// Starts the SCPI server on the live rig, printing its VISA address (and the token
+/// beyond loopback).
+fn start_scpi(
+    address: std::net::SocketAddr,
+    plan: &Plan,
+    ceiling: LiveCeiling,
+    control: &ControlHandle,
+    status: &SharedStatus,
+) -> anyhow::Result<ScpiServer> {
+    let rack: ScpiRack = scpi_rack(plan, ceiling, control.clone(), status.clone());
+    let server = ScpiServer::start(address, rack)?;
+    let visa = format!(
+        "TCPIP::{}::{}::SOCKET",
+        server.address.ip(),
+        server.address.port()
+    );
+    match &server.token {
+        None => println!("testrig panel: SCPI at {visa} (read termination \\n; docs/scpi.md)"),
+        Some(token) => {
+            println!(
+                "testrig panel: SCPI at {visa}; send SYSTem:PASSword \"{token}\" first (docs/scpi.md)"
+            );
+            eprintln!(
+                "warning: --scpi {address}: SCPI is reachable from other machines, in plain text; only the token unlocks it (docs/security.md)"
+            );
+        }
+    }
+    Ok(server)
 }

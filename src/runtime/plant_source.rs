@@ -151,8 +151,11 @@ pub fn run_plant(mut job: PlantJob, out: Sender<Frame>) -> PlantReport {
 /// (set points, quit) carried out and answered here, the others returned for the frame.
 fn take_commands(job: &mut PlantJob, start_sample: u64, at_s: f64) -> Vec<Pending> {
     let mut onward = Vec::new();
+    // The set points as the commands of this block leave them (the plant takes them up
+    // at its next step, so it cannot be asked between two commands of one block).
+    let mut current = job.plant.set_points();
     for pending in job.inbox.due(start_sample, at_s) {
-        let mut set = job.plant.set_points();
+        let mut set = current;
         match pending.command {
             RigCommand::SetSpeed { rpm } => set.speed_rpm = rpm,
             RigCommand::SetLoad { nm } => set.load_nm = nm,
@@ -172,10 +175,15 @@ fn take_commands(job: &mut PlantJob, start_sample: u64, at_s: f64) -> Vec<Pendin
         }
         let outcome = check_set_points(&set, job.plant.params())
             .and_then(|()| job.plant.set_points_from_now(set).map_err(Refusal::from));
+        if outcome.is_ok() {
+            current = set;
+        }
+        // The state shows the set points before the answer goes: a client that reads
+        // the state after its reply sees what it set.
+        job.status.update(|s| s.set_points = Some(current));
         pending.answer(outcome);
     }
-    job.status
-        .update(|s| s.set_points = Some(job.plant.set_points()));
+    job.status.update(|s| s.set_points = Some(current));
     onward
 }
 
@@ -207,8 +215,11 @@ fn release(
     start_s: f64,
     report: &mut PlantReport,
 ) -> bool {
+    // A block carrying commands is never dropped: they would be neither carried out nor
+    // answered. The plant waits for room instead (counted as lateness, not an overrun).
     match job.overflow {
         Overflow::Lossless => out.send(frame).is_ok(),
+        Overflow::Drop if !frame.commands.is_empty() => out.send(frame).is_ok(),
         Overflow::Drop => match out.try_send(frame) {
             Ok(()) => true,
             Err(TrySendError::Full(_)) => {

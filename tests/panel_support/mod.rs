@@ -58,6 +58,26 @@ impl Panel {
         }
     }
 
+    /// The next line the panel prints (after the first, its URL).
+    pub fn next_line(&mut self) -> String {
+        let mut line = String::new();
+        self.stdout.read_line(&mut line).expect("a line");
+        line
+    }
+
+    /// The SCPI server's socket address, from the line `--scpi` makes it print next.
+    pub fn scpi_address(&mut self) -> SocketAddr {
+        let line = self.next_line();
+        let visa = line
+            .split("TCPIP::")
+            .nth(1)
+            .unwrap_or_else(|| panic!("no SCPI address in {line:?}"));
+        let mut parts = visa.split("::");
+        let host = parts.next().expect("host");
+        let port = parts.next().expect("port");
+        format!("{host}:{port}").parse().expect("address")
+    }
+
     /// `GET path`: (status, body).
     pub fn get(&self, path: &str) -> (u16, String) {
         http(self.address, "GET", path, "")

@@ -14,9 +14,11 @@ use crate::vocabulary::frame::Frame;
 use crate::vocabulary::{LiveSpectrum, RigCommand};
 
 impl AnalyserSink {
-    /// Publishes the display on the panel after every block averaged.
+    /// Publishes the display on the panel after every block averaged, and at once (its
+    /// settings, no averages yet): a client asking before the first block sees them.
     pub fn go_live(&mut self) {
         self.live = true;
+        self.publish();
     }
 
     /// Carries out `command` (at `frame`'s start) if it is the analyser's.
