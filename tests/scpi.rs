@@ -303,6 +303,7 @@ fn fifty_clients_are_served_at_once_and_one_that_never_reads_stalls_nobody() {
         h.join().expect("a client");
     }
     let took = started.elapsed();
+    println!("50 clients × 40 queries beside a silent client: {took:?}");
     assert!(
         took < Duration::from_secs(10),
         "50 clients × 40 queries took {took:?}"
@@ -310,6 +311,27 @@ fn fifty_clients_are_served_at_once_and_one_that_never_reads_stalls_nobody() {
     let state = panel.state();
     assert_eq!(state["overruns"], 0, "{state}");
     drop(writer.join());
+}
+
+#[test]
+fn beyond_loopback_only_the_token_unlocks_the_rig() {
+    let dir = folder("scpi-token");
+    let mut panel = Panel::start(dir.path(), &["--scpi", "0.0.0.0:0", "--pace", "1"]);
+    let (address, token) = panel.scpi();
+    let token = token.expect("a token is printed beyond loopback");
+    let mut c = Client::connect(SocketAddr::from(([127, 0, 0, 1], address.port())));
+    assert!(
+        c.query("*IDN?").starts_with("testrig"),
+        "identification is open"
+    );
+    c.write("RIG:SPE 900");
+    assert_eq!(c.error().0, -203);
+    c.write("SYST:PASS \"not-the-token\"");
+    assert_eq!(c.error().0, -203);
+    c.write(&format!("SYST:PASS \"{token}\""));
+    c.write("RIG:SPE 900");
+    assert_eq!(c.query("RIG:SPE?;:SYST:ERR?"), "9E2;0,\"No error\"");
+    assert_eq!(panel.state()["speed_set_rpm"], 900.0);
 }
 
 #[test]

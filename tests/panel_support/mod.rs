@@ -67,7 +67,18 @@ impl Panel {
 
     /// The SCPI server's socket address, from the line `--scpi` makes it print next.
     pub fn scpi_address(&mut self) -> SocketAddr {
+        self.scpi().0
+    }
+
+    /// The SCPI server's socket address and its token (bound beyond loopback), from the
+    /// line `--scpi` makes it print next.
+    pub fn scpi(&mut self) -> (SocketAddr, Option<String>) {
         let line = self.next_line();
+        let token = line
+            .split("SYSTem:PASSword \"")
+            .nth(1)
+            .and_then(|rest| rest.split('"').next())
+            .map(str::to_string);
         let visa = line
             .split("TCPIP::")
             .nth(1)
@@ -75,7 +86,7 @@ impl Panel {
         let mut parts = visa.split("::");
         let host = parts.next().expect("host");
         let port = parts.next().expect("port");
-        format!("{host}:{port}").parse().expect("address")
+        (format!("{host}:{port}").parse().expect("address"), token)
     }
 
     /// `GET path`: (status, body).
