@@ -46,10 +46,14 @@ pub enum CliCommand {
 
 /// `testrig fmu`.
 #[derive(Debug, Args)]
+#[command(group(clap::ArgGroup::new("plant").required(true).args(["rig_file", "preset"])))]
 pub struct FmuArgs {
     /// The rig file (docs/rig-files.md) whose plant the FMU holds.
     #[arg(long = "rig", value_name = "FILE")]
-    pub rig_file: PathBuf,
+    pub rig_file: Option<PathBuf>,
+    /// A preset whose plant is a rig file's (basmaji-1983), instead of --rig.
+    #[arg(long, value_name = "NAME")]
+    pub preset: Option<String>,
     /// Set a number of the rig by its path (`mesh.gears.backlash_mm=0.5`): the
     /// parameter's start value in the FMU.
     #[arg(long = "set", value_name = "PATH=VALUE")]

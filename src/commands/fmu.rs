@@ -1,4 +1,4 @@
-//! `testrig fmu --rig FILE --out FILE.fmu`: a rig file's plant as an FMI 3.0
+//! `testrig fmu --rig FILE|--preset NAME --out FILE.fmu`: a rig file's plant as an FMI 3.0
 //! co-simulation FMU. The zip holds `modelDescription.xml` (written by `testrig_fmu`),
 //! the shared library built beside this binary (`libtestrig_fmu.so`, there or in its
 //! `deps/` folder, or the file `TESTRIG_FMU_LIBRARY` names) as
@@ -11,7 +11,7 @@ use std::path::PathBuf;
 use anyhow::Context;
 use rig::RigTopology;
 use testrig::recording::PartialFile;
-use testrig::scenario::rig_with_overrides;
+use testrig::scenario::{ScenarioSource, preset_rig_source, source_rig_with_overrides};
 use testrig_fmu::{Causality, RIG_RESOURCE, model_description, model_identifier, variables};
 use zip::write::SimpleFileOptions;
 
@@ -24,7 +24,12 @@ pub fn run(args: &FmuArgs) -> anyhow::Result<()> {
     if !cfg!(all(target_os = "linux", target_arch = "x86_64")) {
         anyhow::bail!("testrig fmu packs an x86_64-linux binary: run it on x86_64 Linux");
     }
-    let rig = rig_with_overrides(&args.rig_file, &args.overrides)?;
+    let source = match (&args.rig_file, &args.preset) {
+        (Some(path), _) => ScenarioSource::read(path)?,
+        (None, Some(name)) => preset_rig_source(name)?,
+        (None, None) => anyhow::bail!("--rig FILE or --preset NAME"),
+    };
+    let rig = source_rig_with_overrides(&source, &args.overrides)?;
     let library_path = library()?;
     let library = std::fs::read(&library_path)
         .with_context(|| format!("cannot read the FMU's library {}", library_path.display()))?;

@@ -10,10 +10,11 @@
 //! standard table plus the file's `[[chain.stage]]`s, each fault at its line),
 //! `read_instrument.rs` (a filter's or meter's settings from its table); `preset_file.rs`
 //! presets from files and `preset_with_overrides` (every command's `--preset` and `--set`);
-//! `run_plan.rs` the result; `build.rs` it all together; `coverage.rs` whether each
+//! `builtin_rigs.rs` presets that are rig files, built in; `run_plan.rs` the result; `build.rs` it all together; `coverage.rs` whether each
 //! measurement fits the run
 
 pub(crate) mod build;
+pub(crate) mod builtin_rigs;
 pub(crate) mod chain_toml;
 pub(crate) mod read_chain;
 
@@ -31,6 +32,7 @@ pub(crate) mod source;
 pub(crate) mod values;
 
 pub use build::{CommandLine, build};
+pub use builtin_rigs::preset_rig_source;
 pub use coverage::measurement_warnings;
 pub use overrides::apply_override;
 pub use preset_file::preset_with_overrides;
