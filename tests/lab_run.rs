@@ -195,7 +195,7 @@ fn the_report_names_the_points_where_the_motor_cannot_hold_the_set_speed() {
         "{line}"
     );
     let p = rig::preset("basmaji-1983-rig").expect("preset");
-    let balance_rad_s = (p.motor_torque_limit_nm - 2.712 - p.brake_drag_nm) / (5.0 * 0.01);
+    let balance_rad_s = (p.motor_torque_limit_nm() - 2.712 - p.brake_drag_nm) / (5.0 * 0.01);
     let expected_rpm = balance_rad_s * 30.0 / std::f64::consts::PI - 900.0;
     for row in csv_rows(&sagged.join("cases.csv")) {
         let offset = number(&row, "speed_offset_rpm");

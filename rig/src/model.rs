@@ -89,7 +89,7 @@ impl ModelConstants {
             kp_nms_per_rad: kp,
             ki_nm_per_rad: ki,
             filter_rad_s: 2.0 * std::f64::consts::PI * params.speed_feedback_filter_hz,
-            torque_limit_nm: params.motor_torque_limit_nm,
+            torque_limit_nm: params.motor_torque_limit_nm(),
             brake_slope_nms_per_rad: params.brake_speed_slope_nms_per_rad,
             bearing_drag_nms_per_rad: params.bearing_drag_nms_per_rad,
             brake_critical_rad_s: params.brake_critical_speed_rpm * std::f64::consts::PI / 30.0,

@@ -186,7 +186,10 @@ param_specs! {
     speed_loop_hz, "Hz", "closed speed-loop natural frequency on the whole rig inertia (thesis silent: 0.5)";
     speed_loop_damping_ratio, "1", "closed speed-loop damping ratio (thesis silent: 0.7)";
     speed_feedback_filter_hz, "Hz", "low-pass on the controller's speed feedback (thesis silent: 2)";
-    motor_torque_limit_nm, "N m", "drive torque limit: 2 hp at 2000 rev/min = 7.12";
+    drive_rated_power_w, "W", "DC drive nameplate output: Hainsworth Speedrange 2.0 hp = 1491.4";
+    drive_rated_speed_rpm, "rev/min", "DC drive rated speed: max 2000; rated power there gives the full-load torque 7.12 N m";
+    drive_full_load_current_a, "A", "DC drive full-load armature current: F.L.C. 10.0 A; torque constant = full-load torque / F.L.C. = 0.712 N m/A";
+    drive_current_limit_pct, "%", "armature current limit / F.L.C.: the torque limit either way (100 = 7.12 N m; drives of the day set 100-200 for intermittent duty)";
     brake_speed_slope_nms_per_rad, "N m s/rad", "brake torque slope with speed (thesis: constant torque, 0)";
     brake_drag_nm, "N m", "residual drag added to the set load: bearings, seals, windage, brake remanence (thesis: none, 0)";
     bearing_drag_nms_per_rad, "N m s/rad", "speed-proportional bearing and windage drag on each of the five bodies (thesis: none, 0)";

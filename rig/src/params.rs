@@ -73,8 +73,15 @@ pub struct RigParams {
     pub speed_loop_damping_ratio: f64,
     /// Corner of the first-order low-pass on the controller's speed feedback (Hz).
     pub speed_feedback_filter_hz: f64,
-    /// Motor torque limit of the drive, either sense (N m).
-    pub motor_torque_limit_nm: f64,
+    /// The DC drive's nameplate rated output (W): Hainsworth Speedrange, 2.0 hp.
+    pub drive_rated_power_w: f64,
+    /// Its rated (top) speed (rev/min): 2000.
+    pub drive_rated_speed_rpm: f64,
+    /// Its full-load armature current (A): F.L.C. 10.0 A.
+    pub drive_full_load_current_a: f64,
+    /// The armature current limit as a share of full-load current (%): the drive's torque
+    /// is its torque constant times the current, so this bounds the torque either way.
+    pub drive_current_limit_pct: f64,
     /// Slope of the brake torque with speed about the set point (N m s/rad); 0 is the thesis's constant torque.
     pub brake_speed_slope_nms_per_rad: f64,
     /// Residual drag at the brake (N m, ≥ 0): bearing and seal friction, windage and the
@@ -137,6 +144,23 @@ impl RigParams {
     }
 
     /// Checks every value against its physical range; the error names the parameter.
+    /// The drive's torque constant (N m/A) from its nameplate: rated power over rated
+    /// speed is the torque at full-load current.
+    pub fn torque_constant_nm_per_a(&self) -> f64 {
+        self.full_load_torque_nm() / self.drive_full_load_current_a
+    }
+
+    /// Torque at full-load current (N m): rated power at rated speed.
+    pub fn full_load_torque_nm(&self) -> f64 {
+        self.drive_rated_power_w / (self.drive_rated_speed_rpm * std::f64::consts::PI / 30.0)
+    }
+
+    /// The motor's torque limit either way (N m): the torque constant times the armature
+    /// current limit.
+    pub fn motor_torque_limit_nm(&self) -> f64 {
+        self.full_load_torque_nm() * (self.drive_current_limit_pct / 100.0)
+    }
+
     pub fn validate(&self) -> Result<(), RigError> {
         self.check_positive()?;
         self.check_finite()?;
@@ -173,7 +197,10 @@ impl RigParams {
             ),
             ("speed_loop_damping_ratio", self.speed_loop_damping_ratio),
             ("speed_feedback_filter_hz", self.speed_feedback_filter_hz),
-            ("motor_torque_limit_nm", self.motor_torque_limit_nm),
+            ("drive_rated_power_w", self.drive_rated_power_w),
+            ("drive_rated_speed_rpm", self.drive_rated_speed_rpm),
+            ("drive_full_load_current_a", self.drive_full_load_current_a),
+            ("drive_current_limit_pct", self.drive_current_limit_pct),
         ];
         for (name, value) in positive {
             require(name, value, value > 0.0, "must be a finite number > 0")?;

@@ -21,6 +21,8 @@ pub const DEFAULT_PRESET: &str = "basmaji-1983";
 const TWO_HP_W: f64 = 2.0 * 745.699_872;
 /// Top of the rig's speed range (rev/min), taken as the motor's base speed.
 const BASE_SPEED_RPM: f64 = 2000.0;
+/// The motor's full-load current (A), from its nameplate (rig-spec §1: F.L.C. 10.0 A).
+const FULL_LOAD_CURRENT_A: f64 = 10.0;
 
 /// Looks a preset up by name.
 pub fn preset(name: &str) -> Result<RigParams, RigError> {
@@ -74,7 +76,10 @@ pub fn basmaji_1983() -> RigParams {
         speed_loop_hz: 0.5,
         speed_loop_damping_ratio: 0.7,
         speed_feedback_filter_hz: 2.0,
-        motor_torque_limit_nm: TWO_HP_W / (BASE_SPEED_RPM * std::f64::consts::PI / 30.0),
+        drive_rated_power_w: TWO_HP_W,
+        drive_rated_speed_rpm: BASE_SPEED_RPM,
+        drive_full_load_current_a: FULL_LOAD_CURRENT_A,
+        drive_current_limit_pct: 100.0,
         brake_speed_slope_nms_per_rad: 0.0,
         brake_drag_nm: 0.0,
         bearing_drag_nms_per_rad: 0.0,

@@ -82,7 +82,7 @@ fn a_load_step_reaches_the_output_shaft_and_the_motor() {
 #[test]
 fn the_motor_torque_stays_within_its_limit() {
     let p = support::thesis();
-    let limit = p.motor_torque_limit_nm;
+    let limit = p.motor_torque_limit_nm();
     let schedule = Schedule {
         speed_rpm: Track::hold(300.0).step_to(0.2, 1500.0),
         ..Schedule::constant(300.0, 2.712)
@@ -113,7 +113,7 @@ fn speed_steps_at_no_load_ride_the_limit_without_chatter_or_windup() {
     // and the drive switched in and out of the limit for ever (chatter at t = 110.34 s).
     let mut p = support::thesis();
     p.centre_distance_shift_m = 0.73e-3 / (2.0 * 20f64.to_radians().tan());
-    let limit = p.motor_torque_limit_nm;
+    let limit = p.motor_torque_limit_nm();
     let speeds = [800.0, 1000.0, 1100.0, 1300.0, 1500.0, 1700.0, 1900.0];
     let mut speed = Track::hold(speeds[0]);
     for (i, rpm) in speeds.iter().enumerate() {
@@ -152,5 +152,67 @@ fn speed_steps_at_no_load_ride_the_limit_without_chatter_or_windup() {
     assert!(
         peak < 1900.0 + 0.1 * 200.0,
         "overshoot {peak} rev/min: integrator wound up"
+    );
+}
+
+#[test]
+fn the_drive_holds_a_load_within_its_current_limit_and_sags_beyond_it() {
+    // The 1983 drive's nameplate (2.0 hp, F.L.C. 10.0 A, max 2000 rev/min): the torque at
+    // full-load current is 1491.4 W / 209.44 rad/s = 7.121 N m, the torque constant
+    // 0.7121 N m/A; a 150 % current limit bounds the torque at 10.68 N m.
+    let mut p = support::thesis();
+    p.tooth_shifting = false;
+    p.drive_current_limit_pct = 150.0;
+    let full_load = 2.0 * 745.699_872 / (2000.0 * std::f64::consts::PI / 30.0);
+    assert!((p.torque_constant_nm_per_a() - full_load / 10.0).abs() < 1e-12);
+    let limit = p.motor_torque_limit_nm();
+    assert!((limit - 1.5 * full_load).abs() < 1e-12);
+    let inertia: f64 = p.inertias_kgm2().iter().sum();
+    let rpm = 600.0;
+    let set = rpm * std::f64::consts::PI / 30.0;
+    let run = |load_nm: f64| {
+        let schedule = Schedule {
+            load_nm: Track::hold(1.0).step_to(1.0, load_nm),
+            ..Schedule::constant(rpm, 1.0)
+        };
+        let mut plant = support::plant(p.clone(), schedule, 5_120.0);
+        support::record(&mut plant, 30.0)
+    };
+    // 9 N m: beyond the old 7.12 N m limit, within 10.68: the speed holds.
+    let held = run(9.0);
+    let tail = &held.speed_rad_s[0][25 * 5_120..];
+    let speed = support::mean(tail);
+    assert!(
+        (speed - set).abs() < 0.005 * set,
+        "{speed} rad/s against {set}"
+    );
+    let torque = support::mean(&held.motor_torque_nm[25 * 5_120..]);
+    assert!(
+        (torque - 9.0).abs() < 0.05,
+        "the drive carries the load: {torque} N m"
+    );
+    // 12 N m: beyond it the motor sits at its limit and the rig's angular momentum
+    // Σ J ω falls at load − limit, the speed sagging as the 1983 report says.
+    let sagging = run(12.0);
+    let inertias = p.inertias_kgm2();
+    let momentum = |t: f64| {
+        let k = (t * 5_120.0) as usize;
+        (0..5)
+            .map(|i| inertias[i] * sagging.speed_rad_s[i][k])
+            .sum::<f64>()
+            / inertia
+    };
+    let slope = (momentum(4.0) - momentum(2.0)) / 2.0;
+    let expected = (limit - 12.0) / inertia;
+    assert!(
+        (slope - expected).abs() < 0.03 * expected.abs(),
+        "falls at {slope} rad/s², (limit − load)/ΣJ = {expected}"
+    );
+    let at_limit = sagging.motor_torque_nm[2 * 5_120..4 * 5_120]
+        .iter()
+        .all(|t| (t - limit).abs() < 1e-9);
+    assert!(
+        at_limit,
+        "the motor stays at its current limit while the speed sags"
     );
 }

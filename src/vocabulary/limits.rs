@@ -51,7 +51,7 @@ pub fn check_load_within_motor(load_nm: f64, params: &rig::RigParams) -> Result<
         Err(LimitError::LoadAboveMotor {
             load_nm,
             drag_nm: params.brake_drag_nm,
-            limit_nm: params.motor_torque_limit_nm,
+            limit_nm: params.motor_torque_limit_nm(),
         })
     }
 }
@@ -59,7 +59,7 @@ pub fn check_load_within_motor(load_nm: f64, params: &rig::RigParams) -> Result<
 /// The largest brake load (N m) the motor of `params` can hold: its torque limit less the
 /// rig's residual drag.
 pub fn max_load_nm(params: &rig::RigParams) -> f64 {
-    params.motor_torque_limit_nm - params.brake_drag_nm
+    params.motor_torque_limit_nm() - params.brake_drag_nm
 }
 
 /// A motor speed set point (rev/min) as an input accepts it: finite, in [0, 10 000].
@@ -125,7 +125,7 @@ pub enum LimitError {
     },
     /// A brake load beyond the motor's torque limit.
     #[error(
-        "{load_nm} N m with the rig's residual drag of {drag_nm} N m (brake_drag_nm) is more than the motor can hold (motor_torque_limit_nm = {limit_nm:.3} N m): the rig would stop, and an eddy-current brake cannot drive it backwards"
+        "{load_nm} N m with the rig's residual drag of {drag_nm} N m (brake_drag_nm) is more than the motor can hold (its torque limit {limit_nm:.3} N m: drive_current_limit_pct of the full-load torque): the rig would stop, and an eddy-current brake cannot drive it backwards"
     )]
     LoadAboveMotor {
         /// The load given (N m).
