@@ -6,7 +6,7 @@
 //!   CPU share of one core.
 //!
 //! - campaign: `testrig sweep` on `scenarios/thesis-campaign.toml` (78 points from rest)
-//!   and `scenarios/thesis-campaign-lab.toml` (153 cases, up and down at each load), each
+//!   and `scenarios/thesis-campaign-lab.toml` (231 cases: up, down and from rest), each
 //!   case 60 s settling + 30 s measured with ten-average spectra, on every core: wall time,
 //!   median of 3.
 //!
@@ -103,7 +103,7 @@ fn pacing(dir: &Path) {
 }
 
 fn campaign(dir: &Path) {
-    for (name, points) in [("thesis-campaign", 78), ("thesis-campaign-lab", 153)] {
+    for (name, points) in [("thesis-campaign", 78), ("thesis-campaign-lab", 231)] {
         let file = format!("{}/scenarios/{name}.toml", env!("CARGO_MANIFEST_DIR"));
         let mut walls: Vec<f64> = (0..3)
             .map(|k| {

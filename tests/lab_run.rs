@@ -90,7 +90,7 @@ fn the_lab_run_steps_up_and_back_down_on_one_rig_and_finds_coexisting_motions() 
     std::fs::remove_dir_all(&dir).ok();
 }
 
-/// Issue 26: the rig chosen by its motion (`basmaji-1983-rig`, the shipped lab campaign)
+/// Issue 26: the rig chosen by its motion (`basmaji-1983-drive` now, the shipped lab campaign)
 /// at 2.712 N m, shortened: period 1 at 500 rev/min, period 2 with the half-order line
 /// far over the broadband floor at 1200 and 1500 rev/min, going up and coming down, as
 /// the thesis saw (Figs 4.34-4.39). The judge reads the true output-shaft torque.
@@ -104,10 +104,35 @@ fn the_lab_campaign_on_the_rig_preset_moves_as_the_thesis_saw_at_2712_nm() {
         &[
             "grid.rpm=[500, 1200, 1500]",
             "grid.load_nm=[2.712]",
-            "case.settle_s=20",
+            "case.settle_s=60",
             "case.measure_s=20",
         ],
     );
+    // The lab's score counts a point the thesis's motion is reached at by any approach:
+    // never fewer than any one approach's, never more than the points.
+    let report = std::fs::read_to_string(out.join("report.md")).expect("report");
+    let hits = |label: &str| -> (usize, usize) {
+        let line = report
+            .lines()
+            .find(|l| l.starts_with(label))
+            .unwrap_or_else(|| panic!("no line {label}"));
+        let numbers: Vec<usize> = line
+            .split("**")
+            .nth(1)
+            .expect("bold")
+            .split(' ')
+            .filter_map(|w| w.parse().ok())
+            .collect();
+        (numbers[0], numbers[1])
+    };
+    let (lab, points) = hits("- The lab's score");
+    for direction in ["- up:", "- down:", "- static:"] {
+        assert!(
+            hits(direction).0 <= lab,
+            "{direction} against the lab's {lab}"
+        );
+    }
+    assert!(lab <= points && points == 3, "{lab} of {points}");
     let rows = csv_rows(&out.join("cases.csv"));
     let seen: Vec<(&str, &str, &str)> = rows
         .iter()
@@ -127,6 +152,9 @@ fn the_lab_campaign_on_the_rig_preset_moves_as_the_thesis_saw_at_2712_nm() {
             ("1500", "up", "period-2"),
             ("1200", "down", "period-2"),
             ("500", "down", "period-1"),
+            ("500", "static", "period-1"),
+            ("1200", "static", "period-2"),
+            ("1500", "static", "period-2"),
         ]
     );
     for row in &rows {
@@ -191,10 +219,12 @@ fn the_report_names_the_points_where_the_motor_cannot_hold_the_set_speed() {
     );
     let line = holding(&sagged);
     assert!(
-        line.contains("not at 1 points") && line.contains("900 rev/min, 2.712 N m, up"),
+        line.contains("not at 2 points")
+            && line.contains("900 rev/min, 2.712 N m, up")
+            && line.contains("900 rev/min, 2.712 N m, static"),
         "{line}"
     );
-    let p = rig::preset("basmaji-1983-rig").expect("preset");
+    let p = rig::preset("basmaji-1983-drive").expect("preset");
     let balance_rad_s = (p.motor_torque_limit_nm() - 2.712 - p.brake_drag_nm) / (5.0 * 0.01);
     let expected_rpm = balance_rad_s * 30.0 / std::f64::consts::PI - 900.0;
     for row in csv_rows(&sagged.join("cases.csv")) {

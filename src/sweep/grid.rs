@@ -132,6 +132,7 @@ pub fn build_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<Swe
         let points = match sequence {
             Sequence::Static => static_points(grid),
             Sequence::UpAndDown => up_and_down_points(grid),
+            Sequence::EveryApproach => [up_and_down_points(grid), static_points(grid)].concat(),
         };
         let series_base = cases
             .last()
@@ -192,6 +193,7 @@ fn check_case_count(
     let speeds = match sequence {
         Sequence::Static => grid.rpm.len() as u128,
         Sequence::UpAndDown => 2 * grid.rpm.len() as u128 - 1,
+        Sequence::EveryApproach => 3 * grid.rpm.len() as u128 - 1,
     };
     let factors = [grid.load_nm.len(), grid.backlash_mm.len().max(1)]
         .into_iter()

@@ -11,7 +11,7 @@ use super::meta::SweepMeta;
 use super::sequence::Direction;
 use super::thesis::{
     HALF_ORDER_FROM_RPM, HEAVY_LOAD_NM, MEASURED_FUNDAMENTAL_HZ, MEASURED_RESONANCE_RPM,
-    PERIOD_ONE_BELOW_RPM, RESONANCE_MIN_SPEEDS, RESONANCE_TOLERANCE, VANISHES_FROM_RPM,
+    PERIOD_ONE_BELOW_RPM, RESONANCE_MIN_SPEEDS, RESONANCE_TOLERANCE, VANISHES_FROM_RPM, lab_score,
     physics_match, physics_score, score, thesis_expects_half_order, thesis_motion,
 };
 use crate::recording::PartialFile;
@@ -93,7 +93,25 @@ fn physics(md: &mut String, cases: &[CaseResult]) {
             "- {direction}: **{hits} of {total} decided points ({share:.0} %)** move as the thesis saw (target {TARGET_PERCENT} %)."
         );
     }
+    if directions.len() > 1 {
+        let (hits, total) = lab_score(cases);
+        let share = if total == 0 {
+            0.0
+        } else {
+            100.0 * hits as f64 / total as f64
+        };
+        let _ = writeln!(
+            md,
+            "- The lab's score: **{hits} of {total} decided points ({share:.0} %)** hold the thesis's motion by some approach ({}); the strict score is the run-up's, above (target {TARGET_PERCENT} % for each).",
+            directions
+                .iter()
+                .map(|d| d.to_string())
+                .collect::<Vec<_>>()
+                .join(", ")
+        );
+    }
     hysteresis(md, cases);
+    coexisting(md, cases);
     motor_holding(md, cases);
     let _ = writeln!(
         md,
@@ -136,6 +154,55 @@ fn hysteresis(md: &mut String, cases: &[CaseResult]) {
             }
         );
     }
+}
+
+/// Points reached from the static load as well as up and down, where the approaches
+/// settle to different motions: each motion with the approaches that reached it.
+fn coexisting(md: &mut String, cases: &[CaseResult]) {
+    if !cases.iter().any(|c| c.direction == Direction::Static)
+        || !cases.iter().any(|c| c.direction == Direction::Up)
+    {
+        return;
+    }
+    let mut lines = Vec::new();
+    let mut seen: Vec<&CaseResult> = Vec::new();
+    for c in cases {
+        let same =
+            |p: &CaseResult| p.rpm == c.rpm && p.load_nm == c.load_nm && p.values == c.values;
+        if seen.iter().any(|p| same(p)) {
+            continue;
+        }
+        seen.push(c);
+        let mut motions: Vec<(String, Vec<String>)> = Vec::new();
+        for p in cases.iter().filter(|p| same(p)) {
+            let motion = p.motion.motion.to_string();
+            match motions.iter_mut().find(|(m, _)| *m == motion) {
+                Some((_, by)) => by.push(p.direction.to_string()),
+                None => motions.push((motion, vec![p.direction.to_string()])),
+            }
+        }
+        if motions.len() > 1 {
+            let held: Vec<String> = motions
+                .iter()
+                .map(|(m, by)| format!("{m} ({})", by.join(", ")))
+                .collect();
+            lines.push(format!(
+                "{} rev/min, {} N m: {}",
+                c.rpm,
+                c.load_nm,
+                held.join(", ")
+            ));
+        }
+    }
+    let _ = writeln!(
+        md,
+        "- Coexisting motions (the approaches settle to different motions): {}.",
+        if lines.is_empty() {
+            "none".to_string()
+        } else {
+            lines.join("; ")
+        }
+    );
 }
 
 /// Points where the motor does not hold the set speed: its mean speed over the window

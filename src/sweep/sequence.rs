@@ -13,6 +13,10 @@ pub enum Sequence {
     /// At each load (and parameter variant) one plant runs the speeds up in grid order,
     /// then back down: every point starts from the state the one before it left.
     UpAndDown,
+    /// Every way the lab reached a point: the run up, the run down, and each point on a
+    /// plant of its own from the static load. Where motions coexist, each approach
+    /// shows the one it reaches.
+    EveryApproach,
 }
 
 /// Which way the speed came to a case.

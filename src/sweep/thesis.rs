@@ -82,3 +82,23 @@ pub fn score(cases: &[CaseResult]) -> (usize, usize) {
         .count();
     (hits, cases.len())
 }
+
+/// The lab's score: decided points at which the thesis's motion is among those the
+/// point held, whichever way it was reached (run up, run down, from the static load), of
+/// the decided points (each point, load and parameter variant once).
+pub fn lab_score(cases: &[CaseResult]) -> (usize, usize) {
+    let mut points: Vec<(&CaseResult, bool)> = Vec::new();
+    for c in cases
+        .iter()
+        .filter(|c| thesis_motion(c.rpm, c.load_nm).is_some())
+    {
+        let same =
+            |p: &CaseResult| p.rpm == c.rpm && p.load_nm == c.load_nm && p.values == c.values;
+        match points.iter_mut().find(|(p, _)| same(p)) {
+            Some((_, hit)) => *hit |= physics_match(c),
+            None => points.push((c, physics_match(c))),
+        }
+    }
+    let hits = points.iter().filter(|(_, hit)| *hit).count();
+    (hits, points.len())
+}
