@@ -408,16 +408,9 @@ fn the_export_holds_description_binary_rig_and_docs_and_is_reproducible() {
 #[test]
 #[ignore = "needs Python modules (python3 -m pip install -r tests/requirements.txt); run by .ci/run"]
 fn fmu_importers_agree() {
-    common::require_python(&["fmpy", "fmu_manipulation_toolbox", "numpy", "matplotlib"]);
-    let dir = folder("fmu-importers");
-    let status = std::process::Command::new("python3")
-        .arg(format!(
-            "{}/tests/fmu/importers.py",
-            env!("CARGO_MANIFEST_DIR")
-        ))
-        .arg(env!("CARGO_BIN_EXE_testrig"))
-        .arg(dir.path())
-        .status()
-        .expect("python3");
-    assert!(status.success());
+    common::run_python_check(
+        "fmu/importers.py",
+        "fmu-importers",
+        &["fmpy", "fmu_manipulation_toolbox", "numpy", "matplotlib"],
+    );
 }

@@ -337,16 +337,9 @@ fn beyond_loopback_only_the_token_unlocks_the_rig() {
 #[test]
 #[ignore = "needs Python modules (python3 -m pip install -r tests/requirements.txt); run by .ci/run"]
 fn pyvisa_drives_the_rig() {
-    common::require_python(&["pyvisa", "pyvisa_py", "numpy", "matplotlib"]);
-    let dir = folder("scpi-pyvisa");
-    let status = std::process::Command::new("python3")
-        .arg(format!(
-            "{}/tests/scpi/pyvisa_check.py",
-            env!("CARGO_MANIFEST_DIR")
-        ))
-        .arg(env!("CARGO_BIN_EXE_testrig"))
-        .arg(dir.path())
-        .status()
-        .expect("python3");
-    assert!(status.success());
+    common::run_python_check(
+        "scpi/pyvisa_check.py",
+        "scpi-pyvisa",
+        &["pyvisa", "pyvisa_py", "numpy", "matplotlib"],
+    );
 }

@@ -82,27 +82,17 @@ fn physics(md: &mut String, cases: &[CaseResult]) {
             .filter(|c| c.direction == *direction)
             .cloned()
             .collect();
-        let (hits, total) = physics_score(&these);
-        let share = if total == 0 {
-            0.0
-        } else {
-            100.0 * hits as f64 / total as f64
-        };
         let _ = writeln!(
             md,
-            "- {direction}: **{hits} of {total} decided points ({share:.0} %)** move as the thesis saw (target {TARGET_PERCENT} %)."
+            "- {direction}: **{}** move as the thesis saw (target {TARGET_PERCENT} %).",
+            decided_share(physics_score(&these))
         );
     }
     if directions.len() > 1 {
-        let (hits, total) = lab_score(cases);
-        let share = if total == 0 {
-            0.0
-        } else {
-            100.0 * hits as f64 / total as f64
-        };
         let _ = writeln!(
             md,
-            "- The lab's score: **{hits} of {total} decided points ({share:.0} %)** hold the thesis's motion by some approach ({}); the strict score is the run-up's, above (target {TARGET_PERCENT} % for each).",
+            "- The lab's score: **{}** hold the thesis's motion by some approach ({}); the strict score is the run-up's, above (target {TARGET_PERCENT} % for each).",
+            decided_share(lab_score(cases)),
             directions
                 .iter()
                 .map(|d| d.to_string())
@@ -119,6 +109,16 @@ fn physics(md: &mut String, cases: &[CaseResult]) {
         MAX = rig::judge::MAX_HEIGHT_DB
     );
     motion_table(md, cases);
+}
+
+/// "h of n decided points (p %)".
+fn decided_share((hits, total): (usize, usize)) -> String {
+    let share = if total == 0 {
+        0.0
+    } else {
+        100.0 * hits as f64 / total as f64
+    };
+    format!("{hits} of {total} decided points ({share:.0} %)")
 }
 
 /// Speeds where the run-up and the run-down settle to different motions.

@@ -194,3 +194,17 @@ pub fn require_python(modules: &[&str]) {
         modules.join(", ")
     );
 }
+
+/// Runs the Python check `script` (a path under `tests/`) with the testrig binary and a
+/// scratch folder `tag`, after checking its `modules` import; fails if it fails.
+pub fn run_python_check(script: &str, tag: &str, modules: &[&str]) {
+    require_python(modules);
+    let dir = folder(tag);
+    let status = Command::new("python3")
+        .arg(format!("{}/tests/{script}", env!("CARGO_MANIFEST_DIR")))
+        .arg(env!("CARGO_BIN_EXE_testrig"))
+        .arg(dir.path())
+        .status()
+        .expect("python3");
+    assert!(status.success(), "{script} failed");
+}
