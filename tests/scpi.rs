@@ -143,6 +143,17 @@ fn settings_are_carried_out_and_journalled_and_refusals_queued_with_their_number
         "BESS;4;1.5E2;2.5E2"
     );
     assert_eq!(c.query("SYST:ERR?"), "0,\"No error\"");
+    c.write("SCOP:VOLT 0.5;TIME 0.01;MODE SING");
+    assert_eq!(
+        c.query("SCOP:VOLT?;TIME?;MODE?;:SYST:ERR?"),
+        "5E-1;1E-2;SINGLE;0,\"No error\""
+    );
+    let trace: Vec<f64> = c
+        .query("SCOP:DATA?")
+        .split(',')
+        .map(|t| t.parse().expect("volts"))
+        .collect();
+    assert!(!trace.is_empty(), "the scope's trace in volts");
     let chain = &panel.state()["chain"];
     assert_eq!(chain["filter"]["kind"], "bessel", "{chain}");
     let session = std::fs::read_to_string(dir.path().join("session.toml")).expect("session");

@@ -27,8 +27,10 @@ pub fn run_stage(
     for frame in input {
         for pending in frame.commands.iter() {
             if let Some(outcome) = apply_to_stage(&mut stage, &pending.command) {
-                pending.answer(outcome);
+                // The state echoes the setting before the answer goes: a client reading
+                // the state after its reply sees what it set.
                 status.update(|st| echo_stage(&stage, &mut st.chain));
+                pending.answer(outcome);
             }
         }
         out.clear();

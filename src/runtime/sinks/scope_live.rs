@@ -77,7 +77,31 @@ impl LiveScope {
         self.scope = Scope::new(sweep_settings(settings, mode), rate_hz)?;
         self.mode = mode;
         self.seen = 0;
+        self.rescale_shown(settings);
         Ok(())
+    }
+
+    /// The trace on screen redrawn at the new scales at once, as a storage scope does
+    /// (its volts kept, its divisions re-counted): the state shows the settings in effect
+    /// from the command on, not from the next sweep.
+    fn rescale_shown(&self, settings: ScopeSettings) {
+        let mode = match self.mode {
+            ScopeMode::Auto => "auto",
+            ScopeMode::Single => "single",
+        };
+        self.status.update(|st| {
+            if let Some(shown) = &st.trace {
+                let ratio = shown.volts_per_div / settings.volts_per_div;
+                st.trace = Some(Arc::new(LiveTrace {
+                    divisions: shown.divisions.iter().map(|d| d * ratio).collect(),
+                    volts_per_div: settings.volts_per_div,
+                    seconds_per_div: settings.seconds_per_div,
+                    trigger_v: settings.trigger_v,
+                    mode: mode.into(),
+                    ..(**shown).clone()
+                }));
+            }
+        });
     }
 
     /// Re-arms the scope (a single sweep starts waiting for its trigger again). The trace
