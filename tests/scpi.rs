@@ -166,13 +166,18 @@ fn settings_are_carried_out_and_journalled_and_refusals_queued_with_their_number
 
 #[test]
 fn a_measurement_is_waited_for_and_read_as_text_and_as_a_block() {
-    let (_dir, _panel, address) = start("scpi-measure", "50");
+    // Pace 20: the rig settles 30 s (1.5 s of wall time), then 16 averages of 1.28 s
+    // take about 1 s, long beside the query that finds the measurement running.
+    let (_dir, _panel, address) = start("scpi-measure", "20");
     let mut c = Client::connect(address);
-    c.write("SENS:FREQ:SPAN 200;RES 256;:AVER:COUN 4;:WIND HANN");
+    c.write("SENS:FREQ:SPAN 200;RES 256;:AVER:COUN 16;:WIND HANN");
     assert_eq!(
         c.query("FREQ:SPAN?;RES?;:AVER:COUN?;:WIND?"),
-        "2E2;2.56E2;4;HANN"
+        "2E2;2.56E2;16;HANN"
     );
+    while c.query("RIG:TIME?").parse::<f64>().expect("seconds") < 30.0 {
+        std::thread::sleep(Duration::from_millis(20));
+    }
     c.write("INIT");
     assert_eq!(c.query("STAT:OPER:COND?"), "16", "measuring");
     assert_eq!(c.query("*OPC?"), "1");
