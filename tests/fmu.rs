@@ -18,6 +18,7 @@ use testrig::rig_point::{RigPointSpec, run_rig_point};
 use testrig::steady_point::FLAG_NAMES;
 use testrig_fmu::ffi::{self, ERROR, OK};
 use testrig_fmu::{Causality, SAMPLE_RATE_HZ, variables};
+use testrig_fmu::{ffi_state, ffi_values};
 
 fn rig_path() -> String {
     format!(
@@ -158,18 +159,21 @@ fn a_saved_state_repeats_the_same_future_and_a_reset_the_same_run() {
     let mut state = std::ptr::null_mut();
     // SAFETY: a live instance and a writable place.
     assert_eq!(
-        unsafe { ffi::fmi3GetFMUState(fmu.instance, &mut state) },
+        unsafe { ffi_state::fmi3GetFMUState(fmu.instance, &mut state) },
         OK
     );
     let first = run(&mut fmu, 1.0, 1.5, 0.01);
     // SAFETY: the state just saved.
-    assert_eq!(unsafe { ffi::fmi3SetFMUState(fmu.instance, state) }, OK);
+    assert_eq!(
+        unsafe { ffi_state::fmi3SetFMUState(fmu.instance, state) },
+        OK
+    );
     assert!((fmu.float("time") - 1.0).abs() < 1e-12);
     let again = run(&mut fmu, 1.0, 1.5, 0.01);
     assert_eq!(first, again);
     // SAFETY: the state, freed once.
     unsafe {
-        assert_eq!(ffi::fmi3FreeFMUState(fmu.instance, &mut state), OK);
+        assert_eq!(ffi_state::fmi3FreeFMUState(fmu.instance, &mut state), OK);
     }
     assert!(state.is_null());
     // SAFETY: a live instance.
@@ -246,12 +250,12 @@ fn bad_calls_and_values_are_refused_with_a_message() {
     assert_eq!(fmu.step(0.0, 0.01), OK, "still usable after refusals");
     let bad = 100_000;
     // SAFETY: one value reference, one place.
-    let status = unsafe { ffi::fmi3GetFloat64(fmu.instance, &bad, 1, &mut 0.0, 1) };
+    let status = unsafe { ffi_values::fmi3GetFloat64(fmu.instance, &bad, 1, &mut 0.0, 1) };
     assert!(fmu.refused(status, "no variable has value reference 100000"));
     // SAFETY: null arrays with counts, a null instance: refused, not dereferenced.
     unsafe {
         let status =
-            ffi::fmi3GetFloat64(fmu.instance, std::ptr::null(), 2, std::ptr::null_mut(), 2);
+            ffi_values::fmi3GetFloat64(fmu.instance, std::ptr::null(), 2, std::ptr::null_mut(), 2);
         assert!(fmu.refused(status, "a null array of 2 values"));
         assert_eq!(
             ffi::fmi3DoStep(

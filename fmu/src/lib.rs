@@ -6,14 +6,17 @@
 //! `model_description.rs` the XML, the model identifier and the instantiation token;
 //! `instance.rs` one instance in safe Rust (the state machine, the plant started at rest
 //! and advanced over each communication step with the inputs held); `ffi.rs` the C
-//! functions offered, `ffi_unoffered.rs` the rest of the interface; `error.rs` the one
+//! functions offered (`ffi_values.rs` the typed getters and setters, `ffi_state.rs` the
+//! FMU state), `ffi_unoffered.rs` the rest of the interface; `error.rs` the one
 //! error. `docs/fmu.md` is the user's page.
 
 #![deny(unsafe_op_in_unsafe_fn)]
 
 mod error;
 pub mod ffi;
+pub mod ffi_state;
 pub mod ffi_unoffered;
+pub mod ffi_values;
 mod instance;
 mod model_description;
 mod units;

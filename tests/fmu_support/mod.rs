@@ -8,6 +8,7 @@ use std::sync::Mutex;
 
 use rig::RigTopology;
 use testrig_fmu::ffi::{self, ERROR, OK};
+use testrig_fmu::ffi_values;
 use testrig_fmu::{Kind, Variable, instantiation_token, variables};
 
 /// The messages an instance logged.
@@ -93,7 +94,7 @@ impl Fmu {
     pub fn set(&mut self, name: &str, value: f64) -> c_int {
         let vr = self.vr(name);
         // SAFETY: one value reference, one value.
-        unsafe { ffi::fmi3SetFloat64(self.instance, &vr, 1, &value, 1) }
+        unsafe { ffi_values::fmi3SetFloat64(self.instance, &vr, 1, &value, 1) }
     }
 
     /// Enters and leaves initialization at t = 0.
@@ -148,16 +149,19 @@ impl Fmu {
             match kind {
                 Kind::Float64 => {
                     let mut x = 0.0;
-                    (ffi::fmi3GetFloat64(self.instance, &vr, 1, &mut x, 1), x)
+                    (
+                        ffi_values::fmi3GetFloat64(self.instance, &vr, 1, &mut x, 1),
+                        x,
+                    )
                 }
                 Kind::Int32 => {
                     let mut x = 0;
-                    let s = ffi::fmi3GetInt32(self.instance, &vr, 1, &mut x, 1);
+                    let s = ffi_values::fmi3GetInt32(self.instance, &vr, 1, &mut x, 1);
                     (s, f64::from(x))
                 }
                 Kind::Int64 => {
                     let mut x = 0;
-                    let s = ffi::fmi3GetInt64(self.instance, &vr, 1, &mut x, 1);
+                    let s = ffi_values::fmi3GetInt64(self.instance, &vr, 1, &mut x, 1);
                     (s, x as f64)
                 }
             }

@@ -4,17 +4,20 @@
 //!
 //! `rack.rs` what the clients of one rig share; `message.rs` a line to units (headers resolved, parameters parsed); `tree.rs` the
 //! command tree; `instrument.rs` one client's instrument executing units against the
-//! rig; `registers.rs` its IEEE 488.2 status and error queue; `error.rs` SCPI's error
-//! numbers; `data.rs` ASCII and definite-length block answers; `server.rs` the socket.
+//! rig, `instrument_settings.rs` its analyser, chain and scope settings and displays; `registers.rs` its IEEE 488.2 status and error queue; `error.rs` SCPI's error
+//! numbers; `data.rs` ASCII and definite-length block answers; `words.rs` parameters read
+//! against ranges and the rig's names in SCPI's spelling; `server.rs` the socket.
 
 pub(crate) mod data;
 pub(crate) mod error;
 pub(crate) mod instrument;
+pub(crate) mod instrument_settings;
 pub(crate) mod message;
 pub(crate) mod rack;
 pub(crate) mod registers;
 pub(crate) mod server;
 pub(crate) mod tree;
+pub(crate) mod words;
 
 pub use rack::{Rack, scpi_rack};
 pub use server::{MAX_CLIENTS, ScpiServer};
