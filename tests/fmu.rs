@@ -21,10 +21,7 @@ use testrig_fmu::{Causality, SAMPLE_RATE_HZ, variables};
 use testrig_fmu::{ffi_state, ffi_values};
 
 fn rig_path() -> String {
-    format!(
-        "{}/scenarios/rigs/basmaji-1983.toml",
-        env!("CARGO_MANIFEST_DIR")
-    )
+    common::rig_file("basmaji-1983")
 }
 
 fn rig() -> RigTopology {

@@ -208,3 +208,19 @@ pub fn run_python_check(script: &str, tag: &str, modules: &[&str]) {
         .expect("python3");
     assert!(status.success(), "{script} failed");
 }
+
+/// The path of the shipped rig file `name` (`scenarios/rigs/NAME.toml`).
+pub fn rig_file(name: &str) -> String {
+    format!("{}/scenarios/rigs/{name}.toml", env!("CARGO_MANIFEST_DIR"))
+}
+
+/// The JSON a successful testrig command prints.
+pub fn json_of(args: &[&str]) -> serde_json::Value {
+    let out = testrig(args);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).expect("JSON")
+}

@@ -10,8 +10,9 @@
 //! u' = A u per mode. `events.rs` the switching functions of a mode. `system.rs` per mode
 //! e^{A h} and the events, built on first use and cached. `equilibrium.rs` the steady
 //! state at a set speed and load (and at rest, a loop's locked torque carried).
-//! `block.rs` the samples and impacts a run gives, `columns.rs` them as named columns. `plant.rs` the plant, `stepping.rs`
-//! its exact steps and switches.
+//! `block.rs` the samples and impacts a run gives, `columns.rs` them as named columns.
+//! `plant.rs` the plant, `segment.rs` its set points over time, `stepping.rs` its exact
+//! steps and switches.
 
 mod block;
 mod columns;
@@ -21,6 +22,7 @@ mod layout;
 mod mode;
 mod model;
 mod plant;
+mod segment;
 mod stepping;
 mod system;
 

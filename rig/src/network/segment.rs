@@ -1,0 +1,135 @@
+//! The plant's set points over time: a stretch (segment) of set points begun at a sample,
+//! speed and load ramping exactly to the schedule's next knot, the oscillating load and
+//! the meshes' harmonic pairs set again from the exact rotation, the motor's command held
+//! at its limit after a jump; and set points changed while the plant runs.
+
+use std::f64::consts::PI;
+
+use crate::error::RigError;
+use crate::mode::MotorMode;
+use crate::schedule::SetPoints;
+
+use super::plant::{NetworkPlant, OSCILLATING_HOLD_S};
+
+impl NetworkPlant {
+    /// From the current sample on, holds `set` (a knob turned while the rig runs, an
+    /// FMU's inputs held over a communication step); the set points it had scheduled
+    /// after now are dropped.
+    pub fn hold_set_points(&mut self, set: SetPoints) -> Result<(), RigError> {
+        let values = [
+            set.speed_rpm,
+            set.load_nm,
+            set.oscillating_load_nm,
+            set.oscillating_load_hz,
+        ];
+        if values.iter().any(|v| !v.is_finite()) {
+            return Err(RigError::Schedule(format!(
+                "set points must be finite, got {values:?}"
+            )));
+        }
+        if set.speed_rpm > self.speed_ceiling_rpm {
+            return Err(RigError::Schedule(format!(
+                "set speed {} rev/min is above the {} rev/min this plant's step was sized for",
+                set.speed_rpm, self.speed_ceiling_rpm
+            )));
+        }
+        let mut schedule = self.schedule.clone();
+        schedule.hold_from(self.time_s(), set);
+        schedule.validate()?;
+        self.schedule = schedule;
+        self.segment_end = Some(self.sample);
+        Ok(())
+    }
+
+    /// Starts a stretch of set points at the current sample: speed and load ramp exactly
+    /// to the next knot, the oscillating load holds (at most 0.1 s while it ramps).
+    pub(super) fn begin_segment(&mut self) {
+        let t = self.time_s();
+        let knot = self.schedule.next_knot_after(t);
+        let s = &self.schedule;
+        let harmonics_turn = self.model.layout.has_harmonics();
+        let oscillating_ramps = s.oscillating_load_nm.ramping_at(t)
+            || s.oscillating_load_hz.ramping_at(t)
+            || (harmonics_turn && s.speed_rpm.ramping_at(t));
+        let end_s = match (knot, oscillating_ramps) {
+            (Some(k), true) => Some(k.min(t + OSCILLATING_HOLD_S)),
+            (None, true) => Some(t + OSCILLATING_HOLD_S),
+            (k, false) => k,
+        };
+        let end =
+            end_s.map(|e| ((e / self.output_step_s - 1e-9).ceil() as u64).max(self.sample + 1));
+        let span_s = end.map_or(0.0, |e| e as f64 * self.output_step_s - t);
+        let ramp = |track: &crate::schedule::Track, scale: f64| {
+            let now = track.value_at(t) * scale;
+            let rate = match end_s {
+                Some(e) if span_s > 0.0 && track.ramping_at(t) => {
+                    (track.value_at(e) * scale - now) / span_s
+                }
+                _ => 0.0,
+            };
+            (now, rate)
+        };
+        let (speed, speed_rate) = ramp(&s.speed_rpm, PI / 30.0);
+        let (load, load_rate) = ramp(&s.load_nm, 1.0);
+        let held = s.held_over(t, end_s.map_or(0.0, |e| e - t));
+        let l = &self.model.layout;
+        self.u[l.set_speed()] = speed;
+        self.u[l.set_rate()] = speed_rate;
+        self.u[l.load()] = load;
+        self.u[l.load_rate()] = load_rate;
+        let (c, si) = (self.u[l.oscillating()], self.u[l.oscillating() + 1]);
+        let phase = if c == 0.0 && si == 0.0 {
+            0.0
+        } else {
+            si.atan2(c)
+        };
+        self.u[l.oscillating()] = held.oscillating_load_nm * phase.cos();
+        self.u[l.oscillating() + 1] = held.oscillating_load_nm * phase.sin();
+        let harmonic_speed = if self.model.layout.has_harmonics() {
+            held.speed_rad_s()
+        } else {
+            0.0
+        };
+        self.harmonic_speed_rad_s = harmonic_speed;
+        if let Some(cache) = self.cache.as_mut() {
+            cache.set_frequencies(harmonic_speed, held.oscillating_load_rad_s());
+        }
+        self.resync_harmonics();
+        self.segment_end = end;
+        self.edge.clear();
+        self.clamp_motor();
+    }
+
+    /// Sets each harmonic pair from the exact share of the set rotation Φ of its mesh's
+    /// driver.
+    pub(super) fn resync_harmonics(&mut self) {
+        let l = &self.model.layout;
+        let phase = self.u[l.phase()];
+        for (index, mesh, harmonic) in l.harmonics() {
+            let angle = harmonic * self.model.meshes[mesh].share * phase;
+            self.u[index] = angle.cos();
+            self.u[index + 1] = angle.sin();
+        }
+    }
+
+    /// After a jump of the set speed: a command beyond a limit is held at it.
+    pub(super) fn clamp_motor(&mut self) {
+        let Some(m) = &self.model.motor else {
+            return;
+        };
+        let Some(limit) = m.limit_nm else {
+            return;
+        };
+        let command = self.model.controller_nm(&self.u);
+        if self.mode.motor == MotorMode::Linear && command.abs() > limit {
+            let l = &self.model.layout;
+            let held = limit.copysign(command);
+            self.u[l.integral()] += (held - command) / m.ki_nm_per_rad;
+            self.mode.motor = if command > 0.0 {
+                MotorMode::LimitHigh
+            } else {
+                MotorMode::LimitLow
+            };
+        }
+    }
+}
