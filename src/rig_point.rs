@@ -1,6 +1,6 @@
 //! One steady operating point of a rig file's rig alone, unpaced (`testrig simulate
-//! --rig`): the plant of any topology (`rig::NetworkPlant`) started in steady motion at
-//! the set speed and load, settled, then measured with every block handed to the caller;
+//! --rig`): the plant of any topology (`rig::NetworkPlant`) brought to the set speed and
+//! load by its approach (`rig::Approach`), settled, then measured with every block handed to the caller;
 //! its signals named after the rig's bodies, shafts and meshes.
 //!
 //! The motion is judged, as for the 1983 rig (`docs/physics.md`), on the gauged shaft's
@@ -12,8 +12,7 @@ use std::time::Instant;
 
 use anyhow::Context;
 use rig::{
-    JudgeInput, Judgement, NetworkBlock, NetworkImpact, NetworkPlant, NetworkStart, RigTopology,
-    Schedule, judge,
+    Approach, JudgeInput, Judgement, NetworkBlock, NetworkImpact, NetworkPlant, RigTopology, judge,
 };
 use serde::Serialize;
 
@@ -35,8 +34,8 @@ pub struct RigPointSpec<'a> {
     pub duration_s: f64,
     /// Output rate of the true signals (Hz).
     pub rate_hz: f64,
-    /// In steady motion at the point, or at rest.
-    pub start: NetworkStart,
+    /// How the point is reached (settling counts from the end of a ramp).
+    pub approach: Approach,
 }
 
 /// One shaft over the window.
@@ -128,12 +127,13 @@ pub fn run_rig_point(
             rig.name
         );
     }
-    let schedule = Schedule::constant(spec.rpm, spec.load_nm);
-    let mut plant = NetworkPlant::new(rig, schedule, spec.rate_hz, spec.start)
+    let schedule = spec.approach.schedule(spec.rpm, spec.load_nm);
+    let start = spec.approach.network_start();
+    let mut plant = NetworkPlant::new(rig, schedule, spec.rate_hz, start)
         .with_context(|| format!("rig `{}` at {} {}", rig.name, names.rpm, spec.rpm))?;
     let started = Instant::now();
     let mut block = NetworkBlock::new(rig.bodies.len(), rig.shafts.len(), rig.meshes.len());
-    let mut left = (spec.settle_s * spec.rate_hz).round() as usize;
+    let mut left = ((spec.approach.lead_in_s() + spec.settle_s) * spec.rate_hz).round() as usize;
     while left > 0 {
         let n = left.min(BLOCK);
         block.clear();
@@ -159,7 +159,7 @@ pub fn run_rig_point(
         plant,
         impacts,
         summary,
-        simulated_s: spec.settle_s + spec.duration_s,
+        simulated_s: spec.approach.lead_in_s() + spec.settle_s + spec.duration_s,
         wall_s: started.elapsed().as_secs_f64(),
     })
 }

@@ -1,13 +1,14 @@
 //! One steady operating point of the plant alone, unpaced: the set points and times
-//! checked, the plant built from a preset and its overrides, settled, then measured with
-//! every block handed to the caller. The one path of `testrig simulate` and of the Python
-//! package's `testrig.simulate`.
+//! checked, the plant built from a preset and its overrides and brought to the point by
+//! its approach (`rig::Approach`), settled, then measured with every block handed to the
+//! caller. The one path of `testrig simulate` and of the Python package's
+//! `testrig.simulate`.
 
 use crate::chain::{GearCondition, GearConditionReport};
 use std::time::Instant;
 
 use anyhow::{Context, bail};
-use rig::{Plant, PlantConfig, RegimeCriteria, Schedule, SignalBlock, SteadySummary, run_steady};
+use rig::{Approach, Plant, PlantConfig, RegimeCriteria, SignalBlock, SteadySummary, run_steady};
 
 use crate::scenario::preset_with_overrides;
 use crate::vocabulary::{
@@ -31,6 +32,8 @@ pub struct PointSpec<'a> {
     pub duration_s: f64,
     /// Output rate of the true signals (Hz).
     pub rate_hz: f64,
+    /// How the point is reached (settling counts from the end of a ramp).
+    pub approach: Approach,
 }
 
 /// How the caller names each input in its messages (the command line's flags, or the
@@ -92,10 +95,13 @@ pub fn run_point(
         output_rate_hz: spec.rate_hz,
         ..PlantConfig::default()
     };
-    let mut plant = Plant::new(params, Schedule::constant(spec.rpm, spec.load_nm), config)
+    let mut plant = spec
+        .approach
+        .plant(params, spec.rpm, spec.load_nm, config)
         .with_context(|| format!("{}/{}/{}", names.rpm, names.load, names.rate))?;
     let started = Instant::now();
-    let settle = (spec.settle_s * spec.rate_hz).round() as usize;
+    let lead_in_s = spec.approach.lead_in_s();
+    let settle = ((lead_in_s + spec.settle_s) * spec.rate_hz).round() as usize;
     let mut stopped = None;
     let settled = plant.skip_while(settle, || match keep_going() {
         Ok(()) => true,
@@ -121,7 +127,7 @@ pub fn run_point(
     )?;
     let condition = condition.report(plant.params().teeth as usize);
     Ok(PointRun {
-        simulated_s: spec.settle_s + summary.measured_s,
+        simulated_s: lead_in_s + spec.settle_s + summary.measured_s,
         wall_s: started.elapsed().as_secs_f64(),
         plant,
         summary,
@@ -135,6 +141,30 @@ fn check_point(spec: &PointSpec, names: InputNames) -> anyhow::Result<()> {
     check_load_nm(spec.load_nm)
         .map_err(|e| anyhow::anyhow!("{} {}: {e}", names.load, spec.load_nm))?;
     check_times(spec.settle_s, spec.duration_s, spec.rate_hz, names)
+}
+
+/// The approaches by name, as `simulate --approach` and Python's `approach=` take them.
+pub const APPROACH_NAMES: [&str; 4] = ["static", "rest", "up", "down"];
+
+/// The approach named `name` (one of [`APPROACH_NAMES`], or `steady` for `static`) to
+/// `rpm`, its ramp at `ramp_rpm_per_s`; refused where the rate is not a positive number
+/// or the ramp longer than a run may be.
+pub fn approach_named(name: &str, rpm: f64, ramp_rpm_per_s: f64) -> anyhow::Result<Approach> {
+    let ramp_ok = ramp_rpm_per_s.is_finite() && ramp_rpm_per_s > 0.0;
+    let approach = match name {
+        "static" | "steady" => Approach::Static,
+        "rest" => Approach::Rest,
+        "up" | "down" if !ramp_ok => bail!(
+            "ramp rate {ramp_rpm_per_s}: a ramp's rate must be a positive number of rev/min per second"
+        ),
+        "up" => Approach::run_up(rpm, ramp_rpm_per_s),
+        "down" => Approach::run_down(rpm, ramp_rpm_per_s),
+        other => bail!("approach `{other}`: one of {}", APPROACH_NAMES.join(", ")),
+    };
+    check_simulated_s(approach.lead_in_s(), true).map_err(|e| {
+        anyhow::anyhow!("ramp rate {ramp_rpm_per_s} rev/min per s to {rpm} rev/min: the ramp's {e}")
+    })?;
+    Ok(approach)
 }
 
 /// The settling time, the window and the output rate, each refused under its name.

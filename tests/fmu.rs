@@ -74,7 +74,7 @@ fn outputs_equal_simulate_from_rest_whatever_the_communication_step() {
         settle_s: 0.0,
         duration_s: 2.5,
         rate_hz: SAMPLE_RATE_HZ,
-        start: NetworkStart::Rest,
+        approach: rig::Approach::Rest,
     };
     let mut reference: Vec<Vec<f64>> = Vec::new();
     run_rig_point(&spec, FLAG_NAMES, |block| {

@@ -7,7 +7,7 @@ use numpy::IntoPyArray;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use rig::{COLUMN_NAMES, Flank, SignalBlock};
-use testrig::steady_point::{InputNames, PointRun, PointSpec, run_point};
+use testrig::steady_point::{InputNames, PointRun, PointSpec, approach_named, run_point};
 
 use crate::interrupt::Interrupt;
 
@@ -55,17 +55,20 @@ impl Columns {
     }
 }
 
-/// Runs the plant at `rpm` rev/min and `load_nm` N m from rest: `settle_s` s settling,
-/// then `duration_s` s measured at `rate_hz`. Returns a dict: `signals` (name → array,
+/// Runs the plant at `rpm` rev/min and `load_nm` N m, reached by `approach` (`"static"`:
+/// in steady motion from the static load; `"rest"`: from standstill; `"up"`/`"down"`: the
+/// lab's slow ramp from 250 rev/min or from 2000 rev/min at `ramp_rate` rev/min per s, as
+/// `testrig simulate --approach`): `settle_s` s settling (from a ramp's end), then
+/// `duration_s` s measured at `rate_hz`. Returns a dict: `signals` (name → array,
 /// units in the names), `impacts` (time_s, flank +1 drive / −1 back, tooth,
 /// closing_speed_rad_s), `summary` (the CLI's `simulate --json`). `set` overrides
 /// parameters by name (`testrig params`). `signals=False` keeps no signal (`signals`
 /// is then empty): the impacts and the summary alone, as fast as the CLI. `rig` (a rig
-/// file's path, or a dict of its tables) runs that rig instead of the preset, from
-/// steady motion, as `testrig simulate --rig` does; `set` then takes paths
+/// file's path, or a dict of its tables) runs that rig instead of the preset, as
+/// `testrig simulate --rig` does; `set` then takes paths
 /// (`mesh.stage1.backlash_mm`).
 #[pyfunction]
-#[pyo3(signature = (rpm, load_nm, preset=rig::DEFAULT_PRESET, settle_s=60.0, duration_s=10.0, rate_hz=51200.0, set=None, signals=true, rig=None))]
+#[pyo3(signature = (rpm, load_nm, preset=rig::DEFAULT_PRESET, settle_s=60.0, duration_s=10.0, rate_hz=51200.0, set=None, signals=true, rig=None, approach="static", ramp_rate=rig::approach::LAB_RAMP_RPM_PER_S))]
 #[allow(clippy::too_many_arguments)]
 pub fn simulate<'py>(
     py: Python<'py>,
@@ -78,12 +81,15 @@ pub fn simulate<'py>(
     set: Option<HashMap<String, Bound<'py, PyAny>>>,
     signals: bool,
     rig: Option<Bound<'py, PyAny>>,
+    approach: &str,
+    ramp_rate: f64,
 ) -> PyResult<Bound<'py, PyDict>> {
     let overrides = overrides(set)?;
+    let approach = approach_named(approach, rpm, ramp_rate).map_err(crate::errors::to_py)?;
     if let Some(rig) = rig {
         let times = (settle_s, duration_s, rate_hz);
         return crate::simulate_rig::simulate_rig(
-            py, &rig, &overrides, rpm, load_nm, times, signals,
+            py, &rig, &overrides, rpm, load_nm, times, signals, approach,
         );
     }
     let spec = PointSpec {
@@ -94,6 +100,7 @@ pub fn simulate<'py>(
         settle_s,
         duration_s,
         rate_hz,
+        approach,
     };
     let samples = if signals {
         (duration_s.max(0.0) * rate_hz.max(0.0)).min(1e9) as usize + 1
@@ -171,6 +178,7 @@ fn result_dict<'py>(
             ("rpm", spec.rpm.into()),
             ("load_nm", spec.load_nm.into()),
             ("settle_s", spec.settle_s.into()),
+            ("approach", serde_json::json!(spec.approach)),
             ("simulated_s", run.simulated_s.into()),
             ("wall_s", run.wall_s.into()),
             (

@@ -53,6 +53,7 @@ pub fn simulate_rig<'py>(
     load_nm: f64,
     (settle_s, duration_s, rate_hz): (f64, f64, f64),
     signals: bool,
+    approach: rig::Approach,
 ) -> PyResult<Bound<'py, PyDict>> {
     let topology = read_rig(rig, overrides)?;
     let names = column_names(&topology);
@@ -66,7 +67,7 @@ pub fn simulate_rig<'py>(
             settle_s,
             duration_s,
             rate_hz,
-            start: rig::NetworkStart::Steady,
+            approach,
         };
         let run = run_rig_point(&spec, ARGUMENT_NAMES, |block| {
             if signals {
@@ -123,6 +124,7 @@ pub fn simulate_rig<'py>(
             ("rpm", rpm.into()),
             ("load_nm", load_nm.into()),
             ("settle_s", settle_s.into()),
+            ("approach", serde_json::json!(approach)),
             ("simulated_s", run.simulated_s.into()),
             ("wall_s", run.wall_s.into()),
             (

@@ -2,7 +2,7 @@
 
 import os
 from pathlib import Path
-from typing import Any, Mapping, Optional, TypedDict, Union
+from typing import Any, Literal, Mapping, Optional, TypedDict, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -42,14 +42,21 @@ def simulate(
     set: Optional[Mapping[str, Union[float, int, str, bool]]] = None,
     signals: bool = True,
     rig: Optional[Union[str, os.PathLike[str], Mapping[str, Any]]] = None,
+    approach: Literal["static", "rest", "up", "down"] = "static",
+    ramp_rate: float = 10.0,
 ) -> Simulation:
-    """The plant at `rpm` rev/min and `load_nm` N m from rest: `settle_s` s settling,
-    then `duration_s` s measured at `rate_hz` Hz. `set` overrides parameters by name
+    """The plant at `rpm` rev/min and `load_nm` N m, reached by `approach`: "static"
+    (in steady motion from the static load), "rest" (from standstill, the knob at the
+    set speed; settling counts from t = 0), "up" (the lab's slow run-up from 250 rev/min)
+    or "down" (its run-down from 2000 rev/min), the ramps at `ramp_rate` rev/min per s;
+    then `settle_s` s settling (from a ramp's end) and `duration_s` s measured at
+    `rate_hz` Hz. Where motions coexist, each approach may reach another; the summary's
+    `approach` says how the point was reached. `set` overrides parameters by name
     (`testrig params`); `signals=False` returns no signal arrays (impacts and summary
     only). Releases the GIL; Ctrl-C stops it.
 
     `rig`: a rig file (docs/rig-files.md) or a dict of its tables, run instead of the
-    preset from steady motion, as `testrig simulate --rig`: `set` then takes paths
+    preset, as `testrig simulate --rig`: `set` then takes paths
     (`mesh.stage1.backlash_mm`), the signals are named after the rig
     (`speed_<body>_rpm`, `angle_<body>_rad`, `torque_<shaft>_nm`, `contact_<mesh>`,
     `force_<mesh>_n`, `motor_torque_nm`, `strain_<shaft>_ue`), the impacts give

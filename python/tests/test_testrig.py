@@ -51,6 +51,29 @@ def test_simulate_is_the_command_lines_engine():
         assert bare["summary"][key] == cli[key], key
 
 
+@pytest.mark.skipif(not BINARY.exists(), reason="needs the CLI: cargo build --release")
+def test_the_approach_reaches_the_motion_the_command_line_does():
+    # 1500 rev/min, 5.424 N m on the rig with its drive as built: the slow run-up arrives
+    # on period 1, the run-down on period 2 (tests/approach.rs), here by Python.
+    point = dict(preset="basmaji-1983-drive", settle_s=60, duration_s=30, rate_hz=10240,
+                 signals=False)
+    up = testrig.simulate(1500, 5.424, approach="up", **point)["summary"]
+    down = testrig.simulate(1500, 5.424, approach="down", **point)["summary"]
+    assert up["approach"] == {"start": "ramp", "from_rpm": 250.0, "ramp_s": 125.0}
+    assert (up["motion"]["motion"], down["motion"]["motion"]) == ("period-1", "period-2")
+    args = ["simulate", "--preset", "basmaji-1983-drive", "--rpm", "1500", "--load", "5.424",
+            "--rate", "10240", "--settle", "60", "--duration", "30", "--approach", "up",
+            "--json"]
+    cli = json.loads(subprocess.run([str(BINARY), *args], check=True,
+                                    capture_output=True, text=True).stdout)
+    for key in ["torque_ac_rms_nm", "impacts", "motion", "simulated_s"]:
+        assert up[key] == cli[key], key
+    with pytest.raises(testrig.TestrigError, match="static, rest, up, down"):
+        testrig.simulate(1500, 0, approach="sideways")
+    with pytest.raises(testrig.TestrigError, match="ramp rate 0"):
+        testrig.simulate(1500, 0, approach="up", ramp_rate=0)
+
+
 def test_overrides_and_refusals_name_the_argument():
     with pytest.raises(testrig.TestrigError, match="load_nm 99"):
         testrig.simulate(1300, 99, settle_s=1, duration_s=1)

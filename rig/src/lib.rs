@@ -51,11 +51,12 @@
 //!
 //! Layers: no module imports one that imports it (`rig/tests/module_layers.rs` reads the
 //! source and fails on a cycle). Only the model's interface is public (`params`,
-//! `param_table`, `presets`, `geometry`, `options`, `schedule`, `signals`, `records`,
+//! `param_table`, `presets`, `geometry`, `options`, `schedule`, `approach`, `signals`, `records`,
 //! `regime`, `judge`, `steady`, `modal`, `energy`, and `Plant`); the numerics are private
 //! to the crate.
 //!
-//! `schedule.rs` set points over time. `signals.rs` the true-signal block. `records.rs`
+//! `schedule.rs` set points over time; `approach.rs` how a run reaches its point (static,
+//! from rest, a slow ramp from below or above) as a schedule. `signals.rs` the true-signal block. `records.rs`
 //! impacts and revolution samples. `regime.rs` period-k classification of the Poincaré
 //! samples (the old classifier, kept for the regime map and the panel). `judge/` the
 //! physics judge of a settled motion from the output-shaft torque: `spread.rs` (scatter of
@@ -94,6 +95,7 @@
 //! # Ok::<(), rig::RigError>(())
 //! ```
 
+pub mod approach;
 mod column_product;
 mod derivative;
 pub mod energy;
@@ -135,6 +137,7 @@ mod topology_modes;
 #[cfg(test)]
 mod jump_response_tests;
 
+pub use approach::Approach;
 pub use error::RigError;
 pub use geometry::GearGeometry;
 pub use judge::{JudgeInput, Judgement, Motion, judge};

@@ -161,6 +161,31 @@ impl RigParams {
         self.full_load_torque_nm() * (self.drive_current_limit_pct / 100.0)
     }
 
+    /// Time the drive takes to run the rig up from rest to `rpm` against `load_nm` at
+    /// its torque limit (s): J dω/dt = limit − load − brake drag − 5 c ω, so ω rises
+    /// towards ω∞ = (limit − load − brake drag) / 5c with time constant J / 5c. Where
+    /// `rpm` lies at or above ω∞ (the motor cannot hold it), the time to come within 1 %
+    /// of ω∞. `None` where the limit cannot turn the rig against load and brake drag.
+    pub fn run_up_from_rest_s(&self, rpm: f64, load_nm: f64) -> Option<f64> {
+        let omega = rpm * std::f64::consts::PI / 30.0;
+        let spare_nm = self.motor_torque_limit_nm() - load_nm - self.brake_drag_nm;
+        if spare_nm <= 0.0 {
+            return None;
+        }
+        let inertia = self.total_inertia_kgm2();
+        let drag = 5.0 * self.bearing_drag_nms_per_rad;
+        if drag == 0.0 {
+            return Some(inertia * omega / spare_nm);
+        }
+        let share = omega * drag / spare_nm;
+        let decays = if share < 0.99 {
+            -(1.0 - share).ln()
+        } else {
+            100f64.ln()
+        };
+        Some(inertia / drag * decays)
+    }
+
     pub fn validate(&self) -> Result<(), RigError> {
         self.check_positive()?;
         self.check_finite()?;

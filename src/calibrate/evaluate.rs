@@ -2,10 +2,10 @@
 //! candidates of a generation.
 
 use rayon::prelude::*;
-use rig::{Judgement, RigChains, RigParams};
+use rig::{Approach, Judgement, RigChains, RigParams};
 use serde::{Deserialize, Serialize};
 
-use crate::sweep::{Approach, Case, Direction, run_case};
+use crate::sweep::{Case, Direction, run_case};
 use crate::vocabulary::seeds::case_seed;
 
 use super::calibration_plan::{ApproachKind, CalibrationPlan, Expect, Scoring, TargetPoint};
@@ -54,6 +54,7 @@ fn case_of(
         approach,
         direction: Direction::Static,
         series: None,
+        kick_rad_s: 0.0,
     }
 }
 

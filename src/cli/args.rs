@@ -231,15 +231,21 @@ pub struct SimulateArgs {
     /// Parameters.
     #[command(flatten)]
     pub rig: RigArgs,
-    /// A rig file (docs/rig-files.md) instead of a preset: its rig run from steady motion,
-    /// --rpm the motor's body, --load on the brake's, --set by path
+    /// A rig file (docs/rig-files.md) instead of a preset: its rig, --rpm the motor's body, --load on the brake's, --set by path
     /// (`mesh.stage1.backlash_mm=0.3`); signals named after its bodies, shafts and meshes.
     #[arg(long = "rig", value_name = "FILE", conflicts_with = "preset")]
     pub rig_file: Option<PathBuf>,
-    /// With --rig: start in steady motion at the point, or from rest (then --settle 0
-    /// records the run-up from t = 0, as an FMU of the rig starts).
-    #[arg(long, value_enum, default_value = "steady", requires = "rig_file")]
+    /// How the point is reached: `static` starts there in steady motion from the static
+    /// load; `rest` from standstill, the knob at the set speed (--settle 0 records the
+    /// run-up from t = 0, as an FMU of a rig starts); `up` the lab's slow run-up from 250
+    /// rev/min (or half the speed); `down` its run-down from 2000 rev/min (or a fifth
+    /// above). Where motions coexist, each approach may settle to a different one.
+    #[arg(long, value_enum, default_value = "static")]
     pub approach: Approach,
+    /// With `--approach up|down`: the ramp's rate (rev/min per second); --settle counts
+    /// from its end.
+    #[arg(long, default_value_t = rig::approach::LAB_RAMP_RPM_PER_S, allow_negative_numbers = true)]
+    pub ramp_rate: f64,
     /// Measuring window after settling (s).
     #[arg(long, default_value_t = 10.0)]
     pub duration: f64,

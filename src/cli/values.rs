@@ -82,22 +82,25 @@ pub enum TrainingHalf {
     Odd,
 }
 
-/// `simulate --approach`: how a rig file's rig reaches its point.
+/// `simulate --approach`: how the point is reached.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum Approach {
-    /// Started in steady motion at the set speed and load (shafts and meshes twisted to
-    /// carry them).
-    Steady,
-    /// Started at rest, the motor's speed loop then taking it to the set speed.
+    /// At the set speed in steady motion from the static load (shafts and meshes twisted
+    /// to carry it, no vibration).
+    #[value(alias = "steady")]
+    Static,
+    /// From standstill at t = 0, the knob at the set speed.
     Rest,
+    /// The lab's slow run-up from below.
+    Up,
+    /// The lab's slow run-down from above.
+    Down,
 }
 
 impl Approach {
-    /// The plant's start.
-    pub fn start(self) -> rig::NetworkStart {
-        match self {
-            Self::Steady => rig::NetworkStart::Steady,
-            Self::Rest => rig::NetworkStart::Rest,
-        }
+    /// The plant's approach to `rpm` (a ramp at `ramp_rpm_per_s`), checked.
+    pub fn to_rig(self, rpm: f64, ramp_rpm_per_s: f64) -> anyhow::Result<rig::Approach> {
+        let name = self.to_possible_value().map(|v| v.get_name().to_string());
+        testrig::steady_point::approach_named(&name.unwrap_or_default(), rpm, ramp_rpm_per_s)
     }
 }

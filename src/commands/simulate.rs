@@ -21,6 +21,8 @@ struct Report<'a> {
     rpm: f64,
     load_nm: f64,
     settle_s: f64,
+    /// How the point was reached.
+    approach: rig::Approach,
     simulated_s: f64,
     wall_s: f64,
     realtime_factor: f64,
@@ -42,6 +44,7 @@ pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
         settle_s: args.settle,
         duration_s: args.duration,
         rate_hz: args.rate,
+        approach: args.approach.to_rig(args.rpm, args.ramp_rate)?,
     };
     let mut writer = match &args.out {
         Some(dir) => Some(SignalWriter::create(dir, args.replace, COLUMN_NAMES)?),
@@ -67,6 +70,7 @@ pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
         rpm: args.rpm,
         load_nm: args.load,
         settle_s: args.settle,
+        approach: spec.approach,
         simulated_s,
         wall_s,
         realtime_factor: simulated_s / wall_s.max(1e-9),
@@ -89,7 +93,7 @@ pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
         )?);
         let details = serde_json::json!({
             "preset": args.rig.preset, "set": args.rig.overrides, "rpm": args.rpm,
-            "load_nm": args.load, "settle_s": args.settle, "duration_s": args.duration,
+            "load_nm": args.load, "approach": spec.approach, "settle_s": args.settle, "duration_s": args.duration,
             "rate_hz": args.rate,
         });
         write_command_manifest(dir, "simulate", &files, details)?;
@@ -114,8 +118,8 @@ pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
 fn print_text(r: &Report) {
     let s = &r.summary;
     println!(
-        "{} at {} rev/min, {} N m: {:.1} s simulated in {:.3} s ({:.0}x real time)",
-        r.preset, r.rpm, r.load_nm, r.simulated_s, r.wall_s, r.realtime_factor
+        "{} at {} rev/min, {} N m, {}: {:.1} s simulated in {:.3} s ({:.0}x real time)",
+        r.preset, r.rpm, r.load_nm, r.approach, r.simulated_s, r.wall_s, r.realtime_factor
     );
     println!(
         "measured {:.1} s after {:.1} s settling, {} revolutions",

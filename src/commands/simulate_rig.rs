@@ -22,6 +22,8 @@ struct Report<'a> {
     rpm: f64,
     load_nm: f64,
     settle_s: f64,
+    /// How the point was reached.
+    approach: rig::Approach,
     simulated_s: f64,
     wall_s: f64,
     realtime_factor: f64,
@@ -38,7 +40,7 @@ pub fn run(args: &SimulateArgs, path: &Path) -> anyhow::Result<()> {
         settle_s: args.settle,
         duration_s: args.duration,
         rate_hz: args.rate,
-        start: args.approach.start(),
+        approach: args.approach.to_rig(args.rpm, args.ramp_rate)?,
     };
     let mut writer = match &args.out {
         Some(dir) => Some(SignalWriter::create(dir, args.replace, column_names(&rig))?),
@@ -66,6 +68,7 @@ pub fn run(args: &SimulateArgs, path: &Path) -> anyhow::Result<()> {
         rpm: args.rpm,
         load_nm: args.load,
         settle_s: args.settle,
+        approach: spec.approach,
         simulated_s,
         wall_s,
         realtime_factor: simulated_s / wall_s.max(1e-9),
@@ -82,7 +85,7 @@ pub fn run(args: &SimulateArgs, path: &Path) -> anyhow::Result<()> {
         ];
         let details = serde_json::json!({
             "rig_file": path.display().to_string(), "set": args.rig.overrides, "rpm": args.rpm,
-            "load_nm": args.load, "settle_s": args.settle, "duration_s": args.duration,
+            "load_nm": args.load, "approach": spec.approach, "settle_s": args.settle, "duration_s": args.duration,
             "rate_hz": args.rate, "approach": format!("{:?}", args.approach).to_lowercase(),
         });
         write_command_manifest(dir, "simulate", &files, details)?;
@@ -105,8 +108,8 @@ pub fn run(args: &SimulateArgs, path: &Path) -> anyhow::Result<()> {
 fn print_text(r: &Report) {
     let s = &r.summary;
     println!(
-        "{} at {} rev/min, {} N m: {:.1} s simulated in {:.3} s ({:.0}x real time)",
-        r.rig, r.rpm, r.load_nm, r.simulated_s, r.wall_s, r.realtime_factor
+        "{} at {} rev/min, {} N m, {}: {:.1} s simulated in {:.3} s ({:.0}x real time)",
+        r.rig, r.rpm, r.load_nm, r.approach, r.simulated_s, r.wall_s, r.realtime_factor
     );
     println!(
         "measured {:.1} s after {:.1} s settling, {} revolutions of the motor's body; motor {:.4} N m",

@@ -1,6 +1,7 @@
 //! The bifurcation diagram: the output-shaft torque sampled once per revolution against
-//! speed, run-up and run-down in two colours. A period-k motion shows k dots at a speed, a
-//! chaotic one a smear; where the two directions differ the rig has coexisting motions.
+//! speed, each approach (run-up, run-down, from rest, knocked repeats) in its colour. A
+//! period-k motion shows k dots at a speed, a chaotic one a smear; the speeds where the
+//! approaches settle to different motions (coexisting motions) are shaded.
 
 use std::path::{Path, PathBuf};
 
@@ -18,31 +19,38 @@ pub struct SectionColumn {
     pub torque_nm: Vec<f64>,
 }
 
-/// Writes `base.png` and `base.svg`: one series of columns per `(label, columns)`.
+/// Writes `base.png` and `base.svg`: one series of columns per `(label, columns)`, a
+/// band shaded at each speed of `coexisting_rpm` (rev/min).
 pub fn write_bifurcation(
     base: &Path,
     title: &str,
     series: &[(String, Vec<SectionColumn>)],
+    coexisting_rpm: &[f64],
 ) -> anyhow::Result<Vec<PathBuf>> {
     png_and_svg(
         base,
-        |root| draw(root, title, series),
-        |root| draw(root, title, series),
+        |root| draw(root, title, series, coexisting_rpm),
+        |root| draw(root, title, series, coexisting_rpm),
     )
 }
 
-/// Colours of the series in turn: run-up blue, run-down red, then others.
-const COLOURS: [RGBColor; 4] = [
+/// Colours of the series in turn: blue, red, green, orange, then grey.
+const COLOURS: [RGBColor; 5] = [
     RGBColor(30, 90, 200),
     RGBColor(210, 40, 40),
     RGBColor(40, 150, 60),
+    RGBColor(230, 140, 20),
     RGBColor(120, 120, 120),
 ];
+
+/// The shade of a speed where motions coexist.
+const COEXIST_SHADE: RGBColor = RGBColor(255, 225, 120);
 
 fn draw<DB: DrawingBackend>(
     root: DrawingArea<DB, Shift>,
     title: &str,
     series: &[(String, Vec<SectionColumn>)],
+    coexisting_rpm: &[f64],
 ) -> anyhow::Result<()> {
     let err = draw_error("bifurcation diagram");
     let points = || {
@@ -67,7 +75,8 @@ fn draw<DB: DrawingBackend>(
     let pad_r = 0.03 * (r1 - r0).max(100.0);
     let pad_t = 0.05 * (t1 - t0).max(0.1);
     let low = t0 - pad_t;
-    let top = low + (t1 + pad_t - low) / (1.0 - legend_share(series.len()));
+    let entries = series.len() + usize::from(!coexisting_rpm.is_empty());
+    let top = low + (t1 + pad_t - low) / (1.0 - legend_share(entries));
     let mut chart = axes(&root, title, (r0 - pad_r)..(r1 + pad_r), low..top)?;
     mesh(
         &mut chart,
@@ -77,10 +86,20 @@ fn draw<DB: DrawingBackend>(
         ),
         |_| {},
     )?;
+    if !coexisting_rpm.is_empty() {
+        let half = 0.6 * pad_r;
+        chart
+            .draw_series(coexisting_rpm.iter().map(|&r| {
+                Rectangle::new([(r - half, low), (r + half, top)], COEXIST_SHADE.filled())
+            }))
+            .map_err(&err)?
+            .label("motions coexist")
+            .legend(|(x, y)| Rectangle::new([(x, y - 4), (x + 12, y + 4)], COEXIST_SHADE.filled()));
+    }
     for (i, (label, columns)) in series.iter().enumerate() {
         let colour = COLOURS[i.min(COLOURS.len() - 1)];
-        // Run-down dots drawn a little to the right so that both directions show.
-        let shift = if i == 1 { 0.15 * pad_r } else { 0.0 };
+        // Each series a little to the right of the one before, so that all show.
+        let shift = 0.12 * pad_r * i as f64;
         chart
             .draw_series(columns.iter().flat_map(|c| {
                 c.torque_nm

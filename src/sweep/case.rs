@@ -3,7 +3,8 @@
 
 use instruments::Line;
 use rig::{
-    Judgement, Plant, PlantConfig, Regime, RegimeCriteria, SignalBlock, SteadySummary, SteadyWindow,
+    Approach, Judgement, Plant, PlantConfig, Regime, RegimeCriteria, SignalBlock, SteadySummary,
+    SteadyWindow,
 };
 use serde::{Deserialize, Serialize};
 
@@ -36,10 +37,13 @@ pub struct CaseResult {
     pub values: Vec<String>,
     /// The case's seed.
     pub seed: u64,
-    /// How the case was reached: static start, or the speed stepped up or down from the
-    /// case before it.
+    /// How the case was reached: from the static load, from rest, the speed stepped up or
+    /// down from the case before it, or knocked after the case before it.
     #[serde(default)]
     pub direction: Direction,
+    /// A repeat's knock on the driven gear before it settled (rad/s); 0 otherwise.
+    #[serde(default)]
+    pub kick_rad_s: f64,
     /// Period-k or aperiodic (`period-k` or `aperiodic` in JSON).
     pub regime: Regime,
     /// The physics judge's verdict on the output-shaft torque over the window.
@@ -109,13 +113,35 @@ pub fn measured_samples(plan: &SweepPlan) -> usize {
         + (plan.measure_s * plan.rate_hz).round() as usize
 }
 
+/// Longest run-up from rest a case waits for before it settles (s).
+const MAX_RUN_UP_S: f64 = 600.0;
+
 /// Runs `case` of `plan` on a plant of its own.
 pub fn run_case(plan: &SweepPlan, case: &Case) -> anyhow::Result<CaseResult> {
-    let schedule = case.approach.schedule(case.rpm, case.load_nm);
-    let mut plant = Plant::new(case.params.clone(), schedule, plant_config(plan))?;
-    let settle_s = case.approach.lead_in_s() + plan.settle_s - chain_lead_s(plan);
-    plant.skip((settle_s * plan.rate_hz).round() as usize)?;
+    let mut plant = settled_plant(plan, case)?;
     measure_case(plan, case, &mut plant)
+}
+
+/// The plant of `case`, brought to its point by its approach and settled, standing
+/// [`chain_lead_s`] before the case's window. From rest it settles for `settle_s` once
+/// the drive has run it up (the run-up at the torque limit, at most [`MAX_RUN_UP_S`]).
+pub fn settled_plant(plan: &SweepPlan, case: &Case) -> anyhow::Result<Plant> {
+    let mut plant = case.approach.plant(
+        case.params.clone(),
+        case.rpm,
+        case.load_nm,
+        plant_config(plan),
+    )?;
+    let lead_in_s = match case.approach {
+        Approach::Rest => case
+            .params
+            .run_up_from_rest_s(case.rpm, case.load_nm)
+            .map_or(0.0, |s| s.min(MAX_RUN_UP_S)),
+        other => other.lead_in_s(),
+    };
+    let settle_s = lead_in_s + plan.settle_s - chain_lead_s(plan);
+    plant.skip((settle_s * plan.rate_hz).round() as usize)?;
+    Ok(plant)
 }
 
 /// Measures `case` on `plant`, which stands [`chain_lead_s`] before the case's window:
@@ -220,6 +246,7 @@ fn result(
         values: case.values.clone(),
         seed: case.seed,
         direction: case.direction,
+        kick_rad_s: case.kick_rad_s,
         regime: s.regime,
         motion: s.motion.clone(),
         revolution_torque_nm: Vec::new(),

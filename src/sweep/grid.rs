@@ -1,6 +1,6 @@
 //! A sweep file checked and expanded into its cases.
 
-use rig::RigParams;
+use rig::{Approach, RigParams};
 
 use crate::scenario::build::stream_rate_hz;
 use crate::scenario::read_chain::{analyser_plan, chain_plan};
@@ -10,11 +10,14 @@ use crate::scenario::values::param_value;
 use crate::scenario::{AnalyserPlan, ChainPlan, ScenarioSource};
 use crate::vocabulary::limits::{check_load_within_motor, check_simulated_s};
 
-use super::approach::Approach;
+use super::knock::knock_rad_s;
 use super::sequence::{Direction, Sequence};
 use super::sweep_toml::{CaseFile, GridFile, SweepFile};
 use crate::vocabulary::limits::MAX_SWEEP_CASES;
-use crate::vocabulary::seeds::case_seed;
+use crate::vocabulary::seeds::{NoiseSource, case_seed};
+
+/// Most knocked repeats of a point.
+pub const MAX_REPEATS: u32 = 8;
 
 /// Everything a sweep needs, checked.
 #[derive(Clone, Debug)]
@@ -66,6 +69,9 @@ pub struct Case {
     pub direction: Direction,
     /// The series it is run in, in order, on one plant (`None`: on a plant of its own).
     pub series: Option<usize>,
+    /// A repeat's knock: the driven gear's speed change before it settles (rad/s); 0 for
+    /// every other case.
+    pub kick_rad_s: f64,
 }
 
 /// Checks `file` (read from `src`) and expands its grid.
@@ -82,7 +88,8 @@ pub fn build_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<Swe
     if grid.rpm.is_empty() || grid.load_nm.is_empty() {
         return Err(src.error(0..0, "grid", "rpm and load_nm each need at least one value"));
     }
-    check_case_count(src, grid, file.case.sequence)?;
+    let repeats = repeats(src, &file.case)?;
+    check_case_count(src, grid, file.case.sequence, repeats)?;
     let mut swept = Vec::new();
     let mut variants: Vec<(Vec<String>, RigParams)> = vec![(Vec::new(), base)];
     if !grid.backlash_mm.is_empty() {
@@ -130,26 +137,39 @@ pub fn build_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<Swe
                 .map_err(|message| src.error(0..0, "grid.load_nm", message))?;
         }
         let points = match sequence {
-            Sequence::Static => static_points(grid),
+            Sequence::Static => own_points(grid, Direction::Static, repeats, 0),
             Sequence::UpAndDown => up_and_down_points(grid),
-            Sequence::EveryApproach => [up_and_down_points(grid), static_points(grid)].concat(),
+            Sequence::EveryApproach => [
+                up_and_down_points(grid),
+                own_points(grid, Direction::Rest, repeats, grid.load_nm.len()),
+            ]
+            .concat(),
         };
         let series_base = cases
-            .last()
-            .and_then(|c: &Case| c.series)
+            .iter()
+            .filter_map(|c: &Case| c.series)
+            .max()
             .map_or(0, |s| s + 1);
         for (rpm, load_nm, direction, series) in points {
             let index = cases.len();
+            let seed = case_seed(file.seed, index);
             cases.push(Case {
                 index,
                 rpm,
                 load_nm,
                 values: values.clone(),
                 params: params.clone(),
-                seed: case_seed(file.seed, index),
-                approach: Approach::Static,
+                seed,
+                approach: match direction {
+                    Direction::Rest => Approach::Rest,
+                    _ => Approach::Static,
+                },
                 direction,
                 series: series.map(|s| series_base + s),
+                kick_rad_s: match direction {
+                    Direction::Repeat => knock_rad_s(NoiseSource::Knock.case_seed(seed), rpm),
+                    _ => 0.0,
+                },
             });
         }
     }
@@ -169,16 +189,52 @@ pub fn build_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<Swe
     })
 }
 
-/// The grid's points from rest: speed outer, load inner, as the file lists them.
-fn static_points(grid: &GridFile) -> Vec<(f64, f64, Direction, Option<usize>)> {
-    grid.rpm
-        .iter()
-        .flat_map(|rpm| {
-            grid.load_nm
-                .iter()
-                .map(move |load| (rpm.0, load.0, Direction::Static, None))
-        })
-        .collect()
+/// The grid's points each on a plant of its own, started as `direction` says: speed
+/// outer, load inner, as the file lists them. With repeats each point is a series (numbered
+/// from `first_series`): the point, then its knocked repeats.
+fn own_points(
+    grid: &GridFile,
+    direction: Direction,
+    repeats: u32,
+    first_series: usize,
+) -> Vec<(f64, f64, Direction, Option<usize>)> {
+    let mut points = Vec::new();
+    let mut next_series = first_series;
+    for rpm in &grid.rpm {
+        for load in &grid.load_nm {
+            let series = (repeats > 0).then(|| {
+                next_series += 1;
+                next_series - 1
+            });
+            points.push((rpm.0, load.0, direction, series));
+            points.extend((0..repeats).map(|_| (rpm.0, load.0, Direction::Repeat, series)));
+        }
+    }
+    points
+}
+
+/// `case.repeats`, checked: at most [`MAX_REPEATS`], and only where points start on their
+/// own.
+fn repeats(src: &ScenarioSource, case: &CaseFile) -> anyhow::Result<u32> {
+    let Some(repeats) = &case.repeats else {
+        return Ok(0);
+    };
+    let n = *repeats.get_ref();
+    if n > MAX_REPEATS {
+        return Err(src.error(
+            repeats.span(),
+            "case.repeats",
+            format!("{n}: at most {MAX_REPEATS} knocked repeats of a point"),
+        ));
+    }
+    if n > 0 && case.sequence == Sequence::UpAndDown {
+        return Err(src.error(
+            repeats.span(),
+            "case.repeats",
+            "repeats knock points started on their own: give sequence = \"static\" or \"every-approach\"",
+        ));
+    }
+    Ok(n)
 }
 
 /// The lab's run: one series per load, the speeds up in ascending order, then down from
@@ -189,11 +245,14 @@ fn check_case_count(
     src: &ScenarioSource,
     grid: &GridFile,
     sequence: Sequence,
+    repeats: u32,
 ) -> anyhow::Result<()> {
+    let n = grid.rpm.len() as u128;
+    let own = n * (1 + u128::from(repeats));
     let speeds = match sequence {
-        Sequence::Static => grid.rpm.len() as u128,
-        Sequence::UpAndDown => 2 * grid.rpm.len() as u128 - 1,
-        Sequence::EveryApproach => 3 * grid.rpm.len() as u128 - 1,
+        Sequence::Static => own,
+        Sequence::UpAndDown => 2 * n - 1,
+        Sequence::EveryApproach => 2 * n - 1 + own,
     };
     let factors = [grid.load_nm.len(), grid.backlash_mm.len().max(1)]
         .into_iter()

@@ -2,11 +2,13 @@
 //! points through the chain and the analyser, in parallel, shardable and resumable.
 //!
 //! Files: `sweep_toml.rs` (grid, case timing, chain and analyser as in a scenario),
-//! `grid.rs` (the grid expanded into cases), `approach.rs` (from the static load, or ramped
-//! from below or above), `sequence.rs` (`Sequence`: each point on its own, or up and down;
+//! `grid.rs` (the grid expanded into cases; each case's start is a `rig::Approach`),
+//! `sequence.rs` (`Sequence`: each point on its own, or up and down;
 //! `Direction`), `case.rs` (one case: plant settled, the chain inline into ADC and
 //! analyser, regime and the judge's motion), `series.rs` (the lab's run: one plant per load
-//! stepping the speeds up and back down; a series is one unit of work), `lines.rs` (order
+//! stepping the speeds up and back down; a series is one unit of work), `knock.rs` (a
+//! point and its knocked repeats on one plant), `held_motions.rs` (the motions each point
+//! held, by approach), `lines.rs` (order
 //! lines over their local floor), `table.rs` (a JSON per case, `cases.csv`), `meta.rs`
 //! (`sweep.json`), `shard.rs` (`--shard`, SLURM arrays), `runner.rs` (rayon pool, resume,
 //! assembly of table and plots, also for `merge`), `thesis.rs` (what the thesis saw at each
@@ -14,10 +16,11 @@
 //! judged motion), `report.rs` (`report.md`: the scores, hysteresis, where the motor cannot
 //! hold the set speed)
 
-pub(crate) mod approach;
 pub(crate) mod case;
 pub(crate) mod facts;
 pub(crate) mod grid;
+pub(crate) mod held_motions;
+pub(crate) mod knock;
 pub(crate) mod lines;
 pub(crate) mod meta;
 pub(crate) mod report;
@@ -29,7 +32,6 @@ pub(crate) mod sweep_toml;
 pub(crate) mod table;
 pub(crate) mod thesis;
 
-pub use approach::Approach;
 pub use case::{CaseResult, run_case};
 pub use grid::{Case, SweepPlan, build_sweep};
 pub use meta::{SweepMeta, fingerprint, read_meta, sweep_meta};

@@ -7,6 +7,7 @@ use std::path::{Path, PathBuf};
 
 use super::case::CaseResult;
 use super::facts::facts;
+use super::held_motions::held_motions;
 use super::meta::SweepMeta;
 use super::sequence::Direction;
 use super::thesis::{
@@ -156,44 +157,28 @@ fn hysteresis(md: &mut String, cases: &[CaseResult]) {
     }
 }
 
-/// Points reached from the static load as well as up and down, where the approaches
-/// settle to different motions: each motion with the approaches that reached it.
+/// Points reached by more than one approach where the approaches settle to different
+/// motions: each motion with the approaches that reached it.
 fn coexisting(md: &mut String, cases: &[CaseResult]) {
-    if !cases.iter().any(|c| c.direction == Direction::Static)
-        || !cases.iter().any(|c| c.direction == Direction::Up)
-    {
+    let points = held_motions(cases);
+    let reached_twice = points
+        .iter()
+        .any(|h| h.motions.iter().map(|(_, by)| by.len()).sum::<usize>() > 1);
+    if !reached_twice {
         return;
     }
-    let mut lines = Vec::new();
-    let mut seen: Vec<&CaseResult> = Vec::new();
-    for c in cases {
-        let same =
-            |p: &CaseResult| p.rpm == c.rpm && p.load_nm == c.load_nm && p.values == c.values;
-        if seen.iter().any(|p| same(p)) {
-            continue;
-        }
-        seen.push(c);
-        let mut motions: Vec<(String, Vec<String>)> = Vec::new();
-        for p in cases.iter().filter(|p| same(p)) {
-            let motion = p.motion.motion.to_string();
-            match motions.iter_mut().find(|(m, _)| *m == motion) {
-                Some((_, by)) => by.push(p.direction.to_string()),
-                None => motions.push((motion, vec![p.direction.to_string()])),
-            }
-        }
-        if motions.len() > 1 {
-            let held: Vec<String> = motions
-                .iter()
-                .map(|(m, by)| format!("{m} ({})", by.join(", ")))
-                .collect();
-            lines.push(format!(
+    let lines: Vec<String> = points
+        .iter()
+        .filter(|h| h.coexist())
+        .map(|h| {
+            format!(
                 "{} rev/min, {} N m: {}",
-                c.rpm,
-                c.load_nm,
-                held.join(", ")
-            ));
-        }
-    }
+                h.point.rpm,
+                h.point.load_nm,
+                h.describe()
+            )
+        })
+        .collect();
     let _ = writeln!(
         md,
         "- Coexisting motions (the approaches settle to different motions): {}.",
@@ -268,7 +253,8 @@ fn motion_table(md: &mut String, cases: &[CaseResult]) {
 }
 
 /// A table of `cases` with a row per speed and the given `columns` (a header and which
-/// case of a row is the column's), each cell drawn by `cell` ("–" where there is none).
+/// cases of a row are the column's), each cell drawn by `cell` (several joined by " / ",
+/// as a point's knocked repeats; "–" where there is none).
 fn speed_table(
     md: &mut String,
     columns: &[(String, impl Fn(&CaseResult) -> bool)],
@@ -285,10 +271,16 @@ fn speed_table(
         let cells: Vec<String> = columns
             .iter()
             .map(|(_, here)| {
-                cases
+                let held: Vec<String> = cases
                     .iter()
-                    .find(|c| c.rpm == rpm && here(c))
-                    .map_or("–".into(), &cell)
+                    .filter(|c| c.rpm == rpm && here(c))
+                    .map(&cell)
+                    .collect();
+                if held.is_empty() {
+                    "–".into()
+                } else {
+                    held.join(" / ")
+                }
             })
             .collect();
         let _ = writeln!(md, "| {rpm} | {} |", cells.join(" | "));
@@ -462,9 +454,15 @@ fn table(md: &mut String, cases: &[CaseResult]) {
         md,
         "Each cell: height of the half-order line above the floor (dB), the regime; ✓ where the verdict matches the thesis, ✗ where not.\n"
     );
+    // One case a cell: the first approach the sweep ran (the run-up where there is one).
+    let first = cases.first().map(|c| c.direction);
     let columns: Vec<(String, _)> = loads
         .into_iter()
-        .map(|l| (format!("{l} N m"), move |c: &CaseResult| c.load_nm == l))
+        .map(|l| {
+            (format!("{l} N m"), move |c: &CaseResult| {
+                c.load_nm == l && Some(c.direction) == first
+            })
+        })
         .collect();
     speed_table(md, &columns, cases, |c| {
         let ok = c.half_order_present == thesis_expects_half_order(c.rpm, c.load_nm);

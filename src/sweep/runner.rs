@@ -12,6 +12,8 @@ use rayon::prelude::*;
 
 use super::case::{CaseResult, run_case};
 use super::grid::{Case, SweepPlan};
+use super::held_motions::held_motions;
+use super::knock::run_knocked;
 use super::meta::{SweepMeta, read_meta, write_meta};
 use super::report::write_report;
 use super::sequence::Direction;
@@ -114,6 +116,7 @@ pub fn run_sweep(
                 let results = match unit.as_slice() {
                     _ if stopped => Vec::new(),
                     [case] if case.series.is_none() => vec![(case.index, run_case(plan, case))],
+                    series if series[0].direction.is_own_start() => run_knocked(plan, series),
                     series => run_series(plan, series),
                 };
                 results.into_iter().filter_map(|(index, result)| {
@@ -371,7 +374,8 @@ fn plots(out: &Path, meta: &SweepMeta, cases: &[CaseResult]) -> anyhow::Result<V
     Ok(files)
 }
 
-/// One bifurcation diagram per parameter variant and load, each direction a series.
+/// One bifurcation diagram per parameter variant and load, each approach a series, the
+/// speeds where the approaches settle to different motions shaded.
 fn bifurcation_plots(
     out: &Path,
     meta: &SweepMeta,
@@ -389,30 +393,40 @@ fn bifurcation_plots(
         let mut label = values.clone();
         label.push(format!("{load} N m"));
         let label = label.join(", ");
-        let series: Vec<(String, Vec<SectionColumn>)> =
-            [Direction::Static, Direction::Up, Direction::Down]
-                .into_iter()
-                .map(|d| {
-                    let columns: Vec<SectionColumn> = cases
-                        .iter()
-                        .filter(|c| c.values == values && c.load_nm == load && c.direction == d)
-                        .map(|c| SectionColumn {
-                            rpm: c.rpm,
-                            torque_nm: c.revolution_torque_nm.clone(),
-                        })
-                        .collect();
-                    (
-                        match d {
-                            Direction::Static => "from rest",
-                            Direction::Up => "run-up",
-                            Direction::Down => "run-down",
-                        }
-                        .to_string(),
-                        columns,
-                    )
+        let here = |c: &CaseResult| c.values == values && c.load_nm == load;
+        let series: Vec<(String, Vec<SectionColumn>)> = [
+            Direction::Up,
+            Direction::Down,
+            Direction::Rest,
+            Direction::Static,
+            Direction::Repeat,
+        ]
+        .into_iter()
+        .map(|d| {
+            let columns: Vec<SectionColumn> = cases
+                .iter()
+                .filter(|c| here(c) && c.direction == d)
+                .map(|c| SectionColumn {
+                    rpm: c.rpm,
+                    torque_nm: c.revolution_torque_nm.clone(),
                 })
-                .filter(|(_, columns)| columns.iter().any(|c| !c.torque_nm.is_empty()))
                 .collect();
+            let label = match d {
+                Direction::Static => "from the static load",
+                Direction::Rest => "from rest",
+                Direction::Up => "run-up",
+                Direction::Down => "run-down",
+                Direction::Repeat => "knocked repeats",
+            };
+            (label.to_string(), columns)
+        })
+        .filter(|(_, columns)| columns.iter().any(|c| !c.torque_nm.is_empty()))
+        .collect();
+        let coexisting: Vec<f64> = held_motions(cases)
+            .iter()
+            .filter(|h| here(h.point) && h.coexist())
+            .map(|h| h.point.rpm)
+            .collect();
         if series.is_empty() {
             continue;
         }
@@ -424,6 +438,7 @@ fn bifurcation_plots(
             &out.join(format!("bifurcation-{}", file_label(&label))),
             &title,
             &series,
+            &coexisting,
         )?);
     }
     Ok(files)

@@ -70,11 +70,17 @@ pub struct CaseFile {
     pub settle_s: Spanned<Positive>,
     /// Simulated time measured (s): the regime window and the analyser's averages.
     pub measure_s: Spanned<Positive>,
-    /// `static` (default): every point from rest; `up-and-down`: the lab's run, at each
-    /// load the speeds stepped up and back down on one rig, each point settling from the
-    /// state the one before it left.
+    /// `static` (default): every point from the static load; `up-and-down`: the lab's
+    /// run, at each load the speeds stepped up and back down on one rig, each point
+    /// settling from the state the one before it left; `every-approach`: the run up and
+    /// down, and every point from rest.
     #[serde(default)]
     pub sequence: Sequence,
+    /// Knocked repeats of each point started on its own (`static` and `every-approach`):
+    /// the point's rig continued, its driven gear knocked by a seeded kick, settled and
+    /// measured again, as a lab repeats a doubtful test. 0 (default) to 8.
+    #[serde(default)]
+    pub repeats: Option<Spanned<u32>>,
 }
 
 /// `[detect]`.

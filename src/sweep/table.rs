@@ -97,6 +97,7 @@ pub fn write_table(dir: &Path, swept: &[String], cases: &[CaseResult]) -> anyhow
             "chaos_k",
             "thesis_motion",
             "physics_match",
+            "kick_rad_s",
         ]
         .map(String::from),
     );
@@ -138,6 +139,7 @@ pub fn write_table(dir: &Path, swept: &[String], cases: &[CaseResult]) -> anyhow
             c.seed.to_string(),
         ]);
         row.extend(judge_columns(c));
+        row.push(format!("{:.6}", c.kick_rad_s));
         csv.write_row(&row)?;
     }
     csv.finish()

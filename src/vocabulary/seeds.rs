@@ -10,6 +10,8 @@ pub enum NoiseSource {
     SlipRings,
     /// The ADC's TPDF dither.
     AdcDither,
+    /// A sweep's knocks on the driven gear before a repeated measurement.
+    Knock,
 }
 
 impl NoiseSource {
@@ -19,15 +21,18 @@ impl NoiseSource {
         match self {
             Self::SlipRings => run_seed.wrapping_add(1),
             Self::AdcDither => run_seed.wrapping_add(2),
+            Self::Knock => run_seed.wrapping_add(3),
         }
     }
 
     /// The source's seed in a sweep case seeded `case_seed` ([`case_seed`]): the slip
-    /// rings take the case's seed, the dither the case's with its lowest bit flipped.
+    /// rings take the case's seed, the dither the case's with its lowest bit flipped, the
+    /// knock the case's with its second bit flipped.
     pub fn case_seed(self, case_seed: u64) -> u64 {
         match self {
             Self::SlipRings => case_seed,
             Self::AdcDither => case_seed ^ 1,
+            Self::Knock => case_seed ^ 2,
         }
     }
 }

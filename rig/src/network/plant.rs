@@ -20,7 +20,8 @@ pub enum NetworkStart {
     /// In steady motion at the schedule's first set points (shafts and meshes twisted to
     /// carry the load, every body at its share of the speed).
     Steady,
-    /// At rest, a loop carrying its locked torque; the motor then follows the schedule.
+    /// At rest, the shafts and meshes twisted to carry the schedule's first load at
+    /// standstill (a loop its locked torque); the motor then follows the schedule.
     Rest,
 }
 
@@ -162,7 +163,7 @@ impl NetworkPlant {
                 self.schedule.speed_rpm.value_at(0.0) * PI / 30.0,
                 self.schedule.load_nm.value_at(0.0),
             ),
-            NetworkStart::Rest => (0.0, 0.0),
+            NetworkStart::Rest => (0.0, self.schedule.load_nm.value_at(0.0)),
         };
         let l = self.model.layout;
         let mut two_pairs = vec![false; self.model.meshes.len()];

@@ -7,7 +7,7 @@ use crate::error::RigError;
 use crate::events::EventFlags;
 use crate::fused_step::MAX_ROW_EVENTS;
 use crate::geometry::GearGeometry;
-use crate::layout::{LOAD, Layout, N_MECH, UNIT, X0, Z};
+use crate::layout::{LOAD, Layout, N_MECH, UNIT, V0, VF, X0, Z};
 use crate::mode::{MeshMode, Mode, MotorMode, PairZone};
 use crate::model::ModelConstants;
 use crate::options::{ContactLaw, MeshPairs};
@@ -232,6 +232,33 @@ impl Plant {
         self.edge = None;
         self.mode.mesh = mesh;
         self.reset_angle_targets();
+    }
+
+    /// Puts the plant, built a moment ago, at rest: the shafts twisted to carry the load
+    /// at standstill, the speed knob already at the schedule's set speed, so that the
+    /// speed loop and the drive's current limit run the rig up from t = 0.
+    pub(crate) fn start_at_rest(&mut self) {
+        let set = self.segment.set;
+        self.set_steady_state(SetPoints {
+            speed_rpm: 0.0,
+            ..set
+        });
+        let omega = set.speed_rad_s();
+        for v in &mut self.u[V0..V0 + 5] {
+            *v -= omega;
+        }
+        self.u[VF] -= omega;
+        self.clamp_controller();
+        self.resync_harmonics(0.0);
+    }
+
+    /// A knock on the driven gear (M3): its speed changes by `delta_rad_s` at this
+    /// instant, every angle and every other speed unchanged (a lab's disturbed repeat).
+    /// The flanks in contact stay so; the next switch is found from the new state.
+    pub fn kick_driven_gear(&mut self, delta_rad_s: f64) {
+        let mut state = self.relative_state();
+        state[V0 + 2] += delta_rad_s;
+        self.set_relative_state(state, self.mode.mesh);
     }
 
     pub(super) fn reset_angle_targets(&mut self) {

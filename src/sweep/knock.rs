@@ -1,0 +1,66 @@
+//! The lab's doubtful repeat: a point started on its own (from rest, or from the static
+//! load), measured, then its driven gear knocked by a seeded kick, settled again and
+//! measured again, as many times as the sweep's `case.repeats`. Where the point can hold
+//! more than one motion, a knock may move the rig from one to another.
+
+use rand::{RngExt, SeedableRng};
+use rand_pcg::Pcg64Mcg;
+
+use super::case::{CaseResult, chain_lead_s, measure_case, settled_plant};
+use super::grid::{Case, SweepPlan};
+
+/// Smallest knock, as a share of the set speed: enough to part the teeth.
+pub const KNOCK_MIN_SHARE: f64 = 0.02;
+/// Largest knock, as a share of the set speed.
+pub const KNOCK_MAX_SHARE: f64 = 0.2;
+
+/// A knock's change of the driven gear's speed (rad/s) at `rpm`, drawn from `seed`: a
+/// share of the set speed uniform in [[`KNOCK_MIN_SHARE`], [`KNOCK_MAX_SHARE`]], either
+/// way.
+pub fn knock_rad_s(seed: u64, rpm: f64) -> f64 {
+    let mut rng = Pcg64Mcg::seed_from_u64(seed);
+    let share = KNOCK_MIN_SHARE + (KNOCK_MAX_SHARE - KNOCK_MIN_SHARE) * rng.random::<f64>();
+    let sign = if rng.random::<bool>() { 1.0 } else { -1.0 };
+    sign * share * rpm * std::f64::consts::PI / 30.0
+}
+
+/// Runs a point and its knocked repeats, in order, on one plant; a failure ends the
+/// series (the repeats after it are reported failed with it).
+pub fn run_knocked(plan: &SweepPlan, series: &[&Case]) -> Vec<(usize, anyhow::Result<CaseResult>)> {
+    let mut out = Vec::with_capacity(series.len());
+    let mut plant = match settled_plant(plan, series[0]) {
+        Ok(plant) => plant,
+        Err(e) => {
+            let message = format!("{e:#}");
+            return series
+                .iter()
+                .map(|c| (c.index, Err(anyhow::anyhow!("{message}"))))
+                .collect();
+        }
+    };
+    let settle = ((plan.settle_s - chain_lead_s(plan)) * plan.rate_hz).round() as usize;
+    let mut failed: Option<String> = None;
+    for (i, case) in series.iter().enumerate() {
+        if let Some(why) = &failed {
+            out.push((
+                case.index,
+                Err(anyhow::anyhow!("the series stopped: {why}")),
+            ));
+            continue;
+        }
+        let result = if i == 0 {
+            measure_case(plan, case, &mut plant)
+        } else {
+            plant.kick_driven_gear(case.kick_rad_s);
+            plant
+                .skip(settle)
+                .map_err(anyhow::Error::from)
+                .and_then(|()| measure_case(plan, case, &mut plant))
+        };
+        if let Err(e) = &result {
+            failed = Some(format!("case {}: {e:#}", case.index));
+        }
+        out.push((case.index, result));
+    }
+    out
+}
