@@ -129,6 +129,7 @@ pub mod steady;
 mod stride;
 mod system_cache;
 mod taylor;
+pub mod tooth_fault;
 pub mod topology;
 mod topology_check;
 mod topology_fields;
@@ -159,6 +160,7 @@ pub use regime::{Regime, RegimeCriteria, classify, classify_scaled};
 pub use schedule::{LiveCeiling, MAX_SPEED_RPM, Schedule, SetPoints, Track};
 pub use signals::{COLUMN_NAMES, COLUMN_UNITS, INTERMEDIATE_SHAFT, SignalBlock};
 pub use steady::{SteadySummary, SteadyWindow, run_steady};
+pub use tooth_fault::{FaultKind, FaultedGear, ToothFault};
 pub use topology::{
     Body, DriveSettings, Gauge, LockedTorque, MAX_BODIES, MAX_MESHES, Mesh, RigTopology, Shaft,
 };

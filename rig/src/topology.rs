@@ -8,6 +8,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::options::MeshPairs;
+use crate::tooth_fault::ToothFault;
 
 /// Most bodies a rig may have.
 pub const MAX_BODIES: usize = 32;
@@ -75,6 +76,9 @@ pub struct Mesh {
     /// The thesis's numerical tooth shifting (§5.4.5): at each tooth pass in contact the
     /// loaded pair hands its deflection back and the next starts undeflected.
     pub tooth_shifting: bool,
+    /// Faults seeded on single teeth (none: a healthy pair).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub faults: Vec<ToothFault>,
 }
 
 impl Mesh {

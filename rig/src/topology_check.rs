@@ -217,6 +217,7 @@ impl RigTopology {
                 ),
             ));
         }
+        self.check_faults(i)?;
         let ratio = m.contact_ratio();
         if m.pairs == crate::options::MeshPairs::Alternating && !(1.0..2.0).contains(&ratio) {
             return Err(fault(
@@ -227,6 +228,42 @@ impl RigTopology {
                     "alternating pairs need a contact ratio in [1, 2); these gears have {ratio:.3}"
                 ),
             ));
+        }
+        Ok(())
+    }
+
+    /// A mesh's tooth faults: each on a tooth its gear has, its severity in [0, 1].
+    fn check_faults(&self, i: usize) -> Result<(), TopologyError> {
+        let m = &self.meshes[i];
+        for (k, f) in m.faults.iter().enumerate() {
+            let (gear, teeth) = match f.gear {
+                crate::tooth_fault::FaultedGear::Driver => ("driver", m.teeth[0]),
+                crate::tooth_fault::FaultedGear::Driven => ("driven", m.teeth[1]),
+            };
+            if !(1..=teeth).contains(&f.tooth) {
+                return Err(fault(
+                    "mesh",
+                    i,
+                    "fault",
+                    format!(
+                        "fault {}: tooth {} of the {gear} gear, which has teeth 1 to {teeth}",
+                        k + 1,
+                        f.tooth
+                    ),
+                ));
+            }
+            if !(0.0..=1.0).contains(&f.severity) {
+                return Err(fault(
+                    "mesh",
+                    i,
+                    "fault",
+                    format!(
+                        "fault {}: severity {}: a share of the tooth, 0 to 1",
+                        k + 1,
+                        f.severity
+                    ),
+                ));
+            }
         }
         Ok(())
     }

@@ -92,6 +92,16 @@ impl RigTopology {
         }
         for m in &self.meshes {
             add(format!("mesh.{}", m.name), &MESH);
+            for k in 1..=m.faults.len() {
+                add(
+                    format!("mesh.{}.fault{k}", m.name),
+                    &[(
+                        "severity",
+                        "1",
+                        "the tooth fault's severity (pitted or broken share)",
+                    )],
+                );
+            }
         }
         add("motor".into(), &MOTOR);
         add(
@@ -183,6 +193,11 @@ impl RigTopology {
                     "te_mesh_frequency_um" => Some(&mut m.te_mesh_frequency_um),
                     _ => None,
                 }
+            }
+            ["mesh", name, fault, "severity"] => {
+                let m = self.meshes.iter_mut().find(|m| m.name == *name)?;
+                let k: usize = fault.strip_prefix("fault")?.parse().ok()?;
+                m.faults.get_mut(k.checked_sub(1)?).map(|f| &mut f.severity)
             }
             ["motor", field] => {
                 let d = &mut self.drive;

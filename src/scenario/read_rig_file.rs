@@ -9,11 +9,12 @@ use std::path::Path;
 use anyhow::Context;
 
 use rig::{
-    Body, DriveSettings, Gauge, LockedTorque, Mesh, MeshPairs, RigTopology, Shaft, TopologyPlace,
+    Body, DriveSettings, FaultKind, FaultedGear, Gauge, LockedTorque, Mesh, MeshPairs, RigTopology,
+    Shaft, ToothFault, TopologyPlace,
 };
 use toml::Spanned;
 
-use super::rig_file_toml::{MeshToml, MotorToml, RigFileToml, ShaftToml};
+use super::rig_file_toml::{FaultToml, MeshToml, MotorToml, RigFileToml, ShaftToml};
 use super::source::ScenarioSource;
 
 /// Shear modulus where a gauge leaves it out (Pa): steel's.
@@ -286,6 +287,59 @@ fn mesh(
         te_once_per_rev_um: or(&m.te_once_per_rev_um, 0.0),
         te_mesh_frequency_um: or(&m.te_mesh_frequency_um, 0.0),
         tooth_shifting: m.tooth_shifting.unwrap_or(false),
+        faults: m
+            .fault
+            .iter()
+            .map(|f| tooth_fault(src, f, [*z1, *z2]))
+            .collect::<anyhow::Result<_>>()?,
+    })
+}
+
+/// A `[[mesh.fault]]` read, each field refused at its place with what is allowed.
+fn tooth_fault(src: &ScenarioSource, f: &FaultToml, teeth: [u32; 2]) -> anyhow::Result<ToothFault> {
+    let (gear, z) = match f.gear.get_ref().as_str() {
+        "driver" => (FaultedGear::Driver, teeth[0]),
+        "driven" => (FaultedGear::Driven, teeth[1]),
+        other => {
+            return Err(src.error(
+                f.gear.span(),
+                "mesh.fault.gear",
+                format!("`{other}`: the fault's gear is `driver` or `driven`"),
+            ));
+        }
+    };
+    let kind = FaultKind::parse(f.kind.get_ref()).ok_or_else(|| {
+        src.error(
+            f.kind.span(),
+            "mesh.fault.kind",
+            format!(
+                "`{}`: the kinds are {} (a crack needs the mesh stiffness of the cracked tooth, not modelled yet)",
+                f.kind.get_ref(),
+                FaultKind::NAMES.join(", ")
+            ),
+        )
+    })?;
+    let tooth = *f.tooth.get_ref();
+    if !(1..=z).contains(&tooth) {
+        return Err(src.error(
+            f.tooth.span(),
+            "mesh.fault.tooth",
+            format!("{tooth}: the {} gear has teeth 1 to {z}", f.gear.get_ref()),
+        ));
+    }
+    let severity = *f.severity.get_ref();
+    if !(0.0..=1.0).contains(&severity) {
+        return Err(src.error(
+            f.severity.span(),
+            "mesh.fault.severity",
+            format!("{severity}: a share of the tooth, 0 to 1"),
+        ));
+    }
+    Ok(ToothFault {
+        gear,
+        tooth,
+        kind,
+        severity,
     })
 }
 
@@ -357,6 +411,7 @@ fn span_of(file: &RigFileToml, place: &TopologyPlace) -> Range<usize> {
             "backlash_variation" => m.backlash_variation.as_ref().map(Spanned::span),
             "te_once_per_rev_um" => m.te_once_per_rev_um.as_ref().map(Spanned::span),
             "te_mesh_frequency_um" => m.te_mesh_frequency_um.as_ref().map(Spanned::span),
+            "fault" => m.fault.first().map(|f| f.tooth.span()),
             _ => Some(m.name.span()),
         }),
         ("locked_torque", _) => file.locked_torque.as_ref().map(|l| l.torque_nm.span()),

@@ -119,6 +119,23 @@ pub struct MeshToml {
     /// The thesis's numerical tooth shifting; false when left out.
     #[serde(default)]
     pub tooth_shifting: Option<bool>,
+    /// `[[mesh.fault]]`: faults seeded on single teeth.
+    #[serde(default)]
+    pub fault: Vec<FaultToml>,
+}
+
+/// `[[mesh.fault]]`: a fault on one tooth of the mesh above it.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FaultToml {
+    /// `driver` or `driven`.
+    pub gear: Spanned<String>,
+    /// The tooth, 1..=z of that gear.
+    pub tooth: Spanned<u32>,
+    /// `pit` or `broken`.
+    pub kind: Spanned<String>,
+    /// The pitted share of the contact width, or the broken share of the face, 0..=1.
+    pub severity: Spanned<f64>,
 }
 
 /// `[motor]`: the body it drives, its speed loop and its torque limit.

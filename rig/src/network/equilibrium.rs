@@ -47,6 +47,7 @@ pub fn equilibrium(
                 contact: [Contact::Drive, Contact::Back, Contact::Apart]
                     [combination / 3_usize.pow(i as u32) % 3],
                 two_pairs: two_pairs[i],
+                ..MeshState::APART
             })
             .collect();
         let Ok(solved) = solve(model, speed_rad_s, load_nm, &meshes) else {

@@ -16,7 +16,8 @@ pub enum NetEvent {
     Touch(usize, Contact),
     /// Mesh `.0`'s teeth part.
     Leave(usize),
-    /// Mesh `.0`'s driver turns past the end of its pair zone.
+    /// Mesh `.0`'s driver turns past the end of its pair zone (followed in contact where
+    /// pairs alternate or a tooth is faulted, and while a broken pair leaves no tooth).
     ZoneEnd(usize),
     /// Mesh `.0`'s driver turns back past the start of its pair zone.
     ZoneStart(usize),
@@ -110,7 +111,10 @@ pub fn event_forms(model: &NetworkModel, mode: &NetMode, a: &DMatrix<f64>) -> Ve
                 .map(|(index, value, _)| (index, sign * value))
                 .collect()
         };
-        match mode.meshes[i].contact {
+        let state = mode.meshes[i];
+        match state.contact {
+            // No tooth to touch until the next pair comes into mesh.
+            Contact::Apart if state.toothless => {}
             Contact::Apart => {
                 push(
                     NetEvent::Touch(i, Contact::Drive),
@@ -134,15 +138,17 @@ pub fn event_forms(model: &NetworkModel, mode: &NetMode, a: &DMatrix<f64>) -> Ve
                 Target::Tooth(i),
             );
         }
-        if m.alternating && mode.meshes[i].contact != Contact::Apart {
+        let follows_zones = m.alternating || m.faulted;
+        if follows_zones && (state.contact != Contact::Apart || state.toothless) {
+            // The driver's absolute angle x + sΦ against the zone's bounds.
             push(
                 NetEvent::ZoneEnd(i),
-                vec![(l.angle(ga), 1.0)],
+                vec![(l.angle(ga), 1.0), (l.phase(), m.share)],
                 Target::ZoneEnd(i),
             );
             push(
                 NetEvent::ZoneStart(i),
-                vec![(l.angle(ga), -1.0)],
+                vec![(l.angle(ga), -1.0), (l.phase(), -m.share)],
                 Target::ZoneStartNegated(i),
             );
         }

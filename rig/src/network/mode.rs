@@ -1,5 +1,6 @@
 //! The discrete state of a rig: each mesh apart or touching one flank with one or two
-//! pairs, and the motor linear or held at a torque limit.
+//! pairs (their stiffness scaled where a faulted tooth is in mesh), and the motor linear
+//! or held at a torque limit.
 
 use crate::mode::MotorMode;
 use crate::topology::MAX_MESHES;
@@ -33,6 +34,27 @@ pub struct MeshState {
     pub contact: Contact,
     /// Two pairs share the load (alternating pairs only).
     pub two_pairs: bool,
+    /// The share of the healthy pairs' stiffness the pairs in mesh keep (a tooth fault;
+    /// 1 healthy), as the bits of an f64 so that modes hash.
+    pub factor_bits: u64,
+    /// Apart because the pair in mesh has no tooth to touch (broken through): no flank
+    /// can be touched until the next pair comes into mesh.
+    pub toothless: bool,
+}
+
+impl MeshState {
+    /// Apart, one pair, healthy.
+    pub const APART: Self = Self {
+        contact: Contact::Apart,
+        two_pairs: false,
+        factor_bits: 0x3FF0_0000_0000_0000,
+        toothless: false,
+    };
+
+    /// The share of the healthy pairs' stiffness the pairs in mesh keep.
+    pub fn factor(self) -> f64 {
+        f64::from_bits(self.factor_bits)
+    }
 }
 
 /// The discrete state of the whole rig.
@@ -48,10 +70,7 @@ impl NetMode {
     /// Every mesh apart with one pair, the motor linear.
     pub fn apart() -> Self {
         Self {
-            meshes: [MeshState {
-                contact: Contact::Apart,
-                two_pairs: false,
-            }; MAX_MESHES],
+            meshes: [MeshState::APART; MAX_MESHES],
             motor: MotorMode::Linear,
         }
     }

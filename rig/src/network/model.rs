@@ -20,6 +20,7 @@ use nalgebra::DMatrix;
 use crate::error::RigError;
 use crate::mode::MotorMode;
 use crate::options::MeshPairs;
+use crate::tooth_fault::{FaultedGear, tooth_factors};
 use crate::topology::RigTopology;
 
 use super::layout::NetLayout;
@@ -74,6 +75,11 @@ pub struct MeshModel {
     pub te_mesh_m: f64,
     /// The thesis's numerical tooth shifting at each tooth pass in contact.
     pub tooth_shifting: bool,
+    /// Each tooth's stiffness factor on the driver and on the driven gear (1 healthy; a
+    /// tooth fault less), teeth numbered from the pair in mesh at angle 0.
+    pub tooth_factors: [Vec<f64>; 2],
+    /// Whether any tooth is faulted (the pair zones are then followed in contact).
+    pub faulted: bool,
 }
 
 impl MeshModel {
@@ -90,10 +96,30 @@ impl MeshModel {
         } else {
             1.0
         };
+        let factor = state.factor();
         (
-            ratio * self.stiffness_n_per_m,
-            ratio * self.damping_ns_per_m,
+            ratio * self.stiffness_n_per_m * factor,
+            ratio * self.damping_ns_per_m * factor,
         )
+    }
+
+    /// The stiffness factor of pair `pair` (the pair that comes into mesh at the start of
+    /// the driver's tooth period `pair`): its driver tooth's times its driven tooth's.
+    pub fn pair_factor(&self, pair: i64) -> f64 {
+        let [driver, driven] = &self.tooth_factors;
+        driver[pair.rem_euclid(driver.len() as i64) as usize]
+            * driven[pair.rem_euclid(driven.len() as i64) as usize]
+    }
+
+    /// The stiffness factor in pair zone `zone` (2p: pairs p − 1 and p share the load
+    /// where pairs alternate; 2p + 1: pair p alone; one pair: pair p over the period).
+    pub fn zone_factor(&self, zone: i64) -> f64 {
+        let pair = zone.div_euclid(2);
+        if self.alternating && zone.rem_euclid(2) == 0 {
+            0.5 * (self.pair_factor(pair - 1) + self.pair_factor(pair))
+        } else {
+            self.pair_factor(pair)
+        }
     }
 }
 
@@ -188,6 +214,11 @@ impl NetworkModel {
                 te_once_m: m.te_once_per_rev_um * 1e-6,
                 te_mesh_m: m.te_mesh_frequency_um * 1e-6,
                 tooth_shifting: m.tooth_shifting,
+                tooth_factors: [
+                    tooth_factors(&m.faults, FaultedGear::Driver, m.teeth[0]),
+                    tooth_factors(&m.faults, FaultedGear::Driven, m.teeth[1]),
+                ],
+                faulted: m.faults.iter().any(|f| f.stiffness_factor() != 1.0),
             })
             .collect();
         // The speed loop on the rig's inertia seen at the motor, Σ J s² (as the 1983

@@ -10,7 +10,7 @@ use crate::topology::RigTopology;
 
 use super::block::{NetworkBlock, NetworkImpact};
 use super::equilibrium::equilibrium;
-use super::mode::{Contact, NetMode};
+use super::mode::{Contact, MeshState, NetMode};
 use super::model::NetworkModel;
 use super::system::{SystemCache, fastest_rate};
 
@@ -190,6 +190,18 @@ impl NetworkPlant {
         }
         for (i, s) in state.meshes.iter().enumerate() {
             self.mode.meshes[i] = *s;
+            // A faulted pair in mesh at the start takes its stiffness (the start's
+            // twists are the healthy pair's; the difference dies in settling).
+            let factor = self.model.meshes[i].zone_factor(self.zones[i]);
+            let start = &mut self.mode.meshes[i];
+            start.factor_bits = factor.to_bits();
+            if factor == 0.0 && start.contact != Contact::Apart {
+                *start = MeshState {
+                    toothless: true,
+                    factor_bits: factor.to_bits(),
+                    ..MeshState::APART
+                };
+            }
         }
         self.u[l.unit()] = 1.0;
         self.u[l.set_speed()] = speed_rad_s;

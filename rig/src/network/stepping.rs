@@ -15,7 +15,7 @@ use crate::taylor::TAYLOR_ORDER;
 
 use super::block::NetworkImpact;
 use super::events::{EventForm, NetEvent, Target};
-use super::mode::Contact;
+use super::mode::{Contact, MeshState};
 use super::plant::NetworkPlant;
 use super::system::{ModeSystem, SystemCache};
 
@@ -116,6 +116,66 @@ impl NetworkPlant {
         }
     }
 
+    /// Mesh `i`'s `flank` meets the pair in mesh at `at_s` (its zone known): an impact,
+    /// the flank in contact with the zone's pairs; where the pair in mesh is broken
+    /// through, no tooth is there to meet, and the mesh stays apart until the next pair.
+    fn engage(&mut self, i: usize, flank: Contact, at_s: f64) {
+        let m = &self.model.meshes[i];
+        let zone = self.zones[i];
+        let factor = m.zone_factor(zone);
+        let state = &mut self.mode.meshes[i];
+        state.two_pairs = m.alternating && zone % 2 == 0;
+        state.factor_bits = factor.to_bits();
+        if factor == 0.0 {
+            state.contact = Contact::Apart;
+            state.toothless = true;
+            return;
+        }
+        state.contact = flank;
+        state.toothless = false;
+        let (_, approach_m_s) = self.model.deflection(i, &self.u);
+        self.impacts.push(NetworkImpact {
+            time_s: at_s,
+            mesh: i,
+            flank,
+            approach_m_s,
+        });
+    }
+
+    /// Mesh `i`'s driver has turned into a new pair zone: the pairs in mesh take their
+    /// stiffness. In contact, a zone whose pair is broken through parts the teeth; after
+    /// such a zone, the next pair strikes wherever the gears have closed on a flank
+    /// meanwhile.
+    fn enter_zone(&mut self, i: usize, at_s: f64) {
+        let m = &self.model.meshes[i];
+        let zone = self.zones[i];
+        let factor = m.zone_factor(zone);
+        let state = self.mode.meshes[i];
+        if state.toothless {
+            if factor == 0.0 {
+                return;
+            }
+            let speed = self.harmonic_speed_rad_s;
+            let drive = self.model.overlap(i, 1.0, &self.u, speed).0 > 0.0;
+            let back = self.model.overlap(i, -1.0, &self.u, speed).0 < 0.0;
+            self.mode.meshes[i].toothless = false;
+            match (drive, back) {
+                (true, _) => self.engage(i, Contact::Drive, at_s),
+                (false, true) => self.engage(i, Contact::Back, at_s),
+                (false, false) => self.mode.meshes[i] = MeshState::APART,
+            }
+            return;
+        }
+        let state = &mut self.mode.meshes[i];
+        state.two_pairs = m.alternating && zone % 2 == 0;
+        state.factor_bits = factor.to_bits();
+        if factor == 0.0 {
+            state.contact = Contact::Apart;
+            state.two_pairs = false;
+            state.toothless = true;
+        }
+    }
+
     /// Leaves the motor's limit: the command, held there up to rounding, starts just
     /// inside it (by [`RELEASE_MARGIN_NM`], as the 1983 plant's drive) so that rounding
     /// cannot put it straight back (a tangency of the command with the limit would else
@@ -166,18 +226,9 @@ impl NetworkPlant {
     fn switch(&mut self, event: NetEvent, at_s: f64) {
         match event {
             NetEvent::Touch(i, flank) => {
-                let (_, approach_m_s) = self.model.deflection(i, &self.u);
-                self.impacts.push(NetworkImpact {
-                    time_s: at_s,
-                    mesh: i,
-                    flank,
-                    approach_m_s,
-                });
                 self.zones[i] = self.zone_at(i);
                 self.catch_up_tooth(i);
-                self.mode.meshes[i].contact = flank;
-                self.mode.meshes[i].two_pairs =
-                    self.model.meshes[i].alternating && self.zones[i] % 2 == 0;
+                self.engage(i, flank, at_s);
             }
             NetEvent::Leave(i) => {
                 self.mode.meshes[i].contact = Contact::Apart;
@@ -189,7 +240,7 @@ impl NetworkPlant {
                 } else {
                     -1
                 };
-                self.mode.meshes[i].two_pairs = self.zones[i] % 2 == 0;
+                self.enter_zone(i, at_s);
             }
             NetEvent::LimitHigh => self.mode.motor = MotorMode::LimitHigh,
             NetEvent::LimitLow => self.mode.motor = MotorMode::LimitLow,

@@ -1,0 +1,77 @@
+//! A fault on one tooth of a mesh: a pit or a broken tooth, seeded on the driving or the
+//! driven gear. While the faulted tooth's pair is in mesh its stiffness (and damping)
+//! scale by what is left of the tooth: a pitted share of the contact width carries no
+//! load (the pair's stiffness is proportional to its contact width), a broken share of
+//! the face carries nothing. A tooth broken across its whole face leaves the pair as free
+//! play: where it alone would carry the load the gears part, and the next pair strikes.
+
+use serde::{Deserialize, Serialize};
+
+/// Which gear of a mesh carries the fault.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum FaultedGear {
+    /// The mesh's driving gear.
+    Driver,
+    /// The mesh's driven gear.
+    Driven,
+}
+
+/// The kind of a tooth fault.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum FaultKind {
+    /// Pitting: `severity` is the pitted share of the contact width.
+    Pit,
+    /// A broken tooth: `severity` is the broken-off share of the face.
+    Broken,
+}
+
+impl FaultKind {
+    /// The kinds by name, as rig files write them.
+    pub const NAMES: [&'static str; 2] = ["pit", "broken"];
+
+    /// The kind named `name`.
+    pub fn parse(name: &str) -> Option<Self> {
+        match name {
+            "pit" => Some(Self::Pit),
+            "broken" => Some(Self::Broken),
+            _ => None,
+        }
+    }
+}
+
+/// A fault on one tooth.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ToothFault {
+    /// The gear whose tooth it is.
+    pub gear: FaultedGear,
+    /// The tooth, 1..=z of that gear: tooth 1 of each gear is the pair in mesh with the
+    /// driver at angle 0, the others numbered in the order they come into mesh.
+    pub tooth: u32,
+    /// What it is.
+    pub kind: FaultKind,
+    /// How bad, 0..=1 (the share the kind names).
+    pub severity: f64,
+}
+
+impl ToothFault {
+    /// The share of the healthy pair's stiffness and damping the faulted pair keeps.
+    pub fn stiffness_factor(&self) -> f64 {
+        match self.kind {
+            FaultKind::Pit | FaultKind::Broken => 1.0 - self.severity,
+        }
+    }
+}
+
+/// Each tooth's stiffness factor of a gear with `teeth` teeth (1 where healthy; faults on
+/// one tooth multiply).
+pub fn tooth_factors(faults: &[ToothFault], gear: FaultedGear, teeth: u32) -> Vec<f64> {
+    let mut factors = vec![1.0; teeth as usize];
+    for f in faults.iter().filter(|f| f.gear == gear) {
+        if let Some(slot) = factors.get_mut(f.tooth.saturating_sub(1) as usize) {
+            *slot *= f.stiffness_factor();
+        }
+    }
+    factors
+}

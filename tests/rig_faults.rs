@@ -1,0 +1,265 @@
+//! Tooth faults on a rig file's mesh (`[[mesh.fault]]`, issue 35): a pitted tooth's pair
+//! keeps the unpitted share of its stiffness while it is in mesh (the quasi-static mesh
+//! deflection there is F / (k (1 − s))); a tooth broken through leaves its pair as free
+//! play, so once a revolution of its gear the teeth part and the next pair strikes as it
+//! comes into mesh (then, after a bounce, once more within that tooth period), where the
+//! healthy rig runs without an impact; bad faults are refused at their line.
+
+mod common;
+mod rig_support;
+
+use rig::{NetworkStart, RigTopology, Schedule};
+use rig_support::{RATE_HZ, body, plant, run};
+use testrig::scenario::read_rig_file;
+
+/// The 1983 rig file without tooth shifting or backlash variation (a plain pair), with
+/// `fault` appended to its mesh.
+fn rig_with(dir: &std::path::Path, fault: &str) -> RigTopology {
+    rig_damped(dir, fault, None)
+}
+
+/// [`rig_with`], each shaft's damping `shaft_damping` (N m s/rad) where given.
+fn rig_damped(dir: &std::path::Path, fault: &str, shaft_damping: Option<f64>) -> RigTopology {
+    let path = format!(
+        "{}/scenarios/rigs/basmaji-1983.toml",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let text = std::fs::read_to_string(path).expect("rig file");
+    let plain = text
+        .replace("tooth_shifting = true", "tooth_shifting = false")
+        .replace("backlash_variation = 0.38", "backlash_variation = 0.0")
+        .replace("[motor]", &format!("{fault}\n[motor]"));
+    let plain = match shaft_damping {
+        Some(c) => plain
+            .lines()
+            .map(|l| {
+                if l.starts_with("damping_nms_per_rad") {
+                    format!("damping_nms_per_rad = {c}")
+                } else {
+                    l.to_string()
+                }
+            })
+            .collect::<Vec<_>>()
+            .join("\n"),
+        None => plain,
+    };
+    let file = dir.join("faulted.toml");
+    std::fs::write(&file, plain).expect("write");
+    read_rig_file(&file).expect("a rig file with a fault")
+}
+
+/// The mesh's deflection along the line of action, r_b (θ_driver − θ_driven) (m; each
+/// body's angle in its own sense of rotation).
+fn deflection_m(rig: &RigTopology, block: &rig::NetworkBlock) -> Vec<f64> {
+    let r_b = rig.meshes[0].base_radii_m()[0];
+    let (a, b) = (body(rig, "input_flywheel"), body(rig, "driven_gear"));
+    (0..block.len())
+        .map(|n| r_b * (block.angle_rad[a][n] - block.angle_rad[b][n]))
+        .collect()
+}
+
+#[test]
+fn a_pitted_tooth_keeps_the_unpitted_share_of_its_pairs_stiffness() {
+    let dir = common::folder("fault-pit");
+    let rig = rig_with(
+        dir.path(),
+        "[[mesh.fault]]\ngear = \"driven\"\ntooth = 7\nkind = \"pit\"\nseverity = 0.5\n",
+    );
+    // 30 rev/min, 5 N m: a tooth period lasts 66.7 ms, long beside the mesh's ringing.
+    let (rpm, load_nm) = (30.0, 5.0);
+    let mut p = plant(&rig, Schedule::constant(rpm, load_nm), NetworkStart::Steady);
+    let block = run(&mut p, &rig, 4.0);
+    let delta = deflection_m(&rig, &block);
+    let tooth_s = 60.0 / rpm / 30.0;
+    // The mean deflection over the middle half of the tooth period of pair `pair`.
+    let period_mean = |pair: usize| {
+        let from = ((pair as f64 + 0.25) * tooth_s * RATE_HZ) as usize;
+        let to = ((pair as f64 + 0.75) * tooth_s * RATE_HZ) as usize;
+        delta[from..to].iter().sum::<f64>() / (to - from) as f64
+    };
+    // Pair 6 (the driven gear's tooth 7) in both revolutions, against its neighbours.
+    for pair in [6, 36] {
+        let healthy = 0.5 * (period_mean(pair - 2) + period_mean(pair + 2));
+        let pitted = period_mean(pair);
+        let r_b = rig.meshes[0].base_radii_m()[0];
+        let force_n = block.mesh_force_n[0][((pair as f64 + 0.5) * tooth_s * RATE_HZ) as usize];
+        let k = rig.meshes[0].stiffness_n_per_m;
+        assert!(
+            (force_n * r_b / load_nm - 1.0).abs() < 0.01,
+            "the mesh carries the load: {force_n} N"
+        );
+        // Healthy F/k, pitted F/(k/2): the deflection rises by F/k.
+        let rise = pitted - healthy;
+        assert!(
+            (rise / (force_n / k) - 1.0).abs() < 0.02,
+            "pair {pair}: the pitted pair deflects {rise:e} m more; F/k = {:e} m",
+            force_n / k
+        );
+        for other in [pair - 3, pair + 3] {
+            let same = period_mean(other) - healthy;
+            assert!(same.abs() < 0.02 * force_n / k, "pair {other}: {same:e} m");
+        }
+    }
+}
+
+/// The test rig's shaft damping (N m s/rad): the 1983 rig's first torsional mode damped
+/// (ζ about 0.1), so that a strike's ringing dies within a revolution and each
+/// revolution's impacts are the broken tooth's own.
+const DAMPING: f64 = 10.0;
+const RPM: f64 = 300.0;
+const LOAD: f64 = 5.424;
+
+#[test]
+fn a_tooth_broken_through_lets_the_next_pair_strike_as_it_comes_in_every_revolution() {
+    let dir = common::folder("fault-broken");
+    let damping = Some(DAMPING);
+    let healthy = rig_damped(dir.path(), "", damping);
+    let broken = rig_damped(
+        dir.path(),
+        "[[mesh.fault]]\ngear = \"driven\"\ntooth = 7\nkind = \"broken\"\nseverity = 1.0\n",
+        damping,
+    );
+    let (rpm, load_nm, seconds) = (RPM, LOAD, 3.0);
+    let schedule = Schedule::constant(rpm, load_nm);
+    let mut calm = plant(&healthy, schedule.clone(), NetworkStart::Steady);
+    run(&mut calm, &healthy, seconds);
+    assert!(
+        calm.take_impacts().is_empty(),
+        "the healthy pair stays in contact here"
+    );
+    let mut p = plant(&broken, schedule, NetworkStart::Steady);
+    let b = run(&mut p, &broken, seconds);
+    let _ = b;
+    let impacts = p.take_impacts();
+    let revolution_s = 60.0 / rpm;
+    let tooth_s = revolution_s / 30.0;
+    let revolutions = (seconds / revolution_s).round() as usize;
+    // Where each impact falls in its revolution, in tooth periods of the driver from the
+    // start of pair 7 (the driven gear's tooth 8, the pair after the broken tooth).
+    let after_pair_7 = |t_s: f64| (t_s / tooth_s - 7.0).rem_euclid(30.0);
+    for i in &impacts {
+        let at = after_pair_7(i.time_s);
+        assert!(
+            !(1.0..=29.99).contains(&at),
+            "an impact {at} tooth periods after pair 7 comes in: {i:?}"
+        );
+        assert_eq!(i.flank, rig::Contact::Drive);
+    }
+    // Every revolution: the strike as pair 7 comes in, at the same closing speed.
+    let strikes: Vec<&rig::NetworkImpact> = impacts
+        .iter()
+        .filter(|i| after_pair_7(i.time_s) > 29.99 || after_pair_7(i.time_s) < 0.01)
+        .collect();
+    assert_eq!(strikes.len(), revolutions, "{impacts:?}");
+    let first = strikes[1].approach_m_s;
+    assert!(first > 0.005, "closing at {first} m/s");
+    for s in &strikes[1..] {
+        assert!((s.approach_m_s / first - 1.0).abs() < 0.01, "{s:?}");
+    }
+}
+
+#[test]
+fn bad_faults_are_refused_at_their_line_and_a_severity_is_set_by_path() {
+    let dir = common::folder("fault-bad");
+    let path = format!(
+        "{}/scenarios/rigs/basmaji-1983.toml",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let text = std::fs::read_to_string(path).expect("rig file");
+    for (fault, field, says) in [
+        (
+            "gear = \"pinion\"\ntooth = 7\nkind = \"pit\"\nseverity = 0.5",
+            "mesh.fault.gear",
+            "`driver` or `driven`",
+        ),
+        (
+            "gear = \"driven\"\ntooth = 31\nkind = \"pit\"\nseverity = 0.5",
+            "mesh.fault.tooth",
+            "teeth 1 to 30",
+        ),
+        (
+            "gear = \"driven\"\ntooth = 7\nkind = \"crack\"\nseverity = 0.5",
+            "mesh.fault.kind",
+            "pit, broken",
+        ),
+        (
+            "gear = \"driven\"\ntooth = 7\nkind = \"pit\"\nseverity = 1.5",
+            "mesh.fault.severity",
+            "0 to 1",
+        ),
+    ] {
+        let faulted = text.replace("[motor]", &format!("[[mesh.fault]]\n{fault}\n\n[motor]"));
+        let file = dir.path().join("bad.toml");
+        std::fs::write(&file, &faulted).expect("write");
+        let err = format!("{:#}", read_rig_file(&file).expect_err("refused"));
+        let key = field.rsplit('.').next().expect("key");
+        let line = faulted
+            .lines()
+            .enumerate()
+            .filter(|(_, l)| l.starts_with(&format!("{key} =")))
+            .map(|(n, _)| n + 1)
+            .last()
+            .expect("line");
+        assert!(
+            err.contains(&format!("bad.toml:{line}:")) && err.contains(field) && err.contains(says),
+            "{err}"
+        );
+    }
+    let rig = rig_with(
+        dir.path(),
+        "[[mesh.fault]]\ngear = \"driver\"\ntooth = 3\nkind = \"broken\"\nseverity = 0.2\n",
+    );
+    let field = rig
+        .fields()
+        .into_iter()
+        .find(|f| f.path == "mesh.gears.fault1.severity")
+        .expect("the fault's severity by path");
+    assert_eq!(field.value, 0.2);
+    let mut set = rig.clone();
+    set.set_field("mesh.gears.fault1.severity", 0.6)
+        .expect("set");
+    assert_eq!(set.meshes[0].faults[0].severity, 0.6);
+    set.set_field("mesh.gears.fault1.severity", 1.5)
+        .expect("set");
+    assert!(set.check().is_err());
+}
+
+/// Alternating pairs follow the driver's absolute angle: over each tooth period two pairs
+/// share the load for ε − 1 of it (deflection F / (2k)), then one pair carries it
+/// (F / k); with tooth 7 of the driven gear pitted by half, its single-pair stretch
+/// deflects F / (k/2) and the double-pair stretches beside it F / (1.5 k).
+#[test]
+fn alternating_pairs_share_the_load_over_the_contact_ratio_and_a_pit_weakens_its_own() {
+    let dir = common::folder("fault-pairs");
+    let fault = "[[mesh.fault]]\ngear = \"driven\"\ntooth = 7\nkind = \"pit\"\nseverity = 0.5\n";
+    let rig = rig_with(dir.path(), &format!("pairs = \"alternating\"\n{fault}"));
+    let share = rig.meshes[0].contact_ratio() - 1.0;
+    let (rpm, load_nm) = (30.0, 5.0);
+    let mut p = plant(&rig, Schedule::constant(rpm, load_nm), NetworkStart::Steady);
+    let block = run(&mut p, &rig, 1.0);
+    let delta = deflection_m(&rig, &block);
+    let tooth_s = 60.0 / rpm / 30.0;
+    let mean_over = |from: f64, to: f64| {
+        let (a, b) = (
+            (from * tooth_s * RATE_HZ) as usize,
+            (to * tooth_s * RATE_HZ) as usize,
+        );
+        delta[a..b].iter().sum::<f64>() / (b - a) as f64
+    };
+    let k = rig.meshes[0].stiffness_n_per_m;
+    let force_n = load_nm / rig.meshes[0].base_radii_m()[1];
+    // (zone start, zone end, the stiffness in it over one healthy pair's)
+    let zones =
+        |p: f64, double: f64, single: f64| [(p, p + share, double), (p + share, p + 1.0, single)];
+    for (pair, double, single) in [(3.0, 2.0, 1.0), (6.0, 1.5, 0.5), (7.0, 1.5, 1.0)] {
+        for (from, to, ratio) in zones(pair, double, single) {
+            let (a, b) = (from + 0.2 * (to - from), to - 0.2 * (to - from));
+            let got = mean_over(a, b) - rig.meshes[0].half_backlash_m();
+            let want = force_n / (ratio * k);
+            assert!(
+                (got / want - 1.0).abs() < 0.03,
+                "pair {pair}, {from:.2}..{to:.2} tooth periods: {got:e} m, F/({ratio} k) = {want:e} m"
+            );
+        }
+    }
+}
