@@ -12,10 +12,12 @@ use std::time::Instant;
 
 use anyhow::Context;
 use rig::{
-    Approach, JudgeInput, Judgement, NetworkBlock, NetworkImpact, NetworkPlant, RigTopology, judge,
+    Approach, FaultedGear, JudgeInput, Judgement, NetworkBlock, NetworkImpact, NetworkPlant,
+    RigTopology, judge,
 };
 use serde::Serialize;
 
+use crate::chain::GearCondition;
 use crate::steady_point::{InputNames, check_times};
 use crate::vocabulary::{check_load_nm, check_speed_rpm};
 
@@ -88,6 +90,21 @@ pub struct RigPointSummary {
     pub judged_shaft: String,
     /// The motion of its torque.
     pub motion: Judgement,
+    /// The watched gear's condition: the judged shaft's torque averaged synchronously
+    /// over its revolutions (`null` without a mesh or under two revolutions).
+    pub condition: Option<serde_json::Value>,
+}
+
+/// The gear a point's condition indicators watch: the first tooth fault's gear, else the
+/// first mesh's driven gear; (body, teeth).
+pub fn watched_gear(rig: &RigTopology) -> Option<(usize, u32)> {
+    let faulted = rig.meshes.iter().find_map(|m| {
+        m.faults.first().map(|f| match f.gear {
+            FaultedGear::Driver => (m.gears[0], m.teeth[0]),
+            FaultedGear::Driven => (m.gears[1], m.teeth[1]),
+        })
+    });
+    faulted.or_else(|| rig.meshes.first().map(|m| (m.gears[1], m.teeth[1])))
 }
 
 /// A point run: the plant as it ended, the window's impacts and summary, and the times.
@@ -142,7 +159,7 @@ pub fn run_rig_point(
     }
     plant.take_impacts();
     plant.take_revolutions();
-    let mut window = Window::new(rig);
+    let mut window = Window::new(rig, spec.rate_hz);
     let mut left = (spec.duration_s * spec.rate_hz).round() as usize;
     while left > 0 {
         let n = left.min(BLOCK);
@@ -181,10 +198,12 @@ struct Window {
     motor_sum: f64,
     judged: usize,
     judged_torque: Vec<f64>,
+    watched: Option<(usize, u32)>,
+    condition: GearCondition,
 }
 
 impl Window {
-    fn new(rig: &RigTopology) -> Self {
+    fn new(rig: &RigTopology, rate_hz: f64) -> Self {
         Self {
             start_s: None,
             samples: 0,
@@ -194,6 +213,8 @@ impl Window {
             motor_sum: 0.0,
             judged: judged_shaft(rig),
             judged_torque: Vec::new(),
+            watched: watched_gear(rig),
+            condition: GearCondition::new(rate_hz),
         }
     }
 
@@ -215,6 +236,10 @@ impl Window {
         self.motor_sum += block.motor_torque_nm.iter().sum::<f64>();
         if let Some(column) = block.shaft_torque_nm.get(self.judged) {
             self.judged_torque.extend_from_slice(column);
+            if let Some((gear, _)) = self.watched {
+                self.condition
+                    .add_samples(&block.time_s, &block.angle_rad[gear], column);
+            }
         }
     }
 
@@ -281,6 +306,19 @@ impl Window {
                 .get(self.judged)
                 .map_or(String::new(), |s| s.name.clone()),
             motion,
+            condition: self.condition_json(rig),
         }
+    }
+
+    /// The watched gear's condition report as JSON, its gear named.
+    fn condition_json(&self, rig: &RigTopology) -> Option<serde_json::Value> {
+        let (gear, teeth) = self.watched?;
+        let report = self.condition.report(teeth as usize)?;
+        let mut json = report.to_json();
+        if let Some(map) = json.as_object_mut() {
+            map.insert("gear".into(), rig.bodies[gear].name.clone().into());
+            map.insert("teeth".into(), teeth.into());
+        }
+        Some(json)
     }
 }

@@ -116,6 +116,15 @@ pub fn simulate_rig<'py>(
             .collect::<Vec<_>>()
             .into_pyarray(py),
     )?;
+    for (key, gear) in [("driver_tooth", 0), ("driven_tooth", 1)] {
+        impacts.set_item(
+            key,
+            list.iter()
+                .map(|i| i.teeth[gear])
+                .collect::<Vec<u32>>()
+                .into_pyarray(py),
+        )?;
+    }
     let mut summary =
         serde_json::to_value(&run.summary).map_err(|e| TestrigError::new_err(e.to_string()))?;
     if let Some(map) = summary.as_object_mut() {

@@ -60,8 +60,10 @@ def simulate(
     (`mesh.stage1.backlash_mm`), the signals are named after the rig
     (`speed_<body>_rpm`, `angle_<body>_rad`, `torque_<shaft>_nm`, `contact_<mesh>`,
     `force_<mesh>_n`, `motor_torque_nm`, `strain_<shaft>_ue`), the impacts give
-    time_s, mesh, flank and closing_speed_m_s, and the summary each body, shaft and
-    mesh."""
+    time_s, mesh, flank, closing_speed_m_s, driver_tooth and driven_tooth, and the
+    summary each body, shaft and mesh, and `condition`: the gauged shaft's torque
+    averaged over the revolutions of the faulted gear (else the first mesh's driven
+    gear) with FM0, FM4, NA4, M6A, M8A, the sideband level and the residual RMS."""
 
 class Analysed(TypedDict):
     frequency_hz: npt.NDArray[np.float64]

@@ -1,9 +1,11 @@
-//! The driven gear's condition from a steady window: its once-per-revolution pulses (its
-//! absolute angle crossing whole turns, as a marker on its shaft gives them), the
-//! output-shaft torque averaged synchronously over those revolutions, and the condition
-//! indicators of that average (`instruments::condition_indicators`, Lebold et al. 2000).
+//! A gear's condition from a steady window: its once-per-revolution pulses (its absolute
+//! angle crossing whole turns, as a marker on its shaft gives them), a shaft's torque
+//! averaged synchronously over those revolutions, and the condition indicators of that
+//! average (`instruments::condition_indicators`, Lebold et al. 2000). The 1983 rig's:
+//! the driven gear and the output-shaft torque; a rig file's: the gear and shaft its
+//! caller names.
 
-use instruments::{ConditionIndicators, condition_indicators, synchronous_average};
+use instruments::{ConditionIndicators, condition_indicators, gear_signals, synchronous_average};
 use rig::{INTERMEDIATE_SHAFT, SignalBlock};
 use serde_json::{Value, json};
 
@@ -25,12 +27,17 @@ pub struct GearCondition {
 }
 
 /// What a window's synchronous average shows.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct GearConditionReport {
     /// Whole revolutions averaged.
     pub revolutions: usize,
-    /// The indicators of the averaged revolution of the output-shaft torque.
+    /// The indicators of the averaged revolution of the torque.
     pub indicators: ConditionIndicators,
+    /// RMS of the residual signal (the average less its shaft orders and mesh
+    /// harmonics; N m).
+    pub residual_rms_nm: f64,
+    /// The averaged revolution (N m), [`POINTS_PER_REVOLUTION`] points from the pulse.
+    pub average_nm: Vec<f64>,
 }
 
 impl GearCondition {
@@ -45,10 +52,20 @@ impl GearCondition {
         }
     }
 
-    /// Adds a block of true signals.
+    /// Adds a block of the 1983 rig's true signals: the driven gear and the output-shaft
+    /// torque.
     pub fn add(&mut self, block: &SignalBlock) {
-        let angles = &block.angle_rad[DRIVEN_GEAR];
-        for (&t, &angle) in block.time_s.iter().zip(angles) {
+        self.add_samples(
+            &block.time_s,
+            &block.angle_rad[DRIVEN_GEAR],
+            &block.shaft_torque_nm[INTERMEDIATE_SHAFT],
+        );
+    }
+
+    /// Adds samples at `time_s` of the watched gear's absolute angle (rad, in its sense
+    /// of rotation) and of the averaged torque (N m).
+    pub fn add_samples(&mut self, time_s: &[f64], gear_angle_rad: &[f64], torque_nm: &[f64]) {
+        for (&t, &angle) in time_s.iter().zip(gear_angle_rad) {
             let turns = angle / std::f64::consts::TAU;
             if let Some((t0, turns0)) = self.previous
                 && turns.floor() > turns0.floor()
@@ -61,9 +78,8 @@ impl GearCondition {
             self.previous = Some((t, turns));
         }
         self.start_s
-            .get_or_insert(block.time_s.first().copied().unwrap_or(0.0));
-        self.torque_nm
-            .extend_from_slice(&block.shaft_torque_nm[INTERMEDIATE_SHAFT]);
+            .get_or_insert(time_s.first().copied().unwrap_or(0.0));
+        self.torque_nm.extend_from_slice(torque_nm);
         if self.torque_nm.len() > 2 * KEPT_SAMPLES_MAX {
             let drop = self.torque_nm.len() - KEPT_SAMPLES_MAX;
             self.torque_nm.drain(..drop);
@@ -95,9 +111,14 @@ impl GearCondition {
             POINTS_PER_REVOLUTION,
         )
         .ok()?;
+        let residual = gear_signals(&average, teeth).residual;
+        let residual_rms_nm =
+            (residual.iter().map(|r| r * r).sum::<f64>() / residual.len() as f64).sqrt();
         Some(GearConditionReport {
             revolutions,
             indicators: condition_indicators(&average, teeth, &[]),
+            residual_rms_nm,
+            average_nm: average,
         })
     }
 }
@@ -112,6 +133,7 @@ impl GearConditionReport {
             "fm0": i.fm0, "fm4": i.fm4, "m6a": i.m6a, "m8a": i.m8a, "na4": i.na4,
             "sideband_level": i.sideband_level, "rms_nm": i.rms,
             "crest_factor": i.crest_factor, "kurtosis": i.kurtosis,
+            "residual_rms_nm": self.residual_rms_nm,
         })
     }
 }

@@ -133,9 +133,24 @@ fn print_text(r: &Report) {
             100.0 * m.apart_fraction
         );
     }
+    if let Some(c) = &s.condition {
+        let n = |key: &str| c[key].as_f64().unwrap_or(f64::NAN);
+        println!(
+            "gear condition   shaft {} averaged over {} revolutions of {}:\n  FM0 {:.3}, FM4 {:.3}, NA4 {:.3}, sideband level {:.4}, residual RMS {:.3e} N m",
+            s.judged_shaft,
+            c["revolutions_averaged"],
+            c["gear"].as_str().unwrap_or(""),
+            n("fm0"),
+            n("fm4"),
+            n("na4"),
+            n("sideband_level"),
+            n("residual_rms_nm")
+        );
+    }
 }
 
-/// `impacts.csv`: time, mesh, flank and closing speed of each impact in the window.
+/// `impacts.csv`: time, mesh, flank, closing speed and the teeth struck of each impact in
+/// the window.
 fn write_impacts(
     path: &Path,
     rig: &rig::RigTopology,
@@ -143,7 +158,14 @@ fn write_impacts(
 ) -> anyhow::Result<PathBuf> {
     let file = PartialFile::new(path);
     let mut csv = csv::Writer::from_writer(file.create()?);
-    csv.write_record(["time_s", "mesh", "flank", "closing_speed_m_s"])?;
+    csv.write_record([
+        "time_s",
+        "mesh",
+        "flank",
+        "closing_speed_m_s",
+        "driver_tooth",
+        "driven_tooth",
+    ])?;
     for i in impacts {
         let flank = if i.flank == rig::Contact::Drive {
             "drive"
@@ -155,6 +177,8 @@ fn write_impacts(
             rig.meshes[i.mesh].name.clone(),
             flank.to_string(),
             i.approach_m_s.abs().to_string(),
+            i.teeth[0].to_string(),
+            i.teeth[1].to_string(),
         ])?;
     }
     csv.flush()

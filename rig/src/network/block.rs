@@ -79,4 +79,7 @@ pub struct NetworkImpact {
     pub flank: Contact,
     /// The rate δ' the teeth close at, along the line of action (m/s).
     pub approach_m_s: f64,
+    /// The teeth of the pair struck, driver's and driven's (1..=z; tooth 1 of each in mesh
+    /// at the start).
+    pub teeth: [u32; 2],
 }

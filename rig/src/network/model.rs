@@ -111,6 +111,12 @@ impl MeshModel {
             * driven[pair.rem_euclid(driven.len() as i64) as usize]
     }
 
+    /// The teeth (1..=z, driver's and driven's) of pair `pair`.
+    pub fn pair_teeth(&self, pair: i64) -> [u32; 2] {
+        let [driver, driven] = &self.tooth_factors;
+        [driver.len(), driven.len()].map(|z| pair.rem_euclid(z as i64) as u32 + 1)
+    }
+
     /// The stiffness factor in pair zone `zone` (2p: pairs p − 1 and p share the load
     /// where pairs alternate; 2p + 1: pair p alone; one pair: pair p over the period).
     pub fn zone_factor(&self, zone: i64) -> f64 {

@@ -134,11 +134,14 @@ impl NetworkPlant {
         state.contact = flank;
         state.toothless = false;
         let (_, approach_m_s) = self.model.deflection(i, &self.u);
+        // The pair that strikes: the one coming into mesh in a double-pair stretch.
+        let teeth = self.model.meshes[i].pair_teeth(zone.div_euclid(2));
         self.impacts.push(NetworkImpact {
             time_s: at_s,
             mesh: i,
             flank,
             approach_m_s,
+            teeth,
         });
     }
 
