@@ -76,6 +76,14 @@ pub struct Mesh {
     /// The thesis's numerical tooth shifting (§5.4.5): at each tooth pass in contact the
     /// loaded pair hands its deflection back and the next starts undeflected.
     pub tooth_shifting: bool,
+    /// Run-out (eccentricity) of the driving gear's pitch circle about its axis (µm): a
+    /// transmission error e cos θ along the line of action, θ the driver's angle (its high
+    /// point at angle 0), once per revolution of the driver.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub run_out_driver_um: f64,
+    /// Run-out of the driven gear (µm): e cos θ₂ once per revolution of the driven gear.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub run_out_driven_um: f64,
     /// Faults seeded on single teeth (none: a healthy pair).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub faults: Vec<ToothFault>,
@@ -114,6 +122,8 @@ impl Mesh {
         self.backlash_variation != 0.0
             || self.te_once_per_rev_um != 0.0
             || self.te_mesh_frequency_um != 0.0
+            || self.run_out_driver_um != 0.0
+            || self.run_out_driven_um != 0.0
     }
 
     /// Speed of the driven gear per unit speed of the driver: −z₁/z₂ (external gears turn
@@ -121,6 +131,11 @@ impl Mesh {
     pub fn speed_ratio(&self) -> f64 {
         -f64::from(self.teeth[0]) / f64::from(self.teeth[1])
     }
+}
+
+/// Whether a number is 0 (left out of a rig's JSON).
+fn is_zero(x: &f64) -> bool {
+    *x == 0.0
 }
 
 /// The torque locked into one shaft of a back-to-back loop at assembly.

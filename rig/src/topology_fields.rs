@@ -28,7 +28,7 @@ const SHAFT: [(&str, &str, &str); 2] = [
     ("stiffness_nm_per_rad", "N m/rad", "torsional stiffness"),
     ("damping_nms_per_rad", "N m s/rad", "torsional damping"),
 ];
-const MESH: [(&str, &str, &str); 10] = [
+const MESH: [(&str, &str, &str); 12] = [
     ("module_m", "m", "module"),
     ("pressure_angle_deg", "deg", "pressure angle"),
     (
@@ -62,6 +62,16 @@ const MESH: [(&str, &str, &str); 10] = [
         "te_mesh_frequency_um",
         "um",
         "transmission error at mesh frequency",
+    ),
+    (
+        "run_out_driver_um",
+        "um",
+        "run-out of the driving gear, once per its revolution",
+    ),
+    (
+        "run_out_driven_um",
+        "um",
+        "run-out of the driven gear, once per its revolution",
     ),
 ];
 const MOTOR: [(&str, &str, &str); 4] = [
@@ -190,6 +200,8 @@ impl RigTopology {
                     "addendum_coefficient" => Some(&mut m.addendum_coefficient),
                     "backlash_variation" => Some(&mut m.backlash_variation),
                     "te_once_per_rev_um" => Some(&mut m.te_once_per_rev_um),
+                    "run_out_driver_um" => Some(&mut m.run_out_driver_um),
+                    "run_out_driven_um" => Some(&mut m.run_out_driven_um),
                     "te_mesh_frequency_um" => Some(&mut m.te_mesh_frequency_um),
                     _ => None,
                 }

@@ -286,6 +286,8 @@ fn mesh(
         backlash_variation: or(&m.backlash_variation, 0.0),
         te_once_per_rev_um: or(&m.te_once_per_rev_um, 0.0),
         te_mesh_frequency_um: or(&m.te_mesh_frequency_um, 0.0),
+        run_out_driver_um: or(&m.run_out_driver_um, 0.0),
+        run_out_driven_um: or(&m.run_out_driven_um, 0.0),
         tooth_shifting: m.tooth_shifting.unwrap_or(false),
         faults: m
             .fault
@@ -412,6 +414,8 @@ fn span_of(file: &RigFileToml, place: &TopologyPlace) -> Range<usize> {
             "te_once_per_rev_um" => m.te_once_per_rev_um.as_ref().map(Spanned::span),
             "te_mesh_frequency_um" => m.te_mesh_frequency_um.as_ref().map(Spanned::span),
             "fault" => m.fault.first().map(|f| f.tooth.span()),
+            "run_out_driver_um" => m.run_out_driver_um.as_ref().map(Spanned::span),
+            "run_out_driven_um" => m.run_out_driven_um.as_ref().map(Spanned::span),
             _ => Some(m.name.span()),
         }),
         ("locked_torque", _) => file.locked_torque.as_ref().map(|l| l.torque_nm.span()),

@@ -119,6 +119,12 @@ pub struct MeshToml {
     /// The thesis's numerical tooth shifting; false when left out.
     #[serde(default)]
     pub tooth_shifting: Option<bool>,
+    /// Run-out of the driving gear (µm); 0 when left out.
+    #[serde(default)]
+    pub run_out_driver_um: Option<Spanned<f64>>,
+    /// Run-out of the driven gear (µm); 0 when left out.
+    #[serde(default)]
+    pub run_out_driven_um: Option<Spanned<f64>>,
     /// `[[mesh.fault]]`: faults seeded on single teeth.
     #[serde(default)]
     pub fault: Vec<FaultToml>,

@@ -21,8 +21,13 @@ pub struct NetLayout {
     pub revolution: [Option<usize>; MAX_MESHES],
     /// Per mesh: where cos zθ sits (sin zθ follows), if it has a mesh-frequency error.
     pub tooth: [Option<usize>; MAX_MESHES],
+    /// Per mesh: where cos θ₂ of its driven gear's turn sits (sin θ₂ follows), if the
+    /// driven gear has run-out.
+    pub run_out: [Option<usize>; MAX_MESHES],
     /// Per mesh: its driver's teeth z (the harmonic of the mesh-frequency pair).
     driver_teeth: [u32; MAX_MESHES],
+    /// Per mesh: its driven gear's teeth (its turn is z/z₂ of the driver's).
+    driven_teeth: [u32; MAX_MESHES],
     len: usize,
 }
 
@@ -33,6 +38,8 @@ impl NetLayout {
         let mut len = 2 * bodies + 2 + 8;
         let mut revolution = [None; MAX_MESHES];
         let mut tooth = [None; MAX_MESHES];
+        let mut run_out = [None; MAX_MESHES];
+        let mut driven_teeth = [0; MAX_MESHES];
         let mut driver_teeth = [0; MAX_MESHES];
         for (i, m) in rig.meshes.iter().enumerate() {
             driver_teeth[i] = m.teeth[0];
@@ -44,12 +51,19 @@ impl NetLayout {
                 tooth[i] = Some(len);
                 len += 2;
             }
+            if m.run_out_driven_um != 0.0 {
+                run_out[i] = Some(len);
+                driven_teeth[i] = m.teeth[1];
+                len += 2;
+            }
         }
         Self {
             bodies,
             revolution,
             tooth,
+            run_out,
             driver_teeth,
+            driven_teeth,
             len,
         }
     }
@@ -68,6 +82,10 @@ impl NetLayout {
             }
             if let Some(index) = self.tooth[i] {
                 pairs.push((index, i, f64::from(self.driver_teeth[i])));
+            }
+            if let Some(index) = self.run_out[i] {
+                let turns = f64::from(self.driver_teeth[i]) / f64::from(self.driven_teeth[i]);
+                pairs.push((index, i, turns));
             }
         }
         pairs

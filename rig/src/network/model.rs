@@ -69,10 +69,15 @@ pub struct MeshModel {
     pub share: f64,
     /// Half the free play times its variation, b·C1 (m).
     pub variation_m: f64,
-    /// Transmission error once per revolution, E (m along the line of action).
+    /// Transmission error once per revolution of the driver, E (m along the line of
+    /// action; the driver's run-out included).
     pub te_once_m: f64,
     /// Transmission error at mesh frequency, P (m along the line of action).
     pub te_mesh_m: f64,
+    /// The driven gear's run-out, R (m along the line of action), once per its turn.
+    pub run_out_driven_m: f64,
+    /// The driven gear's turns per turn of the driver, z₁/z₂.
+    pub driven_turns: f64,
     /// The thesis's numerical tooth shifting at each tooth pass in contact.
     pub tooth_shifting: bool,
     /// Each tooth's stiffness factor on the driver and on the driven gear (1 healthy; a
@@ -84,9 +89,12 @@ pub struct MeshModel {
 
 impl MeshModel {
     /// The constant part of the overlap of `flank` (+1 drive, −1 back) with the driver
-    /// at angle 0 of its share of the set rotation (m): −f b (1 − C1) + E + P.
+    /// at angle 0 of its share of the set rotation (m): −f b (1 − C1) + E + P + R.
     pub fn start_offset_m(&self, flank: f64) -> f64 {
-        -flank * (self.half_backlash_m - self.variation_m) + self.te_once_m + self.te_mesh_m
+        -flank * (self.half_backlash_m - self.variation_m)
+            + self.te_once_m
+            + self.te_mesh_m
+            + self.run_out_driven_m
     }
 
     /// Stiffness (N/m) and damping (N s/m) in `state`.
@@ -217,7 +225,9 @@ impl NetworkModel {
                 teeth: f64::from(m.teeth[0]),
                 share: speed_ratio[m.gears[0]],
                 variation_m: m.half_backlash_m() * m.backlash_variation,
-                te_once_m: m.te_once_per_rev_um * 1e-6,
+                te_once_m: (m.te_once_per_rev_um + m.run_out_driver_um) * 1e-6,
+                run_out_driven_m: m.run_out_driven_um * 1e-6,
+                driven_turns: f64::from(m.teeth[0]) / f64::from(m.teeth[1]),
                 te_mesh_m: m.te_mesh_frequency_um * 1e-6,
                 tooth_shifting: m.tooth_shifting,
                 tooth_factors: [
@@ -309,6 +319,10 @@ impl NetworkModel {
         if let Some(tooth) = l.tooth[mesh] {
             overlap += m.te_mesh_m * u[tooth];
             overlap_rate -= m.te_mesh_m * m.teeth * w * u[tooth + 1];
+        }
+        if let Some(run_out) = l.run_out[mesh] {
+            overlap += m.run_out_driven_m * u[run_out];
+            overlap_rate -= m.run_out_driven_m * m.driven_turns * w * u[run_out + 1];
         }
         (overlap, overlap_rate)
     }
@@ -470,6 +484,10 @@ impl NetworkModel {
         if let Some(tooth) = l.tooth[mesh] {
             terms.push((tooth, m.te_mesh_m, 0.0));
             terms.push((tooth + 1, 0.0, -m.te_mesh_m * m.teeth * w));
+        }
+        if let Some(run_out) = l.run_out[mesh] {
+            terms.push((run_out, m.run_out_driven_m, 0.0));
+            terms.push((run_out + 1, 0.0, -m.run_out_driven_m * m.driven_turns * w));
         }
         terms
     }
