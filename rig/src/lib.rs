@@ -55,7 +55,8 @@
 //! `regime`, `judge`, `steady`, `modal`, `energy`, and `Plant`); the numerics are private
 //! to the crate.
 //!
-//! `schedule.rs` set points over time; `approach.rs` how a run reaches its point (static,
+//! `mesh_stiffness.rs` a spur pair's stiffness by the potential-energy method (checked
+//! against ISO 6336-1). `schedule.rs` set points over time; `approach.rs` how a run reaches its point (static,
 //! from rest, a slow ramp from below or above) as a schedule. `signals.rs` the true-signal block. `records.rs`
 //! impacts and revolution samples. `regime.rs` period-k classification of the Poincaré
 //! samples (the old classifier, kept for the regime map and the panel). `judge/` the
@@ -108,6 +109,7 @@ pub mod judge;
 mod jump_response;
 mod layout;
 mod matrix_exp;
+pub mod mesh_stiffness;
 pub mod modal;
 mod mode;
 mod model;
