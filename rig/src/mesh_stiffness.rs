@@ -4,10 +4,13 @@
 //! and the deflection of its fillet foundation (Sainsot, Velex & Duverger 2004), summed
 //! in series for the two teeth of a pair; two pairs in parallel where two are in mesh.
 //!
-//! Modelling choices, stated: the involute runs down to the base circle and the tooth is
-//! built in there (Tian's simplification; the fillet below it is the foundation's);
-//! standard gears (no profile shift) at the standard centre distance; both gears of one
-//! steel. Angles in radians, lengths in metres, stiffnesses along the line of action in
+//! The energies are integrated over the tooth's true shape: the involute down to the base
+//! circle, below it (where the root circle lies lower) a radial flank as thick as at the
+//! base circle, built in at the root circle (as Chen & Shao 2011 treat teeth whose base
+//! circle lies above the root circle); where the root circle lies above the base circle,
+//! the involute from the root circle. Modelling choices, stated: standard gears (no
+//! profile shift, dedendum 1.25 m) at the standard centre distance; both gears of one
+//! steel; the fillet's own shape left to the foundation's coefficients. Angles in radians, lengths in metres, stiffnesses along the line of action in
 //! N/m.
 
 use std::f64::consts::PI;
@@ -69,46 +72,95 @@ impl PairGeometry {
         (self.base_radius_m(g) / tip).acos()
     }
 
+    /// Root radius of gear `g`: the standard dedendum 1.25 m below the pitch circle (m).
+    fn root_radius_m(&self, g: usize) -> f64 {
+        self.module_m * (f64::from(self.teeth[g]) / 2.0 - 1.25)
+    }
+
+    /// The point of gear `g`'s involute whose pressure angle is `phi`: (x along the
+    /// tooth's centre line from the gear's centre, y its half-thickness there; m).
+    fn flank_point(&self, g: usize, phi: f64) -> (f64, f64) {
+        let r = self.base_radius_m(g) / phi.cos();
+        let psi = self.half_base_angle(g) - involute(phi);
+        (r * psi.cos(), r * psi.sin())
+    }
+
     /// The stiffness (N/m, along the line of action) of one tooth of gear `g` loaded at
-    /// the point of its involute whose pressure angle is `alpha_r`: bending, shear, axial
-    /// compression and fillet foundation in series.
+    /// the point of its involute whose pressure angle is `alpha_r`: a cantilever built in
+    /// at the root circle, its bending, shear and axial compressive energies, in series
+    /// with its fillet foundation. Below the base circle (where the root circle lies
+    /// lower) the flank is taken radial, the tooth as thick as at the base circle.
     pub fn tooth_stiffness_n_per_m(&self, g: usize, alpha_r: f64) -> f64 {
+        let rb = self.base_radius_m(g);
         let a2 = self.half_base_angle(g);
         // The force's angle to the normal of the tooth's centre line.
         let a1 = alpha_r.tan() - a2;
-        let el = self.youngs_modulus_pa * self.face_width_m;
-        let nu = self.poisson_ratio;
         let (s1, c1) = a1.sin_cos();
-        let integrand = |a: f64| {
-            let (s, c) = a.sin_cos();
-            let arm = a2 - a;
-            let section = s + arm * c;
-            let bending =
-                3.0 * (1.0 + c1 * (arm * s - c)).powi(2) * arm * c / (2.0 * el * section.powi(3));
-            let shear = 1.2 * (1.0 + nu) * arm * c * c1 * c1 / (el * section);
-            let axial = arm * c * s1 * s1 / (2.0 * el * section);
-            bending + shear + axial
+        let (xc, yc) = self.flank_point(g, alpha_r);
+        let e = self.youngs_modulus_pa;
+        let shear_modulus = e / (2.0 * (1.0 + self.poisson_ratio));
+        let l = self.face_width_m;
+        // Compliance of a slice dx of half-thickness y at x.
+        let slice = |x: f64, y: f64| {
+            let moment = c1 * (xc - x) - yc * s1;
+            let inertia = 2.0 / 3.0 * y.powi(3) * l;
+            let area = 2.0 * y * l;
+            moment * moment / (e * inertia)
+                + 1.2 * c1 * c1 / (shear_modulus * area)
+                + s1 * s1 / (e * area)
         };
-        let compliance = simpson(integrand, -a1, a2) + self.fillet_compliance(g, a1);
-        1.0 / compliance
+        let rf = self.root_radius_m(g);
+        // The involute from where the tooth begins (the base circle, or the root circle
+        // above it) to the loaded point, by its pressure angle.
+        let phi_start = if rf > rb { (rb / rf).acos() } else { 0.0 };
+        let involute_part = simpson(
+            |phi| {
+                let (x, y) = self.flank_point(g, phi);
+                slice(x, y) * self.dx_dphi(g, phi)
+            },
+            phi_start,
+            alpha_r,
+        );
+        // The radial stretch from the root circle up to the base circle.
+        let (xb, yb) = self.flank_point(g, 0.0);
+        let radial_part = if rf < rb {
+            let xf = (rf * rf - yb * yb).max(0.0).sqrt();
+            simpson(|x| slice(x, yb), xf, xb)
+        } else {
+            0.0
+        };
+        1.0 / (involute_part + radial_part + self.fillet_compliance(g, a1))
     }
 
-    /// The fillet foundation's compliance (m/N) of gear `g`'s tooth, force at angle `a1`.
+    /// dx/dφ of gear `g`'s involute at pressure angle `phi` (m/rad).
+    fn dx_dphi(&self, g: usize, phi: f64) -> f64 {
+        let rb = self.base_radius_m(g);
+        let psi = self.half_base_angle(g) - involute(phi);
+        let (sp, cp) = phi.sin_cos();
+        rb * sp / (cp * cp) * psi.cos() + rb / cp * psi.sin() * (sp / cp).powi(2)
+    }
+
+    /// The fillet foundation's compliance (m/N) of gear `g`'s tooth, force at angle `a1`
+    /// (Sainsot et al. 2004): S_f the tooth's thickness at the root circle, u_f the
+    /// distance from there to where the force's line meets the centre line.
     fn fillet_compliance(&self, g: usize, a1: f64) -> f64 {
         let rb = self.base_radius_m(g);
-        let a2 = self.half_base_angle(g);
-        let root_radius = rb;
-        let theta_f = a2;
+        let rf = self.root_radius_m(g);
+        let theta_f = if rf > rb {
+            self.half_base_angle(g) - involute((rb / rf).acos())
+        } else {
+            (self.flank_point(g, 0.0).1 / rf).asin()
+        };
         let h_f = 1.0 / self.bore_ratio;
-        let [l, m, p, q] = FILLET.map(|[a, b, c, d, e, f]| {
+        let [lf, mf, pf, qf] = FILLET.map(|[a, b, c, d, e, f]| {
             a / (theta_f * theta_f) + b * h_f * h_f + c * h_f / theta_f + d / theta_f + e * h_f + f
         });
-        // Where the force's line meets the tooth's centre line, above the root section.
-        let u_f = rb / a1.cos() - root_radius * a2.cos();
-        let s_f = 2.0 * root_radius * a2.sin();
+        let u_f = rb / a1.cos() - rf * theta_f.cos();
+        let s_f = 2.0 * rf * theta_f;
         let ratio = u_f / s_f;
         let el = self.youngs_modulus_pa * self.face_width_m;
-        a1.cos().powi(2) / el * (l * ratio * ratio + m * ratio + p * (1.0 + q * a1.tan().powi(2)))
+        a1.cos().powi(2) / el
+            * (lf * ratio * ratio + mf * ratio + pf * (1.0 + qf * a1.tan().powi(2)))
     }
 
     /// The Hertzian contact stiffness of a pair, π E L / (4 (1 − ν²)) (N/m).

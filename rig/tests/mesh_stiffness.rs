@@ -1,10 +1,8 @@
 //! The potential-energy mesh stiffness (`rig::mesh_stiffness`) against ISO 6336-1:2019
-//! (method B): the theoretical single stiffness of solid spur gears on the standard basic
-//! rack, c'th = 1/q' with q' = 0.04723 + 0.15551/z₁ + 0.25791/z₂ mm µm/N (no profile
-//! shift), and the theoretical mesh stiffness cγα,th = c'th (0.75 ε + 0.25). ISO's
-//! c' = c'th C_M C_R C_B cos β takes C_M = 0.8 "for the difference between measured and
-//! theoretical values"; the potential-energy method is a theory of the same kind, so it is
-//! held against the theoretical values.
+//! (method B) for solid spur gears on the standard basic rack without profile shift: the
+//! single stiffness c' = c'th C_M C_R C_B cos β, c'th = 1/q' with q' = 0.04723 +
+//! 0.15551/z₁ + 0.25791/z₂ mm µm/N, C_M = 0.8 (ISO's factor from theoretical to measured
+//! values), C_R = C_B = cos β = 1; the mesh stiffness cγα = c' (0.75 ε + 0.25).
 
 use rig::mesh_stiffness::PairGeometry;
 
@@ -21,40 +19,55 @@ fn gears(teeth: [u32; 2]) -> PairGeometry {
     }
 }
 
-/// ISO 6336-1's theoretical single stiffness c'th b (N/m).
+/// ISO 6336-1's single stiffness c' b (N/m).
 fn iso_single_n_per_m(g: &PairGeometry) -> f64 {
     let [z1, z2] = g.teeth.map(f64::from);
     let q = 0.04723 + 0.15551 / z1 + 0.25791 / z2;
-    // N/(mm µm) per mm of face width: N/µm per mm → N/m.
-    (1.0 / q) * g.face_width_m * 1e3 * 1e6
+    let c_th = 1.0 / q; // N/(mm µm): N/µm per mm of face width
+    let c_m = 0.8;
+    c_th * c_m * g.face_width_m * 1e3 * 1e6
 }
 
-/// The 1983 rig's 30:30 gears and a 25:40 pair, whose base and root circles lie close
-/// (Tian's simplification builds the tooth in at the base circle): one pair's stiffness
-/// at its largest and the mean mesh stiffness within 5 % (30:30: 0.6 % and 3.2 %) and 20 %
-/// (25:40: 6.5 % and 10 %) of ISO's theoretical values.
-/// (Far from z ≈ 42, where base and root circles of standard gears coincide, the
-/// simplification errs: 20:20 gears come out 42 % stiffer, 60:60 49 % softer; the tooth
-/// between root and base circle is not modelled yet.)
+/// One pair's stiffness at its largest over the path of contact (N/m).
+fn single_max_n_per_m(g: &PairGeometry) -> f64 {
+    let (enter, leave) = g.contact_span();
+    (0..=200)
+        .map(|i| g.pair_stiffness_n_per_m(enter + (leave - enter) * i as f64 / 200.0))
+        .fold(0.0, f64::max)
+}
+
+/// For gears of 17 to 100 teeth and ratios up to 3, one pair's stiffness at its largest
+/// and the mean mesh stiffness over a tooth period lie within 20 % of ISO's c' b and
+/// cγα b (below them: 2 % for 17:17 to 16 % for 100:100); the 1983 rig's 30:30 gears
+/// within 10 % (one pair at most 2.46e8 N/m against ISO's 2.62e8, the mesh 3.57e8 against
+/// 3.91e8).
 #[test]
 fn the_single_pair_and_mesh_stiffness_agree_with_iso_6336_1() {
-    for (teeth, within) in [([30, 30], 0.05), ([25, 40], 0.20)] {
+    let cases = [
+        ([30, 30], 0.10),
+        ([17, 17], 0.20),
+        ([20, 20], 0.20),
+        ([25, 40], 0.20),
+        ([20, 60], 0.20),
+        ([40, 40], 0.20),
+        ([60, 60], 0.20),
+        ([30, 90], 0.20),
+        ([100, 100], 0.20),
+    ];
+    for (teeth, within) in cases {
         let g = gears(teeth);
-        let (enter, leave) = g.contact_span();
-        let single_max = (0..=200)
-            .map(|i| g.pair_stiffness_n_per_m(enter + (leave - enter) * i as f64 / 200.0))
-            .fold(0.0, f64::max);
+        let single = single_max_n_per_m(&g);
         let iso = iso_single_n_per_m(&g);
         assert!(
-            (single_max / iso - 1.0).abs() < within,
-            "{teeth:?}: one pair at most {single_max:e} N/m, ISO c'th b {iso:e} N/m"
+            (single / iso - 1.0).abs() < within,
+            "{teeth:?}: one pair at most {single:e} N/m, ISO c' b {iso:e} N/m"
         );
         let cycle = g.mesh_cycle_n_per_m(400);
         let mean = cycle.iter().sum::<f64>() / cycle.len() as f64;
         let iso_mesh = iso * (0.75 * g.contact_ratio() + 0.25);
         assert!(
             (mean / iso_mesh - 1.0).abs() < within,
-            "{teeth:?}: mean mesh stiffness {mean:e} N/m, ISO cγα,th b {iso_mesh:e} N/m"
+            "{teeth:?}: mean mesh stiffness {mean:e} N/m, ISO cγα b {iso_mesh:e} N/m"
         );
     }
 }
