@@ -185,9 +185,9 @@ fn bad_faults_are_refused_at_their_line_and_a_severity_is_set_by_path() {
             "teeth 1 to 30",
         ),
         (
-            "gear = \"driven\"\ntooth = 7\nkind = \"crack\"\nseverity = 0.5",
+            "gear = \"driven\"\ntooth = 7\nkind = \"spall\"\nseverity = 0.5",
             "mesh.fault.kind",
-            "pit, broken",
+            "crack, pit, broken",
         ),
         (
             "gear = \"driven\"\ntooth = 7\nkind = \"pit\"\nseverity = 1.5",
@@ -272,53 +272,58 @@ fn alternating_pairs_share_the_load_over_the_contact_ratio_and_a_pit_weakens_its
 }
 
 /// The condition indicators of the faulted gear's synchronous average (`simulate --rig`'s
-/// `condition`) grow with the pit: at 600 rev/min and 5.424 N m the residual signal's RMS,
-/// FM4 and the first sidebands of the mesh frequency (mesh order ± the gear's rotation)
-/// rise with every step of severity 0.2 to 0.8, and the healthy pair leaves no residual.
+/// `condition`) grow with a pit and with a root crack: at 600 rev/min and 5.424 N m the
+/// residual signal's RMS, FM4 and the first sidebands of the mesh frequency (mesh order ±
+/// the gear's rotation) rise with every step of severity 0.2 to 0.8, and the healthy pair
+/// leaves no residual.
 #[test]
-fn the_condition_indicators_rise_with_the_pits_severity() {
+fn the_condition_indicators_rise_with_a_pits_and_a_cracks_severity() {
     use testrig::rig_point::{RigPointSpec, run_rig_point};
     use testrig::steady_point::FLAG_NAMES;
     let dir = common::folder("fault-indicators");
-    let rig = rig_with(
-        dir.path(),
-        "[[mesh.fault]]\ngear = \"driven\"\ntooth = 7\nkind = \"pit\"\nseverity = 0.0\n",
-    );
-    let indicators = |severity: f64| {
-        let mut faulted = rig.clone();
-        faulted
-            .set_field("mesh.gears.fault1.severity", severity)
-            .expect("set");
-        let spec = RigPointSpec {
-            rig: &faulted,
-            rpm: 600.0,
-            load_nm: 5.424,
-            settle_s: 10.0,
-            duration_s: 10.0,
-            rate_hz: 10_240.0,
-            approach: rig::Approach::Static,
+    for kind in ["pit", "crack"] {
+        let rig = rig_with(
+            dir.path(),
+            &format!(
+                "[[mesh.fault]]\ngear = \"driven\"\ntooth = 7\nkind = \"{kind}\"\nseverity = 0.0\n"
+            ),
+        );
+        let indicators = |severity: f64| {
+            let mut faulted = rig.clone();
+            faulted
+                .set_field("mesh.gears.fault1.severity", severity)
+                .expect("set");
+            let spec = RigPointSpec {
+                rig: &faulted,
+                rpm: 600.0,
+                load_nm: 5.424,
+                settle_s: 10.0,
+                duration_s: 10.0,
+                rate_hz: 10_240.0,
+                approach: rig::Approach::Static,
+            };
+            let run = run_rig_point(&spec, FLAG_NAMES, |_| Ok(())).expect("run");
+            let c = run.summary.condition.expect("a condition");
+            assert_eq!(c["gear"], "driven_gear");
+            assert!(c["revolutions_averaged"].as_u64().expect("count") >= 90);
+            let number = |key: &str| c[key].as_f64().expect(key);
+            (
+                number("residual_rms_nm"),
+                number("fm4"),
+                number("sideband_level"),
+            )
         };
-        let run = run_rig_point(&spec, FLAG_NAMES, |_| Ok(())).expect("run");
-        let c = run.summary.condition.expect("a condition");
-        assert_eq!(c["gear"], "driven_gear");
-        assert!(c["revolutions_averaged"].as_u64().expect("count") >= 90);
-        let number = |key: &str| c[key].as_f64().expect(key);
-        (
-            number("residual_rms_nm"),
-            number("fm4"),
-            number("sideband_level"),
-        )
-    };
-    let (healthy_residual, _, _) = indicators(0.0);
-    assert!(healthy_residual < 1e-9, "{healthy_residual} N m");
-    let faulted: Vec<(f64, f64, f64)> = [0.2, 0.4, 0.6, 0.8].map(indicators).to_vec();
-    for pair in faulted.windows(2) {
-        let (a, b) = (pair[0], pair[1]);
-        assert!(b.0 > a.0, "residual RMS {} then {}", a.0, b.0);
-        assert!(b.1 > a.1, "FM4 {} then {}", a.1, b.1);
-        assert!(b.2 > a.2, "sideband level {} then {}", a.2, b.2);
+        let (healthy_residual, _, _) = indicators(0.0);
+        assert!(healthy_residual < 1e-9, "{kind}: {healthy_residual} N m");
+        let faulted: Vec<(f64, f64, f64)> = [0.2, 0.4, 0.6, 0.8].map(indicators).to_vec();
+        for pair in faulted.windows(2) {
+            let (a, b) = (pair[0], pair[1]);
+            assert!(b.0 > a.0, "{kind}: residual RMS {} then {}", a.0, b.0);
+            assert!(b.1 > a.1, "{kind}: FM4 {} then {}", a.1, b.1);
+            assert!(b.2 > a.2, "{kind}: sideband level {} then {}", a.2, b.2);
+        }
+        assert!(faulted[0].0 > 1e3 * healthy_residual.max(1e-12));
     }
-    assert!(faulted[0].0 > 1e3 * healthy_residual.max(1e-12));
 }
 
 /// Run-out of either gear (`run_out_driver_um`, `run_out_driven_um`): a transmission error

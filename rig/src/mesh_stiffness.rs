@@ -91,6 +91,17 @@ impl PairGeometry {
     /// with its fillet foundation. Below the base circle (where the root circle lies
     /// lower) the flank is taken radial, the tooth as thick as at the base circle.
     pub fn tooth_stiffness_n_per_m(&self, g: usize, alpha_r: f64) -> f64 {
+        self.cracked_tooth_stiffness_n_per_m(g, alpha_r, 0.0)
+    }
+
+    /// [`Self::tooth_stiffness_n_per_m`] with a root crack of `crack_share` (0..1) of the
+    /// tooth's thickness at the root circle: the crack runs from the loaded flank's root
+    /// across the tooth (Tian 2004, Wu, Zuo & Parey 2008), its tip `crack_share` of the
+    /// root thickness in from that flank; the material on the cracked side beyond the
+    /// tip's line (parallel to the centre line) carries no stress, so each section below
+    /// where the flank's half-thickness falls to the tip's keeps h + min(h, h_q) of its
+    /// thickness (h_q the tip's signed distance from the centre line).
+    pub fn cracked_tooth_stiffness_n_per_m(&self, g: usize, alpha_r: f64, crack_share: f64) -> f64 {
         let rb = self.base_radius_m(g);
         let a2 = self.half_base_angle(g);
         // The force's angle to the normal of the tooth's centre line.
@@ -100,16 +111,19 @@ impl PairGeometry {
         let e = self.youngs_modulus_pa;
         let shear_modulus = e / (2.0 * (1.0 + self.poisson_ratio));
         let l = self.face_width_m;
-        // Compliance of a slice dx of half-thickness y at x.
+        let rf = self.root_radius_m(g);
+        let root_half = self.root_half_thickness_m(g);
+        let tip = root_half * (1.0 - 2.0 * crack_share);
+        // Compliance of a slice dx of half-thickness y at x: its thickness, cracked or not.
         let slice = |x: f64, y: f64| {
             let moment = c1 * (xc - x) - yc * s1;
-            let inertia = 2.0 / 3.0 * y.powi(3) * l;
-            let area = 2.0 * y * l;
+            let thickness = y + y.min(tip);
+            let inertia = thickness.powi(3) * l / 12.0;
+            let area = thickness * l;
             moment * moment / (e * inertia)
                 + 1.2 * c1 * c1 / (shear_modulus * area)
                 + s1 * s1 / (e * area)
         };
-        let rf = self.root_radius_m(g);
         // The involute from where the tooth begins (the base circle, or the root circle
         // above it) to the loaded point, by its pressure angle.
         let phi_start = if rf > rb { (rb / rf).acos() } else { 0.0 };
@@ -130,6 +144,46 @@ impl PairGeometry {
             0.0
         };
         1.0 / (involute_part + radial_part + self.fillet_compliance(g, a1))
+    }
+
+    /// Half the tooth's thickness where it meets the root circle (m).
+    fn root_half_thickness_m(&self, g: usize) -> f64 {
+        let rb = self.base_radius_m(g);
+        let rf = self.root_radius_m(g);
+        if rf > rb {
+            self.flank_point(g, (rb / rf).acos()).1
+        } else {
+            self.flank_point(g, 0.0).1
+        }
+    }
+
+    /// The share of a pair's stiffness it keeps with a root crack of `crack_share` of the
+    /// root thickness in the tooth of gear `g` (0 driver, 1 driven): the cracked pair's
+    /// mean stiffness over its path of contact (its time in mesh) over the healthy pair's.
+    pub fn crack_factor(&self, g: usize, crack_share: f64) -> f64 {
+        let (enter, leave) = self.contact_span();
+        let [z1, z2] = self.teeth.map(f64::from);
+        let t = self.pressure_angle_rad.tan();
+        let mut sums = (0.0, 0.0);
+        // Evenly along the line of action (in roll, tan α): evenly in time.
+        for i in 0..=100 {
+            let roll = enter.tan() + (leave.tan() - enter.tan()) * f64::from(i) / 100.0;
+            let driver = roll.atan();
+            let driven = (((z1 + z2) * t - z1 * driver.tan()) / z2).atan();
+            let points = [driver, driven];
+            let tooth = |gear: usize, share: f64| {
+                self.cracked_tooth_stiffness_n_per_m(gear, points[gear], share)
+            };
+            let pair = |share: f64| {
+                let cracked = |gear: usize| if gear == g { share } else { 0.0 };
+                1.0 / (1.0 / self.hertz_stiffness_n_per_m()
+                    + 1.0 / tooth(0, cracked(0))
+                    + 1.0 / tooth(1, cracked(1)))
+            };
+            sums.0 += pair(crack_share);
+            sums.1 += pair(0.0);
+        }
+        sums.0 / sums.1
     }
 
     /// dx/dφ of gear `g`'s involute at pressure angle `phi` (m/rad).

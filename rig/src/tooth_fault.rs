@@ -1,8 +1,9 @@
-//! A fault on one tooth of a mesh: a pit or a broken tooth, seeded on the driving or the
-//! driven gear. While the faulted tooth's pair is in mesh its stiffness (and damping)
-//! scale by what is left of the tooth: a pitted share of the contact width carries no
-//! load (the pair's stiffness is proportional to its contact width), a broken share of
-//! the face carries nothing. A tooth broken across its whole face leaves the pair as free
+//! A fault on one tooth of a mesh: a root crack, a pit or a broken tooth, seeded on the
+//! driving or the driven gear. While the faulted tooth's pair is in mesh its stiffness
+//! (and damping) scale by what is left of it: a crack lowers the pair's stiffness as the
+//! potential-energy method gives (`mesh_stiffness.rs`), a pitted share of the contact
+//! width carries no load (the pair's stiffness is proportional to its contact width), a
+//! broken share of the face carries nothing. A tooth broken across its whole face leaves the pair as free
 //! play: where it alone would carry the load the gears part, and the next pair strikes.
 
 use serde::{Deserialize, Serialize};
@@ -21,6 +22,8 @@ pub enum FaultedGear {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum FaultKind {
+    /// A root crack: `severity` is its depth over the tooth's thickness at the root.
+    Crack,
     /// Pitting: `severity` is the pitted share of the contact width.
     Pit,
     /// A broken tooth: `severity` is the broken-off share of the face.
@@ -29,11 +32,12 @@ pub enum FaultKind {
 
 impl FaultKind {
     /// The kinds by name, as rig files write them.
-    pub const NAMES: [&'static str; 2] = ["pit", "broken"];
+    pub const NAMES: [&'static str; 3] = ["crack", "pit", "broken"];
 
     /// The kind named `name`.
     pub fn parse(name: &str) -> Option<Self> {
         match name {
+            "crack" => Some(Self::Crack),
             "pit" => Some(Self::Pit),
             "broken" => Some(Self::Broken),
             _ => None,
@@ -56,21 +60,28 @@ pub struct ToothFault {
 }
 
 impl ToothFault {
-    /// The share of the healthy pair's stiffness and damping the faulted pair keeps.
-    pub fn stiffness_factor(&self) -> f64 {
+    /// The share of the healthy pair's stiffness and damping the faulted pair keeps;
+    /// `crack(gear, share)` gives a cracked pair's (the mesh's geometry decides it).
+    pub fn stiffness_factor(&self, crack: &impl Fn(FaultedGear, f64) -> f64) -> f64 {
         match self.kind {
+            FaultKind::Crack => crack(self.gear, self.severity),
             FaultKind::Pit | FaultKind::Broken => 1.0 - self.severity,
         }
     }
 }
 
 /// Each tooth's stiffness factor of a gear with `teeth` teeth (1 where healthy; faults on
-/// one tooth multiply).
-pub fn tooth_factors(faults: &[ToothFault], gear: FaultedGear, teeth: u32) -> Vec<f64> {
+/// one tooth multiply); `crack` as for [`ToothFault::stiffness_factor`].
+pub fn tooth_factors(
+    faults: &[ToothFault],
+    gear: FaultedGear,
+    teeth: u32,
+    crack: &impl Fn(FaultedGear, f64) -> f64,
+) -> Vec<f64> {
     let mut factors = vec![1.0; teeth as usize];
     for f in faults.iter().filter(|f| f.gear == gear) {
         if let Some(slot) = factors.get_mut(f.tooth.saturating_sub(1) as usize) {
-            *slot *= f.stiffness_factor();
+            *slot *= f.stiffness_factor(crack);
         }
     }
     factors

@@ -103,3 +103,27 @@ fn the_stiffness_follows_the_contact_ratio_and_the_tooth_shape() {
     let jump = ((g.contact_ratio() - 1.0) * 1000.0).ceil() as usize;
     assert!(cycle[jump - 1] > 1.5 * cycle[jump]);
 }
+
+/// A root crack (Tian 2004's effective section) lowers the pair's mean stiffness more the
+/// deeper it runs: the 1983 gears keep 97 % with a tenth of the root thickness cracked,
+/// 91 % with a quarter, 71 % with half, 32 % with three quarters, 4 % with nine tenths; a
+/// crack in either gear of an equal pair alike.
+#[test]
+fn a_root_crack_lowers_the_pairs_stiffness_with_its_depth() {
+    let g = gears([30, 30]);
+    assert!((g.crack_factor(1, 0.0) - 1.0).abs() < 1e-12);
+    let factors: Vec<f64> = (1..10)
+        .map(|i| g.crack_factor(1, f64::from(i) / 10.0))
+        .collect();
+    for pair in factors.windows(2) {
+        assert!(pair[1] < pair[0], "{factors:?}");
+    }
+    assert!(factors[0] > 0.95 && factors[0] < 0.99, "{factors:?}");
+    assert!((factors[4] - 0.70).abs() < 0.02, "{factors:?}");
+    assert!(factors[8] < 0.1, "{factors:?}");
+    let (driver, driven) = (g.crack_factor(0, 0.5), g.crack_factor(1, 0.5));
+    assert!((driver / driven - 1.0).abs() < 1e-6, "{driver} {driven}");
+    // A pinion's crack costs the pair more than a wheel's of the same share.
+    let ratio = gears([20, 60]);
+    assert!(ratio.crack_factor(0, 0.5) < ratio.crack_factor(1, 0.5));
+}

@@ -315,7 +315,7 @@ fn tooth_fault(src: &ScenarioSource, f: &FaultToml, teeth: [u32; 2]) -> anyhow::
             f.kind.span(),
             "mesh.fault.kind",
             format!(
-                "`{}`: the kinds are {} (a crack needs the mesh stiffness of the cracked tooth, not modelled yet)",
+                "`{}`: the kinds are {}",
                 f.kind.get_ref(),
                 FaultKind::NAMES.join(", ")
             ),

@@ -18,10 +18,11 @@
 use nalgebra::DMatrix;
 
 use crate::error::RigError;
+use crate::mesh_stiffness::PairGeometry;
 use crate::mode::MotorMode;
 use crate::options::MeshPairs;
 use crate::tooth_fault::{FaultedGear, tooth_factors};
-use crate::topology::RigTopology;
+use crate::topology::{Mesh, RigTopology};
 
 use super::layout::NetLayout;
 use super::mode::{Contact, MeshState, NetMode};
@@ -184,6 +185,29 @@ pub struct NetworkModel {
     pub brake: Option<BrakeModel>,
 }
 
+/// A cracked pair's stiffness factor for mesh `m`: the potential-energy method on its
+/// gears (steel's Poisson's ratio 0.3, a bore of half the base radius; face width and
+/// Young's modulus cancel in the ratio).
+fn crack(m: &Mesh) -> impl Fn(FaultedGear, f64) -> f64 {
+    let geometry = PairGeometry {
+        teeth: m.teeth,
+        module_m: m.module_m,
+        pressure_angle_rad: m.pressure_angle_deg.to_radians(),
+        face_width_m: 1.0,
+        addendum_coefficient: m.addendum_coefficient,
+        youngs_modulus_pa: 206e9,
+        poisson_ratio: 0.3,
+        bore_ratio: 0.5,
+    };
+    move |gear, share| {
+        let g = match gear {
+            FaultedGear::Driver => 0,
+            FaultedGear::Driven => 1,
+        };
+        geometry.crack_factor(g, share)
+    }
+}
+
 impl NetworkModel {
     /// The constants of a checked topology.
     pub fn of(rig: &RigTopology) -> Result<Self, RigError> {
@@ -231,10 +255,13 @@ impl NetworkModel {
                 te_mesh_m: m.te_mesh_frequency_um * 1e-6,
                 tooth_shifting: m.tooth_shifting,
                 tooth_factors: [
-                    tooth_factors(&m.faults, FaultedGear::Driver, m.teeth[0]),
-                    tooth_factors(&m.faults, FaultedGear::Driven, m.teeth[1]),
+                    tooth_factors(&m.faults, FaultedGear::Driver, m.teeth[0], &crack(m)),
+                    tooth_factors(&m.faults, FaultedGear::Driven, m.teeth[1], &crack(m)),
                 ],
-                faulted: m.faults.iter().any(|f| f.stiffness_factor() != 1.0),
+                faulted: m
+                    .faults
+                    .iter()
+                    .any(|f| f.stiffness_factor(&crack(m)) != 1.0),
             })
             .collect();
         // The speed loop on the rig's inertia seen at the motor, Σ J s² (as the 1983
