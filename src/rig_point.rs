@@ -17,7 +17,7 @@ use rig::{
 };
 use serde::Serialize;
 
-use crate::chain::GearCondition;
+use crate::chain::{GearCondition, GearConditionReport};
 use crate::steady_point::{InputNames, check_times};
 use crate::vocabulary::{check_load_nm, check_speed_rpm};
 
@@ -119,6 +119,8 @@ pub struct RigPointRun {
     pub simulated_s: f64,
     /// Wall time (s).
     pub wall_s: f64,
+    /// The watched gear's averaged revolution of the judged shaft's torque (N m), if taken.
+    pub average_nm: Option<Vec<f64>>,
 }
 
 /// Samples per block handed to the caller.
@@ -171,13 +173,18 @@ pub fn run_rig_point(
     }
     let impacts = plant.take_impacts();
     let revolutions = plant.take_revolutions();
-    let summary = window.summary(rig, spec, &impacts, &revolutions);
+    let report = window.condition_report();
+    let mut summary = window.summary(rig, spec, &impacts, &revolutions);
+    summary.condition = report
+        .as_ref()
+        .map(|r| condition_json(rig, r, window.watched));
     Ok(RigPointRun {
         plant,
         impacts,
         summary,
         simulated_s: spec.approach.lead_in_s() + spec.settle_s + spec.duration_s,
         wall_s: started.elapsed().as_secs_f64(),
+        average_nm: report.map(|r| r.average_nm),
     })
 }
 
@@ -306,19 +313,27 @@ impl Window {
                 .get(self.judged)
                 .map_or(String::new(), |s| s.name.clone()),
             motion,
-            condition: self.condition_json(rig),
+            condition: None,
         }
     }
 
-    /// The watched gear's condition report as JSON, its gear named.
-    fn condition_json(&self, rig: &RigTopology) -> Option<serde_json::Value> {
-        let (gear, teeth) = self.watched?;
-        let report = self.condition.report(teeth as usize)?;
-        let mut json = report.to_json();
-        if let Some(map) = json.as_object_mut() {
-            map.insert("gear".into(), rig.bodies[gear].name.clone().into());
-            map.insert("teeth".into(), teeth.into());
-        }
-        Some(json)
+    /// The watched gear's synchronous average and its indicators, if taken.
+    fn condition_report(&self) -> Option<GearConditionReport> {
+        let (_, teeth) = self.watched?;
+        self.condition.report(teeth as usize)
     }
+}
+
+/// A condition report as JSON, its gear named.
+fn condition_json(
+    rig: &RigTopology,
+    report: &GearConditionReport,
+    watched: Option<(usize, u32)>,
+) -> serde_json::Value {
+    let mut json = report.to_json();
+    if let (Some(map), Some((gear, teeth))) = (json.as_object_mut(), watched) {
+        map.insert("gear".into(), rig.bodies[gear].name.clone().into());
+        map.insert("teeth".into(), teeth.into());
+    }
+    json
 }

@@ -372,3 +372,64 @@ fn phasor(t: &[f64], x: &[f64], hz: f64) -> (f64, f64) {
     }
     (2.0 * c / n, 2.0 * s / n)
 }
+
+/// `simulate --rig … --out` draws the faulted gear's averaged revolution with its faulted
+/// tooth marked; the average's dip lies where that tooth is in mesh.
+#[test]
+fn simulate_out_draws_the_averaged_revolution_with_the_faulted_tooth() {
+    let dir = common::folder("fault-average");
+    let fault = "[[mesh.fault]]\ngear = \"driven\"\ntooth = 7\nkind = \"crack\"\nseverity = 0.5\n";
+    rig_with(dir.path(), fault);
+    let file = dir.path().join("faulted.toml");
+    let out = dir.path().join("out");
+    let summary = common::json_of(&[
+        "simulate",
+        "--rig",
+        file.to_str().expect("utf-8"),
+        "--rpm",
+        "600",
+        "--load",
+        "5.424",
+        "--settle",
+        "10",
+        "--duration",
+        "10",
+        "--rate",
+        "10240",
+        "--out",
+        out.to_str().expect("utf-8"),
+        "--json",
+    ]);
+    assert_eq!(summary["condition"]["gear"], "driven_gear");
+    let png = std::fs::read(out.join("synchronous-average.png")).expect("the plot");
+    assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
+    assert!(out.join("synchronous-average.svg").exists());
+    let manifest = common::read_manifest(&out);
+    assert!(common::has_file(&manifest, "synchronous-average.png"));
+    // The averaged revolution's lowest torque falls where tooth 7 is in mesh: over
+    // [6/30, 7/30) of the driven gear's turn from its pulse.
+    let rig = read_rig_file(&file).expect("rig");
+    let spec = testrig::rig_point::RigPointSpec {
+        rig: &rig,
+        rpm: 600.0,
+        load_nm: 5.424,
+        settle_s: 10.0,
+        duration_s: 10.0,
+        rate_hz: 10_240.0,
+        approach: rig::Approach::Static,
+    };
+    let run =
+        testrig::rig_point::run_rig_point(&spec, testrig::steady_point::FLAG_NAMES, |_| Ok(()))
+            .expect("run");
+    let average = run.average_nm.expect("an average");
+    let lowest = average
+        .iter()
+        .enumerate()
+        .min_by(|a, b| a.1.total_cmp(b.1))
+        .map(|(i, _)| i as f64 / average.len() as f64)
+        .expect("points");
+    assert!(
+        (6.0 / 30.0..7.0 / 30.0).contains(&lowest),
+        "the lowest torque at {lowest} of the turn"
+    );
+}

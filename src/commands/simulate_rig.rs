@@ -8,8 +8,11 @@ use serde::Serialize;
 
 use super::simulate::SignalWriter;
 use crate::cli::SimulateArgs;
+use testrig::plots::{AveragePlot, write_synchronous_average};
 use testrig::recording::PartialFile;
-use testrig::rig_point::{RigPointRun, RigPointSpec, RigPointSummary, run_rig_point};
+use testrig::rig_point::{
+    RigPointRun, RigPointSpec, RigPointSummary, judged_shaft, run_rig_point, watched_gear,
+};
 use testrig::runtime::write_command_manifest;
 use testrig::scenario::rig_with_overrides;
 use testrig::steady_point::FLAG_NAMES;
@@ -51,6 +54,7 @@ pub fn run(args: &SimulateArgs, path: &Path) -> anyhow::Result<()> {
         summary,
         simulated_s,
         wall_s,
+        average_nm,
         ..
     } = run_rig_point(&spec, FLAG_NAMES, |block| match writer.as_mut() {
         Some(w) => {
@@ -75,7 +79,7 @@ pub fn run(args: &SimulateArgs, path: &Path) -> anyhow::Result<()> {
         summary,
     };
     if let (Some(dir), Some(w)) = (&args.out, writer) {
-        let files = vec![
+        let mut files = vec![
             w.finish()?,
             write_impacts(&dir.join("impacts.csv"), &rig, &impacts)?,
             PartialFile::write_whole(
@@ -83,10 +87,13 @@ pub fn run(args: &SimulateArgs, path: &Path) -> anyhow::Result<()> {
                 serde_json::to_string_pretty(&report)?,
             )?,
         ];
+        if let Some(average) = &average_nm {
+            files.extend(write_average(dir, &rig, average)?);
+        }
         let details = serde_json::json!({
             "rig_file": path.display().to_string(), "set": args.rig.overrides, "rpm": args.rpm,
             "load_nm": args.load, "approach": spec.approach, "settle_s": args.settle, "duration_s": args.duration,
-            "rate_hz": args.rate, "approach": format!("{:?}", args.approach).to_lowercase(),
+            "rate_hz": args.rate,
         });
         write_command_manifest(dir, "simulate", &files, details)?;
         eprintln!(
@@ -147,6 +154,42 @@ fn print_text(r: &Report) {
             n("residual_rms_nm")
         );
     }
+}
+
+/// `synchronous-average.png` and `.svg`: the watched gear's averaged revolution of the
+/// judged shaft's torque, its faulted tooth marked.
+fn write_average(
+    dir: &Path,
+    rig: &rig::RigTopology,
+    average: &[f64],
+) -> anyhow::Result<Vec<PathBuf>> {
+    let Some((gear, teeth)) = watched_gear(rig) else {
+        return Ok(Vec::new());
+    };
+    let marked_tooth = rig
+        .meshes
+        .iter()
+        .flat_map(|m| m.faults.iter().map(move |f| (m, f)))
+        .find(|(m, f)| {
+            let body = match f.gear {
+                rig::FaultedGear::Driver => m.gears[0],
+                rig::FaultedGear::Driven => m.gears[1],
+            };
+            body == gear
+        })
+        .map(|(_, f)| f.tooth);
+    let shaft = &rig.shafts[judged_shaft(rig)].name;
+    let title = format!(
+        "{}: shaft {shaft} averaged over the revolutions of {}",
+        rig.name, rig.bodies[gear].name
+    );
+    let plot = AveragePlot {
+        title: &title,
+        average_nm: average,
+        teeth,
+        marked_tooth,
+    };
+    write_synchronous_average(&dir.join("synchronous-average"), &plot)
 }
 
 /// `impacts.csv`: time, mesh, flank, closing speed and the teeth struck of each impact in

@@ -5,7 +5,8 @@
 //! fitted to the width): `spectrum.rs` (orders marked, labels kept clear of the legend),
 //! `scope.rs` (a µε axis where the signal has a strain calibration), `survey.rs`,
 //! `frequency_map.rs`, `waterfall.rs`, `regime_map.rs`, `bifurcation.rs`,
-//! `impact_raster.rs`, `convergence.rs`.
+//! `impact_raster.rs`, `convergence.rs`, `synchronous_average.rs` (a gear's averaged
+//! revolution, its faulted tooth marked).
 
 pub(crate) mod bifurcation;
 pub(crate) mod canvas;
@@ -16,6 +17,7 @@ pub(crate) mod regime_map;
 pub(crate) mod scope;
 pub(crate) mod spectrum;
 pub(crate) mod survey;
+pub(crate) mod synchronous_average;
 pub(crate) mod waterfall;
 
 pub use bifurcation::{SectionColumn, write_bifurcation};
@@ -26,4 +28,5 @@ pub use regime_map::{RegimeCell, write_regime_map};
 pub use scope::{ScopeScales, write_scope_plots};
 pub use spectrum::{SpectrumPlot, write_spectrum_plots};
 pub use survey::{SurveyPoint, write_survey_plots};
+pub use synchronous_average::{AveragePlot, write_synchronous_average};
 pub use waterfall::{WaterfallTrace, write_waterfall};

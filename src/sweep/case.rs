@@ -11,7 +11,9 @@ use serde::{Deserialize, Serialize};
 use super::grid::{Case, SweepPlan};
 use super::lines::{OrderLine, order_line, peaks};
 use super::sequence::Direction;
-use crate::chain::{AdcChoice, AnalyserWords, InlineChain, Measurement, Truth};
+use crate::chain::{
+    AdcChoice, AnalyserWords, GearCondition, GearConditionReport, InlineChain, Measurement, Truth,
+};
 use crate::runtime::rolling_regime::REGIME_WINDOW_S;
 use crate::vocabulary::frame::{Frame, SignalNames};
 use crate::vocabulary::seeds::NoiseSource;
@@ -81,12 +83,64 @@ pub struct CaseResult {
     /// written before it was kept.
     #[serde(default)]
     pub speed_offset_rpm: f64,
+    /// The driven gear's condition indicators: the true output-shaft torque averaged
+    /// synchronously over its revolutions in the window (`None` under two revolutions, or
+    /// in case files written before they were kept).
+    #[serde(default)]
+    pub condition: Option<CaseCondition>,
     /// Analyser averages taken.
     pub averages: usize,
     /// The displayed spectrum: (Hz, V² rms) per line.
     pub spectrum: Vec<(f64, f64)>,
     /// The lines that stand out: (Hz, V² rms).
     pub peaks: Vec<(f64, f64)>,
+}
+
+/// A case's condition indicators (Lebold et al. 2000; `instruments::condition_indicators`).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct CaseCondition {
+    /// Revolutions averaged.
+    pub revolutions: usize,
+    /// FM0.
+    pub fm0: f64,
+    /// FM4.
+    pub fm4: f64,
+    /// M6A.
+    pub m6a: f64,
+    /// M8A.
+    pub m8a: f64,
+    /// NA4.
+    pub na4: f64,
+    /// First sidebands of the first mesh harmonic over the average's RMS.
+    pub sideband_level: f64,
+    /// RMS of the average about its mean (N m).
+    pub rms_nm: f64,
+    /// Crest factor of the average.
+    pub crest_factor: f64,
+    /// Kurtosis of the average.
+    pub kurtosis: f64,
+    /// RMS of the residual signal (N m).
+    pub residual_rms_nm: f64,
+}
+
+impl CaseCondition {
+    /// The indicators of a window's report.
+    pub fn of(report: &GearConditionReport) -> Self {
+        let i = &report.indicators;
+        Self {
+            revolutions: report.revolutions,
+            fm0: i.fm0,
+            fm4: i.fm4,
+            m6a: i.m6a,
+            m8a: i.m8a,
+            na4: i.na4,
+            sideband_level: i.sideband_level,
+            rms_nm: i.rms,
+            crest_factor: i.crest_factor,
+            kurtosis: i.kurtosis,
+            residual_rms_nm: report.residual_rms_nm,
+        }
+    }
 }
 
 /// Reads a number that JSON holds as null (serde_json writes NaN so) back as NaN.
@@ -176,6 +230,7 @@ pub fn measure_case(
     let late_from =
         total - (REGIME_WINDOW_S.min(plan.measure_s / 2.0) * plan.rate_hz).round() as usize;
     let mut block = SignalBlock::default();
+    let mut condition = GearCondition::new(plan.rate_hz);
     let mut done = 0;
     while done < total {
         let until = if done < lead_samples {
@@ -202,6 +257,7 @@ pub fn measure_case(
         }
         if done >= lead_samples {
             window.add_block(&block, plant.set_points().speed_rad_s());
+            condition.add(&block);
             measurement.push(&frame.channels[input]);
         } else {
             plant.drain_impacts();
@@ -220,6 +276,10 @@ pub fn measure_case(
         measurement.average_count(),
     );
     result.revolution_torque_nm = window.last_revolution_torques_nm(KEPT_REVOLUTIONS);
+    result.condition = condition
+        .report(case.params.teeth as usize)
+        .as_ref()
+        .map(CaseCondition::of);
     Ok(result)
 }
 
@@ -266,6 +326,7 @@ fn result(
         torque_mean_nm: s.torque_mean_nm,
         torque_ac_rms_nm: s.torque_ac_rms_nm,
         speed_offset_rpm: s.speed_offset_rpm,
+        condition: None,
         averages,
         spectrum: lines.iter().map(|l| (l.frequency_hz, l.value)).collect(),
         peaks: peaks(lines, plan.line_db),

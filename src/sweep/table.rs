@@ -98,6 +98,16 @@ pub fn write_table(dir: &Path, swept: &[String], cases: &[CaseResult]) -> anyhow
             "thesis_motion",
             "physics_match",
             "kick_rad_s",
+            "fm0",
+            "fm4",
+            "m6a",
+            "m8a",
+            "na4",
+            "sideband_level",
+            "crest_factor",
+            "kurtosis",
+            "residual_rms_nm",
+            "revolutions_averaged",
         ]
         .map(String::from),
     );
@@ -140,9 +150,35 @@ pub fn write_table(dir: &Path, swept: &[String], cases: &[CaseResult]) -> anyhow
         ]);
         row.extend(judge_columns(c));
         row.push(format!("{:.6}", c.kick_rad_s));
+        row.extend(condition_columns(c));
         csv.write_row(&row)?;
     }
     csv.finish()
+}
+
+/// The condition indicators' columns of a case (empty where none were taken).
+fn condition_columns(c: &CaseResult) -> Vec<String> {
+    match &c.condition {
+        None => vec![String::new(); 10],
+        Some(i) => {
+            let mut row: Vec<String> = [
+                i.fm0,
+                i.fm4,
+                i.m6a,
+                i.m8a,
+                i.na4,
+                i.sideband_level,
+                i.crest_factor,
+                i.kurtosis,
+                i.residual_rms_nm,
+            ]
+            .iter()
+            .map(|v| format!("{v:.6e}"))
+            .collect();
+            row.push(i.revolutions.to_string());
+            row
+        }
+    }
 }
 
 /// The judge's columns of a case: direction, motion, its numbers, the thesis's motion at
