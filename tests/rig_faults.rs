@@ -433,3 +433,69 @@ fn simulate_out_draws_the_averaged_revolution_with_the_faulted_tooth() {
         "the lowest torque at {lowest} of the turn"
     );
 }
+
+/// A mesh without `stiffness_n_per_m` takes its stiffness from its face width by the
+/// potential-energy method: one pair always, the mean over the tooth period; alternating
+/// pairs, one pair's mean over its single stretch and the double stretch's ratio to it.
+/// Both or neither given is refused at the mesh.
+#[test]
+fn a_face_width_gives_the_mesh_stiffness_by_the_potential_energy_method() {
+    use rig::mesh_stiffness::PairGeometry;
+    let dir = common::folder("fault-pe-stiffness");
+    let path = format!(
+        "{}/scenarios/rigs/basmaji-1983.toml",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let text = std::fs::read_to_string(path).expect("rig file");
+    let stiffness_line = text
+        .lines()
+        .find(|l| l.starts_with("stiffness_n_per_m"))
+        .expect("the stiffness line")
+        .to_string();
+    let read = |replacement: &str| {
+        let file = dir.path().join("pe.toml");
+        std::fs::write(&file, text.replace(&stiffness_line, replacement)).expect("write");
+        read_rig_file(&file)
+    };
+    let geometry = PairGeometry {
+        teeth: [30, 30],
+        module_m: 0.005,
+        pressure_angle_rad: 20f64.to_radians(),
+        face_width_m: 0.020,
+        addendum_coefficient: 1.0,
+        youngs_modulus_pa: 206e9,
+        poisson_ratio: 0.3,
+        bore_ratio: 0.5,
+    };
+    let lumped = geometry.lumped();
+    let single = read("face_width_m = 0.020").expect("a face width");
+    assert_eq!(
+        single.meshes[0].stiffness_n_per_m,
+        lumped.cycle_mean_n_per_m
+    );
+    let alternating = read("face_width_m = 0.020\npairs = \"alternating\"").expect("alternating");
+    let m = &alternating.meshes[0];
+    assert_eq!(m.stiffness_n_per_m, lumped.single_n_per_m);
+    assert_eq!(m.double_pair_ratio, lumped.double_pair_ratio);
+    assert!(
+        (1.3..2.0).contains(&m.double_pair_ratio),
+        "{}",
+        m.double_pair_ratio
+    );
+    // One pair within 15 % of the thesis's K23 / r_b² (2.62e8 N/m, ISO's c' b).
+    let k = m.stiffness_n_per_m;
+    assert!((k / 2.617e8 - 1.0).abs() < 0.15, "{k}");
+    let both = format!(
+        "{:#}",
+        read(&format!("{stiffness_line}\nface_width_m = 0.02")).expect_err("both")
+    );
+    assert!(
+        both.contains("not both") && both.contains("stiffness_n_per_m"),
+        "{both}"
+    );
+    let neither = format!("{:#}", read("").expect_err("neither"));
+    assert!(
+        neither.contains("missing") && neither.contains("face_width_m"),
+        "{neither}"
+    );
+}

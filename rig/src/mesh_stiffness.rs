@@ -270,6 +270,35 @@ impl PairGeometry {
     }
 }
 
+/// A mesh's stiffness as the exact plant takes it: constant over each pair zone.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LumpedStiffness {
+    /// One pair's mean stiffness over the stretch it carries alone (N/m).
+    pub single_n_per_m: f64,
+    /// Two pairs' mean stiffness over their stretch, over `single_n_per_m`.
+    pub double_pair_ratio: f64,
+    /// The mean mesh stiffness over a whole tooth period (N/m): one pair always, as the
+    /// thesis's model takes it.
+    pub cycle_mean_n_per_m: f64,
+}
+
+impl PairGeometry {
+    /// The mesh's stiffness averaged over its pair zones (400 points a tooth period).
+    pub fn lumped(&self) -> LumpedStiffness {
+        let points = 400;
+        let cycle = self.mesh_cycle_n_per_m(points);
+        let split = ((self.contact_ratio() - 1.0) * points as f64).ceil() as usize;
+        let mean = |x: &[f64]| x.iter().sum::<f64>() / x.len().max(1) as f64;
+        let (double, single) = cycle.split_at(split.min(points));
+        let single_n_per_m = mean(single);
+        LumpedStiffness {
+            single_n_per_m,
+            double_pair_ratio: mean(double) / single_n_per_m,
+            cycle_mean_n_per_m: mean(&cycle),
+        }
+    }
+}
+
 /// ∫ f from `a` to `b` by Simpson's rule on [`INTERVALS`] intervals.
 fn simpson(f: impl Fn(f64) -> f64, a: f64, b: f64) -> f64 {
     let h = (b - a) / INTERVALS as f64;

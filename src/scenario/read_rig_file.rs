@@ -20,6 +20,12 @@ use super::source::ScenarioSource;
 /// Shear modulus where a gauge leaves it out (Pa): steel's.
 const STEEL_SHEAR_MODULUS_PA: f64 = 80.0e9;
 
+/// Young's modulus where the potential-energy method's mesh leaves it out (Pa): steel's.
+const STEEL_YOUNGS_MODULUS_PA: f64 = 206.0e9;
+
+/// Poisson's ratio the potential-energy method takes: steel's.
+const STEEL_POISSON_RATIO: f64 = 0.3;
+
 /// Pressure angle where a mesh leaves it out (degrees): the standard 20°.
 const DEFAULT_PRESSURE_ANGLE_DEG: f64 = 20.0;
 
@@ -265,6 +271,7 @@ fn mesh(
             ),
         ));
     };
+    let stiffness = mesh_stiffness(src, m, [*z1, *z2])?;
     Ok(Mesh {
         name: name.clone(),
         gears: [
@@ -278,10 +285,10 @@ fn mesh(
             .as_ref()
             .map_or(DEFAULT_PRESSURE_ANGLE_DEG, |a| *a.get_ref()),
         backlash_mm: *m.backlash_mm.get_ref(),
-        stiffness_n_per_m: *m.stiffness_n_per_m.get_ref(),
+        stiffness_n_per_m: stiffness.0,
         damping_ns_per_m: or(&m.damping_ns_per_m, 0.0),
         pairs: pairs(src, m)?,
-        double_pair_ratio: or(&m.double_pair_ratio, 2.0),
+        double_pair_ratio: or(&m.double_pair_ratio, stiffness.1),
         addendum_coefficient: or(&m.addendum_coefficient, 1.0),
         backlash_variation: or(&m.backlash_variation, 0.0),
         te_once_per_rev_um: or(&m.te_once_per_rev_um, 0.0),
@@ -295,6 +302,63 @@ fn mesh(
             .map(|f| tooth_fault(src, f, [*z1, *z2]))
             .collect::<anyhow::Result<_>>()?,
     })
+}
+
+/// A mesh's stiffness of one pair (N/m) and the double-pair ratio where the file leaves
+/// it out: as given (ratio 2), or from `face_width_m` by the potential-energy method
+/// (`rig::mesh_stiffness`; with one pair always, the mean over the tooth period). Both or
+/// neither given is refused.
+fn mesh_stiffness(
+    src: &ScenarioSource,
+    m: &MeshToml,
+    teeth: [u32; 2],
+) -> anyhow::Result<(f64, f64)> {
+    let field = format!("mesh `{}`.stiffness_n_per_m", m.name.get_ref());
+    match (&m.stiffness_n_per_m, &m.face_width_m) {
+        (Some(k), None) => Ok((*k.get_ref(), 2.0)),
+        (Some(k), Some(_)) => Err(src.error(
+            k.span(),
+            &field,
+            "give the stiffness or the face width (the potential-energy method then gives the stiffness), not both",
+        )),
+        (None, None) => Err(src.error(
+            m.name.span(),
+            &field,
+            "missing: give stiffness_n_per_m (N/m, one pair along the line of action), or face_width_m (m) for the potential-energy method",
+        )),
+        (None, Some(width)) => {
+            let positive = |v: f64| v.is_finite() && v > 0.0;
+            if !positive(*width.get_ref()) {
+                return Err(src.error(width.span(), "mesh.face_width_m", "a width > 0 m"));
+            }
+            let youngs = m.youngs_modulus_pa.as_ref().map_or(STEEL_YOUNGS_MODULUS_PA, |e| *e.get_ref());
+            if !positive(youngs) {
+                let span = m.youngs_modulus_pa.as_ref().map_or(width.span(), Spanned::span);
+                return Err(src.error(span, "mesh.youngs_modulus_pa", "a modulus > 0 Pa"));
+            }
+            let alpha = m
+                .pressure_angle_deg
+                .as_ref()
+                .map_or(DEFAULT_PRESSURE_ANGLE_DEG, |a| *a.get_ref());
+            let geometry = rig::mesh_stiffness::PairGeometry {
+                teeth,
+                module_m: *m.module_m.get_ref(),
+                pressure_angle_rad: alpha.to_radians(),
+                face_width_m: *width.get_ref(),
+                addendum_coefficient: or(&m.addendum_coefficient, 1.0),
+                youngs_modulus_pa: youngs,
+                poisson_ratio: STEEL_POISSON_RATIO,
+                bore_ratio: 0.5,
+            };
+            let lumped = geometry.lumped();
+            let alternating = m.pairs.as_ref().is_some_and(|p| p.get_ref() == "alternating");
+            Ok(if alternating {
+                (lumped.single_n_per_m, lumped.double_pair_ratio)
+            } else {
+                (lumped.cycle_mean_n_per_m, 2.0)
+            })
+        }
+    }
 }
 
 /// A `[[mesh.fault]]` read, each field refused at its place with what is allowed.
@@ -403,7 +467,7 @@ fn span_of(file: &RigFileToml, place: &TopologyPlace) -> Range<usize> {
             "teeth" => Some(m.teeth.span()),
             "module_m" => Some(m.module_m.span()),
             "backlash_mm" => Some(m.backlash_mm.span()),
-            "stiffness_n_per_m" => Some(m.stiffness_n_per_m.span()),
+            "stiffness_n_per_m" => m.stiffness_n_per_m.as_ref().map(Spanned::span),
             "damping_ns_per_m" => m.damping_ns_per_m.as_ref().map(Spanned::span),
             "pressure_angle_deg" => m.pressure_angle_deg.as_ref().map(Spanned::span),
             "driven" => Some(m.driven.span()),

@@ -93,8 +93,17 @@ pub struct MeshToml {
     pub pressure_angle_deg: Option<Spanned<f64>>,
     /// Total circular backlash at the pitch circles (mm).
     pub backlash_mm: Spanned<f64>,
-    /// Stiffness of one tooth pair along the line of action (N/m).
-    pub stiffness_n_per_m: Spanned<f64>,
+    /// Stiffness of one tooth pair along the line of action (N/m); left out, the
+    /// potential-energy method gives it from `face_width_m` (docs/faults.md).
+    #[serde(default)]
+    pub stiffness_n_per_m: Option<Spanned<f64>>,
+    /// Face width (m), for the potential-energy method.
+    #[serde(default)]
+    pub face_width_m: Option<Spanned<f64>>,
+    /// Young's modulus (Pa) for the potential-energy method; steel's 206 GPa when left
+    /// out.
+    #[serde(default)]
+    pub youngs_modulus_pa: Option<Spanned<f64>>,
     /// Damping along the line of action (N s/m); 0 when left out.
     #[serde(default)]
     pub damping_ns_per_m: Option<Spanned<f64>>,
