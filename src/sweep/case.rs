@@ -96,30 +96,41 @@ pub struct CaseResult {
     pub peaks: Vec<(f64, f64)>,
 }
 
-/// A case's condition indicators (Lebold et al. 2000; `instruments::condition_indicators`).
+/// A case's condition indicators (Lebold et al. 2000; `instruments::condition_indicators`);
+/// a number the signal leaves undefined (a constant torque's FM4) is NaN, null in JSON.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct CaseCondition {
     /// Revolutions averaged.
     pub revolutions: usize,
     /// FM0.
+    #[serde(deserialize_with = "null_as_nan")]
     pub fm0: f64,
     /// FM4.
+    #[serde(deserialize_with = "null_as_nan")]
     pub fm4: f64,
     /// M6A.
+    #[serde(deserialize_with = "null_as_nan")]
     pub m6a: f64,
     /// M8A.
+    #[serde(deserialize_with = "null_as_nan")]
     pub m8a: f64,
     /// NA4.
+    #[serde(deserialize_with = "null_as_nan")]
     pub na4: f64,
     /// First sidebands of the first mesh harmonic over the average's RMS.
+    #[serde(deserialize_with = "null_as_nan")]
     pub sideband_level: f64,
     /// RMS of the average about its mean (N m).
+    #[serde(deserialize_with = "null_as_nan")]
     pub rms_nm: f64,
     /// Crest factor of the average.
+    #[serde(deserialize_with = "null_as_nan")]
     pub crest_factor: f64,
     /// Kurtosis of the average.
+    #[serde(deserialize_with = "null_as_nan")]
     pub kurtosis: f64,
     /// RMS of the residual signal (N m).
+    #[serde(deserialize_with = "null_as_nan")]
     pub residual_rms_nm: f64,
 }
 

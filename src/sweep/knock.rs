@@ -8,6 +8,7 @@ use rand_pcg::Pcg64Mcg;
 
 use super::case::{CaseResult, chain_lead_s, measure_case, settled_plant};
 use super::grid::{Case, SweepPlan};
+use super::series::on_one_plant;
 
 /// Smallest knock, as a share of the set speed: enough to part the teeth.
 pub const KNOCK_MIN_SHARE: f64 = 0.02;
@@ -27,40 +28,12 @@ pub fn knock_rad_s(seed: u64, rpm: f64) -> f64 {
 /// Runs a point and its knocked repeats, in order, on one plant; a failure ends the
 /// series (the repeats after it are reported failed with it).
 pub fn run_knocked(plan: &SweepPlan, series: &[&Case]) -> Vec<(usize, anyhow::Result<CaseResult>)> {
-    let mut out = Vec::with_capacity(series.len());
-    let mut plant = match settled_plant(plan, series[0]) {
-        Ok(plant) => plant,
-        Err(e) => {
-            let message = format!("{e:#}");
-            return series
-                .iter()
-                .map(|c| (c.index, Err(anyhow::anyhow!("{message}"))))
-                .collect();
-        }
-    };
     let settle = ((plan.settle_s - chain_lead_s(plan)) * plan.rate_hz).round() as usize;
-    let mut failed: Option<String> = None;
-    for (i, case) in series.iter().enumerate() {
-        if let Some(why) = &failed {
-            out.push((
-                case.index,
-                Err(anyhow::anyhow!("the series stopped: {why}")),
-            ));
-            continue;
-        }
-        let result = if i == 0 {
-            measure_case(plan, case, &mut plant)
-        } else {
+    on_one_plant(series, settled_plant(plan, series[0]), |i, case, plant| {
+        if i > 0 {
             plant.kick_driven_gear(case.kick_rad_s);
-            plant
-                .skip(settle)
-                .map_err(anyhow::Error::from)
-                .and_then(|()| measure_case(plan, case, &mut plant))
-        };
-        if let Err(e) = &result {
-            failed = Some(format!("case {}: {e:#}", case.index));
+            plant.skip(settle)?;
         }
-        out.push((case.index, result));
-    }
-    out
+        measure_case(plan, case, plant)
+    })
 }

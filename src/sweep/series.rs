@@ -31,40 +31,52 @@ fn series_schedule(plan: &SweepPlan, series: &[&Case]) -> Schedule {
 /// Runs the cases of one series in order on one plant; a failure ends the series (the
 /// cases after it are reported failed with it).
 pub fn run_series(plan: &SweepPlan, series: &[&Case]) -> Vec<(usize, anyhow::Result<CaseResult>)> {
-    let mut out = Vec::with_capacity(series.len());
-    let mut plant = match Plant::new(
+    let plant = Plant::new(
         series[0].params.clone(),
         series_schedule(plan, series),
         plant_config(plan),
-    ) {
+    )
+    .map_err(anyhow::Error::from);
+    let hold_s = plan.settle_s + plan.measure_s;
+    let mut position = 0usize;
+    on_one_plant(series, plant, |i, case, plant| {
+        let window_from_s = i as f64 * (STEP_RAMP_S + hold_s) + plan.settle_s;
+        let lead_from = ((window_from_s - chain_lead_s(plan)) * plan.rate_hz).round() as usize;
+        let result = plant
+            .skip(lead_from.saturating_sub(position))
+            .map_err(anyhow::Error::from)
+            .and_then(|()| measure_case(plan, case, plant));
+        position = lead_from.max(position) + measured_samples(plan);
+        result
+    })
+}
+
+/// Runs `measure(i, case, plant)` for each case of `series` in order on `plant`; a plant
+/// that could not be made fails every case, and a failed case ends the series (the cases
+/// after it are reported failed with it).
+pub fn on_one_plant(
+    series: &[&Case],
+    plant: anyhow::Result<Plant>,
+    mut measure: impl FnMut(usize, &Case, &mut Plant) -> anyhow::Result<CaseResult>,
+) -> Vec<(usize, anyhow::Result<CaseResult>)> {
+    let mut plant = match plant {
         Ok(plant) => plant,
         Err(e) => {
-            let message = format!("{e}");
+            let message = format!("{e:#}");
             return series
                 .iter()
                 .map(|c| (c.index, Err(anyhow::anyhow!("{message}"))))
                 .collect();
         }
     };
-    let hold_s = plan.settle_s + plan.measure_s;
+    let mut out = Vec::with_capacity(series.len());
     let mut failed: Option<String> = None;
-    let mut position = 0usize;
     for (i, case) in series.iter().enumerate() {
-        if let Some(why) = &failed {
-            out.push((
-                case.index,
-                Err(anyhow::anyhow!("the series stopped: {why}")),
-            ));
-            continue;
-        }
-        let window_from_s = i as f64 * (STEP_RAMP_S + hold_s) + plan.settle_s;
-        let lead_from = ((window_from_s - chain_lead_s(plan)) * plan.rate_hz).round() as usize;
-        let result = plant
-            .skip(lead_from.saturating_sub(position))
-            .map_err(anyhow::Error::from)
-            .and_then(|()| measure_case(plan, case, &mut plant));
-        position = lead_from.max(position) + measured_samples(plan);
-        if let Err(e) = &result {
+        let result = match &failed {
+            Some(why) => Err(anyhow::anyhow!("the series stopped: {why}")),
+            None => measure(i, case, &mut plant),
+        };
+        if let (None, Err(e)) = (&failed, &result) {
             failed = Some(format!("case {}: {e:#}", case.index));
         }
         out.push((case.index, result));
