@@ -48,6 +48,22 @@ fn rig_damped(dir: &std::path::Path, fault: &str, shaft_damping: Option<f64>) ->
     read_rig_file(&file).expect("a rig file with a fault")
 }
 
+/// `rig` at 600 rev/min and 5.424 N m from steady motion, settled 10 s, measured 10 s at
+/// 10.24 kHz, as `simulate --rig` runs it.
+fn loaded_600_rpm(rig: &RigTopology) -> testrig::rig_point::RigPointRun {
+    let spec = testrig::rig_point::RigPointSpec {
+        rig,
+        rpm: 600.0,
+        load_nm: 5.424,
+        settle_s: 10.0,
+        duration_s: 10.0,
+        rate_hz: 10_240.0,
+        approach: rig::Approach::Static,
+    };
+    testrig::rig_point::run_rig_point(&spec, testrig::steady_point::FLAG_NAMES, |_| Ok(()))
+        .expect("run")
+}
+
 /// The mesh's deflection along the line of action, r_b (θ_driver − θ_driven) (m; each
 /// body's angle in its own sense of rotation).
 fn deflection_m(rig: &RigTopology, block: &rig::NetworkBlock) -> Vec<f64> {
@@ -278,8 +294,6 @@ fn alternating_pairs_share_the_load_over_the_contact_ratio_and_a_pit_weakens_its
 /// leaves no residual.
 #[test]
 fn the_condition_indicators_rise_with_a_pits_and_a_cracks_severity() {
-    use testrig::rig_point::{RigPointSpec, run_rig_point};
-    use testrig::steady_point::FLAG_NAMES;
     let dir = common::folder("fault-indicators");
     for kind in ["pit", "crack"] {
         let rig = rig_with(
@@ -293,17 +307,10 @@ fn the_condition_indicators_rise_with_a_pits_and_a_cracks_severity() {
             faulted
                 .set_field("mesh.gears.fault1.severity", severity)
                 .expect("set");
-            let spec = RigPointSpec {
-                rig: &faulted,
-                rpm: 600.0,
-                load_nm: 5.424,
-                settle_s: 10.0,
-                duration_s: 10.0,
-                rate_hz: 10_240.0,
-                approach: rig::Approach::Static,
-            };
-            let run = run_rig_point(&spec, FLAG_NAMES, |_| Ok(())).expect("run");
-            let c = run.summary.condition.expect("a condition");
+            let c = loaded_600_rpm(&faulted)
+                .summary
+                .condition
+                .expect("a condition");
             assert_eq!(c["gear"], "driven_gear");
             assert!(c["revolutions_averaged"].as_u64().expect("count") >= 90);
             let number = |key: &str| c[key].as_f64().expect(key);
@@ -409,19 +416,7 @@ fn simulate_out_draws_the_averaged_revolution_with_the_faulted_tooth() {
     // The averaged revolution's lowest torque falls where tooth 7 is in mesh: over
     // [6/30, 7/30) of the driven gear's turn from its pulse.
     let rig = read_rig_file(&file).expect("rig");
-    let spec = testrig::rig_point::RigPointSpec {
-        rig: &rig,
-        rpm: 600.0,
-        load_nm: 5.424,
-        settle_s: 10.0,
-        duration_s: 10.0,
-        rate_hz: 10_240.0,
-        approach: rig::Approach::Static,
-    };
-    let run =
-        testrig::rig_point::run_rig_point(&spec, testrig::steady_point::FLAG_NAMES, |_| Ok(()))
-            .expect("run");
-    let average = run.average_nm.expect("an average");
+    let average = loaded_600_rpm(&rig).average_nm.expect("an average");
     let lowest = average
         .iter()
         .enumerate()

@@ -185,6 +185,15 @@ pub struct NetworkModel {
     pub brake: Option<BrakeModel>,
 }
 
+/// Each tooth's stiffness factor on mesh `m`'s driver and driven gear.
+fn tooth_factor_pair(m: &Mesh) -> [Vec<f64>; 2] {
+    let crack = crack(m);
+    [
+        tooth_factors(&m.faults, FaultedGear::Driver, m.teeth[0], &crack),
+        tooth_factors(&m.faults, FaultedGear::Driven, m.teeth[1], &crack),
+    ]
+}
+
 /// A cracked pair's stiffness factor for mesh `m`: the potential-energy method on its
 /// gears (steel's Poisson's ratio 0.3, a bore of half the base radius; face width and
 /// Young's modulus cancel in the ratio).
@@ -234,34 +243,32 @@ impl NetworkModel {
         let meshes = rig
             .meshes
             .iter()
-            .map(|m| MeshModel {
-                gears: m.gears,
-                radii_m: m
-                    .base_radii_m()
-                    .map(|r| r * speed_ratio[m.gears[0]].signum()),
-                stiffness_n_per_m: m.stiffness_n_per_m,
-                damping_ns_per_m: m.damping_ns_per_m,
-                half_backlash_m: m.half_backlash_m(),
-                alternating: m.pairs == MeshPairs::Alternating,
-                double_pair_ratio: m.double_pair_ratio,
-                pitch_rad: 2.0 * std::f64::consts::PI / f64::from(m.teeth[0]),
-                two_pair_share: (m.contact_ratio() - 1.0).clamp(0.0, 1.0),
-                teeth: f64::from(m.teeth[0]),
-                share: speed_ratio[m.gears[0]],
-                variation_m: m.half_backlash_m() * m.backlash_variation,
-                te_once_m: (m.te_once_per_rev_um + m.run_out_driver_um) * 1e-6,
-                run_out_driven_m: m.run_out_driven_um * 1e-6,
-                driven_turns: f64::from(m.teeth[0]) / f64::from(m.teeth[1]),
-                te_mesh_m: m.te_mesh_frequency_um * 1e-6,
-                tooth_shifting: m.tooth_shifting,
-                tooth_factors: [
-                    tooth_factors(&m.faults, FaultedGear::Driver, m.teeth[0], &crack(m)),
-                    tooth_factors(&m.faults, FaultedGear::Driven, m.teeth[1], &crack(m)),
-                ],
-                faulted: m
-                    .faults
-                    .iter()
-                    .any(|f| f.stiffness_factor(&crack(m)) != 1.0),
+            .map(|m| {
+                let tooth_factors = tooth_factor_pair(m);
+                let faulted = tooth_factors.iter().flatten().any(|&f| f != 1.0);
+                MeshModel {
+                    gears: m.gears,
+                    radii_m: m
+                        .base_radii_m()
+                        .map(|r| r * speed_ratio[m.gears[0]].signum()),
+                    stiffness_n_per_m: m.stiffness_n_per_m,
+                    damping_ns_per_m: m.damping_ns_per_m,
+                    half_backlash_m: m.half_backlash_m(),
+                    alternating: m.pairs == MeshPairs::Alternating,
+                    double_pair_ratio: m.double_pair_ratio,
+                    pitch_rad: 2.0 * std::f64::consts::PI / f64::from(m.teeth[0]),
+                    two_pair_share: (m.contact_ratio() - 1.0).clamp(0.0, 1.0),
+                    teeth: f64::from(m.teeth[0]),
+                    share: speed_ratio[m.gears[0]],
+                    variation_m: m.half_backlash_m() * m.backlash_variation,
+                    te_once_m: (m.te_once_per_rev_um + m.run_out_driver_um) * 1e-6,
+                    run_out_driven_m: m.run_out_driven_um * 1e-6,
+                    driven_turns: f64::from(m.teeth[0]) / f64::from(m.teeth[1]),
+                    te_mesh_m: m.te_mesh_frequency_um * 1e-6,
+                    tooth_shifting: m.tooth_shifting,
+                    tooth_factors,
+                    faulted,
+                }
             })
             .collect();
         // The speed loop on the rig's inertia seen at the motor, Σ J s² (as the 1983
