@@ -10,7 +10,8 @@
 //! standard table plus the file's `[[chain.stage]]`s, each fault at its line),
 //! `read_instrument.rs` (a filter's or meter's settings from its table); `preset_file.rs`
 //! presets from files and `preset_with_overrides` (every command's `--preset` and `--set`);
-//! `builtin_rigs.rs` presets that are rig files, built in; `run_plan.rs` the result; `build.rs` it all together; `coverage.rs` whether each
+//! `builtin_rigs.rs` presets that are rig files, built in; `read_rig_file.rs` a rig file
+//! to a checked `rig::RigTopology`, `read_rig_mesh.rs` its meshes and their faults; `run_plan.rs` the result; `build.rs` it all together; `coverage.rs` whether each
 //! measurement fits the run
 
 pub(crate) mod build;
@@ -24,6 +25,7 @@ pub(crate) mod preset_file;
 pub(crate) mod read_instrument;
 pub(crate) mod read_rig;
 pub(crate) mod read_rig_file;
+pub(crate) mod read_rig_mesh;
 pub(crate) mod read_stages;
 pub(crate) mod rig_file_toml;
 pub(crate) mod run_plan;

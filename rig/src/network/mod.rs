@@ -7,7 +7,8 @@
 //! (unit, set speed and its ramp rate, brake load and its rate, the oscillating load's
 //! pair). `mode.rs` the discrete state (each mesh apart / drive / back with one or two
 //! pairs, the motor linear or at a limit). `model.rs` the constants of a topology and A of
-//! u' = A u per mode. `events.rs` the switching functions of a mode. `system.rs` per mode
+//! u' = A u per mode, `mesh_model.rs` a mesh's constants (its faulted teeth's factors
+//! included). `events.rs` the switching functions of a mode. `system.rs` per mode
 //! e^{A h} and the events, built on first use and cached. `equilibrium.rs` the steady
 //! state at a set speed and load (and at rest, a loop's locked torque carried).
 //! `block.rs` the samples and impacts a run gives, `columns.rs` them as named columns.
@@ -19,6 +20,7 @@ mod columns;
 mod equilibrium;
 mod events;
 mod layout;
+mod mesh_model;
 mod mode;
 mod model;
 mod plant;

@@ -18,13 +18,11 @@
 use nalgebra::DMatrix;
 
 use crate::error::RigError;
-use crate::mesh_stiffness::PairGeometry;
 use crate::mode::MotorMode;
-use crate::options::MeshPairs;
-use crate::tooth_fault::{FaultedGear, tooth_factors};
-use crate::topology::{Mesh, RigTopology};
+use crate::topology::RigTopology;
 
 use super::layout::NetLayout;
+use super::mesh_model::MeshModel;
 use super::mode::{Contact, MeshState, NetMode};
 
 /// A shaft's constants.
@@ -39,103 +37,6 @@ pub struct ShaftModel {
     /// Torque it carries untwisted (N m): for a loop's twisted shaft, what makes it
     /// carry the locked-in torque at rest once the rest of the loop has yielded; else 0.
     pub preload_nm: f64,
-}
-
-/// A mesh's constants.
-#[derive(Clone, Debug, PartialEq)]
-pub struct MeshModel {
-    /// Driver and driven body.
-    pub gears: [usize; 2],
-    /// Their base radii (m), both negated where the driver turns against the motor, so
-    /// that δ = r_a θa + r_b θb > 0 presses the driver's drive flank whichever way the
-    /// pair turns.
-    pub radii_m: [f64; 2],
-    /// One pair's stiffness along the line of action (N/m).
-    pub stiffness_n_per_m: f64,
-    /// One pair's damping along the line of action (N s/m).
-    pub damping_ns_per_m: f64,
-    /// Half the free play along the line of action (m).
-    pub half_backlash_m: f64,
-    /// Whether one and two pairs alternate.
-    pub alternating: bool,
-    /// Two pairs' stiffness and damping over one pair's.
-    pub double_pair_ratio: f64,
-    /// The driver's tooth pitch (rad).
-    pub pitch_rad: f64,
-    /// Share of each tooth period with two pairs in contact (ε − 1).
-    pub two_pair_share: f64,
-    /// The driver's teeth z.
-    pub teeth: f64,
-    /// The driver's speed per unit set speed (signed).
-    pub share: f64,
-    /// Half the free play times its variation, b·C1 (m).
-    pub variation_m: f64,
-    /// Transmission error once per revolution of the driver, E (m along the line of
-    /// action; the driver's run-out included).
-    pub te_once_m: f64,
-    /// Transmission error at mesh frequency, P (m along the line of action).
-    pub te_mesh_m: f64,
-    /// The driven gear's run-out, R (m along the line of action), once per its turn.
-    pub run_out_driven_m: f64,
-    /// The driven gear's turns per turn of the driver, z₁/z₂.
-    pub driven_turns: f64,
-    /// The thesis's numerical tooth shifting at each tooth pass in contact.
-    pub tooth_shifting: bool,
-    /// Each tooth's stiffness factor on the driver and on the driven gear (1 healthy; a
-    /// tooth fault less), teeth numbered from the pair in mesh at angle 0.
-    pub tooth_factors: [Vec<f64>; 2],
-    /// Whether any tooth is faulted (the pair zones are then followed in contact).
-    pub faulted: bool,
-}
-
-impl MeshModel {
-    /// The constant part of the overlap of `flank` (+1 drive, −1 back) with the driver
-    /// at angle 0 of its share of the set rotation (m): −f b (1 − C1) + E + P + R.
-    pub fn start_offset_m(&self, flank: f64) -> f64 {
-        -flank * (self.half_backlash_m - self.variation_m)
-            + self.te_once_m
-            + self.te_mesh_m
-            + self.run_out_driven_m
-    }
-
-    /// Stiffness (N/m) and damping (N s/m) in `state`.
-    pub fn spring(&self, state: MeshState) -> (f64, f64) {
-        let ratio = if state.two_pairs {
-            self.double_pair_ratio
-        } else {
-            1.0
-        };
-        let factor = state.factor();
-        (
-            ratio * self.stiffness_n_per_m * factor,
-            ratio * self.damping_ns_per_m * factor,
-        )
-    }
-
-    /// The stiffness factor of pair `pair` (the pair that comes into mesh at the start of
-    /// the driver's tooth period `pair`): its driver tooth's times its driven tooth's.
-    pub fn pair_factor(&self, pair: i64) -> f64 {
-        let [driver, driven] = &self.tooth_factors;
-        driver[pair.rem_euclid(driver.len() as i64) as usize]
-            * driven[pair.rem_euclid(driven.len() as i64) as usize]
-    }
-
-    /// The teeth (1..=z, driver's and driven's) of pair `pair`.
-    pub fn pair_teeth(&self, pair: i64) -> [u32; 2] {
-        let [driver, driven] = &self.tooth_factors;
-        [driver.len(), driven.len()].map(|z| pair.rem_euclid(z as i64) as u32 + 1)
-    }
-
-    /// The stiffness factor in pair zone `zone` (2p: pairs p − 1 and p share the load
-    /// where pairs alternate; 2p + 1: pair p alone; one pair: pair p over the period).
-    pub fn zone_factor(&self, zone: i64) -> f64 {
-        let pair = zone.div_euclid(2);
-        if self.alternating && zone.rem_euclid(2) == 0 {
-            0.5 * (self.pair_factor(pair - 1) + self.pair_factor(pair))
-        } else {
-            self.pair_factor(pair)
-        }
-    }
 }
 
 /// The motor's speed loop.
@@ -185,38 +86,6 @@ pub struct NetworkModel {
     pub brake: Option<BrakeModel>,
 }
 
-/// Each tooth's stiffness factor on mesh `m`'s driver and driven gear.
-fn tooth_factor_pair(m: &Mesh) -> [Vec<f64>; 2] {
-    let crack = crack(m);
-    [
-        tooth_factors(&m.faults, FaultedGear::Driver, m.teeth[0], &crack),
-        tooth_factors(&m.faults, FaultedGear::Driven, m.teeth[1], &crack),
-    ]
-}
-
-/// A cracked pair's stiffness factor for mesh `m`: the potential-energy method on its
-/// gears (steel's Poisson's ratio 0.3, a bore of half the base radius; face width and
-/// Young's modulus cancel in the ratio).
-fn crack(m: &Mesh) -> impl Fn(FaultedGear, f64) -> f64 {
-    let geometry = PairGeometry {
-        teeth: m.teeth,
-        module_m: m.module_m,
-        pressure_angle_rad: m.pressure_angle_deg.to_radians(),
-        face_width_m: 1.0,
-        addendum_coefficient: m.addendum_coefficient,
-        youngs_modulus_pa: 206e9,
-        poisson_ratio: 0.3,
-        bore_ratio: 0.5,
-    };
-    move |gear, share| {
-        let g = match gear {
-            FaultedGear::Driver => 0,
-            FaultedGear::Driven => 1,
-        };
-        geometry.crack_factor(g, share)
-    }
-}
-
 impl NetworkModel {
     /// The constants of a checked topology.
     pub fn of(rig: &RigTopology) -> Result<Self, RigError> {
@@ -243,33 +112,7 @@ impl NetworkModel {
         let meshes = rig
             .meshes
             .iter()
-            .map(|m| {
-                let tooth_factors = tooth_factor_pair(m);
-                let faulted = tooth_factors.iter().flatten().any(|&f| f != 1.0);
-                MeshModel {
-                    gears: m.gears,
-                    radii_m: m
-                        .base_radii_m()
-                        .map(|r| r * speed_ratio[m.gears[0]].signum()),
-                    stiffness_n_per_m: m.stiffness_n_per_m,
-                    damping_ns_per_m: m.damping_ns_per_m,
-                    half_backlash_m: m.half_backlash_m(),
-                    alternating: m.pairs == MeshPairs::Alternating,
-                    double_pair_ratio: m.double_pair_ratio,
-                    pitch_rad: 2.0 * std::f64::consts::PI / f64::from(m.teeth[0]),
-                    two_pair_share: (m.contact_ratio() - 1.0).clamp(0.0, 1.0),
-                    teeth: f64::from(m.teeth[0]),
-                    share: speed_ratio[m.gears[0]],
-                    variation_m: m.half_backlash_m() * m.backlash_variation,
-                    te_once_m: (m.te_once_per_rev_um + m.run_out_driver_um) * 1e-6,
-                    run_out_driven_m: m.run_out_driven_um * 1e-6,
-                    driven_turns: f64::from(m.teeth[0]) / f64::from(m.teeth[1]),
-                    te_mesh_m: m.te_mesh_frequency_um * 1e-6,
-                    tooth_shifting: m.tooth_shifting,
-                    tooth_factors,
-                    faulted,
-                }
-            })
+            .map(|m| MeshModel::of(m, &speed_ratio))
             .collect();
         // The speed loop on the rig's inertia seen at the motor, Σ J s² (as the 1983
         // preset's on the sum of its five inertias).

@@ -1,0 +1,192 @@
+//! A rig file's `[[mesh]]` read into a `rig::Mesh`: its gears, teeth and geometry, its
+//! stiffness (as given, or by the potential-energy method from its face width), its
+//! pairs, and its `[[mesh.fault]]`s; every fault at its place with what is allowed.
+
+use rig::{FaultKind, FaultedGear, Mesh, MeshPairs, ToothFault};
+use toml::Spanned;
+
+use super::rig_file_toml::{FaultToml, MeshToml};
+use super::source::ScenarioSource;
+
+/// Young's modulus where the potential-energy method's mesh leaves it out (Pa): steel's.
+const STEEL_YOUNGS_MODULUS_PA: f64 = 206.0e9;
+
+/// Poisson's ratio the potential-energy method takes: steel's.
+const STEEL_POISSON_RATIO: f64 = 0.3;
+
+/// Pressure angle where a mesh leaves it out (degrees): the standard 20°.
+const DEFAULT_PRESSURE_ANGLE_DEG: f64 = 20.0;
+
+/// The mesh `m`, its driver and driven gear named by `body`.
+pub(super) fn mesh(
+    src: &ScenarioSource,
+    m: &MeshToml,
+    body: &impl Fn(&Spanned<String>, &str) -> anyhow::Result<usize>,
+) -> anyhow::Result<Mesh> {
+    let name = m.name.get_ref();
+    let [z1, z2] = m.teeth.get_ref().as_slice() else {
+        return Err(src.error(
+            m.teeth.span(),
+            &format!("mesh `{name}`.teeth"),
+            format!(
+                "{:?}: the teeth of the driver and the driven gear, e.g. teeth = [20, 60]",
+                m.teeth.get_ref()
+            ),
+        ));
+    };
+    let stiffness = mesh_stiffness(src, m, [*z1, *z2])?;
+    Ok(Mesh {
+        name: name.clone(),
+        gears: [
+            body(&m.driver, &format!("mesh `{name}`.driver"))?,
+            body(&m.driven, &format!("mesh `{name}`.driven"))?,
+        ],
+        teeth: [*z1, *z2],
+        module_m: *m.module_m.get_ref(),
+        pressure_angle_deg: m
+            .pressure_angle_deg
+            .as_ref()
+            .map_or(DEFAULT_PRESSURE_ANGLE_DEG, |a| *a.get_ref()),
+        backlash_mm: *m.backlash_mm.get_ref(),
+        stiffness_n_per_m: stiffness.0,
+        damping_ns_per_m: or(&m.damping_ns_per_m, 0.0),
+        pairs: pairs(src, m)?,
+        double_pair_ratio: or(&m.double_pair_ratio, stiffness.1),
+        addendum_coefficient: or(&m.addendum_coefficient, 1.0),
+        backlash_variation: or(&m.backlash_variation, 0.0),
+        te_once_per_rev_um: or(&m.te_once_per_rev_um, 0.0),
+        te_mesh_frequency_um: or(&m.te_mesh_frequency_um, 0.0),
+        run_out_driver_um: or(&m.run_out_driver_um, 0.0),
+        run_out_driven_um: or(&m.run_out_driven_um, 0.0),
+        tooth_shifting: m.tooth_shifting.unwrap_or(false),
+        faults: m
+            .fault
+            .iter()
+            .map(|f| tooth_fault(src, f, [*z1, *z2]))
+            .collect::<anyhow::Result<_>>()?,
+    })
+}
+
+/// A mesh's stiffness of one pair (N/m) and the double-pair ratio where the file leaves
+/// it out: as given (ratio 2), or from `face_width_m` by the potential-energy method
+/// (`rig::mesh_stiffness`; with one pair always, the mean over the tooth period). Both or
+/// neither given is refused.
+fn mesh_stiffness(
+    src: &ScenarioSource,
+    m: &MeshToml,
+    teeth: [u32; 2],
+) -> anyhow::Result<(f64, f64)> {
+    let field = format!("mesh `{}`.stiffness_n_per_m", m.name.get_ref());
+    match (&m.stiffness_n_per_m, &m.face_width_m) {
+        (Some(k), None) => Ok((*k.get_ref(), 2.0)),
+        (Some(k), Some(_)) => Err(src.error(
+            k.span(),
+            &field,
+            "give the stiffness or the face width (the potential-energy method then gives the stiffness), not both",
+        )),
+        (None, None) => Err(src.error(
+            m.name.span(),
+            &field,
+            "missing: give stiffness_n_per_m (N/m, one pair along the line of action), or face_width_m (m) for the potential-energy method",
+        )),
+        (None, Some(width)) => {
+            let positive = |v: f64| v.is_finite() && v > 0.0;
+            if !positive(*width.get_ref()) {
+                return Err(src.error(width.span(), "mesh.face_width_m", "a width > 0 m"));
+            }
+            let youngs = m.youngs_modulus_pa.as_ref().map_or(STEEL_YOUNGS_MODULUS_PA, |e| *e.get_ref());
+            if !positive(youngs) {
+                let span = m.youngs_modulus_pa.as_ref().map_or(width.span(), Spanned::span);
+                return Err(src.error(span, "mesh.youngs_modulus_pa", "a modulus > 0 Pa"));
+            }
+            let alpha = m
+                .pressure_angle_deg
+                .as_ref()
+                .map_or(DEFAULT_PRESSURE_ANGLE_DEG, |a| *a.get_ref());
+            let geometry = rig::mesh_stiffness::PairGeometry {
+                teeth,
+                module_m: *m.module_m.get_ref(),
+                pressure_angle_rad: alpha.to_radians(),
+                face_width_m: *width.get_ref(),
+                addendum_coefficient: or(&m.addendum_coefficient, 1.0),
+                youngs_modulus_pa: youngs,
+                poisson_ratio: STEEL_POISSON_RATIO,
+                bore_ratio: 0.5,
+            };
+            let lumped = geometry.lumped();
+            let alternating = m.pairs.as_ref().is_some_and(|p| p.get_ref() == "alternating");
+            Ok(if alternating {
+                (lumped.single_n_per_m, lumped.double_pair_ratio)
+            } else {
+                (lumped.cycle_mean_n_per_m, 2.0)
+            })
+        }
+    }
+}
+
+/// A `[[mesh.fault]]` read, each field refused at its place with what is allowed.
+fn tooth_fault(src: &ScenarioSource, f: &FaultToml, teeth: [u32; 2]) -> anyhow::Result<ToothFault> {
+    let (gear, z) = match f.gear.get_ref().as_str() {
+        "driver" => (FaultedGear::Driver, teeth[0]),
+        "driven" => (FaultedGear::Driven, teeth[1]),
+        other => {
+            return Err(src.error(
+                f.gear.span(),
+                "mesh.fault.gear",
+                format!("`{other}`: the fault's gear is `driver` or `driven`"),
+            ));
+        }
+    };
+    let kind = FaultKind::parse(f.kind.get_ref()).ok_or_else(|| {
+        src.error(
+            f.kind.span(),
+            "mesh.fault.kind",
+            format!(
+                "`{}`: the kinds are {}",
+                f.kind.get_ref(),
+                FaultKind::NAMES.join(", ")
+            ),
+        )
+    })?;
+    let tooth = *f.tooth.get_ref();
+    if !(1..=z).contains(&tooth) {
+        return Err(src.error(
+            f.tooth.span(),
+            "mesh.fault.tooth",
+            format!("{tooth}: the {} gear has teeth 1 to {z}", f.gear.get_ref()),
+        ));
+    }
+    let severity = *f.severity.get_ref();
+    if !(0.0..=1.0).contains(&severity) {
+        return Err(src.error(
+            f.severity.span(),
+            "mesh.fault.severity",
+            format!("{severity}: a share of the tooth, 0 to 1"),
+        ));
+    }
+    Ok(ToothFault {
+        gear,
+        tooth,
+        kind,
+        severity,
+    })
+}
+
+/// A mesh's `pairs`: single (the thesis's) when left out.
+fn pairs(src: &ScenarioSource, m: &MeshToml) -> anyhow::Result<MeshPairs> {
+    let Some(text) = &m.pairs else {
+        return Ok(MeshPairs::Single);
+    };
+    MeshPairs::parse(text.get_ref()).ok_or_else(|| {
+        src.error(
+            text.span(),
+            &format!("mesh `{}`.pairs", m.name.get_ref()),
+            format!("`{}`: one of {}", text.get_ref(), MeshPairs::NAMES),
+        )
+    })
+}
+
+/// An optional number's value, or `default`.
+pub(super) fn or(value: &Option<Spanned<f64>>, default: f64) -> f64 {
+    value.as_ref().map_or(default, |v| *v.get_ref())
+}
