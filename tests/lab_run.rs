@@ -300,3 +300,44 @@ fn a_knocked_repeat_finds_a_motion_the_run_up_does_not() {
     assert!(first.join("bifurcation-5.424_N_m.png").exists());
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// Issue 34: knocked repeats are refused beyond 8 a point, and on the up-and-down run
+/// (whose points are never started on their own), each naming the file's line and field.
+#[test]
+fn repeats_beyond_eight_or_on_the_run_up_and_down_are_refused_at_their_line() {
+    let dir = folder("repeats");
+    let file = dir.join("repeats.toml");
+    let out = dir.join("out");
+    for (case, says) in [
+        ("repeats = 9", "at most 8"),
+        (
+            "sequence = \"up-and-down\"\nrepeats = 1",
+            "give sequence = \"static\" or \"every-approach\"",
+        ),
+    ] {
+        let text = format!(
+            "name = \"repeats\"\n[grid]\nrpm = [600]\nload_nm = [1.0]\n[case]\nsettle_s = 1\nmeasure_s = 3\n{case}\n[analyser]\nfmax_hz = 5\nblock = 16\n"
+        );
+        std::fs::write(&file, &text).expect("sweep file");
+        let done = testrig(&[
+            "sweep",
+            file.to_str().expect("utf-8"),
+            "--out",
+            out.to_str().expect("utf-8"),
+        ]);
+        let stderr = String::from_utf8_lossy(&done.stderr);
+        let line = text
+            .lines()
+            .position(|l| l.starts_with("repeats"))
+            .expect("line")
+            + 1;
+        assert_eq!(done.status.code(), Some(1), "{stderr}");
+        assert!(
+            stderr.contains(&format!("repeats.toml:{line}:"))
+                && stderr.contains("case.repeats")
+                && stderr.contains(says),
+            "{stderr}"
+        );
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
