@@ -138,30 +138,10 @@ pub fn run_rig_point(
         .map_err(|e| anyhow::anyhow!("{} {}: {e}", names.load, spec.load_nm))?;
     check_times(spec.settle_s, spec.duration_s, spec.rate_hz, names)?;
     let rig = spec.rig;
-    if rig.brake.is_none() && spec.load_nm != 0.0 {
-        anyhow::bail!(
-            "{} {}: rig `{}` has no [brake] to load; give 0",
-            names.load,
-            spec.load_nm,
-            rig.name
-        );
-    }
-    let schedule = spec.approach.schedule(spec.rpm, spec.load_nm);
-    let start = spec.approach.network_start();
-    let mut plant = NetworkPlant::new(rig, schedule, spec.rate_hz, start)
-        .with_context(|| format!("rig `{}` at {} {}", rig.name, names.rpm, spec.rpm))?;
     let started = Instant::now();
+    let mut plant = settled_rig_plant(spec, names)?;
     let mut block = NetworkBlock::new(rig.bodies.len(), rig.shafts.len(), rig.meshes.len());
-    let mut left = ((spec.approach.lead_in_s() + spec.settle_s) * spec.rate_hz).round() as usize;
-    while left > 0 {
-        let n = left.min(BLOCK);
-        block.clear();
-        plant.run(n, &mut block)?;
-        left -= n;
-    }
-    plant.take_impacts();
-    plant.take_revolutions();
-    let mut window = Window::new(rig, spec.rate_hz);
+    let mut window = RigWindow::new(rig, spec.rate_hz);
     let mut left = (spec.duration_s * spec.rate_hz).round() as usize;
     while left > 0 {
         let n = left.min(BLOCK);
@@ -188,6 +168,36 @@ pub fn run_rig_point(
     })
 }
 
+/// The plant of `spec` brought to its point by its approach and run through its lead-in
+/// and `settle_s`, its impacts and revolutions so far dropped: the measuring window starts
+/// at its next sample. A load on a rig without a brake is refused (named by `names`).
+pub fn settled_rig_plant(spec: &RigPointSpec, names: InputNames) -> anyhow::Result<NetworkPlant> {
+    let rig = spec.rig;
+    if rig.brake.is_none() && spec.load_nm != 0.0 {
+        anyhow::bail!(
+            "{} {}: rig `{}` has no [brake] to load; give 0",
+            names.load,
+            spec.load_nm,
+            rig.name
+        );
+    }
+    let schedule = spec.approach.schedule(spec.rpm, spec.load_nm);
+    let start = spec.approach.network_start();
+    let mut plant = NetworkPlant::new(rig, schedule, spec.rate_hz, start)
+        .with_context(|| format!("rig `{}` at {} {}", rig.name, names.rpm, spec.rpm))?;
+    let mut block = NetworkBlock::new(rig.bodies.len(), rig.shafts.len(), rig.meshes.len());
+    let mut left = ((spec.approach.lead_in_s() + spec.settle_s) * spec.rate_hz).round() as usize;
+    while left > 0 {
+        let n = left.min(BLOCK);
+        block.clear();
+        plant.run(n, &mut block)?;
+        left -= n;
+    }
+    plant.take_impacts();
+    plant.take_revolutions();
+    Ok(plant)
+}
+
 /// The shaft the judge and the strain column watch: the gauged one, else the last.
 pub fn judged_shaft(rig: &RigTopology) -> usize {
     rig.gauge
@@ -195,8 +205,9 @@ pub fn judged_shaft(rig: &RigTopology) -> usize {
         .map_or(rig.shafts.len().saturating_sub(1), |g| g.shaft)
 }
 
-/// What the window keeps: sums per column and the judged shaft's torque.
-struct Window {
+/// What a measuring window keeps: sums per column, the judged shaft's torque and the
+/// watched gear's synchronous average.
+pub struct RigWindow {
     start_s: Option<f64>,
     samples: usize,
     speed_sum: Vec<f64>,
@@ -209,8 +220,9 @@ struct Window {
     condition: GearCondition,
 }
 
-impl Window {
-    fn new(rig: &RigTopology, rate_hz: f64) -> Self {
+impl RigWindow {
+    /// An empty window on `rig`'s signals at `rate_hz`.
+    pub fn new(rig: &RigTopology, rate_hz: f64) -> Self {
         Self {
             start_s: None,
             samples: 0,
@@ -225,7 +237,8 @@ impl Window {
         }
     }
 
-    fn add(&mut self, block: &NetworkBlock) {
+    /// Adds a block of the window.
+    pub fn add(&mut self, block: &NetworkBlock) {
         if self.start_s.is_none() {
             self.start_s = block.time_s.first().copied();
         }
@@ -250,7 +263,22 @@ impl Window {
         }
     }
 
-    fn summary(
+    /// The judged shaft's torque at each of `revolutions_s` (the motor body's whole
+    /// revolutions in the window, s), at `rate_hz` (N m).
+    pub fn revolution_torque_nm(&self, revolutions_s: &[f64], rate_hz: f64) -> Vec<f64> {
+        let start_s = self.start_s.unwrap_or(0.0);
+        revolutions_s
+            .iter()
+            .filter_map(|t| {
+                let i = ((t - start_s) * rate_hz).round() as usize;
+                self.judged_torque.get(i).copied()
+            })
+            .collect()
+    }
+
+    /// The window summed up and its motion judged; `impacts` and `revolutions_s` those
+    /// of the window.
+    pub fn summary(
         &self,
         rig: &RigTopology,
         spec: &RigPointSpec,
@@ -258,14 +286,7 @@ impl Window {
         revolutions_s: &[f64],
     ) -> RigPointSummary {
         let n = self.samples.max(1) as f64;
-        let start_s = self.start_s.unwrap_or(0.0);
-        let revolution_torque_nm: Vec<f64> = revolutions_s
-            .iter()
-            .filter_map(|t| {
-                let i = ((t - start_s) * spec.rate_hz).round() as usize;
-                self.judged_torque.get(i).copied()
-            })
-            .collect();
+        let revolution_torque_nm = self.revolution_torque_nm(revolutions_s, spec.rate_hz);
         let motion = judge(&JudgeInput {
             torque_nm: &self.judged_torque,
             rate_hz: spec.rate_hz,
@@ -318,7 +339,7 @@ impl Window {
     }
 
     /// The watched gear's synchronous average and its indicators, if taken.
-    fn condition_report(&self) -> Option<GearConditionReport> {
+    pub fn condition_report(&self) -> Option<GearConditionReport> {
         let (_, teeth) = self.watched?;
         self.condition.report(teeth as usize)
     }

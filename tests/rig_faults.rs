@@ -74,8 +74,12 @@ fn deflection_m(rig: &RigTopology, block: &rig::NetworkBlock) -> Vec<f64> {
         .collect()
 }
 
+/// A pit of half the contact width on tooth 7 of the driven gear: over its pair's
+/// single-contact stretch (the last 2 − ε of the tooth period) the pair keeps half its
+/// stiffness, so the deflection there rises by F/k; as the pair comes into mesh, and on
+/// every other pair, nothing changes.
 #[test]
-fn a_pitted_tooth_keeps_the_unpitted_share_of_its_pairs_stiffness() {
+fn a_pit_halves_its_pairs_stiffness_over_the_single_contact_stretch() {
     let dir = common::folder("fault-pit");
     let rig = rig_with(
         dir.path(),
@@ -87,16 +91,20 @@ fn a_pitted_tooth_keeps_the_unpitted_share_of_its_pairs_stiffness() {
     let block = run(&mut p, &rig, 4.0);
     let delta = deflection_m(&rig, &block);
     let tooth_s = 60.0 / rpm / 30.0;
-    // The mean deflection over the middle half of the tooth period of pair `pair`.
-    let period_mean = |pair: usize| {
-        let from = ((pair as f64 + 0.25) * tooth_s * RATE_HZ) as usize;
-        let to = ((pair as f64 + 0.75) * tooth_s * RATE_HZ) as usize;
-        delta[from..to].iter().sum::<f64>() / (to - from) as f64
+    // The single-contact stretch: the last 2 − ε of each tooth period.
+    let single_from = rig.meshes[0].contact_ratio() - 1.0;
+    // The mean deflection over the middle of pair `pair`'s stretch from..to (tooth
+    // periods).
+    let mean = |pair: usize, from: f64, to: f64| {
+        let margin = 0.2 * (to - from);
+        let a = ((pair as f64 + from + margin) * tooth_s * RATE_HZ) as usize;
+        let b = ((pair as f64 + to - margin) * tooth_s * RATE_HZ) as usize;
+        delta[a..b].iter().sum::<f64>() / (b - a) as f64
     };
+    let single = |pair| mean(pair, single_from, 1.0);
+    let double = |pair| mean(pair, 0.0, single_from);
     // Pair 6 (the driven gear's tooth 7) in both revolutions, against its neighbours.
     for pair in [6, 36] {
-        let healthy = 0.5 * (period_mean(pair - 2) + period_mean(pair + 2));
-        let pitted = period_mean(pair);
         let r_b = rig.meshes[0].base_radii_m()[0];
         let force_n = block.mesh_force_n[0][((pair as f64 + 0.5) * tooth_s * RATE_HZ) as usize];
         let k = rig.meshes[0].stiffness_n_per_m;
@@ -104,15 +112,22 @@ fn a_pitted_tooth_keeps_the_unpitted_share_of_its_pairs_stiffness() {
             (force_n * r_b / load_nm - 1.0).abs() < 0.01,
             "the mesh carries the load: {force_n} N"
         );
-        // Healthy F/k, pitted F/(k/2): the deflection rises by F/k.
-        let rise = pitted - healthy;
+        // Healthy F/k, pitted F/(k/2) over the single-contact stretch: F/k more there.
+        let healthy = 0.5 * (single(pair - 2) + single(pair + 2));
+        let rise = single(pair) - healthy;
         assert!(
             (rise / (force_n / k) - 1.0).abs() < 0.02,
             "pair {pair}: the pitted pair deflects {rise:e} m more; F/k = {:e} m",
             force_n / k
         );
+        // Before it, as the pair comes into mesh, the pit is not in contact.
+        let early = double(pair) - 0.5 * (double(pair - 2) + double(pair + 2));
+        assert!(
+            early.abs() < 0.02 * force_n / k,
+            "pair {pair} coming in: {early:e} m"
+        );
         for other in [pair - 3, pair + 3] {
-            let same = period_mean(other) - healthy;
+            let same = single(other) - healthy;
             assert!(same.abs() < 0.02 * force_n / k, "pair {other}: {same:e} m");
         }
     }
@@ -249,12 +264,32 @@ fn bad_faults_are_refused_at_their_line_and_a_severity_is_set_by_path() {
 
 /// Alternating pairs follow the driver's absolute angle: over each tooth period two pairs
 /// share the load for ε − 1 of it (deflection F / (2k)), then one pair carries it
-/// (F / k); with tooth 7 of the driven gear pitted by half, its single-pair stretch
-/// deflects F / (k/2) and the double-pair stretches beside it F / (1.5 k).
+/// (F / k). With tooth 7 of the driven gear pitted by half, its single-pair stretch
+/// deflects F / (k/2) and the double-pair stretches beside it stay at F / (2k); with half
+/// its face broken off, the double-pair stretches beside it deflect F / (1.5 k) too.
 #[test]
-fn alternating_pairs_share_the_load_over_the_contact_ratio_and_a_pit_weakens_its_own() {
+fn alternating_pairs_share_the_load_over_the_contact_ratio_and_a_fault_weakens_its_own() {
+    // A pit acts over its pair's single-contact stretch alone; a broken-off share of the
+    // face over the pair's whole time in mesh, so the double stretches share its loss.
+    for (kind, cases) in [
+        ("pit", [(3.0, 2.0, 1.0), (6.0, 2.0, 0.5), (7.0, 2.0, 1.0)]),
+        (
+            "broken",
+            [(3.0, 2.0, 1.0), (6.0, 1.5, 0.5), (7.0, 1.5, 1.0)],
+        ),
+    ] {
+        alternating_pairs_with(kind, &cases);
+    }
+}
+
+/// The deflection over each zone of the pairs of `cases` (pair, two-pair stiffness,
+/// single-pair stiffness, each over one healthy pair's) with tooth 7 of the driven gear
+/// faulted by `kind` at severity 0.5, pairs alternating.
+fn alternating_pairs_with(kind: &str, cases: &[(f64, f64, f64)]) {
     let dir = common::folder("fault-pairs");
-    let fault = "[[mesh.fault]]\ngear = \"driven\"\ntooth = 7\nkind = \"pit\"\nseverity = 0.5\n";
+    let fault = format!(
+        "[[mesh.fault]]\ngear = \"driven\"\ntooth = 7\nkind = \"{kind}\"\nseverity = 0.5\n"
+    );
     let rig = rig_with(dir.path(), &format!("pairs = \"alternating\"\n{fault}"));
     let share = rig.meshes[0].contact_ratio() - 1.0;
     let (rpm, load_nm) = (30.0, 5.0);
@@ -274,14 +309,14 @@ fn alternating_pairs_share_the_load_over_the_contact_ratio_and_a_pit_weakens_its
     // (zone start, zone end, the stiffness in it over one healthy pair's)
     let zones =
         |p: f64, double: f64, single: f64| [(p, p + share, double), (p + share, p + 1.0, single)];
-    for (pair, double, single) in [(3.0, 2.0, 1.0), (6.0, 1.5, 0.5), (7.0, 1.5, 1.0)] {
+    for &(pair, double, single) in cases {
         for (from, to, ratio) in zones(pair, double, single) {
             let (a, b) = (from + 0.2 * (to - from), to - 0.2 * (to - from));
             let got = mean_over(a, b) - rig.meshes[0].half_backlash_m();
             let want = force_n / (ratio * k);
             assert!(
                 (got / want - 1.0).abs() < 0.03,
-                "pair {pair}, {from:.2}..{to:.2} tooth periods: {got:e} m, F/({ratio} k) = {want:e} m"
+                "{kind}: pair {pair}, {from:.2}..{to:.2} tooth periods: {got:e} m, F/({ratio} k) = {want:e} m"
             );
         }
     }

@@ -158,7 +158,7 @@ pub use params::RigParams;
 pub use plant::{CHECK_EVERY, Plant, PlantConfig};
 pub use presets::{DEFAULT_PRESET, PRESET_NAMES, preset};
 pub use records::{Flank, Impact, RevolutionSample};
-pub use regime::{Regime, RegimeCriteria, classify, classify_scaled};
+pub use regime::{Regime, RegimeCriteria, classify, classify_scaled, impacts_per_tooth};
 pub use schedule::{LiveCeiling, MAX_SPEED_RPM, Schedule, SetPoints, Track};
 pub use signals::{COLUMN_NAMES, COLUMN_UNITS, INTERMEDIATE_SHAFT, SignalBlock};
 pub use steady::{SteadySummary, SteadyWindow, run_steady};

@@ -18,6 +18,16 @@ pub enum FaultedGear {
     Driven,
 }
 
+impl FaultedGear {
+    /// Its name as rig files write it: `driver` or `driven`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Driver => "driver",
+            Self::Driven => "driven",
+        }
+    }
+}
+
 /// The kind of a tooth fault.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case")]
@@ -33,6 +43,15 @@ pub enum FaultKind {
 impl FaultKind {
     /// The kinds by name, as rig files write them.
     pub const NAMES: [&'static str; 3] = ["crack", "pit", "broken"];
+
+    /// Its name as rig files write it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Crack => "crack",
+            Self::Pit => "pit",
+            Self::Broken => "broken",
+        }
+    }
 
     /// The kind named `name`.
     pub fn parse(name: &str) -> Option<Self> {
@@ -60,6 +79,15 @@ pub struct ToothFault {
 }
 
 impl ToothFault {
+    /// Whether the fault acts only while its pair carries the load alone (the pair's
+    /// single-contact stretch): a pit, which grows near the pitch line in the stretch of
+    /// single-pair contact, where the contact stress is highest (ISO 6336-2 rates pitting
+    /// at the inner point of single-pair contact). A crack weakens the tooth, a broken-off
+    /// share its face, over the pair's whole time in mesh.
+    pub fn single_stretch_only(&self) -> bool {
+        self.kind == FaultKind::Pit
+    }
+
     /// The share of the healthy pair's stiffness and damping the faulted pair keeps;
     /// `crack(gear, share)` gives a cracked pair's (the mesh's geometry decides it).
     pub fn stiffness_factor(&self, crack: &impl Fn(FaultedGear, f64) -> f64) -> f64 {

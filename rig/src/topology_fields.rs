@@ -4,6 +4,7 @@
 //! and what `--set`, sweeps and calibration change.
 
 use crate::error::RigError;
+use crate::tooth_fault::FaultKind;
 use crate::topology::RigTopology;
 
 /// One number of a rig.
@@ -165,6 +166,34 @@ impl RigTopology {
             name: path.to_string(),
         })?;
         *slot = value;
+        Ok(())
+    }
+
+    /// Sets the word at `path`: a tooth fault's kind, `mesh.NAME.faultK.kind`, one of
+    /// [`FaultKind::NAMES`] (a sweep's grid turns a seeded crack into a pit so).
+    pub fn set_word(&mut self, path: &str, word: &str) -> Result<(), RigError> {
+        let unknown = || RigError::UnknownParameter {
+            name: path.to_string(),
+        };
+        let parts: Vec<&str> = path.split('.').collect();
+        let ["mesh", name, fault, "kind"] = parts.as_slice() else {
+            return Err(unknown());
+        };
+        let k: usize = fault
+            .strip_prefix("fault")
+            .and_then(|k| k.parse().ok())
+            .ok_or_else(unknown)?;
+        let slot = self
+            .meshes
+            .iter_mut()
+            .find(|m| m.name == *name)
+            .and_then(|m| m.faults.get_mut(k.checked_sub(1)?))
+            .ok_or_else(unknown)?;
+        slot.kind = FaultKind::parse(word).ok_or_else(|| RigError::InvalidParameter {
+            name: path.to_string(),
+            value: word.to_string(),
+            allowed: format!("the kinds are {}", FaultKind::NAMES.join(", ")),
+        })?;
         Ok(())
     }
 

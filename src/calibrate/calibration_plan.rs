@@ -114,8 +114,11 @@ pub fn build_calibration(
     let base = sweep
         .cases
         .first()
-        .map(|c| c.params.clone())
-        .ok_or_else(|| src.error(file.campaign.span(), "campaign", "its grid has no case"))?;
+        .ok_or_else(|| src.error(file.campaign.span(), "campaign", "its grid has no case"))?
+        .rig
+        .preset("calibration")
+        .map_err(|e| src.error(file.campaign.span(), "campaign", e))?
+        .clone();
     let free = free_params(src, file, &base)?;
     let points = target_points(src, file)?;
     let natural = file

@@ -5,7 +5,7 @@ use rayon::prelude::*;
 use rig::{Approach, Judgement, RigChains, RigParams};
 use serde::{Deserialize, Serialize};
 
-use crate::sweep::{Case, Direction, run_case};
+use crate::sweep::{Case, CaseRig, Direction, run_case};
 use crate::vocabulary::seeds::case_seed;
 
 use super::calibration_plan::{ApproachKind, CalibrationPlan, Expect, Scoring, TargetPoint};
@@ -49,7 +49,7 @@ fn case_of(
         rpm: point.rpm,
         load_nm: point.load_nm,
         values: Vec::new(),
-        params: params.clone(),
+        rig: CaseRig::Preset(Box::new(params.clone())),
         seed: case_seed(plan.sweep.seed, point.index),
         approach,
         direction: Direction::Static,
@@ -82,7 +82,7 @@ pub fn evaluate_all(
         .par_iter()
         .map(|&(candidate, rig, point, approach)| {
             let case = case_of(plan, &points[point], plan.approaches[approach], rig);
-            let result = run_case(&plan.sweep, &case)
+            let result = run_case(&plan.sweep, &case, None)
                 .map(|r| CaseSeen {
                     height_db: r.half_order_db,
                     regime: r.regime.to_string(),

@@ -3,8 +3,9 @@
 //! and built into running stages; the scenario check, `testrig run` and the sweeps'
 //! inline chain all build it here.
 
-use instruments::InstrumentError;
+use instruments::{InstrumentError, ShaftStrain};
 
+use super::instrument::Instrument;
 use super::stage_plan::{NamedStage, StagePlan};
 use crate::vocabulary::frame::SignalNames;
 use crate::vocabulary::signal_names::{plant_full_scale, plant_unit};
@@ -119,10 +120,26 @@ impl ChainStages {
     /// Every signal of the run: the plant's, then the stages' outputs.
     pub fn signal_names(&self) -> SignalNames {
         let mut names = SignalNames::plant();
-        for s in &self.0 {
-            names.push(&s.output);
+        for output in self.outputs() {
+            names.push(output);
         }
         names
+    }
+
+    /// The stages' outputs, in running order.
+    pub fn outputs(&self) -> impl Iterator<Item = &str> {
+        self.0.iter().map(|s| s.output.as_str())
+    }
+
+    /// These stages with every strain stage on `shaft` (a rig file's gauged shaft).
+    pub fn with_gauged_shaft(&self, shaft: ShaftStrain) -> Self {
+        let mut stages = self.clone();
+        for s in &mut stages.0 {
+            if let Instrument::Strain(gauged) = &mut s.instrument {
+                *gauged = shaft;
+            }
+        }
+        stages
     }
 
     /// Gives every seeded instrument `seed`.

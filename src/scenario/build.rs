@@ -67,7 +67,7 @@ pub fn build(src: &ScenarioSource, command_line: CommandLine) -> anyhow::Result<
         )?;
     }
     let record = match &file.record {
-        Some(r) => Some(record_plan(src, r, &chain)?),
+        Some(r) => Some(record_plan(src, r, &chain, &chain.stages.signal_names())?),
         None => None,
     };
     if let (Some(r), Some(written)) = (&record, &file.record)

@@ -8,7 +8,7 @@ use toml::Spanned;
 
 use super::chain_toml::AmplifierFile;
 use super::read_instrument::{filter_spec, meter_settings};
-use super::read_stages::{read_signal, wired_stages};
+use super::read_stages::{read_signal, read_signal_among, wired_stages};
 use super::run_plan::{AnalyserPlan, ChainPlan, RecordPlan, ScopePlan};
 use super::scenario_toml::{AnalyserFile, ChainFile, RecordFile};
 use super::source::ScenarioSource;
@@ -16,6 +16,7 @@ use crate::chain::analyser_setup::{AdcChoice, AnalyserSetting, AnalyserWords};
 use crate::chain::{ChainStages, DvmSettings, StandardChain};
 use crate::vocabulary::choices::RecordFormatChoice;
 use crate::vocabulary::choices::WavFormat;
+use crate::vocabulary::frame::SignalNames;
 use crate::vocabulary::seeds::NoiseSource;
 use crate::vocabulary::signal_names::{AMPLIFIER_V, FILTER_V};
 
@@ -181,15 +182,17 @@ pub fn analyser_plan(
 }
 
 /// What to record, with each name checked against the run's signals.
+/// The recording `file` asks for, each signal one of `names` (the run's signals).
 pub fn record_plan(
     src: &ScenarioSource,
     file: &RecordFile,
     chain: &ChainPlan,
+    names: &SignalNames,
 ) -> anyhow::Result<RecordPlan> {
     let mut signals = Vec::new();
     for name in &file.signals {
         let n = name.get_ref();
-        read_signal(src, &chain.stages, Some(name), "record.signals", n)?;
+        read_signal_among(src, names, Some(name), "record.signals", n)?;
         signals.push(n.clone());
     }
     if signals.is_empty() {

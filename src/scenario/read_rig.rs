@@ -11,6 +11,20 @@ use super::values::param_value;
 
 /// The preset with the backlash setting and every `[rig.set]` override applied.
 pub fn rig_params(src: &ScenarioSource, rig: &RigFile) -> anyhow::Result<(String, RigParams)> {
+    if let Some(file) = &rig.file {
+        return Err(src.error(
+            file.span(),
+            "rig.file",
+            "a rig file runs in a sweep (`testrig sweep`), `testrig simulate --rig` and an FMU; this command takes a preset",
+        ));
+    }
+    if let Some(f) = rig.fault.first() {
+        return Err(src.error(
+            f.gear.span(),
+            "rig.fault",
+            "faults are seeded on a rig file's meshes: give rig.file in a sweep",
+        ));
+    }
     let (name, span) = match &rig.preset {
         Some(p) => (p.get_ref().clone(), p.span()),
         None => (DEFAULT_PRESET.to_string(), 0..0),

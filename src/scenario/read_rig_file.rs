@@ -11,8 +11,9 @@ use anyhow::Context;
 use rig::{Body, DriveSettings, Gauge, LockedTorque, RigTopology, Shaft, TopologyPlace};
 use toml::Spanned;
 
-use super::read_rig_mesh::{mesh, or};
+use super::read_rig_mesh::{mesh, or, seed_faults};
 use super::rig_file_toml::{MotorToml, RigFileToml, ShaftToml};
+use super::scenario_toml::RigFile;
 use super::source::ScenarioSource;
 
 /// Shear modulus where a gauge leaves it out (Pa): steel's.
@@ -59,6 +60,55 @@ pub fn source_rig_with_overrides(
         })?;
     }
     Ok(rig)
+}
+
+/// The rig of a sweep's `[rig]` table naming a rig file (`file`, relative to the sweep
+/// file): its `[rig.set]` paths set (numbers, or a fault's kind by name) and its
+/// `[[rig.fault]]`s seeded, checked; a preset or a backlash beside it is refused.
+pub fn rig_of_file_table(src: &ScenarioSource, table: &RigFile) -> anyhow::Result<RigTopology> {
+    let Some(file) = &table.file else {
+        return Err(src.error(0..0, "rig.file", "missing: name the rig file"));
+    };
+    if let Some(preset) = &table.preset {
+        return Err(src.error(
+            preset.span(),
+            "rig.preset",
+            "give either a preset or a rig file, not both",
+        ));
+    }
+    if let Some(backlash) = &table.backlash_mm {
+        return Err(src.error(
+            backlash.span(),
+            "rig.backlash_mm",
+            "a rig file's backlash is its mesh's: give rig.set.\"mesh.NAME.backlash_mm\"",
+        ));
+    }
+    let dir = src.path.parent().unwrap_or(Path::new("."));
+    let path = dir.join(file.get_ref());
+    let mut rig =
+        read_rig_file(&path).map_err(|e| src.error(file.span(), "rig.file", format!("{e:#}")))?;
+    seed_faults(src, &mut rig, &table.fault)?;
+    for (key, value) in &table.set {
+        set_rig_value(&mut rig, key, value.get_ref())
+            .map_err(|e| src.error(value.span(), &format!("rig.set.{key}"), e))?;
+    }
+    rig.check()
+        .map_err(|e| src.error(file.span(), "rig", format!("{}: {e}", path.display())))?;
+    Ok(rig)
+}
+
+/// Sets `path` of `rig` to `value`: a number by [`RigTopology::set_field`], a fault's kind
+/// by [`RigTopology::set_word`]; not checked with the whole rig.
+pub fn set_rig_value(rig: &mut RigTopology, path: &str, value: &toml::Value) -> anyhow::Result<()> {
+    match value {
+        toml::Value::Float(x) => rig.set_field(path, *x)?,
+        toml::Value::Integer(i) => rig.set_field(path, *i as f64)?,
+        toml::Value::String(word) => rig.set_word(path, word)?,
+        other => anyhow::bail!(
+            "{other}: a number, or a tooth fault's kind (`testrig params --rig` lists the paths)"
+        ),
+    }
+    Ok(())
 }
 
 /// The checked rig of a rig file's text.

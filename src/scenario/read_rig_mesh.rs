@@ -2,7 +2,7 @@
 //! stiffness (as given, or by the potential-energy method from its face width), its
 //! pairs, and its `[[mesh.fault]]`s; every fault at its place with what is allowed.
 
-use rig::{FaultKind, FaultedGear, Mesh, MeshPairs, ToothFault};
+use rig::{FaultKind, FaultedGear, Mesh, MeshPairs, RigTopology, ToothFault};
 use toml::Spanned;
 
 use super::rig_file_toml::{FaultToml, MeshToml};
@@ -124,15 +124,62 @@ fn mesh_stiffness(
     }
 }
 
+/// Seeds each of `faults` (a sweep's `[[rig.fault]]`, each naming its mesh) on the mesh
+/// of `rig` it names, after the faults the rig file gives; each refused at its place.
+pub(crate) fn seed_faults(
+    src: &ScenarioSource,
+    rig: &mut RigTopology,
+    faults: &[FaultToml],
+) -> anyhow::Result<()> {
+    for f in faults {
+        let Some(name) = &f.mesh else {
+            return Err(src.error(
+                f.gear.span(),
+                "rig.fault.mesh",
+                "missing: name the mesh the fault is seeded on",
+            ));
+        };
+        let known: Vec<&str> = rig.meshes.iter().map(|m| m.name.as_str()).collect();
+        let known = known.join(", ");
+        let Some(mesh) = rig.meshes.iter_mut().find(|m| m.name == *name.get_ref()) else {
+            return Err(src.error(
+                name.span(),
+                "rig.fault.mesh",
+                format!("`{}`: the rig's meshes are {known}", name.get_ref()),
+            ));
+        };
+        let fault = checked_fault(src, f, mesh.teeth, "rig.fault")?;
+        mesh.faults.push(fault);
+    }
+    Ok(())
+}
+
 /// A `[[mesh.fault]]` read, each field refused at its place with what is allowed.
 fn tooth_fault(src: &ScenarioSource, f: &FaultToml, teeth: [u32; 2]) -> anyhow::Result<ToothFault> {
+    if let Some(mesh) = &f.mesh {
+        return Err(src.error(
+            mesh.span(),
+            "mesh.fault.mesh",
+            "a rig file's fault belongs to the [[mesh]] above it: leave out `mesh`",
+        ));
+    }
+    checked_fault(src, f, teeth, "mesh.fault")
+}
+
+/// A fault's gear, tooth, kind and severity, each refused at its place (`table` names it).
+fn checked_fault(
+    src: &ScenarioSource,
+    f: &FaultToml,
+    teeth: [u32; 2],
+    table: &str,
+) -> anyhow::Result<ToothFault> {
     let (gear, z) = match f.gear.get_ref().as_str() {
         "driver" => (FaultedGear::Driver, teeth[0]),
         "driven" => (FaultedGear::Driven, teeth[1]),
         other => {
             return Err(src.error(
                 f.gear.span(),
-                "mesh.fault.gear",
+                &format!("{table}.gear"),
                 format!("`{other}`: the fault's gear is `driver` or `driven`"),
             ));
         }
@@ -140,7 +187,7 @@ fn tooth_fault(src: &ScenarioSource, f: &FaultToml, teeth: [u32; 2]) -> anyhow::
     let kind = FaultKind::parse(f.kind.get_ref()).ok_or_else(|| {
         src.error(
             f.kind.span(),
-            "mesh.fault.kind",
+            &format!("{table}.kind"),
             format!(
                 "`{}`: the kinds are {}",
                 f.kind.get_ref(),
@@ -152,7 +199,7 @@ fn tooth_fault(src: &ScenarioSource, f: &FaultToml, teeth: [u32; 2]) -> anyhow::
     if !(1..=z).contains(&tooth) {
         return Err(src.error(
             f.tooth.span(),
-            "mesh.fault.tooth",
+            &format!("{table}.tooth"),
             format!("{tooth}: the {} gear has teeth 1 to {z}", f.gear.get_ref()),
         ));
     }
@@ -160,7 +207,7 @@ fn tooth_fault(src: &ScenarioSource, f: &FaultToml, teeth: [u32; 2]) -> anyhow::
     if !(0.0..=1.0).contains(&severity) {
         return Err(src.error(
             f.severity.span(),
-            "mesh.fault.severity",
+            &format!("{table}.severity"),
             format!("{severity}: a share of the tooth, 0 to 1"),
         ));
     }

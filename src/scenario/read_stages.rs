@@ -66,8 +66,19 @@ pub fn read_signal(
     field: &str,
     default: &str,
 ) -> anyhow::Result<String> {
+    read_signal_among(src, &stages.signal_names(), given, field, default)
+}
+
+/// As [`read_signal`], among the signals `names` (a rig file's case offers others than
+/// the preset plant's).
+pub fn read_signal_among(
+    src: &ScenarioSource,
+    names: &SignalNames,
+    given: Option<&Spanned<String>>,
+    field: &str,
+    default: &str,
+) -> anyhow::Result<String> {
     let (name, span) = given.map_or((default, 0..0), |g| (g.get_ref().as_str(), g.span()));
-    let names = stages.signal_names();
     if names.index(name).is_none() {
         return Err(src.error(
             span,

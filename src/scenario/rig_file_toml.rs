@@ -139,15 +139,20 @@ pub struct MeshToml {
     pub fault: Vec<FaultToml>,
 }
 
-/// `[[mesh.fault]]`: a fault on one tooth of the mesh above it.
+/// `[[mesh.fault]]`: a fault on one tooth of the mesh above it (a sweep's
+/// `[[rig.fault]]`: of the mesh it names).
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct FaultToml {
+    /// The mesh, by name: a sweep's `[[rig.fault]]` only (in a rig file the fault belongs
+    /// to the mesh above it).
+    #[serde(default)]
+    pub mesh: Option<Spanned<String>>,
     /// `driver` or `driven`.
     pub gear: Spanned<String>,
     /// The tooth, 1..=z of that gear.
     pub tooth: Spanned<u32>,
-    /// `pit` or `broken`.
+    /// `crack`, `pit` or `broken`.
     pub kind: Spanned<String>,
     /// The pitted share of the contact width, or the broken share of the face, 0..=1.
     pub severity: Spanned<f64>,

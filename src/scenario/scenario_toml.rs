@@ -105,9 +105,16 @@ pub struct RigFile {
     pub preset: Option<Spanned<String>>,
     /// Total circular backlash at the pitch circle (mm), set through the centre distance.
     pub backlash_mm: Option<Spanned<Positive>>,
-    /// Any parameter by name, as `testrig params` lists them.
+    /// Any parameter by name, as `testrig params` lists them (for a rig file, by path,
+    /// as `testrig params --rig` lists them).
     #[serde(default)]
     pub set: BTreeMap<String, Spanned<toml::Value>>,
+    /// A rig file (`rigs/basmaji-1983.toml`), relative to this file, instead of a preset:
+    /// sweeps only.
+    pub file: Option<Spanned<String>>,
+    /// `[[rig.fault]]`: tooth faults seeded on the rig file's meshes, each naming its mesh.
+    #[serde(default)]
+    pub fault: Vec<crate::scenario::rig_file_toml::FaultToml>,
 }
 
 /// `[schedule]`: the knobs at the start and their changes.

@@ -1,6 +1,8 @@
 //! One case of a sweep: the plant at fixed set points, settled, then measured through the
 //! chain (one thread, stage after stage) into the analyser.
 
+use std::path::Path;
+
 use instruments::Line;
 use rig::{
     Approach, Judgement, Plant, PlantConfig, Regime, RegimeCriteria, SignalBlock, SteadySummary,
@@ -8,8 +10,11 @@ use rig::{
 };
 use serde::{Deserialize, Serialize};
 
+use super::case_recording::CaseRecording;
+use super::case_rig::{CaseRig, FaultLabel};
 use super::grid::{Case, SweepPlan};
 use super::lines::{OrderLine, order_line, peaks};
+use super::rig_case::run_rig_case;
 use super::sequence::Direction;
 use crate::chain::{
     AdcChoice, AnalyserWords, GearCondition, GearConditionReport, InlineChain, Measurement, Truth,
@@ -24,7 +29,7 @@ const CHAIN_LEAD_S: f64 = 1.0;
 const BLOCK: usize = 4096;
 /// Once-per-revolution torque samples a case keeps (the last of its window), for the
 /// bifurcation diagram.
-const KEPT_REVOLUTIONS: usize = 64;
+pub(crate) const KEPT_REVOLUTIONS: usize = 64;
 
 /// What one case shows.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -88,6 +93,12 @@ pub struct CaseResult {
     /// in case files written before they were kept).
     #[serde(default)]
     pub condition: Option<CaseCondition>,
+    /// The rig's tooth faults (a rig file's; none on a preset's plant).
+    #[serde(default)]
+    pub faults: Vec<FaultLabel>,
+    /// The case's recordings, relative to the sweep's folder (where it records).
+    #[serde(default)]
+    pub recordings: Vec<String>,
     /// Analyser averages taken.
     pub averages: usize,
     /// The displayed spectrum: (Hz, V² rms) per line.
@@ -181,25 +192,30 @@ pub fn measured_samples(plan: &SweepPlan) -> usize {
 /// Longest run-up from rest a case waits for before it settles (s).
 const MAX_RUN_UP_S: f64 = 600.0;
 
-/// Runs `case` of `plan` on a plant of its own.
-pub fn run_case(plan: &SweepPlan, case: &Case) -> anyhow::Result<CaseResult> {
+/// Runs `case` of `plan` on a plant of its own, recording into `sweep_dir` where the
+/// sweep records.
+pub fn run_case(
+    plan: &SweepPlan,
+    case: &Case,
+    sweep_dir: Option<&Path>,
+) -> anyhow::Result<CaseResult> {
+    if let CaseRig::File(rig) = &case.rig {
+        return run_rig_case(plan, case, rig, sweep_dir);
+    }
     let mut plant = settled_plant(plan, case)?;
-    measure_case(plan, case, &mut plant)
+    measure_case(plan, case, &mut plant, sweep_dir)
 }
 
 /// The plant of `case`, brought to its point by its approach and settled, standing
 /// [`chain_lead_s`] before the case's window. From rest it settles for `settle_s` once
 /// the drive has run it up (the run-up at the torque limit, at most [`MAX_RUN_UP_S`]).
 pub fn settled_plant(plan: &SweepPlan, case: &Case) -> anyhow::Result<Plant> {
-    let mut plant = case.approach.plant(
-        case.params.clone(),
-        case.rpm,
-        case.load_nm,
-        plant_config(plan),
-    )?;
+    let params = case.rig.preset("a case's plant")?;
+    let mut plant =
+        case.approach
+            .plant(params.clone(), case.rpm, case.load_nm, plant_config(plan))?;
     let lead_in_s = match case.approach {
-        Approach::Rest => case
-            .params
+        Approach::Rest => params
             .run_up_from_rest_s(case.rpm, case.load_nm)
             .map_or(0.0, |s| s.min(MAX_RUN_UP_S)),
         other => other.lead_in_s(),
@@ -210,11 +226,13 @@ pub fn settled_plant(plan: &SweepPlan, case: &Case) -> anyhow::Result<Plant> {
 }
 
 /// Measures `case` on `plant`, which stands [`chain_lead_s`] before the case's window:
-/// the chain runs over the lead, then the window is measured through it.
+/// the chain runs over the lead, then the window is measured through it (and recorded
+/// into `sweep_dir` where the sweep records).
 pub fn measure_case(
     plan: &SweepPlan,
     case: &Case,
     plant: &mut Plant,
+    sweep_dir: Option<&Path>,
 ) -> anyhow::Result<CaseResult> {
     let lead = chain_lead_s(plan);
     plant.drain_impacts();
@@ -233,9 +251,11 @@ pub fn measure_case(
     let setup = AnalyserWords::of(&plan.analyser.settings, adc).set_up(plan.rate_hz)?;
     // A case reads the heights of lines, never which are aliases: no truth kept.
     let mut measurement = Measurement::new(setup, Truth::NotKept);
-    let mut window = SteadyWindow::new(case.params.teeth, plant.output_step_s());
+    let mut recording = CaseRecording::start(plan, case, sweep_dir, &names)?;
+    let teeth = case.rig.counted_teeth();
+    let mut window = SteadyWindow::new(teeth, plant.output_step_s());
     // The regime from the last stretch only, as `testrig simulate` and `testrig run` take it.
-    let mut late = SteadyWindow::new(case.params.teeth, plant.output_step_s());
+    let mut late = SteadyWindow::new(teeth, plant.output_step_s());
     let lead_samples = (lead * plan.rate_hz).round() as usize;
     let total = measured_samples(plan);
     let late_from =
@@ -270,6 +290,9 @@ pub fn measure_case(
             window.add_block(&block, plant.set_points().speed_rad_s());
             condition.add(&block);
             measurement.push(&frame.channels[input]);
+            if let Some(r) = &mut recording {
+                r.write(&frame)?;
+            }
         } else {
             plant.drain_impacts();
             plant.drain_revolutions();
@@ -279,7 +302,7 @@ pub fn measure_case(
     let criteria = RegimeCriteria::default();
     let mut summary = window.summary(&criteria);
     summary.regime = late.regime(&criteria);
-    let mut result = result(
+    let mut result = case_result(
         plan,
         case,
         &summary,
@@ -288,13 +311,18 @@ pub fn measure_case(
     );
     result.revolution_torque_nm = window.last_revolution_torques_nm(KEPT_REVOLUTIONS);
     result.condition = condition
-        .report(case.params.teeth as usize)
+        .report(teeth as usize)
         .as_ref()
         .map(CaseCondition::of);
+    if let Some(r) = recording {
+        result.recordings = r.finish()?;
+    }
     Ok(result)
 }
 
-fn result(
+/// A case's result from its window's summary and the analyser's display; the kept
+/// revolutions, condition, faults and recordings left for the caller.
+pub(crate) fn case_result(
     plan: &SweepPlan,
     case: &Case,
     s: &SteadySummary,
@@ -338,6 +366,8 @@ fn result(
         torque_ac_rms_nm: s.torque_ac_rms_nm,
         speed_offset_rpm: s.speed_offset_rpm,
         condition: None,
+        faults: Vec::new(),
+        recordings: Vec::new(),
         averages,
         spectrum: lines.iter().map(|l| (l.frequency_hz, l.value)).collect(),
         peaks: peaks(lines, plan.line_db),

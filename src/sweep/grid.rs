@@ -1,18 +1,23 @@
 //! A sweep file checked and expanded into its cases.
 
-use rig::{Approach, RigParams};
+use rig::Approach;
 
 use crate::scenario::build::stream_rate_hz;
+use crate::scenario::read_chain::record_plan;
 use crate::scenario::read_chain::{analyser_plan, chain_plan};
 use crate::scenario::read_rig::rig_params;
-use crate::scenario::read_stages::read_signal;
-use crate::scenario::values::param_value;
-use crate::scenario::{AnalyserPlan, ChainPlan, ScenarioSource};
-use crate::vocabulary::limits::{check_load_within_motor, check_simulated_s};
+use crate::scenario::read_rig_file::rig_of_file_table;
+use crate::scenario::read_stages::read_signal_among;
+use crate::scenario::scenario_toml::RecordFile;
+use crate::scenario::{AnalyserPlan, ChainPlan, RecordPlan, ScenarioSource};
+use crate::vocabulary::limits::check_simulated_s;
 
+use super::case_rig::CaseRig;
 use super::knock::knock_rad_s;
+use super::rig_case::{RIG_CASE_SIGNALS, motor_of, rig_case_signal_names, rig_case_stages};
 use super::sequence::{Direction, Sequence};
 use super::sweep_toml::{CaseFile, GridFile, SweepFile};
+use crate::vocabulary::frame::SignalNames;
 use crate::vocabulary::limits::MAX_SWEEP_CASES;
 use crate::vocabulary::seeds::{NoiseSource, case_seed};
 
@@ -28,7 +33,7 @@ pub struct SweepPlan {
     pub seed: u64,
     /// Stream rate (Hz).
     pub rate_hz: f64,
-    /// Preset name.
+    /// The rig's name: the preset's, or the rig file's `name`.
     pub preset: String,
     /// Settle time per case (s).
     pub settle_s: f64,
@@ -44,6 +49,10 @@ pub struct SweepPlan {
     pub line_db: f64,
     /// Names of the swept parameters, in column order.
     pub swept: Vec<String>,
+    /// What each case records over its measured window, if anything.
+    pub record: Option<RecordPlan>,
+    /// The sweep file's text as run (cited in the recordings' sidecars).
+    pub text: String,
     /// The cases, in index order.
     pub cases: Vec<Case>,
 }
@@ -60,7 +69,7 @@ pub struct Case {
     /// Values of the swept parameters, as text, in `SweepPlan::swept` order.
     pub values: Vec<String>,
     /// The rig of this case.
-    pub params: RigParams,
+    pub rig: CaseRig,
     /// The case's seed.
     pub seed: u64,
     /// How the case reaches its operating point.
@@ -77,34 +86,54 @@ pub struct Case {
 /// Checks `file` (read from `src`) and expands its grid.
 pub fn build_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<SweepPlan> {
     let rate_hz = stream_rate_hz(src, &file.rate_hz)?;
-    let (preset, base) = rig_params(src, &file.rig)?;
+    let (preset, base) = match &file.rig.file {
+        Some(_) => {
+            let rig = rig_of_file_table(src, &file.rig)?;
+            (rig.name.clone(), CaseRig::File(Box::new(rig)))
+        }
+        None => {
+            let (name, params) = rig_params(src, &file.rig)?;
+            (name, CaseRig::Preset(Box::new(params)))
+        }
+    };
     let analyser = analyser_plan(src, &file.analyser, rate_hz, file.seed)?;
     let band_hz = Some(analyser.settings.fmax_hz);
     let chain = chain_plan(src, &file.chain, rate_hz, file.seed, band_hz)?;
+    let names = match &base {
+        CaseRig::Preset(_) => chain.stages.signal_names(),
+        CaseRig::File(rig) => {
+            check_rig_case_chain(src, rig, &chain, rate_hz)?;
+            rig_case_signal_names(&chain.stages)
+        }
+    };
     let input = file.analyser.input.as_ref();
-    read_signal(src, &chain.stages, input, "analyser.input", &analyser.input)?;
+    read_signal_among(src, &names, input, "analyser.input", &analyser.input)?;
     let (settle_s, measure_s) = case_timing(src, &file.case, &analyser)?;
+    let record = file
+        .record
+        .as_ref()
+        .map(|r| sweep_record_plan(src, r, &chain, &names))
+        .transpose()?;
     let grid = &file.grid;
     if grid.rpm.is_empty() || grid.load_nm.is_empty() {
         return Err(src.error(0..0, "grid", "rpm and load_nm each need at least one value"));
     }
     let repeats = repeats(src, &file.case)?;
+    if matches!(base, CaseRig::File(_)) {
+        check_rig_file_sweep(src, file, repeats)?;
+    }
     check_case_count(src, grid, file.case.sequence, repeats)?;
     let mut swept = Vec::new();
-    let mut variants: Vec<(Vec<String>, RigParams)> = vec![(Vec::new(), base)];
+    let mut variants: Vec<(Vec<String>, CaseRig)> = vec![(Vec::new(), base)];
     if !grid.backlash_mm.is_empty() {
         swept.push("backlash_mm".to_string());
         variants = expand(
             variants,
             grid.backlash_mm.iter().map(|b| {
-                let backlash_mm = b.0;
-                (
-                    backlash_mm.to_string(),
-                    move |p: &mut RigParams| -> anyhow::Result<()> {
-                        let value = rig::ParamValue::Number(backlash_mm);
-                        Ok(rig::set_param_value(p, "backlash_mm", value)?)
-                    },
-                )
+                let value = toml::Value::Float(b.0);
+                (b.0.to_string(), move |r: &mut CaseRig| {
+                    r.set("backlash_mm", &value)
+                })
             }),
         )?;
     }
@@ -120,20 +149,18 @@ pub fn build_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<Swe
                     other => other.to_string(),
                 };
                 let field = field.clone();
-                (label, move |p: &mut RigParams| -> anyhow::Result<()> {
-                    let value = param_value(v).map_err(|e| src.error(values.span(), &field, e))?;
-                    rig::set_param_value(p, name, value)
-                        .and_then(|()| p.validate())
-                        .map_err(|e| src.error(values.span(), &field, e))
+                (label, move |r: &mut CaseRig| {
+                    r.set(name, v)
+                        .map_err(|e| src.error(values.span(), &field, format!("{e:#}")))
                 })
             }),
         )?;
     }
     let sequence = file.case.sequence;
     let mut cases = Vec::new();
-    for (values, params) in &variants {
+    for (values, rig) in &variants {
         for load in &grid.load_nm {
-            check_load_within_motor(load.0, params)
+            rig.check_load(load.0)
                 .map_err(|message| src.error(0..0, "grid.load_nm", message))?;
         }
         let points = match sequence {
@@ -158,7 +185,7 @@ pub fn build_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<Swe
                 rpm,
                 load_nm,
                 values: values.clone(),
-                params: params.clone(),
+                rig: rig.clone(),
                 seed,
                 approach: match direction {
                     Direction::Rest => Approach::Rest,
@@ -185,6 +212,8 @@ pub fn build_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<Swe
         analyser,
         line_db: file.detect.line_db.0,
         swept,
+        record,
+        text: src.text.clone(),
         cases,
     })
 }
@@ -235,6 +264,81 @@ fn repeats(src: &ScenarioSource, case: &CaseFile) -> anyhow::Result<u32> {
         ));
     }
     Ok(n)
+}
+
+/// A sweep on a rig file, checked: each point on a plant of its own from the static load
+/// (the lab's run up and down and the knocked repeats run on the thesis's plant), the
+/// backlash by its mesh's path, and a gauged shaft for the chain's strain.
+fn check_rig_file_sweep(
+    src: &ScenarioSource,
+    file: &SweepFile,
+    repeats: u32,
+) -> anyhow::Result<()> {
+    if file.case.sequence != Sequence::Static || repeats > 0 {
+        return Err(src.error(
+            0..0,
+            "case.sequence",
+            "a rig file's sweep runs each point from the static load: leave out sequence and repeats",
+        ));
+    }
+    if !file.grid.backlash_mm.is_empty() {
+        return Err(src.error(
+            0..0,
+            "grid.backlash_mm",
+            "a rig file's backlash is its mesh's: give grid.set.\"mesh.NAME.backlash_mm\"",
+        ));
+    }
+    Ok(())
+}
+
+/// A sweep's `[record]`, checked as a scenario's: each case records its measured window
+/// at the sweep's rate, from its start (no decimation, no `record` command).
+fn sweep_record_plan(
+    src: &ScenarioSource,
+    file: &RecordFile,
+    chain: &ChainPlan,
+    names: &SignalNames,
+) -> anyhow::Result<RecordPlan> {
+    if *file.decimate.get_ref() != 1 {
+        return Err(src.error(
+            file.decimate.span(),
+            "record.decimate",
+            "a sweep's case records at the sweep's rate_hz: leave out decimate, or lower rate_hz",
+        ));
+    }
+    if !file.from_start {
+        return Err(src.error(
+            0..0,
+            "record.from_start",
+            "a sweep's case records its whole measured window: leave out from_start",
+        ));
+    }
+    record_plan(src, file, chain, names)
+}
+
+/// A rig file's rig checked for what its cases need: a motor to set the speed of, a
+/// gauged shaft for the strain stage, and the chain's stages wired on the signals such a
+/// case offers ([`RIG_CASE_SIGNALS`]).
+fn check_rig_case_chain(
+    src: &ScenarioSource,
+    rig: &rig::RigTopology,
+    chain: &ChainPlan,
+    rate_hz: f64,
+) -> anyhow::Result<()> {
+    motor_of(rig).map_err(|e| src.error(0..0, "rig.file", e))?;
+    let stages = rig_case_stages(&chain.stages, rig).map_err(|e| src.error(0..0, "rig.file", e))?;
+    let mut names = SignalNames::of(&RIG_CASE_SIGNALS);
+    stages.build(rate_hz, &mut names).map_err(|e| {
+        src.error(
+            0..0,
+            &format!("chain.stage `{}`", e.output()),
+            format!(
+                "{e} (a rig file's case offers {} to the chain)",
+                RIG_CASE_SIGNALS.join(", ")
+            ),
+        )
+    })?;
+    Ok(())
 }
 
 /// The lab's run: one series per load, the speeds up in ascending order, then down from
@@ -316,10 +420,10 @@ pub fn case_timing(
 }
 
 /// Every variant so far with every value of one more parameter.
-fn expand<F: Fn(&mut RigParams) -> anyhow::Result<()>>(
-    variants: Vec<(Vec<String>, RigParams)>,
+fn expand<F: Fn(&mut CaseRig) -> anyhow::Result<()>>(
+    variants: Vec<(Vec<String>, CaseRig)>,
     values: impl Iterator<Item = (String, F)> + Clone,
-) -> anyhow::Result<Vec<(Vec<String>, RigParams)>> {
+) -> anyhow::Result<Vec<(Vec<String>, CaseRig)>> {
     let mut out = Vec::new();
     for (texts, params) in variants {
         for (text, apply) in values.clone() {

@@ -3,6 +3,8 @@
 //! measured again, as many times as the sweep's `case.repeats`. Where the point can hold
 //! more than one motion, a knock may move the rig from one to another.
 
+use std::path::Path;
+
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64Mcg;
 
@@ -27,13 +29,17 @@ pub fn knock_rad_s(seed: u64, rpm: f64) -> f64 {
 
 /// Runs a point and its knocked repeats, in order, on one plant; a failure ends the
 /// series (the repeats after it are reported failed with it).
-pub fn run_knocked(plan: &SweepPlan, series: &[&Case]) -> Vec<(usize, anyhow::Result<CaseResult>)> {
+pub fn run_knocked(
+    plan: &SweepPlan,
+    series: &[&Case],
+    sweep_dir: Option<&Path>,
+) -> Vec<(usize, anyhow::Result<CaseResult>)> {
     let settle = ((plan.settle_s - chain_lead_s(plan)) * plan.rate_hz).round() as usize;
     on_one_plant(series, settled_plant(plan, series[0]), |i, case, plant| {
         if i > 0 {
             plant.kick_driven_gear(case.kick_rad_s);
             plant.skip(settle)?;
         }
-        measure_case(plan, case, plant)
+        measure_case(plan, case, plant, sweep_dir)
     })
 }

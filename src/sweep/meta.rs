@@ -8,8 +8,7 @@ use serde::{Deserialize, Serialize};
 
 use sha2::{Digest, Sha256};
 
-use rig::RigChains;
-
+use super::case_rig::CaseRig;
 use super::grid::SweepPlan;
 use crate::recording::PartialFile;
 use crate::scenario::ScenarioSource;
@@ -28,6 +27,10 @@ pub struct SweepMeta {
     pub fmax_hz: f64,
     /// Number of cases in the whole grid.
     pub cases: usize,
+    /// The rig file's rig the sweep runs on (its `name`); none on a preset, whose cases
+    /// are held against the thesis.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rig_file: Option<String>,
     /// SHA-256 of everything that decides the cases' results ([`fingerprint`]): shards
     /// and resumed runs of one sweep share it; `merge` and `--resume` refuse others.
     #[serde(default)]
@@ -41,14 +44,7 @@ pub fn sweep_meta(source: &ScenarioSource, plan: &SweepPlan) -> SweepMeta {
     let natural_hz = plan
         .cases
         .first()
-        .map(|c| {
-            RigChains::of(&c.params)
-                .whole_rig
-                .modes()
-                .iter()
-                .map(|m| m.frequency_hz)
-                .collect()
-        })
+        .map(|c| c.rig.natural_hz())
         .unwrap_or_default();
     SweepMeta {
         name: plan.name.clone(),
@@ -56,6 +52,10 @@ pub fn sweep_meta(source: &ScenarioSource, plan: &SweepPlan) -> SweepMeta {
         natural_hz,
         fmax_hz: plan.analyser.settings.fmax_hz,
         cases: plan.cases.len(),
+        rig_file: match plan.cases.first().map(|c| &c.rig) {
+            Some(CaseRig::File(rig)) => Some(rig.name.clone()),
+            _ => None,
+        },
         fingerprint: fingerprint(&source.text, plan),
     }
 }
@@ -64,7 +64,10 @@ pub fn sweep_meta(source: &ScenarioSource, plan: &SweepPlan) -> SweepMeta {
 /// `--set` edits: grid, seed, case timing, chain, analyser), the first case's rig
 /// parameters (a preset file's values included) and the program's version.
 pub fn fingerprint(source_text: &str, plan: &SweepPlan) -> String {
-    let base = plan.cases.first().map(|c| format!("{:?}", c.params));
+    let base = plan.cases.first().map(|c| match &c.rig {
+        CaseRig::Preset(params) => format!("{params:?}"),
+        CaseRig::File(rig) => format!("{rig:?}"),
+    });
     let mut hasher = Sha256::new();
     hasher.update(source_text.as_bytes());
     hasher.update(base.unwrap_or_default().as_bytes());

@@ -17,13 +17,18 @@
 //! hold the set speed)
 
 pub(crate) mod case;
+pub(crate) mod case_recording;
+pub(crate) mod case_rig;
 pub(crate) mod facts;
 pub(crate) mod grid;
 pub(crate) mod held_motions;
 pub(crate) mod knock;
+pub(crate) mod labels;
 pub(crate) mod lines;
 pub(crate) mod meta;
 pub(crate) mod report;
+pub(crate) mod rig_case;
+pub(crate) mod rig_report;
 pub(crate) mod runner;
 pub(crate) mod sequence;
 pub(crate) mod series;
@@ -33,6 +38,7 @@ pub(crate) mod table;
 pub(crate) mod thesis;
 
 pub use case::{CaseResult, run_case};
+pub use case_rig::{CaseRig, FaultLabel};
 pub use grid::{Case, SweepPlan, build_sweep};
 pub use meta::{SweepMeta, fingerprint, read_meta, sweep_meta};
 pub use runner::{Assembled, SweepOptions, SweepOutcome, assemble, missing_cases, run_sweep};

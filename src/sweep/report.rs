@@ -53,6 +53,12 @@ pub fn write_report(
     facts(&mut md, cases);
     findings(&mut md, meta, cases);
     table(&mut md, cases);
+    plots_section(&mut md, plots);
+    PartialFile::write_whole(&dir.join("report.md"), md)
+}
+
+/// The report's last section: each PNG of `plots`, shown.
+pub(super) fn plots_section(md: &mut String, plots: &[PathBuf]) {
     let _ = writeln!(md, "\n## Plots\n");
     for p in plots
         .iter()
@@ -64,7 +70,6 @@ pub fn write_report(
             .unwrap_or_default();
         let _ = writeln!(md, "![{name}]({name})\n");
     }
-    PartialFile::write_whole(&dir.join("report.md"), md)
 }
 
 /// The physics judge's score and its table: each point's motion against the thesis's.

@@ -11,11 +11,14 @@ use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rayon::prelude::*;
 
 use super::case::{CaseResult, run_case};
+use super::case_recording::RECORDINGS_DIR;
 use super::grid::{Case, SweepPlan};
 use super::held_motions::held_motions;
 use super::knock::run_knocked;
+use super::labels::write_labels;
 use super::meta::{SweepMeta, read_meta, write_meta};
 use super::report::write_report;
+use super::rig_report::write_rig_report;
 use super::sequence::Direction;
 use super::series::run_series;
 use super::shard::Shard;
@@ -115,9 +118,13 @@ pub fn run_sweep(
                     .is_some_and(|s| s.load(Ordering::Relaxed));
                 let results = match unit.as_slice() {
                     _ if stopped => Vec::new(),
-                    [case] if case.series.is_none() => vec![(case.index, run_case(plan, case))],
-                    series if series[0].direction.is_own_start() => run_knocked(plan, series),
-                    series => run_series(plan, series),
+                    [case] if case.series.is_none() => {
+                        vec![(case.index, run_case(plan, case, Some(dir)))]
+                    }
+                    series if series[0].direction.is_own_start() => {
+                        run_knocked(plan, series, Some(dir))
+                    }
+                    series => run_series(plan, series, Some(dir)),
                 };
                 results.into_iter().filter_map(|(index, result)| {
                     let done = result.and_then(|r| write_case(dir, &r));
@@ -193,6 +200,34 @@ fn clear_other_sweep(dir: &Path, meta: &SweepMeta, resume: bool) -> anyhow::Resu
         );
     }
     remove_files_with_extension(&dir.join(CASES_DIR), "json")?;
+    let recordings = dir.join(RECORDINGS_DIR);
+    if recordings.is_dir() {
+        std::fs::remove_dir_all(&recordings)
+            .with_context(|| format!("{}: cannot remove", recordings.display()))?;
+    }
+    Ok(())
+}
+
+/// Copies the cases' recordings of the shard folders `dirs` into `out`.
+fn copy_recordings(dirs: &[PathBuf], out: &Path) -> anyhow::Result<()> {
+    for dir in dirs {
+        let Ok(entries) = std::fs::read_dir(dir.join(RECORDINGS_DIR)) else {
+            continue;
+        };
+        let into = out.join(RECORDINGS_DIR);
+        std::fs::create_dir_all(&into)
+            .with_context(|| format!("{}: cannot create the folder", into.display()))?;
+        for entry in entries {
+            let path = entry?.path();
+            if path.extension().is_some_and(|e| e == "partial") {
+                continue;
+            }
+            if let Some(name) = path.file_name() {
+                std::fs::copy(&path, into.join(name))
+                    .with_context(|| format!("copying {}", path.display()))?;
+            }
+        }
+    }
     Ok(())
 }
 
@@ -233,10 +268,25 @@ pub fn assemble(dirs: &[PathBuf], out: &Path) -> anyhow::Result<Assembled> {
         for c in &cases {
             write_case(out, c)?;
         }
+        copy_recordings(dirs, out)?;
     }
-    let mut files = vec![write_table(out, &meta.swept, &cases)?];
+    let mut files = vec![write_table(
+        out,
+        &meta.swept,
+        &cases,
+        meta.rig_file.is_none(),
+    )?];
+    if cases
+        .iter()
+        .any(|c| !c.recordings.is_empty() || !c.faults.is_empty())
+    {
+        files.push(write_labels(out, &meta.swept, &cases)?);
+    }
     files.extend(plots(out, &meta, &cases)?);
-    let report = write_report(out, &meta, &cases, &files)?;
+    let report = match &meta.rig_file {
+        None => write_report(out, &meta, &cases, &files)?,
+        Some(rig) => write_rig_report(out, &meta, rig, &cases, &files)?,
+    };
     files.push(report);
     Ok(Assembled { files, missing })
 }

@@ -3,6 +3,8 @@
 //! rest), settled, then measured. Where the rig has more than one motion at a speed, the
 //! run-up and the run-down show which it keeps (hysteresis).
 
+use std::path::Path;
+
 use rig::{Plant, Schedule, Track};
 
 use super::case::{CaseResult, chain_lead_s, measure_case, measured_samples, plant_config};
@@ -30,13 +32,22 @@ fn series_schedule(plan: &SweepPlan, series: &[&Case]) -> Schedule {
 
 /// Runs the cases of one series in order on one plant; a failure ends the series (the
 /// cases after it are reported failed with it).
-pub fn run_series(plan: &SweepPlan, series: &[&Case]) -> Vec<(usize, anyhow::Result<CaseResult>)> {
-    let plant = Plant::new(
-        series[0].params.clone(),
-        series_schedule(plan, series),
-        plant_config(plan),
-    )
-    .map_err(anyhow::Error::from);
+pub fn run_series(
+    plan: &SweepPlan,
+    series: &[&Case],
+    sweep_dir: Option<&Path>,
+) -> Vec<(usize, anyhow::Result<CaseResult>)> {
+    let plant = series[0]
+        .rig
+        .preset("the lab's run up and down")
+        .and_then(|params| {
+            Plant::new(
+                params.clone(),
+                series_schedule(plan, series),
+                plant_config(plan),
+            )
+            .map_err(anyhow::Error::from)
+        });
     let hold_s = plan.settle_s + plan.measure_s;
     let mut position = 0usize;
     on_one_plant(series, plant, |i, case, plant| {
@@ -45,7 +56,7 @@ pub fn run_series(plan: &SweepPlan, series: &[&Case]) -> Vec<(usize, anyhow::Res
         let result = plant
             .skip(lead_from.saturating_sub(position))
             .map_err(anyhow::Error::from)
-            .and_then(|()| measure_case(plan, case, plant));
+            .and_then(|()| measure_case(plan, case, plant, sweep_dir));
         position = lead_from.max(position) + measured_samples(plan);
         result
     })

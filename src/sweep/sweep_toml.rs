@@ -7,7 +7,7 @@ use serde::Deserialize;
 use toml::Spanned;
 
 use super::sequence::Sequence;
-use crate::scenario::scenario_toml::{AnalyserFile, ChainFile, RigFile};
+use crate::scenario::scenario_toml::{AnalyserFile, ChainFile, RecordFile, RigFile};
 use crate::scenario::values::{LoadNm, Positive, SpeedRpm};
 
 /// The whole file.
@@ -40,6 +40,9 @@ pub struct SweepFile {
     /// When a spectral line counts as present.
     #[serde(default)]
     pub detect: DetectFile,
+    /// What each case records over its measured window (as a scenario's `[record]`),
+    /// into `recordings/case-NNNNN.*`; left out: nothing.
+    pub record: Option<RecordFile>,
 }
 
 fn default_rate() -> Spanned<Positive> {

@@ -59,7 +59,13 @@ pub fn read_cases(dirs: &[PathBuf]) -> anyhow::Result<Vec<CaseResult>> {
 }
 
 /// Writes `dir/cases.csv`: index, rpm, load_nm, the swept parameters, then the results.
-pub fn write_table(dir: &Path, swept: &[String], cases: &[CaseResult]) -> anyhow::Result<PathBuf> {
+/// The thesis's motion and the match are left empty unless `thesis` (a preset's sweep).
+pub fn write_table(
+    dir: &Path,
+    swept: &[String],
+    cases: &[CaseResult],
+    thesis: bool,
+) -> anyhow::Result<PathBuf> {
     let mut header: Vec<String> = ["index", "rpm", "load_nm"].map(String::from).to_vec();
     header.extend(swept.iter().cloned());
     header.extend(
@@ -98,19 +104,10 @@ pub fn write_table(dir: &Path, swept: &[String], cases: &[CaseResult]) -> anyhow
             "thesis_motion",
             "physics_match",
             "kick_rad_s",
-            "fm0",
-            "fm4",
-            "m6a",
-            "m8a",
-            "na4",
-            "sideband_level",
-            "crest_factor",
-            "kurtosis",
-            "residual_rms_nm",
-            "revolutions_averaged",
         ]
         .map(String::from),
     );
+    header.extend(CONDITION_COLUMNS.map(String::from));
     let mut csv = CsvRecorder::create(&dir.join("cases.csv"), &header)?;
     for c in cases {
         let mut row: Vec<String> = vec![
@@ -148,7 +145,7 @@ pub fn write_table(dir: &Path, swept: &[String], cases: &[CaseResult]) -> anyhow
             c.averages.to_string(),
             c.seed.to_string(),
         ]);
-        row.extend(judge_columns(c));
+        row.extend(judge_columns(c, thesis));
         row.push(format!("{:.6}", c.kick_rad_s));
         row.extend(condition_columns(c));
         csv.write_row(&row)?;
@@ -156,8 +153,22 @@ pub fn write_table(dir: &Path, swept: &[String], cases: &[CaseResult]) -> anyhow
     csv.finish()
 }
 
+/// The condition indicators' column names, in the order of [`condition_columns`].
+pub const CONDITION_COLUMNS: [&str; 10] = [
+    "fm0",
+    "fm4",
+    "m6a",
+    "m8a",
+    "na4",
+    "sideband_level",
+    "crest_factor",
+    "kurtosis",
+    "residual_rms_nm",
+    "revolutions_averaged",
+];
+
 /// The condition indicators' columns of a case (empty where none were taken).
-fn condition_columns(c: &CaseResult) -> Vec<String> {
+pub fn condition_columns(c: &CaseResult) -> Vec<String> {
     match &c.condition {
         None => vec![String::new(); 10],
         Some(i) => {
@@ -183,7 +194,7 @@ fn condition_columns(c: &CaseResult) -> Vec<String> {
 
 /// The judge's columns of a case: direction, motion, its numbers, the thesis's motion at
 /// the point and whether they match (empty where the thesis decides nothing).
-fn judge_columns(c: &CaseResult) -> Vec<String> {
+fn judge_columns(c: &CaseResult, thesis: bool) -> Vec<String> {
     let m = &c.motion;
     let number =
         |v: Option<f64>, digits: usize| v.map_or(String::new(), |v| format!("{v:.digits$}"));
@@ -199,7 +210,7 @@ fn judge_columns(c: &CaseResult) -> Vec<String> {
         number(m.third_order_db, 2),
         number(m.chaos_k, 4),
     ]);
-    let expected = thesis_motion(c.rpm, c.load_nm);
+    let expected = thesis_motion(c.rpm, c.load_nm).filter(|_| thesis);
     row.push(expected.map_or(String::new(), |e| e.to_string()));
     row.push(expected.map_or(String::new(), |_| physics_match(c).to_string()));
     row

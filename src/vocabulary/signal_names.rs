@@ -9,6 +9,9 @@ pub const SHAFT_TORQUE_NM: &str = "torque_intermediate_shaft_nm";
 pub const MOTOR_SPEED_RAD_S: &str = "speed1_rad_s";
 /// Speed of the gauged shaft's slip rings (rad/s); a plant signal.
 pub const SLIP_RING_SPEED_RAD_S: &str = "speed3_rad_s";
+/// A rig file's case: the watched gear's once-per-revolution pulse (V), a plant signal
+/// there (`sweep::rig_case`).
+pub const KEYPHASOR_V: &str = "keyphasor_v";
 /// Surface strain at +45° on the gauged shaft (µε).
 pub const STRAIN: &str = "strain";
 /// Unit of the chain's strain signal ([`STRAIN`]).
@@ -33,6 +36,9 @@ pub const DVM_V: &str = "dvm_v";
 /// Unit of plant signal `name`, from `rig`'s table of columns; `None` if the plant has no
 /// such signal.
 pub fn plant_unit(name: &str) -> Option<&'static str> {
+    if name == KEYPHASOR_V {
+        return Some("V");
+    }
     let column = rig::COLUMN_NAMES.iter().position(|&c| c == name)?;
     Some(rig::COLUMN_UNITS[column])
 }
@@ -44,6 +50,7 @@ pub fn plant_full_scale(unit: &str) -> f64 {
         "rad" => 1.0e6,
         "N m" => 100.0,
         "s" => 1.0e5,
+        "V" => 10.0,
         _ => 100.0,
     }
 }

@@ -4,7 +4,7 @@
 
 use crate::mesh_stiffness::PairGeometry;
 use crate::options::MeshPairs;
-use crate::tooth_fault::{FaultedGear, tooth_factors};
+use crate::tooth_fault::{FaultedGear, ToothFault, tooth_factors};
 use crate::topology::Mesh;
 
 use super::mode::MeshState;
@@ -49,9 +49,12 @@ pub struct MeshModel {
     pub driven_turns: f64,
     /// The thesis's numerical tooth shifting at each tooth pass in contact.
     pub tooth_shifting: bool,
-    /// Each tooth's stiffness factor on the driver and on the driven gear (1 healthy; a
-    /// tooth fault less), teeth numbered from the pair in mesh at angle 0.
+    /// Each tooth's stiffness factor on the driver and on the driven gear over its pair's
+    /// whole time in mesh (1 healthy; a crack or a broken-off share less), teeth numbered
+    /// from the pair in mesh at angle 0.
     pub tooth_factors: [Vec<f64>; 2],
+    /// Each tooth's further factor over its pair's single-contact stretch only (a pit).
+    pub single_stretch_factors: [Vec<f64>; 2],
     /// Whether any tooth is faulted (the pair zones are then followed in contact).
     pub faulted: bool,
 }
@@ -59,8 +62,18 @@ pub struct MeshModel {
 impl MeshModel {
     /// The constants of mesh `m`, each body's speed per unit motor speed `speed_ratio`.
     pub fn of(m: &Mesh, speed_ratio: &[f64]) -> Self {
-        let tooth_factors = tooth_factor_pair(m);
-        let faulted = tooth_factors.iter().flatten().any(|&f| f != 1.0);
+        let (single, whole): (Vec<ToothFault>, Vec<ToothFault>) = m
+            .faults
+            .iter()
+            .cloned()
+            .partition(ToothFault::single_stretch_only);
+        let tooth_factors = tooth_factor_pair(m, &whole);
+        let single_stretch_factors = tooth_factor_pair(m, &single);
+        let faulted = tooth_factors
+            .iter()
+            .chain(&single_stretch_factors)
+            .flatten()
+            .any(|&f| f != 1.0);
         MeshModel {
             gears: m.gears,
             radii_m: m
@@ -82,6 +95,7 @@ impl MeshModel {
             te_mesh_m: m.te_mesh_frequency_um * 1e-6,
             tooth_shifting: m.tooth_shifting,
             tooth_factors,
+            single_stretch_factors,
             faulted,
         }
     }
@@ -110,11 +124,10 @@ impl MeshModel {
     }
 
     /// The stiffness factor of pair `pair` (the pair that comes into mesh at the start of
-    /// the driver's tooth period `pair`): its driver tooth's times its driven tooth's.
+    /// the driver's tooth period `pair`) over its whole time in mesh: its driver tooth's
+    /// times its driven tooth's.
     pub fn pair_factor(&self, pair: i64) -> f64 {
-        let [driver, driven] = &self.tooth_factors;
-        driver[pair.rem_euclid(driver.len() as i64) as usize]
-            * driven[pair.rem_euclid(driven.len() as i64) as usize]
+        factor_of(&self.tooth_factors, pair)
     }
 
     /// The teeth (1..=z, driver's and driven's) of pair `pair`.
@@ -124,10 +137,14 @@ impl MeshModel {
     }
 
     /// The stiffness factor in pair zone `zone` (2p: pairs p − 1 and p share the load
-    /// where pairs alternate; 2p + 1: pair p alone; one pair: pair p over the period).
+    /// where pairs alternate, pair p alone over the first ε − 1 of its period where one
+    /// pair is modelled; 2p + 1: pair p alone over the rest, its single-contact stretch,
+    /// where a pit acts too).
     pub fn zone_factor(&self, zone: i64) -> f64 {
         let pair = zone.div_euclid(2);
-        if self.alternating && zone.rem_euclid(2) == 0 {
+        if zone.rem_euclid(2) == 1 {
+            self.pair_factor(pair) * factor_of(&self.single_stretch_factors, pair)
+        } else if self.alternating {
             0.5 * (self.pair_factor(pair - 1) + self.pair_factor(pair))
         } else {
             self.pair_factor(pair)
@@ -135,12 +152,20 @@ impl MeshModel {
     }
 }
 
-/// Each tooth's stiffness factor on mesh `m`'s driver and driven gear.
-fn tooth_factor_pair(m: &Mesh) -> [Vec<f64>; 2] {
+/// Pair `pair`'s factor in `factors` (driver's and driven gear's teeth): the product of
+/// its two teeth's.
+fn factor_of(factors: &[Vec<f64>; 2], pair: i64) -> f64 {
+    let [driver, driven] = factors;
+    driver[pair.rem_euclid(driver.len() as i64) as usize]
+        * driven[pair.rem_euclid(driven.len() as i64) as usize]
+}
+
+/// Each tooth's stiffness factor by `faults` on mesh `m`'s driver and driven gear.
+fn tooth_factor_pair(m: &Mesh, faults: &[ToothFault]) -> [Vec<f64>; 2] {
     let crack = crack(m);
     [
-        tooth_factors(&m.faults, FaultedGear::Driver, m.teeth[0], &crack),
-        tooth_factors(&m.faults, FaultedGear::Driven, m.teeth[1], &crack),
+        tooth_factors(faults, FaultedGear::Driver, m.teeth[0], &crack),
+        tooth_factors(faults, FaultedGear::Driven, m.teeth[1], &crack),
     ]
 }
 

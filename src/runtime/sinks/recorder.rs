@@ -7,6 +7,7 @@ use instruments::{AntiAliasFilter, FilterKind, LowPassSpec};
 use rig::Impact;
 
 use super::{Sink, SinkReport};
+use crate::chain::ChainStages;
 use crate::recording::{
     ChannelInfo, CsvFrames, CsvRecorder, FrameWriter, Uff58Channel, Uff58Recorder, WavRecorder,
     WavSamples, Written,
@@ -116,7 +117,13 @@ impl RecorderSink {
             1 => "recording".to_string(),
             n => format!("recording-{n:02}"),
         };
-        self.writers = writers(dir, &stem, plan, record)?;
+        let source = RecordingSource {
+            rate_hz: plan.rate_hz,
+            stages: &plan.chain.stages,
+            text: &plan.text,
+            name: &format!("scenario {}", plan.name),
+        };
+        self.writers = recording_writers(dir, &stem, &source, record)?;
         self.set_recording(true);
         Ok(())
     }
@@ -168,15 +175,29 @@ pub fn decimation_spec(rate_hz: f64, decimate: usize) -> LowPassSpec {
     }
 }
 
-/// The recording's writers, one per format asked for.
-fn writers(
+/// What a recording is made of: the stream's rate, the stages that name the signals'
+/// units, and the text and name its files cite.
+pub struct RecordingSource<'a> {
+    /// The stream's rate (Hz).
+    pub rate_hz: f64,
+    /// The chain's stages (each recorded signal's unit).
+    pub stages: &'a ChainStages,
+    /// The scenario or sweep file's text, as run (into a WAV's sidecar).
+    pub text: &'a str,
+    /// What made it (`scenario NAME`, `sweep NAME case K`), into UFF58's headers.
+    pub name: &'a str,
+}
+
+/// The recording's writers `dir/stem.wav` (+ sidecar), `.csv`, `.uff`, one per format
+/// asked for.
+pub fn recording_writers(
     dir: &Path,
     stem: &str,
-    plan: &Plan,
+    source: &RecordingSource,
     record: &RecordPlan,
 ) -> anyhow::Result<Vec<Box<dyn FrameWriter>>> {
     let file = |extension: &str| dir.join(format!("{stem}.{extension}"));
-    let rate = plan.rate_hz / record.decimate as f64;
+    let rate = source.rate_hz / record.decimate as f64;
     let mut writers: Vec<Box<dyn FrameWriter>> = Vec::new();
     if let Some(format) = record.wav {
         let channels = record
@@ -185,7 +206,7 @@ fn writers(
             .zip(&record.full_scale)
             .map(|(name, &scale)| ChannelInfo {
                 name: name.clone(),
-                unit: unit_of(plan, name).into(),
+                unit: unit_of(source.stages, name).into(),
                 scale: if format == WavFormat::Float32 {
                     1.0
                 } else {
@@ -202,7 +223,7 @@ fn writers(
             &file("wav"),
             rate.round() as u32,
             channels,
-            &plan.text,
+            source.text,
             samples,
         )?));
     }
@@ -215,9 +236,9 @@ fn writers(
             .signals
             .iter()
             .enumerate()
-            .map(|(i, s)| uff_channel(plan, s, i))
+            .map(|(i, s)| uff_channel(source.stages, s, i))
             .collect();
-        let source = format!("testrig scenario {}", plan.name);
+        let source = format!("testrig {}", source.name);
         writers.push(Box::new(Uff58Recorder::create(
             &file("uff"),
             channels,
@@ -230,17 +251,17 @@ fn writers(
 }
 
 /// Unit of a recorded signal (the plan has checked every name).
-fn unit_of(plan: &Plan, name: &str) -> &'static str {
-    plan.chain.stages.unit_of(name).unwrap_or("1")
+fn unit_of(stages: &ChainStages, name: &str) -> &'static str {
+    stages.unit_of(name).unwrap_or("1")
 }
 
-fn uff_channel(plan: &Plan, name: &str, index: usize) -> Uff58Channel {
+fn uff_channel(stages: &ChainStages, name: &str, index: usize) -> Uff58Channel {
     Uff58Channel {
         description: format!("testrig {name}"),
         response_name: name.chars().take(10).collect(),
         response_node: index as u32 + 1,
         ordinate_type: if name == STRAIN { 3 } else { 0 },
-        ordinate_unit: unit_of(plan, name).into(),
+        ordinate_unit: unit_of(stages, name).into(),
     }
 }
 

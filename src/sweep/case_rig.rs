@@ -1,0 +1,117 @@
+//! The rig a case runs on: the thesis's plant of a preset (`rig::RigParams`), or a rig
+//! file's rig (`rig::RigTopology`), each with its grid values set.
+
+use rig::{RigChains, RigParams, RigTopology};
+
+use crate::scenario::read_rig_file::set_rig_value;
+use crate::scenario::values::param_value;
+use crate::vocabulary::limits::check_load_within_motor;
+
+/// A case's rig.
+#[derive(Clone, Debug)]
+pub enum CaseRig {
+    /// A preset's parameters, run on the thesis's five-inertia plant (`rig::Plant`).
+    Preset(Box<RigParams>),
+    /// A rig file's rig, run on the plant of any rig (`rig::NetworkPlant`).
+    File(Box<RigTopology>),
+}
+
+/// One tooth fault of a case's rig, as `labels.csv` names it.
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct FaultLabel {
+    /// The mesh's name.
+    pub mesh: String,
+    /// `driver` or `driven`.
+    pub gear: String,
+    /// The tooth, 1..=z of that gear.
+    pub tooth: u32,
+    /// `crack`, `pit` or `broken`.
+    pub kind: String,
+    /// Its severity, 0..=1 (0: the tooth is healthy).
+    pub severity: f64,
+}
+
+impl CaseRig {
+    /// The preset's parameters; a rig file's rig is refused, `what` saying what needs them.
+    pub fn preset(&self, what: &str) -> anyhow::Result<&RigParams> {
+        match self {
+            Self::Preset(params) => Ok(params),
+            Self::File(rig) => anyhow::bail!(
+                "{what} runs on a preset's plant; rig `{}` is a rig file's",
+                rig.name
+            ),
+        }
+    }
+
+    /// Sets `name` (a preset's parameter, or a rig file's path) to `value`, checked with
+    /// the whole rig.
+    pub fn set(&mut self, name: &str, value: &toml::Value) -> anyhow::Result<()> {
+        match self {
+            Self::Preset(params) => {
+                let value = param_value(value).map_err(anyhow::Error::msg)?;
+                rig::set_param_value(params, name, value)?;
+                Ok(params.validate()?)
+            }
+            Self::File(rig) => {
+                set_rig_value(rig, name, value)?;
+                Ok(rig.check()?)
+            }
+        }
+    }
+
+    /// Whether the rig can hold `load_nm`: the motor's limit over the load for a preset,
+    /// a brake for a rig file's rig; the refusal says why.
+    pub fn check_load(&self, load_nm: f64) -> Result<(), String> {
+        match self {
+            Self::Preset(params) => {
+                check_load_within_motor(load_nm, params).map_err(|e| e.to_string())
+            }
+            Self::File(rig) if rig.brake.is_none() && load_nm != 0.0 => Err(format!(
+                "{load_nm} N m: rig `{}` has no [brake] to load; give 0",
+                rig.name
+            )),
+            Self::File(_) => Ok(()),
+        }
+    }
+
+    /// The whole rig's undamped natural frequencies (Hz), rigid-body mode left out.
+    pub fn natural_hz(&self) -> Vec<f64> {
+        match self {
+            Self::Preset(params) => RigChains::of(params)
+                .whole_rig
+                .modes()
+                .iter()
+                .map(|m| m.frequency_hz)
+                .collect(),
+            Self::File(rig) => rig.natural_frequencies_hz(),
+        }
+    }
+
+    /// Teeth of the gear whose teeth a case counts impacts on: the driving gear (a rig
+    /// file's: its first mesh's driver; none without a mesh).
+    pub fn counted_teeth(&self) -> u32 {
+        match self {
+            Self::Preset(params) => params.teeth,
+            Self::File(rig) => rig.meshes.first().map_or(0, |m| m.teeth[0]),
+        }
+    }
+
+    /// The rig's tooth faults (none for a preset: the thesis's plant has none).
+    pub fn fault_labels(&self) -> Vec<FaultLabel> {
+        let Self::File(rig) = self else {
+            return Vec::new();
+        };
+        rig.meshes
+            .iter()
+            .flat_map(|m| {
+                m.faults.iter().map(|f| FaultLabel {
+                    mesh: m.name.clone(),
+                    gear: f.gear.name().into(),
+                    tooth: f.tooth,
+                    kind: f.kind.name().into(),
+                    severity: f.severity,
+                })
+            })
+            .collect()
+    }
+}

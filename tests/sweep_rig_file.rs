@@ -1,0 +1,285 @@
+//! Sweeps on a rig file's rig (issues 33 and 35): `[rig] file = …` with `[[rig.fault]]`
+//! seeded on its meshes and any field swept by path. Each case is the rig of `testrig
+//! simulate --rig` at its point, measured through the chain on its gauged shaft, judged
+//! and its condition indicators taken; a sweep records each case and labels it.
+
+mod common;
+
+use std::path::Path;
+
+use common::{csv_rows, folder, json_of, number, rig_file, testrig, testrig_ok};
+
+/// The chain and analyser every sweep here takes (the thesis's chain, Fmax 1 kHz).
+const CHAIN: &str = r#"
+[chain.slip_rings]
+broadband_rms = 0.005
+per_rev_amplitude = 0.01
+contact_noise_v_rms = 2e-6
+
+[chain.amplifier]
+carrier_hz = 2000
+output_lowpass_hz = 1000
+
+[chain.filter]
+kind = "butterworth"
+order = 8
+cutoff_hz = 1000
+
+[analyser]
+fmax_hz = 1000
+block = 1024
+averages = 4
+window = "hanning"
+range_v = 5
+"#;
+
+/// Writes a sweep file into `dir` with `body` (its rig, grid, case and record tables)
+/// and the chain above; returns its path.
+fn sweep_file(dir: &Path, body: &str) -> String {
+    let path = dir.join("sweep.toml");
+    let text = format!("name = \"rig-file-sweep\"\nseed = 7\nrate_hz = 10240\n{body}\n{CHAIN}");
+    std::fs::write(&path, text).expect("write the sweep");
+    path.to_string_lossy().into_owned()
+}
+
+/// Issue 35, item 5, and issue 33, item 3: a sweep over a seeded pit's severity on the
+/// 1983 rig file judges each case and takes its indicators as `simulate --rig` does for
+/// the same rig, point and window (to the printed digits): the healthy case (severity 0)
+/// is labelled healthy, the pitted one pit, and its residual RMS half as large again.
+#[test]
+fn a_rig_file_sweep_judges_each_case_as_simulate_does_for_the_same_rig() {
+    let dir = folder("sweep-rig-file");
+    let fault = "[[rig.fault]]\nmesh = \"gears\"\ngear = \"driven\"\ntooth = 7\nkind = \"pit\"\nseverity = 0.0\n";
+    let sweep = sweep_file(
+        dir.path(),
+        &format!(
+            "[rig]\nfile = \"{}\"\n{fault}\n[grid]\nrpm = [600]\nload_nm = [5.424]\n[grid.set]\n\"mesh.gears.fault1.severity\" = [0.0, 0.5]\n[case]\nsettle_s = 10\nmeasure_s = 10\n",
+            rig_file("basmaji-1983")
+        ),
+    );
+    let out = dir.join("out");
+    testrig_ok(&["sweep", &sweep, "--out", out.to_str().expect("utf-8")]);
+    // The same rig as a file of its own, the fault on its mesh.
+    let text = std::fs::read_to_string(rig_file("basmaji-1983")).expect("rig");
+    let mesh_fault =
+        "[[mesh.fault]]\ngear = \"driven\"\ntooth = 7\nkind = \"pit\"\nseverity = 0.0\n";
+    let faulted = dir.join("faulted.toml");
+    std::fs::write(
+        &faulted,
+        text.replace("[motor]", &format!("{mesh_fault}\n[motor]")),
+    )
+    .expect("write");
+    let cases = csv_rows(&out.join("cases.csv"));
+    let labels = csv_rows(&out.join("labels.csv"));
+    assert_eq!(cases.len(), 2);
+    for (case, label) in cases.iter().zip(&labels) {
+        let severity = &case["mesh.gears.fault1.severity"];
+        let sim = json_of(&[
+            "simulate",
+            "--rig",
+            faulted.to_str().expect("utf-8"),
+            "--set",
+            &format!("mesh.gears.fault1.severity={severity}"),
+            "--rpm",
+            "600",
+            "--load",
+            "5.424",
+            "--settle",
+            "10",
+            "--duration",
+            "10",
+            "--rate",
+            "10240",
+            "--json",
+        ]);
+        assert_eq!(
+            case["motion"],
+            sim["motion"]["motion"].as_str().expect("motion")
+        );
+        let judged = sim["shafts"]
+            .as_array()
+            .expect("shafts")
+            .iter()
+            .find(|s| s["name"] == "intermediate")
+            .expect("the gauged shaft");
+        let close = |ours: f64, theirs: f64, what: &str| {
+            assert!(
+                (ours - theirs).abs() <= 1e-5 * theirs.abs().max(1e-9),
+                "severity {severity}, {what}: sweep {ours}, simulate {theirs}"
+            );
+        };
+        close(
+            number(case, "torque_mean_nm"),
+            judged["torque_mean_nm"].as_f64().expect("mean"),
+            "mean torque",
+        );
+        for key in ["residual_rms_nm", "fm4", "sideband_level"] {
+            close(
+                number(case, key),
+                sim["condition"][key].as_f64().expect(key),
+                key,
+            );
+        }
+        let kind = if severity == "0.0" { "healthy" } else { "pit" };
+        assert_eq!(label["fault_kind"], kind, "severity {severity}");
+    }
+    assert!(
+        number(&labels[1], "residual_rms_nm") > 1.5 * number(&labels[0], "residual_rms_nm"),
+        "the pit leaves a residual: {} against {}",
+        labels[1]["residual_rms_nm"],
+        labels[0]["residual_rms_nm"]
+    );
+}
+
+/// The chain measures the rig file's gauged shaft with the gauge's own diameter and
+/// shear modulus: on the two-stage rig (Ø40 mm, G = 80 GPa) at 1500 rev/min and 50 N m
+/// the recorded amplifier output averages the output shaft's torque times
+/// 8/(π d³ G) µε per N m times the amplifier's 3 V per 200 µε (within 1 %); the
+/// keyphasor rises once per turn of the watched gear (the first stage's wheel, 1/3 of the
+/// motor's speed); the WAV holds the measured window whole; a second run writes the same bytes.
+#[test]
+fn a_rig_file_sweep_records_its_gauged_shaft_and_keyphasor_the_same_every_run() {
+    let dir = folder("sweep-rig-record");
+    let sweep = sweep_file(
+        dir.path(),
+        &format!(
+            "[rig]\nfile = \"{}\"\n[grid]\nrpm = [1500]\nload_nm = [50.0]\n[case]\nsettle_s = 5\nmeasure_s = 4\n[record]\nsignals = [\"amplifier_v\", \"keyphasor_v\"]\nformats = [\"wav\", \"csv\"]\n",
+            rig_file("two-stage")
+        ),
+    );
+    let run = |tag: &str| {
+        let out = dir.join(tag);
+        testrig_ok(&["sweep", &sweep, "--out", out.to_str().expect("utf-8")]);
+        out
+    };
+    let (first, second) = (run("a"), run("b"));
+    let wav = |out: &Path| std::fs::read(out.join("recordings/case-00000.wav")).expect("wav");
+    assert_eq!(
+        wav(&first),
+        wav(&second),
+        "the same sweep and seed, the same bytes"
+    );
+    let labels = csv_rows(&first.join("labels.csv"));
+    assert_eq!(
+        labels[0]["recordings"],
+        "recordings/case-00000.wav recordings/case-00000.wav.json recordings/case-00000.csv"
+    );
+    let mut reader = hound::WavReader::open(first.join("recordings/case-00000.wav")).expect("WAV");
+    let spec = reader.spec();
+    assert_eq!((spec.sample_rate, spec.channels), (10240, 2));
+    let samples: Vec<f32> = reader
+        .samples::<f32>()
+        .map(|s| s.expect("sample"))
+        .collect();
+    let frames = samples.len() / 2;
+    assert_eq!(frames, 4 * 10240, "the measured window whole");
+    let amplifier_mean = samples
+        .iter()
+        .step_by(2)
+        .map(|&v| f64::from(v))
+        .sum::<f64>()
+        / frames as f64;
+    let (d, g) = (0.040_f64, 80.0e9);
+    let microstrain_per_nm = 8.0e6 / (std::f64::consts::PI * d.powi(3) * g);
+    let expected = 50.0 * microstrain_per_nm * 3.0 / 200.0;
+    assert!(
+        (amplifier_mean / expected - 1.0).abs() < 0.01,
+        "amplifier {amplifier_mean} V, 50 N m on Ø40 mm gives {expected} V"
+    );
+    let keyphasor: Vec<f32> = samples.iter().skip(1).step_by(2).copied().collect();
+    let edges = keyphasor
+        .windows(2)
+        .filter(|w| w[0] < 2.5 && w[1] >= 2.5)
+        .count();
+    let turns = 1500.0 / 3.0 / 60.0 * 4.0;
+    assert!(
+        (edges as f64 - turns).abs() <= 1.0,
+        "{edges} keyphasor edges in 4 s; the first wheel turns {turns:.2} times"
+    );
+}
+
+/// Issue 33, item 6: a rig file's sweep refuses, at its line and naming the field, what
+/// its cases cannot run: no such rig file, a preset beside it, the lab's run up and down
+/// (the thesis's plant), a grid backlash (a rig file's is its mesh's), a fault kind or
+/// mesh it does not know, a signal its cases do not offer, a rig without gauges.
+#[test]
+fn bad_rig_file_sweeps_are_refused_at_their_line() {
+    let dir = folder("sweep-rig-bad");
+    let rig = rig_file("basmaji-1983");
+    let fault = "[[rig.fault]]\nmesh = \"gears\"\ngear = \"driven\"\ntooth = 7\nkind = \"pit\"\nseverity = 0.5\n";
+    let grid = "[grid]\nrpm = [600]\nload_nm = [2.712]\n";
+    let case = "[case]\nsettle_s = 2\nmeasure_s = 2\n";
+    let ungauged = dir.join("ungauged.toml");
+    let text = std::fs::read_to_string(&rig).expect("rig");
+    let cut = text.find("[gauge]").expect("a gauge");
+    std::fs::write(&ungauged, &text[..cut]).expect("write");
+    let refusals = [
+        (
+            format!("[rig]\nfile = \"no-such-rig.toml\"\n{grid}{case}"),
+            "rig.file",
+        ),
+        (
+            format!("[rig]\npreset = \"basmaji-1983\"\nfile = \"{rig}\"\n{grid}{case}"),
+            "rig.preset",
+        ),
+        (
+            format!("[rig]\nfile = \"{rig}\"\n{grid}{case}sequence = \"up-and-down\"\n"),
+            "case.sequence",
+        ),
+        (
+            format!("[rig]\nfile = \"{rig}\"\n{grid}backlash_mm = [0.5]\n{case}"),
+            "grid.backlash_mm",
+        ),
+        (
+            format!(
+                "[rig]\nfile = \"{rig}\"\n{fault}{grid}[grid.set]\n\"mesh.gears.fault1.kind\" = [\"scuff\"]\n{case}"
+            ),
+            "grid.set.mesh.gears.fault1.kind",
+        ),
+        (
+            format!(
+                "[rig]\nfile = \"{rig}\"\n{}{grid}{case}",
+                fault.replace("\"gears\"", "\"stage9\"")
+            ),
+            "rig.fault.mesh",
+        ),
+        (
+            format!(
+                "[rig]\nfile = \"{rig}\"\n{grid}{case}[record]\nsignals = [\"speed5_rad_s\"]\nformats = [\"wav\"]\n"
+            ),
+            "record.signals",
+        ),
+        (
+            format!("[rig]\nfile = \"{}\"\n{grid}{case}", ungauged.display()),
+            "rig.file",
+        ),
+    ];
+    for (body, field) in refusals {
+        let sweep = sweep_file(dir.path(), &body);
+        let done = testrig(&[
+            "sweep",
+            &sweep,
+            "--out",
+            dir.join("out").to_str().expect("utf-8"),
+        ]);
+        let stderr = String::from_utf8_lossy(&done.stderr);
+        assert!(!done.status.success(), "{field}: accepted");
+        assert!(
+            stderr.contains("sweep.toml:") && stderr.contains(field),
+            "{field}: {stderr}"
+        );
+        assert!(!stderr.contains("panicked"), "{field}: {stderr}");
+    }
+}
+
+/// Issue 35, item 5, read by the data set's users' readers: pandas and scipy
+/// (`tests/dataset/read_dataset.py`).
+#[test]
+#[ignore = "needs Python modules (python3 -m pip install -r tests/requirements.txt); run by .ci/run"]
+fn the_fault_dataset_reads_in_pandas_and_scipy() {
+    common::run_python_check(
+        "dataset/read_dataset.py",
+        "fault-dataset-python",
+        &["numpy", "pandas", "scipy"],
+    );
+}
