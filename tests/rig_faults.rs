@@ -1,6 +1,7 @@
 //! Tooth faults on a rig file's mesh (`[[mesh.fault]]`, issue 35): a pitted tooth's pair
-//! keeps the unpitted share of its stiffness while it is in mesh (the quasi-static mesh
-//! deflection there is F / (k (1 − s))); a tooth broken through leaves its pair as free
+//! keeps the unpitted share of its stiffness over its single-contact stretch (the
+//! quasi-static mesh deflection there is F / (k (1 − s))), a broken-off share of the face
+//! over its whole time in mesh; a tooth broken through leaves its pair as free
 //! play, so once a revolution of its gear the teeth part and the next pair strikes as it
 //! comes into mesh (then, after a bounce, once more within that tooth period), where the
 //! healthy rig runs without an impact; bad faults are refused at their line.
@@ -8,71 +9,10 @@
 mod common;
 mod rig_support;
 
-use rig::{NetworkStart, RigTopology, Schedule};
+use rig::{NetworkStart, Schedule};
+use rig_support::faulted::{deflection_m, rig_damped, rig_with};
 use rig_support::{RATE_HZ, body, plant, run};
 use testrig::scenario::read_rig_file;
-
-/// The 1983 rig file without tooth shifting or backlash variation (a plain pair), with
-/// `fault` appended to its mesh.
-fn rig_with(dir: &std::path::Path, fault: &str) -> RigTopology {
-    rig_damped(dir, fault, None)
-}
-
-/// [`rig_with`], each shaft's damping `shaft_damping` (N m s/rad) where given.
-fn rig_damped(dir: &std::path::Path, fault: &str, shaft_damping: Option<f64>) -> RigTopology {
-    let path = format!(
-        "{}/scenarios/rigs/basmaji-1983.toml",
-        env!("CARGO_MANIFEST_DIR")
-    );
-    let text = std::fs::read_to_string(path).expect("rig file");
-    let plain = text
-        .replace("tooth_shifting = true", "tooth_shifting = false")
-        .replace("backlash_variation = 0.38", "backlash_variation = 0.0")
-        .replace("[motor]", &format!("{fault}\n[motor]"));
-    let plain = match shaft_damping {
-        Some(c) => plain
-            .lines()
-            .map(|l| {
-                if l.starts_with("damping_nms_per_rad") {
-                    format!("damping_nms_per_rad = {c}")
-                } else {
-                    l.to_string()
-                }
-            })
-            .collect::<Vec<_>>()
-            .join("\n"),
-        None => plain,
-    };
-    let file = dir.join("faulted.toml");
-    std::fs::write(&file, plain).expect("write");
-    read_rig_file(&file).expect("a rig file with a fault")
-}
-
-/// `rig` at 600 rev/min and 5.424 N m from steady motion, settled 10 s, measured 10 s at
-/// 10.24 kHz, as `simulate --rig` runs it.
-fn loaded_600_rpm(rig: &RigTopology) -> testrig::rig_point::RigPointRun {
-    let spec = testrig::rig_point::RigPointSpec {
-        rig,
-        rpm: 600.0,
-        load_nm: 5.424,
-        settle_s: 10.0,
-        duration_s: 10.0,
-        rate_hz: 10_240.0,
-        approach: rig::Approach::Static,
-    };
-    testrig::rig_point::run_rig_point(&spec, testrig::steady_point::FLAG_NAMES, |_| Ok(()))
-        .expect("run")
-}
-
-/// The mesh's deflection along the line of action, r_b (θ_driver − θ_driven) (m; each
-/// body's angle in its own sense of rotation).
-fn deflection_m(rig: &RigTopology, block: &rig::NetworkBlock) -> Vec<f64> {
-    let r_b = rig.meshes[0].base_radii_m()[0];
-    let (a, b) = (body(rig, "input_flywheel"), body(rig, "driven_gear"));
-    (0..block.len())
-        .map(|n| r_b * (block.angle_rad[a][n] - block.angle_rad[b][n]))
-        .collect()
-}
 
 /// A pit of half the contact width on tooth 7 of the driven gear: over its pair's
 /// single-contact stretch (the last 2 − ε of the tooth period) the pair keeps half its
@@ -322,52 +262,6 @@ fn alternating_pairs_with(kind: &str, cases: &[(f64, f64, f64)]) {
     }
 }
 
-/// The condition indicators of the faulted gear's synchronous average (`simulate --rig`'s
-/// `condition`) grow with a pit and with a root crack: at 600 rev/min and 5.424 N m the
-/// residual signal's RMS, FM4 and the first sidebands of the mesh frequency (mesh order ±
-/// the gear's rotation) rise with every step of severity 0.2 to 0.8, and the healthy pair
-/// leaves no residual.
-#[test]
-fn the_condition_indicators_rise_with_a_pits_and_a_cracks_severity() {
-    let dir = common::folder("fault-indicators");
-    for kind in ["pit", "crack"] {
-        let rig = rig_with(
-            dir.path(),
-            &format!(
-                "[[mesh.fault]]\ngear = \"driven\"\ntooth = 7\nkind = \"{kind}\"\nseverity = 0.0\n"
-            ),
-        );
-        let indicators = |severity: f64| {
-            let mut faulted = rig.clone();
-            faulted
-                .set_field("mesh.gears.fault1.severity", severity)
-                .expect("set");
-            let c = loaded_600_rpm(&faulted)
-                .summary
-                .condition
-                .expect("a condition");
-            assert_eq!(c["gear"], "driven_gear");
-            assert!(c["revolutions_averaged"].as_u64().expect("count") >= 90);
-            let number = |key: &str| c[key].as_f64().expect(key);
-            (
-                number("residual_rms_nm"),
-                number("fm4"),
-                number("sideband_level"),
-            )
-        };
-        let (healthy_residual, _, _) = indicators(0.0);
-        assert!(healthy_residual < 1e-9, "{kind}: {healthy_residual} N m");
-        let faulted: Vec<(f64, f64, f64)> = [0.2, 0.4, 0.6, 0.8].map(indicators).to_vec();
-        for pair in faulted.windows(2) {
-            let (a, b) = (pair[0], pair[1]);
-            assert!(b.0 > a.0, "{kind}: residual RMS {} then {}", a.0, b.0);
-            assert!(b.1 > a.1, "{kind}: FM4 {} then {}", a.1, b.1);
-            assert!(b.2 > a.2, "{kind}: sideband level {} then {}", a.2, b.2);
-        }
-        assert!(faulted[0].0 > 1e3 * healthy_residual.max(1e-12));
-    }
-}
-
 /// Run-out of either gear (`run_out_driver_um`, `run_out_driven_um`): a transmission error
 /// R cos θ once per revolution of that gear. Quasi-statically the loaded pair keeps its
 /// overlap, so the deflection swings by −R cos θ at each gear's own rotation: on a
@@ -413,55 +307,6 @@ fn phasor(t: &[f64], x: &[f64], hz: f64) -> (f64, f64) {
         s += (xi - mean) * (w * ti).sin();
     }
     (2.0 * c / n, 2.0 * s / n)
-}
-
-/// `simulate --rig … --out` draws the faulted gear's averaged revolution with its faulted
-/// tooth marked; the average's dip lies where that tooth is in mesh.
-#[test]
-fn simulate_out_draws_the_averaged_revolution_with_the_faulted_tooth() {
-    let dir = common::folder("fault-average");
-    let fault = "[[mesh.fault]]\ngear = \"driven\"\ntooth = 7\nkind = \"crack\"\nseverity = 0.5\n";
-    rig_with(dir.path(), fault);
-    let file = dir.path().join("faulted.toml");
-    let out = dir.path().join("out");
-    let summary = common::json_of(&[
-        "simulate",
-        "--rig",
-        file.to_str().expect("utf-8"),
-        "--rpm",
-        "600",
-        "--load",
-        "5.424",
-        "--settle",
-        "10",
-        "--duration",
-        "10",
-        "--rate",
-        "10240",
-        "--out",
-        out.to_str().expect("utf-8"),
-        "--json",
-    ]);
-    assert_eq!(summary["condition"]["gear"], "driven_gear");
-    let png = std::fs::read(out.join("synchronous-average.png")).expect("the plot");
-    assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
-    assert!(out.join("synchronous-average.svg").exists());
-    let manifest = common::read_manifest(&out);
-    assert!(common::has_file(&manifest, "synchronous-average.png"));
-    // The averaged revolution's lowest torque falls where tooth 7 is in mesh: over
-    // [6/30, 7/30) of the driven gear's turn from its pulse.
-    let rig = read_rig_file(&file).expect("rig");
-    let average = loaded_600_rpm(&rig).average_nm.expect("an average");
-    let lowest = average
-        .iter()
-        .enumerate()
-        .min_by(|a, b| a.1.total_cmp(b.1))
-        .map(|(i, _)| i as f64 / average.len() as f64)
-        .expect("points");
-    assert!(
-        (6.0 / 30.0..7.0 / 30.0).contains(&lowest),
-        "the lowest torque at {lowest} of the turn"
-    );
 }
 
 /// A mesh without `stiffness_n_per_m` takes its stiffness from its face width by the

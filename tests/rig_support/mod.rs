@@ -3,6 +3,8 @@
 
 #![allow(dead_code)]
 
+pub mod faulted;
+
 use rig::{NetworkBlock, NetworkPlant, NetworkStart, RigTopology, Schedule, Track};
 use testrig::scenario::read_rig_file;
 
