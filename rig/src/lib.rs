@@ -160,7 +160,7 @@ pub use presets::{DEFAULT_PRESET, PRESET_NAMES, preset};
 pub use records::{Flank, Impact, RevolutionSample};
 pub use regime::{Regime, RegimeCriteria, classify, classify_scaled, impacts_per_tooth};
 pub use schedule::{LiveCeiling, MAX_SPEED_RPM, Schedule, SetPoints, Track};
-pub use signals::{COLUMN_NAMES, COLUMN_UNITS, INTERMEDIATE_SHAFT, SignalBlock};
+pub use signals::{COLUMN_NAMES, COLUMN_UNITS, DRIVEN_GEAR, INTERMEDIATE_SHAFT, SignalBlock};
 pub use steady::{SteadySummary, SteadyWindow, run_steady};
 pub use tooth_fault::{FaultKind, FaultedGear, ToothFault};
 pub use topology::{

@@ -24,6 +24,9 @@ pub struct SignalBlock {
 /// The output shaft (intermediate, strain-gauged) in [`SignalBlock::shaft_torque_nm`].
 pub const INTERMEDIATE_SHAFT: usize = 1;
 
+/// The driven gear (M3) in [`SignalBlock::angle_rad`] and [`SignalBlock::speed_rad_s`].
+pub const DRIVEN_GEAR: usize = 2;
+
 /// Names with units of the columns, in the order [`SignalBlock::row`] gives them.
 pub const COLUMN_NAMES: [&str; 18] = [
     "time_s",

@@ -6,15 +6,13 @@
 //! caller names.
 
 use instruments::{ConditionIndicators, condition_indicators, gear_signals, synchronous_average};
-use rig::{INTERMEDIATE_SHAFT, SignalBlock};
+use rig::{DRIVEN_GEAR, INTERMEDIATE_SHAFT, SignalBlock};
 use serde_json::{Value, json};
 
 /// Points per averaged revolution: 1 024 resolve the mesh harmonics of up to 512 orders.
 pub const POINTS_PER_REVOLUTION: usize = 1024;
 /// Most torque samples kept (the latest): 2^22, 32 MiB.
 const KEPT_SAMPLES_MAX: usize = 1 << 22;
-/// The driven gear among the rig's five bodies (M3).
-const DRIVEN_GEAR: usize = 2;
 
 /// A window's torque and the driven gear's pulses, block by block.
 #[derive(Clone, Debug)]

@@ -5,8 +5,8 @@ use std::path::Path;
 
 use instruments::Line;
 use rig::{
-    Approach, Judgement, Plant, PlantConfig, Regime, RegimeCriteria, SignalBlock, SteadySummary,
-    SteadyWindow,
+    Approach, DRIVEN_GEAR, Judgement, Plant, PlantConfig, Regime, RegimeCriteria, SignalBlock,
+    SteadySummary, SteadyWindow,
 };
 use serde::{Deserialize, Serialize};
 
@@ -14,10 +14,12 @@ use super::case_recording::CaseRecording;
 use super::case_rig::{CaseRig, FaultLabel};
 use super::grid::{Case, SweepPlan};
 use super::lines::{OrderLine, order_line, peaks};
+use super::measured_condition::MeasuredCondition;
 use super::rig_case::run_rig_case;
 use super::sequence::Direction;
 use crate::chain::{
-    AdcChoice, AnalyserWords, GearCondition, GearConditionReport, InlineChain, Measurement, Truth,
+    AdcChoice, AnalyserWords, GearCondition, GearConditionReport, InlineChain,
+    MICROSTRAIN_PER_STRAIN, Measurement, Truth,
 };
 use crate::runtime::rolling_regime::REGIME_WINDOW_S;
 use crate::vocabulary::frame::{Frame, SignalNames};
@@ -93,6 +95,11 @@ pub struct CaseResult {
     /// in case files written before they were kept).
     #[serde(default)]
     pub condition: Option<CaseCondition>,
+    /// The same gear's indicators as the chain measures them: the analyser's input read
+    /// as torque by the chain's static calibration, noise and all (`None` where that
+    /// input has no calibration, or in case files written before they were kept).
+    #[serde(default)]
+    pub measured_condition: Option<CaseCondition>,
     /// The rig's tooth faults (a rig file's; none on a preset's plant).
     #[serde(default)]
     pub faults: Vec<FaultLabel>,
@@ -262,6 +269,8 @@ pub fn measure_case(
         total - (REGIME_WINDOW_S.min(plan.measure_s / 2.0) * plan.rate_hz).round() as usize;
     let mut block = SignalBlock::default();
     let mut condition = GearCondition::new(plan.rate_hz);
+    let mut measured =
+        MeasuredCondition::new(plan, plan.chain.strain_per_nm * MICROSTRAIN_PER_STRAIN);
     let mut done = 0;
     while done < total {
         let until = if done < lead_samples {
@@ -289,6 +298,13 @@ pub fn measure_case(
         if done >= lead_samples {
             window.add_block(&block, plant.set_points().speed_rad_s());
             condition.add(&block);
+            if let Some(m) = &mut measured {
+                m.add(
+                    &block.time_s,
+                    &block.angle_rad[DRIVEN_GEAR],
+                    &frame.channels[input],
+                );
+            }
             measurement.push(&frame.channels[input]);
             if let Some(r) = &mut recording {
                 r.write(&frame)?;
@@ -314,6 +330,7 @@ pub fn measure_case(
         .report(teeth as usize)
         .as_ref()
         .map(CaseCondition::of);
+    result.measured_condition = measured.and_then(|m| m.report(teeth));
     if let Some(r) = recording {
         result.recordings = r.finish()?;
     }
@@ -366,6 +383,7 @@ pub(crate) fn case_result(
         torque_ac_rms_nm: s.torque_ac_rms_nm,
         speed_offset_rpm: s.speed_offset_rpm,
         condition: None,
+        measured_condition: None,
         faults: Vec::new(),
         recordings: Vec::new(),
         averages,

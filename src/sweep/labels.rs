@@ -5,7 +5,7 @@
 use std::path::{Path, PathBuf};
 
 use super::case::CaseResult;
-use super::table::{CONDITION_COLUMNS, condition_columns};
+use super::table::{condition_columns, condition_header};
 use crate::recording::CsvRecorder;
 
 /// Writes `dir/labels.csv` for `cases`, the swept parameters' columns named by `swept`.
@@ -29,7 +29,7 @@ pub fn write_labels(dir: &Path, swept: &[String], cases: &[CaseResult]) -> anyho
         ]
         .map(String::from),
     );
-    header.extend(CONDITION_COLUMNS.map(String::from));
+    header.extend(condition_header());
     let mut csv = CsvRecorder::create(&dir.join("labels.csv"), &header)?;
     for c in cases {
         let mut row = vec![
@@ -47,7 +47,8 @@ pub fn write_labels(dir: &Path, swept: &[String], cases: &[CaseResult]) -> anyho
             format!("{:.6}", c.torque_ac_rms_nm),
             c.seed.to_string(),
         ]);
-        row.extend(condition_columns(c));
+        row.extend(condition_columns(c.condition.as_ref()));
+        row.extend(condition_columns(c.measured_condition.as_ref()));
         csv.write_row(&row)?;
     }
     csv.finish()

@@ -25,6 +25,7 @@ pub(crate) mod held_motions;
 pub(crate) mod knock;
 pub(crate) mod labels;
 pub(crate) mod lines;
+pub(crate) mod measured_condition;
 pub(crate) mod meta;
 pub(crate) mod report;
 pub(crate) mod rig_case;

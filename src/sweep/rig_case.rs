@@ -19,6 +19,7 @@ use rig::{Approach, Motion, NetworkBlock, Regime, RigTopology, SteadySummary, im
 use super::case::{CaseCondition, CaseResult, KEPT_REVOLUTIONS, case_result, chain_lead_s};
 use super::case_recording::CaseRecording;
 use super::grid::{Case, SweepPlan};
+use super::measured_condition::MeasuredCondition;
 use crate::chain::{AdcChoice, AnalyserWords, ChainStages, InlineChain, Measurement, Truth};
 use crate::rig_point::{RigPointSpec, RigWindow, judged_shaft, settled_rig_plant, watched_gear};
 use crate::steady_point::InputNames;
@@ -123,6 +124,11 @@ pub fn run_rig_case(
     let mut recording = CaseRecording::start(plan, case, sweep_dir, &names)?;
     let mut window = RigWindow::new(rig, plan.rate_hz);
     let roles = RoleColumns::of(rig);
+    let gauge_microstrain_per_nm = rig
+        .gauge
+        .as_ref()
+        .map_or(f64::NAN, |g| g.microstrain_per_nm());
+    let mut measured = MeasuredCondition::new(plan, gauge_microstrain_per_nm);
     let lead = (lead_s * plan.rate_hz).round() as usize;
     let total = lead + (plan.measure_s * plan.rate_hz).round() as usize;
     let mut block = NetworkBlock::new(rig.bodies.len(), rig.shafts.len(), rig.meshes.len());
@@ -134,6 +140,10 @@ pub fn run_rig_case(
         let frame = chain.process(roles.frame(&block, done as u64));
         if done >= lead {
             window.add(&block);
+            if let Some(m) = &mut measured {
+                let angle = &block.angle_rad[roles.watched_gear];
+                m.add(&block.time_s, angle, &frame.channels[input]);
+            }
             measurement.push(&frame.channels[input]);
             if let Some(r) = &mut recording {
                 r.write(&frame)?;
@@ -171,6 +181,8 @@ pub fn run_rig_case(
     let kept_from = all_revolutions.len().saturating_sub(KEPT_REVOLUTIONS);
     result.revolution_torque_nm = all_revolutions[kept_from..].to_vec();
     result.condition = window.condition_report().as_ref().map(CaseCondition::of);
+    result.measured_condition =
+        watched_gear(rig).and_then(|(_, teeth)| measured.and_then(|m| m.report(teeth)));
     result.faults = case.rig.fault_labels();
     if let Some(r) = recording {
         result.recordings = r.finish()?;

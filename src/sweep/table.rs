@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 
 use anyhow::Context;
 
-use super::case::CaseResult;
+use super::case::{CaseCondition, CaseResult};
 use super::thesis::{physics_match, thesis_motion};
 use crate::recording::{CsvRecorder, PartialFile};
 
@@ -107,7 +107,7 @@ pub fn write_table(
         ]
         .map(String::from),
     );
-    header.extend(CONDITION_COLUMNS.map(String::from));
+    header.extend(condition_header());
     let mut csv = CsvRecorder::create(&dir.join("cases.csv"), &header)?;
     for c in cases {
         let mut row: Vec<String> = vec![
@@ -147,14 +147,23 @@ pub fn write_table(
         ]);
         row.extend(judge_columns(c, thesis));
         row.push(format!("{:.6}", c.kick_rad_s));
-        row.extend(condition_columns(c));
+        row.extend(condition_columns(c.condition.as_ref()));
+        row.extend(condition_columns(c.measured_condition.as_ref()));
         csv.write_row(&row)?;
     }
     csv.finish()
 }
 
+/// The condition indicators' column names: the true torque's, then the measured
+/// signal's (`measured_` before each name).
+pub fn condition_header() -> Vec<String> {
+    let truth = CONDITION_COLUMNS.map(String::from);
+    let measured = CONDITION_COLUMNS.map(|c| format!("measured_{c}"));
+    truth.into_iter().chain(measured).collect()
+}
+
 /// The condition indicators' column names, in the order of [`condition_columns`].
-pub const CONDITION_COLUMNS: [&str; 10] = [
+const CONDITION_COLUMNS: [&str; 10] = [
     "fm0",
     "fm4",
     "m6a",
@@ -167,9 +176,9 @@ pub const CONDITION_COLUMNS: [&str; 10] = [
     "revolutions_averaged",
 ];
 
-/// The condition indicators' columns of a case (empty where none were taken).
-pub fn condition_columns(c: &CaseResult) -> Vec<String> {
-    match &c.condition {
+/// The condition indicators' columns of `condition` (empty where none were taken).
+pub fn condition_columns(condition: Option<&CaseCondition>) -> Vec<String> {
+    match condition {
         None => vec![String::new(); 10],
         Some(i) => {
             let mut row: Vec<String> = [
