@@ -1,20 +1,26 @@
 //! Sweeps: a grid of cases (speed, load, backlash, any parameter), each run at fixed set
 //! points through the chain and the analyser, in parallel, shardable and resumable.
 //!
-//! Files: `sweep_toml.rs` (grid, case timing, chain and analyser as in a scenario),
-//! `grid.rs` (the grid expanded into cases; each case's start is a `rig::Approach`),
+//! Files: `sweep_toml.rs` (grid, case timing, chain, analyser and recordings as in a
+//! scenario), `grid.rs` (the grid expanded into cases; each case's start is a
+//! `rig::Approach`), `case_rig.rs` (a case's rig: a preset's, or a rig file's with its
+//! faults),
 //! `sequence.rs` (`Sequence`: each point on its own, or up and down;
 //! `Direction`), `case.rs` (one case: plant settled, the chain inline into ADC and
-//! analyser, regime and the judge's motion), `series.rs` (the lab's run: one plant per load
+//! analyser, regime and the judge's motion), `rig_case.rs` (a rig file's case: the plant of
+//! any rig through the same chain), `measured_condition.rs` (the indicators of the
+//! signal as the chain measures it), `case_recording.rs` (a case's WAV/CSV/UFF58 in
+//! `recordings/`), `series.rs` (the lab's run: one plant per load
 //! stepping the speeds up and back down; a series is one unit of work), `knock.rs` (a
 //! point and its knocked repeats on one plant), `held_motions.rs` (the motions each point
 //! held, by approach), `lines.rs` (order
-//! lines over their local floor), `table.rs` (a JSON per case, `cases.csv`), `meta.rs`
+//! lines over their local floor), `table.rs` (a JSON per case, `cases.csv`), `labels.rs`
+//! (`labels.csv`: each case's recordings, fault, point, motion and indicators), `meta.rs`
 //! (`sweep.json`), `shard.rs` (`--shard`, SLURM arrays), `runner.rs` (rayon pool, resume,
 //! assembly of table and plots, also for `merge`), `thesis.rs` (what the thesis saw at each
 //! point and how a case is held against it), `facts.rs` (the thesis's facts against the
 //! judged motion), `report.rs` (`report.md`: the scores, hysteresis, where the motor cannot
-//! hold the set speed)
+//! hold the set speed), `rig_report.rs` (a rig file's sweep's `report.md`, case by case)
 
 pub(crate) mod case;
 pub(crate) mod case_recording;
