@@ -9,6 +9,8 @@ use instruments::{ConditionIndicators, condition_indicators, gear_signals, synch
 use rig::{DRIVEN_GEAR, INTERMEDIATE_SHAFT, SignalBlock};
 use serde_json::{Value, json};
 
+use crate::vocabulary::GearIndicators;
+
 /// Points per averaged revolution: 1 024 resolve the mesh harmonics of up to 512 orders.
 pub const POINTS_PER_REVOLUTION: usize = 1024;
 /// Most torque samples kept (the latest): 2^22, 32 MiB.
@@ -118,6 +120,25 @@ impl GearCondition {
             residual_rms_nm,
             average_nm: average,
         })
+    }
+}
+
+impl From<&GearConditionReport> for GearIndicators {
+    fn from(report: &GearConditionReport) -> Self {
+        let i = &report.indicators;
+        Self {
+            revolutions: report.revolutions,
+            fm0: i.fm0,
+            fm4: i.fm4,
+            m6a: i.m6a,
+            m8a: i.m8a,
+            na4: i.na4,
+            sideband_level: i.sideband_level,
+            rms_nm: i.rms,
+            crest_factor: i.crest_factor,
+            kurtosis: i.kurtosis,
+            residual_rms_nm: report.residual_rms_nm,
+        }
     }
 }
 

@@ -9,6 +9,9 @@ use std::sync::Arc;
 
 use rig::{Impact, RegimeCriteria, RevolutionSample, SetPoints, SignalBlock, SteadyWindow};
 
+use crate::chain::GearCondition;
+use crate::vocabulary::GearIndicators;
+
 use super::rolling_regime::REGIME_WINDOW_S;
 use crate::vocabulary::PointVerdict;
 
@@ -22,11 +25,20 @@ struct Span {
 /// The set speed (rev/min) and load (N m) a window was opened under.
 type HeldSetPoints = (f64, f64);
 
+/// A point's window being filled: its index, its summary, the driven gear's average and
+/// the set points it was opened under.
+struct OpenWindow {
+    index: usize,
+    window: SteadyWindow,
+    condition: GearCondition,
+    held: HeldSetPoints,
+}
+
 /// The windows of a run's points and the one being filled.
 pub struct PointJudge {
     spans: Vec<Span>,
     next: usize,
-    open: Option<(usize, SteadyWindow, HeldSetPoints)>,
+    open: Option<OpenWindow>,
     teeth: u32,
     step_s: f64,
 }
@@ -76,19 +88,19 @@ impl PointJudge {
     ) -> Vec<Arc<PointVerdict>> {
         let held = (set.speed_rpm, set.load_nm);
         let mut verdicts = Vec::new();
-        if let Some((index, _, opened)) = &self.open
-            && (start >= self.spans[*index].to || *opened != held)
+        if let Some(open) = &self.open
+            && (start >= self.spans[open.index].to || open.held != held)
         {
             verdicts.extend(self.close());
         }
         if self.open.is_none() {
             self.open_window_at(start, held);
         }
-        if let Some((_, window, _)) = &mut self.open {
-            let speed_rad_s = set.speed_rad_s();
-            window.add_block(block, speed_rad_s);
-            window.add_impacts(impacts);
-            window.add_revolutions(revolutions);
+        if let Some(open) = &mut self.open {
+            open.window.add_block(block, set.speed_rad_s());
+            open.window.add_impacts(impacts);
+            open.window.add_revolutions(revolutions);
+            open.condition.add(block);
         }
         if last {
             verdicts.extend(self.close());
@@ -105,8 +117,12 @@ impl PointJudge {
                 continue;
             }
             if start >= span.from {
-                let window = SteadyWindow::new(self.teeth, self.step_s);
-                self.open = Some((self.next, window, held));
+                self.open = Some(OpenWindow {
+                    index: self.next,
+                    window: SteadyWindow::new(self.teeth, self.step_s),
+                    condition: GearCondition::new(1.0 / self.step_s),
+                    held,
+                });
                 self.next += 1;
             }
             return;
@@ -115,11 +131,13 @@ impl PointJudge {
 
     /// The verdict on the open window, which is closed.
     fn close(&mut self) -> Option<Arc<PointVerdict>> {
-        let (index, window, _) = self.open.take()?;
+        let open = self.open.take()?;
+        let report = open.condition.report(self.teeth as usize);
         Some(Arc::new(PointVerdict {
-            index,
-            from_s: self.spans[index].from as f64 * self.step_s,
-            summary: window.summary(&RegimeCriteria::default()),
+            index: open.index,
+            from_s: self.spans[open.index].from as f64 * self.step_s,
+            summary: open.window.summary(&RegimeCriteria::default()),
+            condition: report.as_ref().map(GearIndicators::from),
         }))
     }
 }

@@ -18,11 +18,13 @@ use super::measured_condition::MeasuredCondition;
 use super::rig_case::run_rig_case;
 use super::sequence::Direction;
 use crate::chain::{
-    AdcChoice, AnalyserWords, GearCondition, GearConditionReport, InlineChain,
-    MICROSTRAIN_PER_STRAIN, Measurement, Truth,
+    AdcChoice, AnalyserWords, GearCondition, InlineChain, MICROSTRAIN_PER_STRAIN, Measurement,
+    Truth,
 };
 use crate::runtime::rolling_regime::REGIME_WINDOW_S;
+use crate::vocabulary::GearIndicators;
 use crate::vocabulary::frame::{Frame, SignalNames};
+use crate::vocabulary::gear_indicators::null_as_nan;
 use crate::vocabulary::seeds::NoiseSource;
 
 /// Chain time run before the analyser starts, so the filters have settled (s).
@@ -94,12 +96,12 @@ pub struct CaseResult {
     /// synchronously over its revolutions in the window (`None` under two revolutions, or
     /// in case files written before they were kept).
     #[serde(default)]
-    pub condition: Option<CaseCondition>,
+    pub condition: Option<GearIndicators>,
     /// The same gear's indicators as the chain measures them: the analyser's input read
     /// as torque by the chain's static calibration, noise and all (`None` where that
     /// input has no calibration, or in case files written before they were kept).
     #[serde(default)]
-    pub measured_condition: Option<CaseCondition>,
+    pub measured_condition: Option<GearIndicators>,
     /// The rig's tooth faults (a rig file's; none on a preset's plant).
     #[serde(default)]
     pub faults: Vec<FaultLabel>,
@@ -112,69 +114,6 @@ pub struct CaseResult {
     pub spectrum: Vec<(f64, f64)>,
     /// The lines that stand out: (Hz, V² rms).
     pub peaks: Vec<(f64, f64)>,
-}
-
-/// A case's condition indicators (Lebold et al. 2000; `instruments::condition_indicators`);
-/// a number the signal leaves undefined (a constant torque's FM4) is NaN, null in JSON.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-pub struct CaseCondition {
-    /// Revolutions averaged.
-    pub revolutions: usize,
-    /// FM0.
-    #[serde(deserialize_with = "null_as_nan")]
-    pub fm0: f64,
-    /// FM4.
-    #[serde(deserialize_with = "null_as_nan")]
-    pub fm4: f64,
-    /// M6A.
-    #[serde(deserialize_with = "null_as_nan")]
-    pub m6a: f64,
-    /// M8A.
-    #[serde(deserialize_with = "null_as_nan")]
-    pub m8a: f64,
-    /// NA4.
-    #[serde(deserialize_with = "null_as_nan")]
-    pub na4: f64,
-    /// First sidebands of the first mesh harmonic over the average's RMS.
-    #[serde(deserialize_with = "null_as_nan")]
-    pub sideband_level: f64,
-    /// RMS of the average about its mean (N m).
-    #[serde(deserialize_with = "null_as_nan")]
-    pub rms_nm: f64,
-    /// Crest factor of the average.
-    #[serde(deserialize_with = "null_as_nan")]
-    pub crest_factor: f64,
-    /// Kurtosis of the average.
-    #[serde(deserialize_with = "null_as_nan")]
-    pub kurtosis: f64,
-    /// RMS of the residual signal (N m).
-    #[serde(deserialize_with = "null_as_nan")]
-    pub residual_rms_nm: f64,
-}
-
-impl CaseCondition {
-    /// The indicators of a window's report.
-    pub fn of(report: &GearConditionReport) -> Self {
-        let i = &report.indicators;
-        Self {
-            revolutions: report.revolutions,
-            fm0: i.fm0,
-            fm4: i.fm4,
-            m6a: i.m6a,
-            m8a: i.m8a,
-            na4: i.na4,
-            sideband_level: i.sideband_level,
-            rms_nm: i.rms,
-            crest_factor: i.crest_factor,
-            kurtosis: i.kurtosis,
-            residual_rms_nm: report.residual_rms_nm,
-        }
-    }
-}
-
-/// Reads a number that JSON holds as null (serde_json writes NaN so) back as NaN.
-fn null_as_nan<'de, D: serde::Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
-    Option::<f64>::deserialize(d).map(|v| v.unwrap_or(f64::NAN))
 }
 
 /// The plant configuration of every case of `plan`.
@@ -329,7 +268,7 @@ pub fn measure_case(
     result.condition = condition
         .report(teeth as usize)
         .as_ref()
-        .map(CaseCondition::of);
+        .map(GearIndicators::from);
     result.measured_condition = measured.and_then(|m| m.report(teeth));
     if let Some(r) = recording {
         result.recordings = r.finish()?;

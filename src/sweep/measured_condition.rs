@@ -4,9 +4,9 @@
 //! gear's once-per-revolution pulses. The true torque's indicators beside it are the
 //! ground truth; these are what a condition-monitoring system on the rig would compute.
 
-use super::case::CaseCondition;
 use super::grid::SweepPlan;
 use crate::chain::GearCondition;
+use crate::vocabulary::GearIndicators;
 
 /// The measured condition of one case's window.
 pub struct MeasuredCondition {
@@ -36,10 +36,10 @@ impl MeasuredCondition {
 
     /// The indicators of the window for a gear of `teeth` teeth, if two revolutions were
     /// taken.
-    pub fn report(&self, teeth: u32) -> Option<CaseCondition> {
+    pub fn report(&self, teeth: u32) -> Option<GearIndicators> {
         self.condition
             .report(teeth as usize)
             .as_ref()
-            .map(CaseCondition::of)
+            .map(GearIndicators::from)
     }
 }

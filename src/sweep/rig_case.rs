@@ -16,13 +16,14 @@ use std::path::Path;
 use instruments::ShaftStrain;
 use rig::{Approach, Motion, NetworkBlock, Regime, RigTopology, SteadySummary, impacts_per_tooth};
 
-use super::case::{CaseCondition, CaseResult, KEPT_REVOLUTIONS, case_result, chain_lead_s};
+use super::case::{CaseResult, KEPT_REVOLUTIONS, case_result, chain_lead_s};
 use super::case_recording::CaseRecording;
 use super::grid::{Case, SweepPlan};
 use super::measured_condition::MeasuredCondition;
 use crate::chain::{AdcChoice, AnalyserWords, ChainStages, InlineChain, Measurement, Truth};
 use crate::rig_point::{RigPointSpec, RigWindow, judged_shaft, settled_rig_plant, watched_gear};
 use crate::steady_point::InputNames;
+use crate::vocabulary::GearIndicators;
 use crate::vocabulary::frame::{Frame, SignalNames};
 use crate::vocabulary::seeds::NoiseSource;
 use crate::vocabulary::signal_names::{
@@ -180,7 +181,7 @@ pub fn run_rig_case(
     let all_revolutions = window.revolution_torque_nm(&revolutions_s, plan.rate_hz);
     let kept_from = all_revolutions.len().saturating_sub(KEPT_REVOLUTIONS);
     result.revolution_torque_nm = all_revolutions[kept_from..].to_vec();
-    result.condition = window.condition_report().as_ref().map(CaseCondition::of);
+    result.condition = window.condition_report().as_ref().map(GearIndicators::from);
     result.measured_condition =
         watched_gear(rig).and_then(|(_, teeth)| measured.and_then(|m| m.report(teeth)));
     result.faults = case.rig.fault_labels();

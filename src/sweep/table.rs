@@ -5,9 +5,10 @@ use std::path::{Path, PathBuf};
 
 use anyhow::Context;
 
-use super::case::{CaseCondition, CaseResult};
+use super::case::CaseResult;
 use super::thesis::{physics_match, thesis_motion};
 use crate::recording::{CsvRecorder, PartialFile};
+use crate::vocabulary::GearIndicators;
 
 /// Folder of the per-case files inside a sweep's output folder.
 pub const CASES_DIR: &str = "cases";
@@ -157,45 +158,20 @@ pub fn write_table(
 /// The condition indicators' column names: the true torque's, then the measured
 /// signal's (`measured_` before each name).
 pub fn condition_header() -> Vec<String> {
-    let truth = CONDITION_COLUMNS.map(String::from);
-    let measured = CONDITION_COLUMNS.map(|c| format!("measured_{c}"));
+    let truth = GearIndicators::COLUMNS.map(String::from);
+    let measured = GearIndicators::COLUMNS.map(|c| format!("measured_{c}"));
     truth.into_iter().chain(measured).collect()
 }
 
-/// The condition indicators' column names, in the order of [`condition_columns`].
-const CONDITION_COLUMNS: [&str; 10] = [
-    "fm0",
-    "fm4",
-    "m6a",
-    "m8a",
-    "na4",
-    "sideband_level",
-    "crest_factor",
-    "kurtosis",
-    "residual_rms_nm",
-    "revolutions_averaged",
-];
-
 /// The condition indicators' columns of `condition` (empty where none were taken).
-pub fn condition_columns(condition: Option<&CaseCondition>) -> Vec<String> {
+pub fn condition_columns(condition: Option<&GearIndicators>) -> Vec<String> {
     match condition {
-        None => vec![String::new(); 10],
+        None => vec![String::new(); GearIndicators::COLUMNS.len()],
         Some(i) => {
-            let mut row: Vec<String> = [
-                i.fm0,
-                i.fm4,
-                i.m6a,
-                i.m8a,
-                i.na4,
-                i.sideband_level,
-                i.crest_factor,
-                i.kurtosis,
-                i.residual_rms_nm,
-            ]
-            .iter()
-            .map(|v| format!("{v:.6e}"))
-            .collect();
-            row.push(i.revolutions.to_string());
+            let values = i.values();
+            let (count, indicators) = values.split_last().unwrap_or((&0.0, &[]));
+            let mut row: Vec<String> = indicators.iter().map(|v| format!("{v:.6e}")).collect();
+            row.push(format!("{count}"));
             row
         }
     }

@@ -14,13 +14,15 @@
 //! format…) mapped onto the instruments' types; `limits.rs` every input bound (speed, load
 //! — with the residual drag, within the motor's limit — simulated time, averages) with its
 //! typed `LimitError`; `seeds.rs` every derived seed (each noise source in a run and in a
-//! sweep case, each case of a grid)
+//! sweep case, each case of a grid); `gear_indicators.rs` a gear's condition indicators as
+//! a row
 
 pub(crate) mod choices;
 pub(crate) mod command;
 pub(crate) mod control;
 pub(crate) mod display;
 pub(crate) mod frame;
+pub(crate) mod gear_indicators;
 pub(crate) mod limits;
 pub(crate) mod point_verdict;
 pub(crate) mod refusal;
@@ -32,6 +34,7 @@ pub use command::{Reply, RigCommand, Target, TimedCommand};
 pub use control::{CommandInbox, ControlHandle, MAX_QUEUED_COMMANDS, Pending, Request};
 pub use display::{AppliedChain, AppliedFilter, LiveSpectrum, LiveTrace};
 pub use frame::{Frame, SignalNames};
+pub use gear_indicators::GearIndicators;
 pub use limits::{
     DEFAULT_LIVE_CEILING, MAX_SIMULATED_S, check_load_nm, check_load_within_motor,
     check_simulated_s, check_speed_rpm, max_load_nm,

@@ -8,6 +8,8 @@ use std::sync::Arc;
 use rig::SteadySummary;
 use serde::Serialize;
 
+use super::GearIndicators;
+
 /// The verdict on measurement `index` (of the plan's measurements, from 0).
 #[derive(Clone, Debug, Serialize)]
 pub struct PointVerdict {
@@ -18,6 +20,10 @@ pub struct PointVerdict {
     /// The window's summary: regime, the judge's motion, torques, impacts.
     #[serde(flatten)]
     pub summary: SteadySummary,
+    /// The driven gear's condition indicators over the window (the true output-shaft
+    /// torque averaged synchronously over its revolutions; none under two revolutions).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub condition: Option<GearIndicators>,
 }
 
 /// The verdicts a sink has been sent so far, by measurement.
@@ -117,6 +123,7 @@ mod tests {
             index,
             from_s: 0.0,
             summary: window.summary(&rig::RegimeCriteria::default()),
+            condition: None,
         })
     }
 

@@ -17,7 +17,7 @@ use crate::runtime::status::SharedStatus;
 use crate::scenario::{Measure, Plan};
 use crate::vocabulary::frame::{Frame, SignalNames};
 use crate::vocabulary::signal_names::{DVM_V, METER_V, SHAFT_TORQUE_NM};
-use crate::vocabulary::{AwaitingVerdicts, RowMotion};
+use crate::vocabulary::{AwaitingVerdicts, GearIndicators, RowMotion};
 
 /// Length of the truth window before each reading (s).
 pub const TRUTH_WINDOW_S: f64 = 1.0;
@@ -42,6 +42,9 @@ struct Reading {
     motion: String,
     /// The half-order line's height over the broadband floor in that window (dB).
     half_order_db: Option<f64>,
+    /// The driven gear's condition indicators over that window, in the order of
+    /// `GearIndicators::COLUMNS` (empty where not judged).
+    condition: [Option<f64>; 10],
 }
 
 /// Channels the monitor reads.
@@ -104,7 +107,10 @@ impl MonitorSink {
             "motion",
             "half_order_db",
         ]
-        .map(String::from);
+        .map(String::from)
+        .into_iter()
+        .chain(GearIndicators::COLUMNS.map(String::from))
+        .collect::<Vec<_>>();
         Ok(Self {
             inputs: Inputs {
                 dvm: index(DVM_V)?,
@@ -162,6 +168,7 @@ impl MonitorSink {
             static_microstrain: m.load_nm * self.microstrain_per_nm,
             motion: String::new(),
             half_order_db: None,
+            condition: [None; 10],
         };
         self.points.push(SurveyPoint {
             speed_rpm: m.speed_rpm,
@@ -180,6 +187,9 @@ impl MonitorSink {
             reading.motion = motion.label();
             if let RowMotion::Judged(verdict) = &motion {
                 reading.half_order_db = verdict.summary.motion.half_order_db;
+                if let Some(c) = &verdict.condition {
+                    reading.condition = c.values().map(Some);
+                }
             }
             self.csv.write_row(&reading)?;
         }
