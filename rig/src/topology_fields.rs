@@ -169,6 +169,18 @@ impl RigTopology {
         Ok(())
     }
 
+    /// The word at `path`: a tooth fault's kind by name, `mesh.NAME.faultK.kind`.
+    pub fn word(&self, path: &str) -> Option<String> {
+        let parts: Vec<&str> = path.split('.').collect();
+        let ["mesh", name, fault, "kind"] = parts.as_slice() else {
+            return None;
+        };
+        let k: usize = fault.strip_prefix("fault")?.parse().ok()?;
+        let mesh = self.meshes.iter().find(|m| m.name == *name)?;
+        let f = mesh.faults.get(k.checked_sub(1)?)?;
+        Some(f.kind.name().to_string())
+    }
+
     /// Sets the word at `path`: a tooth fault's kind, `mesh.NAME.faultK.kind`, one of
     /// [`FaultKind::NAMES`] (a sweep's grid turns a seeded crack into a pit so).
     pub fn set_word(&mut self, path: &str, word: &str) -> Result<(), RigError> {

@@ -3,12 +3,10 @@
 
 use std::path::Path;
 
-use rig::RigParams;
-
 use crate::scenario::ScenarioSource;
 use crate::sweep::grid::case_timing;
 use crate::sweep::sweep_toml::SweepFile;
-use crate::sweep::{SweepPlan, build_sweep};
+use crate::sweep::{CaseRig, SweepPlan, build_sweep};
 
 use super::calibration_toml::{CalibrationFile, FreeFile};
 use super::free_param::{FreeParam, FreeRange, params_at};
@@ -79,8 +77,8 @@ pub struct CalibrationPlan {
     pub seed: u64,
     /// The campaign's case settings (its cases are not used).
     pub sweep: SweepPlan,
-    /// The rig the free parameters change.
-    pub base: RigParams,
+    /// The rig the free parameters change: a preset's, or a rig file's.
+    pub base: CaseRig,
     /// The target points.
     pub points: Vec<TargetPoint>,
     /// Natural-frequency targets.
@@ -116,8 +114,6 @@ pub fn build_calibration(
         .first()
         .ok_or_else(|| src.error(file.campaign.span(), "campaign", "its grid has no case"))?
         .rig
-        .preset("calibration")
-        .map_err(|e| src.error(file.campaign.span(), "campaign", e))?
         .clone();
     let free = free_params(src, file, &base)?;
     let points = target_points(src, file)?;
@@ -241,18 +237,18 @@ fn target_points(src: &ScenarioSource, file: &CalibrationFile) -> anyhow::Result
 fn free_params(
     src: &ScenarioSource,
     file: &CalibrationFile,
-    base: &RigParams,
+    base: &CaseRig,
 ) -> anyhow::Result<Vec<FreeParam>> {
     let mut free = Vec::new();
     for entry in &file.free {
-        let param = free_param(entry.get_ref())
+        let param = free_param(entry.get_ref(), matches!(base, CaseRig::Preset(_)))
             .map_err(|message| src.error(entry.span(), "free", message))?;
         if free.iter().any(|p: &FreeParam| p.name == param.name) {
             return Err(src.error(entry.get_ref().name.span(), "free.name", "given twice"));
         }
         for x in [0.0, 1.0] {
             params_at(base, std::slice::from_ref(&param), &[x])
-                .map_err(|e| src.error(entry.span(), "free", format!("at the bound: {e}")))?;
+                .map_err(|e| src.error(entry.span(), "free", format!("at the bound: {e:#}")))?;
         }
         free.push(param);
     }
@@ -276,9 +272,13 @@ enum FreeParamError {
     Scale(String),
 }
 
-fn free_param(f: &FreeFile) -> Result<FreeParam, FreeParamError> {
+/// A `[[free]]` entry read; a preset's parameter is checked by name here, a rig file's
+/// path by setting it at the bounds.
+fn free_param(f: &FreeFile, preset: bool) -> Result<FreeParam, FreeParamError> {
     let name = f.name.get_ref().clone();
-    rig::param_spec(&name)?;
+    if preset {
+        rig::param_spec(&name)?;
+    }
     let scale = f.scale.as_ref().map(|s| s.get_ref().as_str());
     let range = match (&f.choices[..], f.min, f.max, scale) {
         ([_, _, ..], None, None, None) => FreeRange::Choice(f.choices.clone()),

@@ -2,7 +2,7 @@
 //! candidates of a generation.
 
 use rayon::prelude::*;
-use rig::{Approach, Judgement, RigChains, RigParams};
+use rig::{Approach, Judgement};
 use serde::{Deserialize, Serialize};
 
 use crate::sweep::{Case, CaseRig, Direction, run_case};
@@ -32,13 +32,8 @@ pub struct Evaluation {
     pub error: Option<String>,
 }
 
-/// The case of `point` from `approach` for `params`.
-fn case_of(
-    plan: &CalibrationPlan,
-    point: &TargetPoint,
-    kind: ApproachKind,
-    params: &RigParams,
-) -> Case {
+/// The case of `point` from `approach` on `rig`.
+fn case_of(plan: &CalibrationPlan, point: &TargetPoint, kind: ApproachKind, rig: &CaseRig) -> Case {
     let approach = match kind {
         ApproachKind::Static => Approach::Static,
         ApproachKind::FromBelow => Approach::ramp_to(point.rpm, plan.approach_rpm, plan.ramp_s),
@@ -49,7 +44,7 @@ fn case_of(
         rpm: point.rpm,
         load_nm: point.load_nm,
         values: Vec::new(),
-        rig: CaseRig::Preset(Box::new(params.clone())),
+        rig: rig.clone(),
         seed: case_seed(plan.sweep.seed, point.index),
         approach,
         direction: Direction::Static,
@@ -65,11 +60,11 @@ pub fn evaluate_all(
     candidates: &[Vec<f64>],
     points: &[TargetPoint],
 ) -> Vec<Evaluation> {
-    let params: Vec<Result<RigParams, rig::RigError>> = candidates
+    let params: Vec<anyhow::Result<CaseRig>> = candidates
         .iter()
         .map(|x| params_at(&plan.base, &plan.free, x))
         .collect();
-    let jobs: Vec<(usize, &RigParams, usize, usize)> = params
+    let jobs: Vec<(usize, &CaseRig, usize, usize)> = params
         .iter()
         .enumerate()
         .filter_map(|(c, rig)| rig.as_ref().ok().map(|rig| (c, rig)))
@@ -104,7 +99,7 @@ pub fn evaluate_all(
         .iter()
         .enumerate()
         .map(|(c, rig)| match rig {
-            Err(e) => failed(e.to_string()),
+            Err(e) => failed(format!("{e:#}")),
             Ok(rig) => {
                 let mine: Vec<&CaseOutcome> = heights.iter().filter(|h| h.candidate == c).collect();
                 assemble(plan, rig, points, &mine)
@@ -132,7 +127,7 @@ struct CaseSeen {
 /// One candidate's evaluation from its cases' results.
 fn assemble(
     plan: &CalibrationPlan,
-    rig: &RigParams,
+    rig: &CaseRig,
     points: &[TargetPoint],
     cases: &[&CaseOutcome],
 ) -> Evaluation {
@@ -200,15 +195,15 @@ fn assemble(
         0.0
     };
     // The modal analysis only where a natural frequency is a target.
-    let modes = if plan.natural.is_empty() {
+    let modes_hz = if plan.natural.is_empty() {
         Vec::new()
     } else {
-        RigChains::of(rig).whole_rig.modes()
+        rig.natural_hz()
     };
     let natural_hz: Vec<f64> = plan
         .natural
         .iter()
-        .map(|n| modes.get(n.mode - 1).map_or(f64::NAN, |m| m.frequency_hz))
+        .map(|n| modes_hz.get(n.mode - 1).copied().unwrap_or(f64::NAN))
         .collect();
     objective += plan
         .natural

@@ -1,6 +1,6 @@
 //! A free parameter: its range, mapped to the search's unit interval.
 
-use rig::{RigError, RigParams};
+use crate::sweep::CaseRig;
 
 /// How a coordinate in [0, 1] maps to the parameter.
 #[derive(Clone, Debug, PartialEq)]
@@ -26,30 +26,44 @@ pub enum FreeRange {
 /// One free parameter.
 #[derive(Clone, Debug, PartialEq)]
 pub struct FreeParam {
-    /// Its `testrig params` name.
+    /// Its `testrig params` name, or a rig file's path (`testrig params --rig`).
     pub name: String,
     /// Its range.
     pub range: FreeRange,
 }
 
 impl FreeParam {
-    /// The value at coordinate `x` ∈ [0, 1], as `rig::set_param` takes it.
-    pub fn value_text(&self, x: f64) -> String {
+    /// The value at coordinate `x` ∈ [0, 1]: a number, or one of the choices (a number
+    /// or a switch where it reads as one, else a word).
+    pub fn value(&self, x: f64) -> toml::Value {
         let x = x.clamp(0.0, 1.0);
         match &self.range {
-            FreeRange::Linear { min, max } => format!("{}", min + x * (max - min)),
-            FreeRange::Log { min, max } => format!("{}", min * (max / min).powf(x)),
+            FreeRange::Linear { min, max } => toml::Value::Float(min + x * (max - min)),
+            FreeRange::Log { min, max } => toml::Value::Float(min * (max / min).powf(x)),
             FreeRange::Choice(values) => {
                 let i = ((x * values.len() as f64) as usize).min(values.len() - 1);
-                values[i].clone()
+                let text = &values[i];
+                text.parse::<f64>()
+                    .map(toml::Value::Float)
+                    .or_else(|_| text.parse::<bool>().map(toml::Value::Boolean))
+                    .unwrap_or_else(|_| toml::Value::String(text.clone()))
             }
         }
     }
 
-    /// The coordinate of the value `params` holds, if it lies in the range.
-    pub fn coordinate_of(&self, params: &RigParams) -> Option<f64> {
-        let spec = rig::param_spec(&self.name).ok()?;
-        let text = spec.value(params);
+    /// The value at coordinate `x` as text (a number as Rust prints it, a choice as
+    /// written).
+    pub fn value_text(&self, x: f64) -> String {
+        match self.value(x) {
+            toml::Value::String(text) => text,
+            toml::Value::Float(v) => format!("{v}"),
+            other => other.to_string(),
+        }
+    }
+
+    /// The coordinate of the value `rig` holds, if it lies in the range.
+    pub fn coordinate_of(&self, rig: &CaseRig) -> Option<f64> {
+        let text = rig.value_text(&self.name)?;
         match &self.range {
             FreeRange::Linear { min, max } => {
                 let v: f64 = text.parse().ok()?;
@@ -68,11 +82,11 @@ impl FreeParam {
 }
 
 /// `base` with every free parameter set at its coordinate in `x`, checked.
-pub fn params_at(base: &RigParams, free: &[FreeParam], x: &[f64]) -> Result<RigParams, RigError> {
-    let mut params = base.clone();
+pub fn params_at(base: &CaseRig, free: &[FreeParam], x: &[f64]) -> anyhow::Result<CaseRig> {
+    let mut rig = base.clone();
     for (p, &xi) in free.iter().zip(x) {
-        rig::set_param(&mut params, &p.name, &p.value_text(xi))?;
+        rig.set(&p.name, &p.value(xi))
+            .map_err(|e| anyhow::anyhow!("{}: {e:#}", p.name))?;
     }
-    params.validate()?;
-    Ok(params)
+    Ok(rig)
 }

@@ -14,6 +14,7 @@ use super::objective::PointOutcome;
 use crate::plots::{SearchPoint, write_convergence};
 use crate::recording::PartialFile;
 use crate::scenario::preset_file::is_preset_file;
+use crate::sweep::CaseRig;
 
 /// The best set and how it scores.
 #[derive(Clone, Debug, Serialize)]
@@ -58,7 +59,11 @@ pub fn preset_text(
     best: &EvaluationRecord,
     result: &CalibrationResult,
 ) -> anyhow::Result<String> {
-    let params = params_at(&plan.base, &plan.free, &best.x)?;
+    let rig = params_at(&plan.base, &plan.free, &best.x)?;
+    let params = match &rig {
+        CaseRig::Preset(params) => params,
+        CaseRig::File(file) => return Ok(rig_set_text(plan, best, result, file)),
+    };
     // A file cannot be the base of another: then the thesis's preset is.
     let base_name = if is_preset_file(&plan.sweep.preset) {
         rig::PRESET_NAMES[0]
@@ -79,7 +84,7 @@ pub fn preset_text(
     );
     let _ = writeln!(text, "base = \"{base_name}\"\n\n[set]");
     for spec in rig::PARAM_SPECS {
-        let value = spec.value(&params);
+        let value = spec.value(params);
         if value != spec.value(&preset) {
             let quoted = if value.parse::<f64>().is_ok() || value == "true" || value == "false" {
                 value
@@ -92,7 +97,38 @@ pub fn preset_text(
     Ok(text)
 }
 
-/// Writes `preset.toml`, `result.json`, `convergence.{png,svg}` and `report.md` into `dir`.
+/// The best of a rig file's calibration as the `[rig.set]` table a sweep file takes: each
+/// free parameter's path and value.
+fn rig_set_text(
+    plan: &CalibrationPlan,
+    best: &EvaluationRecord,
+    result: &CalibrationResult,
+    rig: &rig::RigTopology,
+) -> String {
+    let mut text = String::new();
+    let _ = writeln!(
+        text,
+        "# Written by `testrig calibrate` ({}): evaluation {} of {}, objective {:.3} dB,\n# {} of {} target points matched from every approach, on rig file `{}`.\n# Paste into a sweep file's [rig] table beside `file = ...`.\n\n[rig.set]",
+        plan.name,
+        best.evaluation,
+        result.evaluations,
+        best.result.objective,
+        result.score.0,
+        result.score.1,
+        rig.name
+    );
+    for (p, &x) in plan.free.iter().zip(&best.x) {
+        let value = match p.value(x) {
+            toml::Value::String(word) => format!("\"{word}\""),
+            other => other.to_string(),
+        };
+        let _ = writeln!(text, "\"{}\" = {value}", p.name);
+    }
+    text
+}
+
+/// Writes `preset.toml` (a rig file's calibration: `rig-set.toml`), `result.json`,
+/// `convergence.{png,svg}` and `report.md` into `dir`.
 pub fn write_outputs(
     dir: &Path,
     plan: &CalibrationPlan,
@@ -102,8 +138,12 @@ pub fn write_outputs(
     result: &CalibrationResult,
 ) -> anyhow::Result<Vec<PathBuf>> {
     let mut files = Vec::new();
+    let best_rig = match plan.base {
+        CaseRig::Preset(_) => "preset.toml",
+        CaseRig::File(_) => "rig-set.toml",
+    };
     files.push(PartialFile::write_whole(
-        &dir.join("preset.toml"),
+        &dir.join(best_rig),
         preset_text(plan, best, result)?,
     )?);
     files.push(PartialFile::write_whole(

@@ -59,6 +59,20 @@ impl CaseRig {
         }
     }
 
+    /// The value at `name` as text (a preset's parameter, a rig file's number by path or
+    /// a fault's kind); `None` where the rig has no such value.
+    pub fn value_text(&self, name: &str) -> Option<String> {
+        match self {
+            Self::Preset(params) => rig::param_spec(name).ok().map(|s| s.value(params)),
+            Self::File(rig) => rig
+                .fields()
+                .into_iter()
+                .find(|f| f.path == name)
+                .map(|f| f.value.to_string())
+                .or_else(|| rig.word(name)),
+        }
+    }
+
     /// Whether the rig can hold `load_nm`: the motor's limit over the load for a preset,
     /// a brake for a rig file's rig; the refusal says why.
     pub fn check_load(&self, load_nm: f64) -> Result<(), String> {

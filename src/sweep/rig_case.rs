@@ -14,7 +14,7 @@
 use std::path::Path;
 
 use instruments::ShaftStrain;
-use rig::{Approach, Motion, NetworkBlock, Regime, RigTopology, SteadySummary, impacts_per_tooth};
+use rig::{Motion, NetworkBlock, Regime, RigTopology, SteadySummary, impacts_per_tooth};
 
 use super::case::{CaseResult, KEPT_REVOLUTIONS, case_result, chain_lead_s};
 use super::case_recording::CaseRecording;
@@ -106,7 +106,7 @@ pub fn run_rig_case(
         settle_s: plan.settle_s - lead_s,
         duration_s: plan.measure_s,
         rate_hz: plan.rate_hz,
-        approach: Approach::Static,
+        approach: case.approach,
     };
     let mut plant = settled_rig_plant(&spec, NAMES)?;
     let mut stage_plans = rig_case_stages(&plan.chain.stages, rig)?;
