@@ -41,3 +41,19 @@ def test_set_takes_paths_and_a_bad_one_is_named():
     assert motor == pytest.approx(5 + 0.1 / 9 * 1200 * np.pi / 30, rel=1e-4)
     with pytest.raises(testrig.TestrigError, match="mesh.stage9.backlash_mm"):
         testrig.simulate(600, 10, rig=TWO_STAGE, set={"mesh.stage9.backlash_mm": 0.3})
+
+
+def test_a_sweep_on_a_rig_file_labels_its_faults(tmp_path):
+    # The shipped data set at one point: each kind's residual RMS rises with severity.
+    table = testrig.sweep(ROOT / "scenarios" / "fault-dataset.toml", out=tmp_path,
+                          set={"grid.rpm": [300], "grid.load_nm": [5.424],
+                               "record.formats": ["wav"]})
+    assert len(table["rpm"]) == 12
+    assert (tmp_path / "labels.csv").exists()
+    kinds = list(table["mesh.gears.fault1.kind"])
+    severities = list(table["mesh.gears.fault1.severity"])
+    residual = list(table["residual_rms_nm"])
+    for kind in ["crack", "pit", "broken"]:
+        rows = sorted((s, r) for k, s, r in zip(kinds, severities, residual) if k == kind)
+        assert all(b[1] > a[1] for a, b in zip(rows, rows[1:])), rows
+    assert "measured_fm4" in table
