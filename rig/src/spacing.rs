@@ -1,12 +1,14 @@
 //! Tooth-pair spacing errors: with a 1:1 pair, tooth i of the driving gear always meets
 //! tooth i of the driven gear, so each of the `teeth` pairs has one combined error, the
-//! displacement of the mesh while that pair is in mesh.
+//! displacement of the mesh while that pair is in mesh. A rig file's mesh of other teeth
+//! gives each gear's teeth errors of their own (`mesh_spacing_m`).
 
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64Mcg;
 
 use crate::geometry::GearGeometry;
 use crate::params::RigParams;
+use crate::topology::Mesh;
 
 /// The spacing error of each tooth pair (rad of relative rotation, arc at the pitch
 /// circle over the pitch radius): normal draws from `tooth_spacing_seed` (PCG 64,
@@ -16,8 +18,38 @@ pub fn spacing_errors_rad(params: &RigParams) -> Vec<f64> {
     if params.tooth_spacing_error_um == 0.0 {
         return Vec::new();
     }
-    let mut rng = Pcg64Mcg::seed_from_u64(u64::from(params.tooth_spacing_seed));
-    let mut draws: Vec<f64> = (0..params.teeth)
+    let rms = params.tooth_spacing_error_um * 1e-6 / GearGeometry::of(params).pitch_radius_m;
+    spacing_draws(params.teeth, params.tooth_spacing_seed, rms)
+}
+
+/// The spacing errors of a rig file's mesh along the line of action (m), per tooth of the
+/// driving and of the driven gear (the pair in mesh displaces the mesh by the sum of its
+/// two teeth's): with equal teeth, as the thesis's 1:1 pair, one combined error per pair
+/// on the driver's teeth (the thesis's draw); otherwise each gear's teeth drawn with
+/// 1/√2 of the RMS (the driven gear's from the seed + 1), so a pair's errors have the RMS
+/// asked for. Empty when off.
+pub fn mesh_spacing_m(mesh: &Mesh) -> [Vec<f64>; 2] {
+    let rms_m = mesh.tooth_spacing_error_um * 1e-6;
+    if rms_m == 0.0 {
+        return [Vec::new(), Vec::new()];
+    }
+    let [z1, z2] = mesh.teeth;
+    let seed = mesh.tooth_spacing_seed;
+    if z1 == z2 {
+        return [spacing_draws(z1, seed, rms_m), vec![0.0; z2 as usize]];
+    }
+    let each = rms_m / std::f64::consts::SQRT_2;
+    [
+        spacing_draws(z1, seed, each),
+        spacing_draws(z2, seed.wrapping_add(1), each),
+    ]
+}
+
+/// `count` normal draws from `seed` (PCG 64, Box–Muller), made zero-mean and scaled to an
+/// RMS of `rms`.
+fn spacing_draws(count: u32, seed: u32, rms: f64) -> Vec<f64> {
+    let mut rng = Pcg64Mcg::seed_from_u64(u64::from(seed));
+    let mut draws: Vec<f64> = (0..count)
         .map(|_| {
             let u1 = 1.0 - rng.random::<f64>();
             let u2 = rng.random::<f64>();
@@ -25,10 +57,9 @@ pub fn spacing_errors_rad(params: &RigParams) -> Vec<f64> {
         })
         .collect();
     let mean = draws.iter().sum::<f64>() / draws.len() as f64;
-    let rms = (draws.iter().map(|d| (d - mean).powi(2)).sum::<f64>() / draws.len() as f64).sqrt();
-    let scale = params.tooth_spacing_error_um * 1e-6
-        / GearGeometry::of(params).pitch_radius_m
-        / rms.max(f64::MIN_POSITIVE);
+    let spread =
+        (draws.iter().map(|d| (d - mean).powi(2)).sum::<f64>() / draws.len() as f64).sqrt();
+    let scale = rms / spread.max(f64::MIN_POSITIVE);
     for d in &mut draws {
         *d = (*d - mean) * scale;
     }

@@ -84,6 +84,14 @@ pub struct Mesh {
     /// Run-out of the driven gear (µm): e cos θ₂ once per revolution of the driven gear.
     #[serde(default, skip_serializing_if = "is_zero")]
     pub run_out_driven_um: f64,
+    /// RMS of the teeth's spacing errors, as the pair in mesh displaces the mesh along the
+    /// line of action (µm; 0 off): seeded normal draws (`tooth_spacing_seed`), made
+    /// zero-mean and scaled, held while that pair is in mesh (`rig::spacing`).
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub tooth_spacing_error_um: f64,
+    /// Seed of the spacing errors' draws.
+    #[serde(default)]
+    pub tooth_spacing_seed: u32,
     /// Faults seeded on single teeth (none: a healthy pair).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub faults: Vec<ToothFault>,

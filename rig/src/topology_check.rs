@@ -208,6 +208,10 @@ impl RigTopology {
         non_negative(m.run_out_driver_um, ("mesh", i, "run_out_driver_um"))?;
         non_negative(m.run_out_driven_um, ("mesh", i, "run_out_driven_um"))?;
         non_negative(m.te_mesh_frequency_um, ("mesh", i, "te_mesh_frequency_um"))?;
+        non_negative(
+            m.tooth_spacing_error_um,
+            ("mesh", i, "tooth_spacing_error_um"),
+        )?;
         if !(m.double_pair_ratio.is_finite() && m.double_pair_ratio >= 1.0) {
             return Err(fault(
                 "mesh",

@@ -29,7 +29,7 @@ const SHAFT: [(&str, &str, &str); 2] = [
     ("stiffness_nm_per_rad", "N m/rad", "torsional stiffness"),
     ("damping_nms_per_rad", "N m s/rad", "torsional damping"),
 ];
-const MESH: [(&str, &str, &str); 12] = [
+const MESH: [(&str, &str, &str); 13] = [
     ("module_m", "m", "module"),
     ("pressure_angle_deg", "deg", "pressure angle"),
     (
@@ -73,6 +73,11 @@ const MESH: [(&str, &str, &str); 12] = [
         "run_out_driven_um",
         "um",
         "run-out of the driven gear, once per its revolution",
+    ),
+    (
+        "tooth_spacing_error_um",
+        "um",
+        "RMS of the tooth-pair spacing errors along the line of action",
     ),
 ];
 const MOTOR: [(&str, &str, &str); 4] = [
@@ -243,6 +248,7 @@ impl RigTopology {
                     "te_once_per_rev_um" => Some(&mut m.te_once_per_rev_um),
                     "run_out_driver_um" => Some(&mut m.run_out_driver_um),
                     "run_out_driven_um" => Some(&mut m.run_out_driven_um),
+                    "tooth_spacing_error_um" => Some(&mut m.tooth_spacing_error_um),
                     "te_mesh_frequency_um" => Some(&mut m.te_mesh_frequency_um),
                     _ => None,
                 }

@@ -346,6 +346,7 @@ fn span_of(file: &RigFileToml, place: &TopologyPlace) -> Range<usize> {
             "fault" => m.fault.first().map(|f| f.tooth.span()),
             "run_out_driver_um" => m.run_out_driver_um.as_ref().map(Spanned::span),
             "run_out_driven_um" => m.run_out_driven_um.as_ref().map(Spanned::span),
+            "tooth_spacing_error_um" => m.tooth_spacing_error_um.as_ref().map(Spanned::span),
             _ => Some(m.name.span()),
         }),
         ("locked_torque", _) => file.locked_torque.as_ref().map(|l| l.torque_nm.span()),

@@ -58,6 +58,8 @@ pub(super) fn mesh(
         te_mesh_frequency_um: or(&m.te_mesh_frequency_um, 0.0),
         run_out_driver_um: or(&m.run_out_driver_um, 0.0),
         run_out_driven_um: or(&m.run_out_driven_um, 0.0),
+        tooth_spacing_error_um: or(&m.tooth_spacing_error_um, 0.0),
+        tooth_spacing_seed: m.tooth_spacing_seed.unwrap_or(0),
         tooth_shifting: m.tooth_shifting.unwrap_or(false),
         faults: m
             .fault

@@ -128,6 +128,12 @@ pub struct MeshToml {
     /// The thesis's numerical tooth shifting; false when left out.
     #[serde(default)]
     pub tooth_shifting: Option<bool>,
+    /// RMS of the tooth-pair spacing errors along the line of action (µm); 0 when left out.
+    #[serde(default)]
+    pub tooth_spacing_error_um: Option<Spanned<f64>>,
+    /// Seed of the spacing errors; 0 when left out.
+    #[serde(default)]
+    pub tooth_spacing_seed: Option<u32>,
     /// Run-out of the driving gear (µm); 0 when left out.
     #[serde(default)]
     pub run_out_driver_um: Option<Spanned<f64>>,

@@ -138,8 +138,9 @@ pub fn event_forms(model: &NetworkModel, mode: &NetMode, a: &DMatrix<f64>) -> Ve
                 Target::Tooth(i),
             );
         }
-        let follows_zones = m.alternating || m.faulted;
-        if follows_zones && (state.contact != Contact::Apart || state.toothless) {
+        // Spaced pairs are followed apart too: the gap depends on the pair in mesh.
+        let follows_zones = m.alternating || m.faulted || m.spaced();
+        if follows_zones && (state.contact != Contact::Apart || state.toothless || m.spaced()) {
             // The driver's absolute angle x + sΦ against the zone's bounds.
             push(
                 NetEvent::ZoneEnd(i),

@@ -7,7 +7,8 @@
 //! zones and revolutions). Set speed and load ramp exactly: Ω' = rate, load' = rate.
 //! Then, for each mesh with a backlash variation or transmission error, the harmonic
 //! pairs of its driver's share of the set rotation: (cos θ, sin θ) and, with a
-//! mesh-frequency error, (cos zθ, sin zθ).
+//! mesh-frequency error, (cos zθ, sin zθ); and for each mesh with spacing errors, the
+//! error e of the pair in mesh (m along the line of action, e' = 0, set as pairs change).
 
 use crate::topology::{MAX_MESHES, RigTopology};
 
@@ -24,6 +25,9 @@ pub struct NetLayout {
     /// Per mesh: where cos θ₂ of its driven gear's turn sits (sin θ₂ follows), if the
     /// driven gear has run-out.
     pub run_out: [Option<usize>; MAX_MESHES],
+    /// Per mesh: where the spacing error of the pair in mesh sits, if the mesh has
+    /// spacing errors.
+    pub spacing: [Option<usize>; MAX_MESHES],
     /// Per mesh: its driver's teeth z (the harmonic of the mesh-frequency pair).
     driver_teeth: [u32; MAX_MESHES],
     /// Per mesh: its driven gear's teeth (its turn is z/z₂ of the driver's).
@@ -39,6 +43,7 @@ impl NetLayout {
         let mut revolution = [None; MAX_MESHES];
         let mut tooth = [None; MAX_MESHES];
         let mut run_out = [None; MAX_MESHES];
+        let mut spacing = [None; MAX_MESHES];
         let mut driven_teeth = [0; MAX_MESHES];
         let mut driver_teeth = [0; MAX_MESHES];
         for (i, m) in rig.meshes.iter().enumerate() {
@@ -56,12 +61,17 @@ impl NetLayout {
                 driven_teeth[i] = m.teeth[1];
                 len += 2;
             }
+            if m.tooth_spacing_error_um != 0.0 {
+                spacing[i] = Some(len);
+                len += 1;
+            }
         }
         Self {
             bodies,
             revolution,
             tooth,
             run_out,
+            spacing,
             driver_teeth,
             driven_teeth,
             len,

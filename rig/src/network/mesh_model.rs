@@ -4,6 +4,7 @@
 
 use crate::mesh_stiffness::PairGeometry;
 use crate::options::MeshPairs;
+use crate::spacing::mesh_spacing_m;
 use crate::tooth_fault::{FaultedGear, ToothFault, tooth_factors};
 use crate::topology::Mesh;
 
@@ -57,6 +58,9 @@ pub struct MeshModel {
     pub single_stretch_factors: [Vec<f64>; 2],
     /// Whether any tooth is faulted (the pair zones are then followed in contact).
     pub faulted: bool,
+    /// Each tooth's spacing error on the driver and on the driven gear (m along the line
+    /// of action; empty without spacing errors, `spacing::mesh_spacing_m`).
+    pub spacing_m: [Vec<f64>; 2],
 }
 
 impl MeshModel {
@@ -97,16 +101,19 @@ impl MeshModel {
             tooth_factors,
             single_stretch_factors,
             faulted,
+            spacing_m: mesh_spacing_m(m),
         }
     }
 
     /// The constant part of the overlap of `flank` (+1 drive, −1 back) with the driver
-    /// at angle 0 of its share of the set rotation (m): −f b (1 − C1) + E + P + R.
+    /// at angle 0 of its share of the set rotation (m): −f b (1 − C1) + E + P + R, and
+    /// the spacing error of the pair in mesh there.
     pub fn start_offset_m(&self, flank: f64) -> f64 {
         -flank * (self.half_backlash_m - self.variation_m)
             + self.te_once_m
             + self.te_mesh_m
             + self.run_out_driven_m
+            + self.zone_spacing_m(0)
     }
 
     /// Stiffness (N/m) and damping (N s/m) in `state`.
@@ -128,6 +135,36 @@ impl MeshModel {
     /// times its driven tooth's.
     pub fn pair_factor(&self, pair: i64) -> f64 {
         factor_of(&self.tooth_factors, pair)
+    }
+
+    /// Whether the pairs differ in spacing (the pair zones are then followed apart too).
+    pub fn spaced(&self) -> bool {
+        !self.spacing_m[0].is_empty()
+    }
+
+    /// The spacing error of pair `pair` (m): its driver tooth's plus its driven tooth's.
+    pub fn pair_spacing_m(&self, pair: i64) -> f64 {
+        let tooth = |errors: &Vec<f64>| {
+            errors
+                .get(pair.rem_euclid(errors.len().max(1) as i64) as usize)
+                .copied()
+                .unwrap_or(0.0)
+        };
+        tooth(&self.spacing_m[0]) + tooth(&self.spacing_m[1])
+    }
+
+    /// The spacing error in pair zone `zone` (m): its pair's, or where two pairs share the
+    /// load, their mean weighted by their stiffness factors (both pairs touching).
+    pub fn zone_spacing_m(&self, zone: i64) -> f64 {
+        let pair = zone.div_euclid(2);
+        if !(self.alternating && zone.rem_euclid(2) == 0) {
+            return self.pair_spacing_m(pair);
+        }
+        let (f0, f1) = (self.pair_factor(pair - 1), self.pair_factor(pair));
+        if f0 + f1 == 0.0 {
+            return 0.5 * (self.pair_spacing_m(pair - 1) + self.pair_spacing_m(pair));
+        }
+        (f0 * self.pair_spacing_m(pair - 1) + f1 * self.pair_spacing_m(pair)) / (f0 + f1)
     }
 
     /// The teeth (1..=z, driver's and driven's) of pair `pair`.

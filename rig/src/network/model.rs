@@ -201,6 +201,9 @@ impl NetworkModel {
             overlap += m.run_out_driven_m * u[run_out];
             overlap_rate -= m.run_out_driven_m * m.driven_turns * w * u[run_out + 1];
         }
+        if let Some(spacing) = l.spacing[mesh] {
+            overlap += u[spacing];
+        }
         (overlap, overlap_rate)
     }
 
@@ -365,6 +368,9 @@ impl NetworkModel {
         if let Some(run_out) = l.run_out[mesh] {
             terms.push((run_out, m.run_out_driven_m, 0.0));
             terms.push((run_out + 1, 0.0, -m.run_out_driven_m * m.driven_turns * w));
+        }
+        if let Some(spacing) = l.spacing[mesh] {
+            terms.push((spacing, 1.0, 0.0));
         }
         terms
     }

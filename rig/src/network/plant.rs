@@ -228,9 +228,26 @@ impl NetworkPlant {
     pub(super) fn set_zones_from_angles(&mut self) {
         for i in 0..self.model.meshes.len() {
             self.zones[i] = self.zone_at(i);
+            self.set_spacing(i);
             self.next_tooth_rad[i] = f64::NEG_INFINITY;
             self.catch_up_tooth(i);
         }
+    }
+
+    /// Mesh `i`'s spacing-error state takes the pair zone's error (no change without
+    /// spacing errors).
+    pub(super) fn set_spacing(&mut self, i: usize) {
+        if let Some(index) = self.model.layout.spacing[i] {
+            self.u[index] = self.model.meshes[i].zone_spacing_m(self.zones[i]);
+        }
+    }
+
+    /// Mesh `i`'s next tooth boundary the one after the boundary its driver stands at (a
+    /// pair engaged at its entry: no tooth pass there).
+    pub(super) fn pass_tooth_here(&mut self, i: usize) {
+        let m = &self.model.meshes[i];
+        let angle = m.share.signum() * self.model.absolute_angle_rad(m.gears[0], &self.u);
+        self.next_tooth_rad[i] = ((angle / m.pitch_rad).round() + 1.0) * m.pitch_rad;
     }
 
     /// Moves mesh `i`'s next tooth boundary to the first above its driver's angle (in
@@ -245,10 +262,17 @@ impl NetworkPlant {
     /// A tooth pass of mesh `i` in contact with tooth shifting (thesis §5.4.5): the
     /// loaded pair hands its overlap back, each gear moving by half of it along the line
     /// of action; the next pair stays in contact only while the flanks close.
-    pub(super) fn shift_tooth(&mut self, i: usize) {
+    pub(super) fn shift_tooth(&mut self, i: usize, at_s: f64) {
+        let pitch = self.model.meshes[i].pitch_rad;
+        self.next_tooth_rad[i] += pitch;
+        if self.model.meshes[i].spaced() {
+            // The next pair takes its spacing error first (its zone entered here, not a
+            // rounding later), then hands back the overlap, as the thesis's pass does.
+            self.zones[i] = self.zone_after_pass(i);
+            self.enter_zone(i, at_s);
+        }
         let l = &self.model.layout;
         let m = &self.model.meshes[i];
-        self.next_tooth_rad[i] += m.pitch_rad;
         let flank = match self.mode.meshes[i].contact {
             Contact::Drive => 1.0,
             Contact::Back => -1.0,
@@ -264,6 +288,18 @@ impl NetworkPlant {
         if flank * rate <= 0.0 {
             self.mode.meshes[i].contact = Contact::Apart;
             self.mode.meshes[i].two_pairs = false;
+        }
+    }
+
+    /// The pair zone mesh `i`'s driver enters at a tooth pass: the next period's first
+    /// (its driver turning forward), or the last period's single stretch (backward).
+    fn zone_after_pass(&self, i: usize) -> i64 {
+        let m = &self.model.meshes[i];
+        let period = (self.model.absolute_angle_rad(m.gears[0], &self.u) / m.pitch_rad).round();
+        if m.share > 0.0 {
+            2 * period as i64
+        } else {
+            2 * period as i64 - 1
         }
     }
 

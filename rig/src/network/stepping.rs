@@ -146,15 +146,17 @@ impl NetworkPlant {
     }
 
     /// Mesh `i`'s driver has turned into a new pair zone: the pairs in mesh take their
-    /// stiffness. In contact, a zone whose pair is broken through parts the teeth; after
-    /// such a zone, the next pair strikes wherever the gears have closed on a flank
-    /// meanwhile.
-    fn enter_zone(&mut self, i: usize, at_s: f64) {
+    /// stiffness and spacing error. In contact, a zone whose pair is broken through parts
+    /// the teeth, as does a pair whose spacing error opens the gap; after a broken pair,
+    /// or apart where the new pair's spacing error closes the gap, the pair strikes
+    /// wherever the gears have closed on a flank.
+    pub(super) fn enter_zone(&mut self, i: usize, at_s: f64) {
+        self.set_spacing(i);
         let m = &self.model.meshes[i];
         let zone = self.zones[i];
         let factor = m.zone_factor(zone);
         let state = self.mode.meshes[i];
-        if state.toothless {
+        if state.toothless || (state.contact == Contact::Apart && m.spaced()) {
             if factor == 0.0 {
                 return;
             }
@@ -162,6 +164,10 @@ impl NetworkPlant {
             let drive = self.model.overlap(i, 1.0, &self.u, speed).0 > 0.0;
             let back = self.model.overlap(i, -1.0, &self.u, speed).0 < 0.0;
             self.mode.meshes[i].toothless = false;
+            if drive || back {
+                // Struck at a pair's entry: that tooth pass is behind it (no shifting).
+                self.pass_tooth_here(i);
+            }
             match (drive, back) {
                 (true, _) => self.engage(i, Contact::Drive, at_s),
                 (false, true) => self.engage(i, Contact::Back, at_s),
@@ -169,6 +175,7 @@ impl NetworkPlant {
             }
             return;
         }
+        let spaced = m.spaced();
         let state = &mut self.mode.meshes[i];
         state.two_pairs = m.alternating && zone % 2 == 0;
         state.factor_bits = factor.to_bits();
@@ -176,6 +183,18 @@ impl NetworkPlant {
             state.contact = Contact::Apart;
             state.two_pairs = false;
             state.toothless = true;
+            return;
+        }
+        let flank = state.contact.sign();
+        // At a tooth pass with the thesis's tooth shifting, the pass itself decides
+        // whether the new pair stays in contact (`shift_tooth`, next at this instant).
+        let tooth_pass_decides = m.tooth_shifting && zone.rem_euclid(2) == 0;
+        if spaced && flank != 0 && !tooth_pass_decides {
+            let flank = f64::from(flank);
+            let speed = self.harmonic_speed_rad_s;
+            if flank * self.model.overlap(i, flank, &self.u, speed).0 < 0.0 {
+                self.mode.meshes[i] = MeshState::APART;
+            }
         }
     }
 
@@ -230,6 +249,7 @@ impl NetworkPlant {
         match event {
             NetEvent::Touch(i, flank) => {
                 self.zones[i] = self.zone_at(i);
+                self.set_spacing(i);
                 self.catch_up_tooth(i);
                 self.engage(i, flank, at_s);
             }
@@ -248,7 +268,7 @@ impl NetworkPlant {
             NetEvent::LimitHigh => self.mode.motor = MotorMode::LimitHigh,
             NetEvent::LimitLow => self.mode.motor = MotorMode::LimitLow,
             NetEvent::LimitRelease => self.release_motor(),
-            NetEvent::ToothPass(i) => self.shift_tooth(i),
+            NetEvent::ToothPass(i) => self.shift_tooth(i, at_s),
             NetEvent::Revolution => {
                 self.revolutions_s.push(at_s);
                 self.next_revolution_rad += 2.0 * PI;
