@@ -29,27 +29,7 @@ fn the_1983_rig_file_runs_as_the_thesis_plant_does() {
     ];
     for (schedule, seconds, least_impacts) in cases {
         let rpm = schedule.speed_rpm.value_at(0.0);
-        let samples = (seconds * RATE_HZ) as usize;
-        let mut thesis = rig::Plant::new(
-            params.clone(),
-            schedule.clone(),
-            rig::PlantConfig::default(),
-        )
-        .expect("thesis plant");
-        let mut thesis_block = rig::SignalBlock::default();
-        thesis.run(samples, &mut thesis_block).expect("run");
-        let mut ours = plant(&rig, schedule, NetworkStart::Steady);
-        let block = run(&mut ours, &rig, seconds);
-        let theirs = &thesis_block.shaft_torque_nm[rig::INTERMEDIATE_SHAFT];
-        let mine = &block.shaft_torque_nm[shaft(&rig, "intermediate")];
-        let scale = theirs.iter().fold(0.0_f64, |m, x| m.max(x.abs()));
-        let worst = theirs
-            .iter()
-            .zip(mine)
-            .map(|(a, b)| (a - b).abs())
-            .fold(0.0, f64::max);
-        let impacts = ours.take_impacts();
-        let reference = thesis.drain_impacts();
+        let (worst, scale, impacts, reference) = both_plants(&rig, &params, schedule, seconds);
         assert!(
             worst < 1e-6 * scale,
             "{rpm} rev/min: torques differ by {worst} N m of {scale}"
@@ -57,12 +37,7 @@ fn the_1983_rig_file_runs_as_the_thesis_plant_does() {
         assert_eq!(impacts.len(), reference.len(), "{rpm} rev/min");
         assert!(impacts.len() >= least_impacts, "{rpm} rev/min: {impacts:?}");
         for (a, b) in impacts.iter().zip(&reference) {
-            assert!(
-                (a.time_s - b.time_s).abs() < 1e-9,
-                "{rpm}: {} s against {} s",
-                a.time_s,
-                b.time_s
-            );
+            assert!((a - b).abs() < 1e-9, "{rpm}: {a} s against {b} s");
         }
     }
 }
@@ -100,30 +75,11 @@ fn spacing_errors_against_the_thesis(shifting: bool) {
         ..Schedule::constant(600.0, 0.5)
     };
     for (schedule, seconds) in [(Schedule::constant(600.0, 2.712), 2.0), (rattle, 0.3)] {
-        let samples = (seconds * RATE_HZ) as usize;
-        let mut thesis = rig::Plant::new(
-            params.clone(),
-            schedule.clone(),
-            rig::PlantConfig::default(),
-        )
-        .expect("thesis plant");
-        let mut thesis_block = rig::SignalBlock::default();
-        thesis.run(samples, &mut thesis_block).expect("run");
-        let mut ours = plant(&rig, schedule, NetworkStart::Steady);
-        let block = run(&mut ours, &rig, seconds);
-        let theirs = &thesis_block.shaft_torque_nm[rig::INTERMEDIATE_SHAFT];
-        let mine = &block.shaft_torque_nm[shaft(&rig, "intermediate")];
-        let scale = theirs.iter().fold(0.0_f64, |m, x| m.max(x.abs()));
-        let worst = theirs
-            .iter()
-            .zip(mine)
-            .map(|(a, b)| (a - b).abs())
-            .fold(0.0, f64::max);
+        let (worst, scale, impacts, reference) = both_plants(&rig, &params, schedule, seconds);
         assert!(
             worst < 1e-6 * scale,
             "shifting {shifting}: torques differ by {worst} N m of {scale}"
         );
-        let (impacts, reference) = (ours.take_impacts(), thesis.drain_impacts());
         assert!(reference.len() > 5, "{reference:?}");
         if shifting {
             // The impacts are not compared: see above.
@@ -131,12 +87,40 @@ fn spacing_errors_against_the_thesis(shifting: bool) {
         }
         assert_eq!(impacts.len(), reference.len());
         for (a, b) in impacts.iter().zip(&reference) {
-            assert!(
-                (a.time_s - b.time_s).abs() < 1e-9,
-                "{} s against {} s",
-                a.time_s,
-                b.time_s
-            );
+            assert!((a - b).abs() < 1e-9, "{a} s against {b} s");
         }
     }
+}
+
+/// Runs the thesis plant on `params` and ours on `rig` under `schedule` for `seconds`
+/// from steady running: the largest difference of the intermediate shaft's torque and
+/// the thesis's largest torque (N m), and each plant's impacts' times (s).
+fn both_plants(
+    rig: &rig::RigTopology,
+    params: &rig::RigParams,
+    schedule: Schedule,
+    seconds: f64,
+) -> (f64, f64, Vec<f64>, Vec<f64>) {
+    let samples = (seconds * RATE_HZ) as usize;
+    let mut thesis = rig::Plant::new(
+        params.clone(),
+        schedule.clone(),
+        rig::PlantConfig::default(),
+    )
+    .expect("thesis plant");
+    let mut thesis_block = rig::SignalBlock::default();
+    thesis.run(samples, &mut thesis_block).expect("run");
+    let mut ours = plant(rig, schedule, NetworkStart::Steady);
+    let block = run(&mut ours, rig, seconds);
+    let theirs = &thesis_block.shaft_torque_nm[rig::INTERMEDIATE_SHAFT];
+    let mine = &block.shaft_torque_nm[shaft(rig, "intermediate")];
+    let scale = theirs.iter().fold(0.0_f64, |m, x| m.max(x.abs()));
+    let worst = theirs
+        .iter()
+        .zip(mine)
+        .map(|(a, b)| (a - b).abs())
+        .fold(0.0, f64::max);
+    let ours_at = ours.take_impacts().iter().map(|i| i.time_s).collect();
+    let theirs_at = thesis.drain_impacts().iter().map(|i| i.time_s).collect();
+    (worst, scale, ours_at, theirs_at)
 }

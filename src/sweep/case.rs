@@ -18,8 +18,8 @@ use super::measured_condition::MeasuredCondition;
 use super::rig_case::run_rig_case;
 use super::sequence::Direction;
 use crate::chain::{
-    AdcChoice, AnalyserWords, GearCondition, InlineChain, MICROSTRAIN_PER_STRAIN, Measurement,
-    Truth,
+    AdcChoice, AnalyserWords, ChainStages, GearCondition, InlineChain, MICROSTRAIN_PER_STRAIN,
+    Measurement, Truth,
 };
 use crate::runtime::rolling_regime::REGIME_WINDOW_S;
 use crate::vocabulary::GearIndicators;
@@ -183,20 +183,12 @@ pub fn measure_case(
     let lead = chain_lead_s(plan);
     plant.drain_impacts();
     plant.drain_revolutions();
-    let mut stage_plans = plan.chain.stages.clone();
-    stage_plans.reseed(NoiseSource::SlipRings.case_seed(case.seed));
     let mut names = SignalNames::plant();
-    let mut chain = InlineChain::new(stage_plans.build(plan.rate_hz, &mut names)?);
-    let input = names
-        .index(&plan.analyser.input)
-        .ok_or_else(|| anyhow::anyhow!("internal wiring: no {}", plan.analyser.input))?;
-    let mut adc = AdcChoice::of(&plan.analyser.adc);
-    adc.dither_seed = adc
-        .dither_seed
-        .map(|_| NoiseSource::AdcDither.case_seed(case.seed));
-    let setup = AnalyserWords::of(&plan.analyser.settings, adc).set_up(plan.rate_hz)?;
-    // A case reads the heights of lines, never which are aliases: no truth kept.
-    let mut measurement = Measurement::new(setup, Truth::NotKept);
+    let CaseInstruments {
+        mut chain,
+        input,
+        mut measurement,
+    } = case_instruments(plan, case, plan.chain.stages.clone(), &mut names)?;
     let mut recording = CaseRecording::start(plan, case, sweep_dir, &names)?;
     let teeth = case.rig.counted_teeth();
     let mut window = SteadyWindow::new(teeth, plant.output_step_s());
@@ -274,6 +266,42 @@ pub fn measure_case(
         result.recordings = r.finish()?;
     }
     Ok(result)
+}
+
+/// A case's measuring chain, the analyser's input channel and its measurement.
+pub(crate) struct CaseInstruments {
+    /// The chain, stage after stage.
+    pub chain: InlineChain,
+    /// The analyser's input among the frames' channels.
+    pub input: usize,
+    /// The ADC and analyser.
+    pub measurement: Measurement,
+}
+
+/// The instruments of `case`: `stages` built on the plant's signals `names` (each stage's
+/// output added), their noise and the ADC's dither seeded for the case.
+pub(crate) fn case_instruments(
+    plan: &SweepPlan,
+    case: &Case,
+    mut stages: ChainStages,
+    names: &mut SignalNames,
+) -> anyhow::Result<CaseInstruments> {
+    stages.reseed(NoiseSource::SlipRings.case_seed(case.seed));
+    let chain = InlineChain::new(stages.build(plan.rate_hz, names)?);
+    let input = names
+        .index(&plan.analyser.input)
+        .ok_or_else(|| anyhow::anyhow!("analyser.input: no {}", plan.analyser.input))?;
+    let mut adc = AdcChoice::of(&plan.analyser.adc);
+    adc.dither_seed = adc
+        .dither_seed
+        .map(|_| NoiseSource::AdcDither.case_seed(case.seed));
+    let setup = AnalyserWords::of(&plan.analyser.settings, adc).set_up(plan.rate_hz)?;
+    // A case reads the heights of lines, never which are aliases: no truth kept.
+    Ok(CaseInstruments {
+        chain,
+        input,
+        measurement: Measurement::new(setup, Truth::NotKept),
+    })
 }
 
 /// A case's result from its window's summary and the analyser's display; the kept

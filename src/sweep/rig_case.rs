@@ -16,16 +16,17 @@ use std::path::Path;
 use instruments::ShaftStrain;
 use rig::{Motion, NetworkBlock, Regime, RigTopology, SteadySummary, impacts_per_tooth};
 
-use super::case::{CaseResult, KEPT_REVOLUTIONS, case_result, chain_lead_s};
+use super::case::{
+    CaseInstruments, CaseResult, KEPT_REVOLUTIONS, case_instruments, case_result, chain_lead_s,
+};
 use super::case_recording::CaseRecording;
 use super::grid::{Case, SweepPlan};
 use super::measured_condition::MeasuredCondition;
-use crate::chain::{AdcChoice, AnalyserWords, ChainStages, InlineChain, Measurement, Truth};
+use crate::chain::ChainStages;
 use crate::rig_point::{RigPointSpec, RigWindow, judged_shaft, settled_rig_plant, watched_gear};
 use crate::steady_point::InputNames;
 use crate::vocabulary::GearIndicators;
 use crate::vocabulary::frame::{Frame, SignalNames};
-use crate::vocabulary::seeds::NoiseSource;
 use crate::vocabulary::signal_names::{
     KEYPHASOR_V, MOTOR_SPEED_RAD_S, SHAFT_TORQUE_NM, SLIP_RING_SPEED_RAD_S,
 };
@@ -109,19 +110,13 @@ pub fn run_rig_case(
         approach: case.approach,
     };
     let mut plant = settled_rig_plant(&spec, NAMES)?;
-    let mut stage_plans = rig_case_stages(&plan.chain.stages, rig)?;
-    stage_plans.reseed(NoiseSource::SlipRings.case_seed(case.seed));
     let mut names = SignalNames::of(&RIG_CASE_SIGNALS);
-    let mut chain = InlineChain::new(stage_plans.build(plan.rate_hz, &mut names)?);
-    let input = names
-        .index(&plan.analyser.input)
-        .ok_or_else(|| anyhow::anyhow!("analyser.input: no {}", plan.analyser.input))?;
-    let mut adc = AdcChoice::of(&plan.analyser.adc);
-    adc.dither_seed = adc
-        .dither_seed
-        .map(|_| NoiseSource::AdcDither.case_seed(case.seed));
-    let setup = AnalyserWords::of(&plan.analyser.settings, adc).set_up(plan.rate_hz)?;
-    let mut measurement = Measurement::new(setup, Truth::NotKept);
+    let stages = rig_case_stages(&plan.chain.stages, rig)?;
+    let CaseInstruments {
+        mut chain,
+        input,
+        mut measurement,
+    } = case_instruments(plan, case, stages, &mut names)?;
     let mut recording = CaseRecording::start(plan, case, sweep_dir, &names)?;
     let mut window = RigWindow::new(rig, plan.rate_hz);
     let roles = RoleColumns::of(rig);

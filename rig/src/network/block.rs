@@ -49,24 +49,6 @@ impl NetworkBlock {
         self.time_s.is_empty()
     }
 
-    /// Makes room for `samples` more samples in every column.
-    pub fn reserve(&mut self, samples: usize) {
-        self.time_s.reserve(samples);
-        let columns = self
-            .angle_rad
-            .iter_mut()
-            .chain(&mut self.speed_rad_s)
-            .chain(&mut self.shaft_torque_nm)
-            .chain(&mut self.mesh_force_n);
-        for c in columns {
-            c.reserve(samples);
-        }
-        for c in &mut self.contact {
-            c.reserve(samples);
-        }
-        self.motor_torque_nm.reserve(samples);
-    }
-
     /// Empties it, keeping its shape and memory.
     pub fn clear(&mut self) {
         self.time_s.clear();

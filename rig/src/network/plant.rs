@@ -342,7 +342,6 @@ impl NetworkPlant {
 
     /// [`Self::run`] without the final check of bounds.
     fn run_samples(&mut self, samples: usize, block: &mut NetworkBlock) -> Result<(), RigError> {
-        block.reserve(samples);
         for _ in 0..samples {
             self.sample_now(block);
             for k in 0..self.substeps {
