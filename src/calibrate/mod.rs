@@ -7,8 +7,9 @@
 //! `cma_es.rs` CMA-ES with IPOP restarts (ask/tell), `objective.rs` the line-height hinge
 //! or the judged motion, `evaluate.rs` every candidate's points as sweep cases in parallel,
 //! `log.rs` the JSON-lines log, `search.rs` the loop (budget, resume, shards,
-//! cross-validation), `report.rs` `preset.toml`, `result.json`, the convergence plot,
-//! `report.md`
+//! cross-validation), `report.rs` `preset.toml` (a rig file's campaign: `rig-set.toml`),
+//! `result.json`, the convergence plot, `report.md`. The rig is the campaign's: a preset's,
+//! or a rig file's with its free parameters by path.
 
 pub(crate) mod calibration_plan;
 pub(crate) mod calibration_toml;
