@@ -14,7 +14,10 @@
 use std::path::Path;
 
 use instruments::ShaftStrain;
-use rig::{Motion, NetworkBlock, Regime, RigTopology, SteadySummary, impacts_per_tooth};
+use rig::{
+    Gauge, Motion, NetworkBlock, NetworkImpact, Regime, RigTopology, SteadySummary,
+    impacts_per_tooth,
+};
 
 use super::case::{
     CaseInstruments, CaseResult, KEPT_REVOLUTIONS, case_instruments, case_result, chain_lead_s,
@@ -23,7 +26,9 @@ use super::case_recording::CaseRecording;
 use super::grid::{Case, SweepPlan};
 use super::measured_condition::MeasuredCondition;
 use crate::chain::ChainStages;
-use crate::rig_point::{RigPointSpec, RigWindow, judged_shaft, settled_rig_plant, watched_gear};
+use crate::rig_point::{
+    RigPointSpec, RigPointSummary, RigWindow, judged_shaft, settled_rig_plant, watched_gear,
+};
 use crate::steady_point::InputNames;
 use crate::vocabulary::GearIndicators;
 use crate::vocabulary::frame::{Frame, SignalNames};
@@ -80,14 +85,19 @@ pub fn motor_of(rig: &RigTopology) -> anyhow::Result<usize> {
     })
 }
 
-/// The chain's stages for `rig`: the strain stage on its gauged shaft.
-pub fn rig_case_stages(stages: &ChainStages, rig: &RigTopology) -> anyhow::Result<ChainStages> {
-    let gauge = rig.gauge.as_ref().ok_or_else(|| {
+/// The rig's strain gauges: a sweep measures the strain of a gauged shaft.
+fn gauge_of(rig: &RigTopology) -> anyhow::Result<&Gauge> {
+    rig.gauge.as_ref().ok_or_else(|| {
         anyhow::anyhow!(
             "rig `{}` has no [gauge]: a sweep measures the strain of a gauged shaft",
             rig.name
         )
-    })?;
+    })
+}
+
+/// The chain's stages for `rig`: the strain stage on its gauged shaft.
+pub fn rig_case_stages(stages: &ChainStages, rig: &RigTopology) -> anyhow::Result<ChainStages> {
+    let gauge = gauge_of(rig)?;
     let shaft = ShaftStrain::new(gauge.diameter_m, gauge.shear_modulus_pa)?;
     Ok(stages.with_gauged_shaft(shaft))
 }
@@ -120,11 +130,7 @@ pub fn run_rig_case(
     let mut recording = CaseRecording::start(plan, case, sweep_dir, &names)?;
     let mut window = RigWindow::new(rig, plan.rate_hz);
     let roles = RoleColumns::of(rig);
-    let gauge_microstrain_per_nm = rig
-        .gauge
-        .as_ref()
-        .map_or(f64::NAN, |g| g.microstrain_per_nm());
-    let mut measured = MeasuredCondition::new(plan, gauge_microstrain_per_nm);
+    let mut measured = MeasuredCondition::new(plan, gauge_of(rig)?.microstrain_per_nm());
     let lead = (lead_s * plan.rate_hz).round() as usize;
     let total = lead + (plan.measure_s * plan.rate_hz).round() as usize;
     let mut block = NetworkBlock::new(rig.bodies.len(), rig.shafts.len(), rig.meshes.len());
@@ -153,37 +159,52 @@ pub fn run_rig_case(
     let impacts = plant.take_impacts();
     let revolutions_s = plant.take_revolutions();
     let summary = window.summary(rig, &spec, &impacts, &revolutions_s);
-    let judged = &summary.shafts[judged_shaft(rig)];
-    let teeth = case.rig.counted_teeth();
-    let first_mesh = impacts.iter().filter(|i| i.mesh == 0);
-    let steady = SteadySummary {
-        measured_s: plan.measure_s,
-        impacts: impacts.len(),
-        torque_rms_nm: judged.torque_ac_rms_nm.hypot(judged.torque_mean_nm),
-        regime: regime_of(summary.motion.motion),
-        motion: summary.motion.clone(),
-        revolutions: revolutions_s.len(),
-        impacts_per_rev: impacts.len() as f64 / revolutions_s.len().max(1) as f64,
-        impacts_per_tooth: impacts_per_tooth(teeth, first_mesh.map(|i| i.teeth[0])),
-        separates: summary.meshes.iter().any(|m| m.apart_fraction > 0.0),
-        apart_fraction: summary.meshes.first().map_or(0.0, |m| m.apart_fraction),
-        torque_mean_nm: judged.torque_mean_nm,
-        torque_ac_rms_nm: judged.torque_ac_rms_nm,
-        speed_offset_rpm: summary.bodies[motor_of(rig)?].speed_mean_rpm - case.rpm,
-    };
+    let steady = steady_summary(plan, case, rig, &summary, &impacts, revolutions_s.len())?;
     let display = measurement.setup.analyser.display();
     let mut result = case_result(plan, case, &steady, &display, measurement.average_count());
     let all_revolutions = window.revolution_torque_nm(&revolutions_s, plan.rate_hz);
     let kept_from = all_revolutions.len().saturating_sub(KEPT_REVOLUTIONS);
     result.revolution_torque_nm = all_revolutions[kept_from..].to_vec();
     result.condition = window.condition_report().as_ref().map(GearIndicators::from);
-    result.measured_condition =
-        watched_gear(rig).and_then(|(_, teeth)| measured.and_then(|m| m.report(teeth)));
+    result.measured_condition = roles
+        .watched_teeth
+        .and_then(|teeth| measured.and_then(|m| m.report(teeth)));
     result.faults = case.rig.fault_labels();
     if let Some(r) = recording {
         result.recordings = r.finish()?;
     }
     Ok(result)
+}
+
+/// A rig case's window as a preset's case sums its own up: the gauged shaft's torque
+/// and motion, impacts on the first mesh's driving gear per revolution of the motor's
+/// body, the first mesh's time apart, the motor's speed offset.
+fn steady_summary(
+    plan: &SweepPlan,
+    case: &Case,
+    rig: &RigTopology,
+    summary: &RigPointSummary,
+    impacts: &[NetworkImpact],
+    revolutions: usize,
+) -> anyhow::Result<SteadySummary> {
+    let judged = &summary.shafts[judged_shaft(rig)];
+    let teeth = case.rig.counted_teeth();
+    let first_mesh = impacts.iter().filter(|i| i.mesh == 0);
+    Ok(SteadySummary {
+        measured_s: plan.measure_s,
+        impacts: impacts.len(),
+        torque_rms_nm: judged.torque_ac_rms_nm.hypot(judged.torque_mean_nm),
+        regime: regime_of(summary.motion.motion),
+        motion: summary.motion.clone(),
+        revolutions,
+        impacts_per_rev: impacts.len() as f64 / revolutions.max(1) as f64,
+        impacts_per_tooth: impacts_per_tooth(teeth, first_mesh.map(|i| i.teeth[0])),
+        separates: summary.meshes.iter().any(|m| m.apart_fraction > 0.0),
+        apart_fraction: summary.meshes.first().map_or(0.0, |m| m.apart_fraction),
+        torque_mean_nm: judged.torque_mean_nm,
+        torque_ac_rms_nm: judged.torque_ac_rms_nm,
+        speed_offset_rpm: summary.bodies[motor_of(rig)?].speed_mean_rpm - case.rpm,
+    })
 }
 
 /// The regime a rig case reports: the judge's period (at rest: period 1), aperiodic
@@ -203,6 +224,8 @@ struct RoleColumns {
     motor: usize,
     slip_ring_body: usize,
     watched_gear: usize,
+    /// The watched gear's teeth (none without a mesh: no indicators then).
+    watched_teeth: Option<u32>,
 }
 
 /// The first body of the gauged shaft (a rig without meshes has no watched gear).
@@ -213,11 +236,13 @@ fn gauged_shaft_body(rig: &RigTopology) -> usize {
 impl RoleColumns {
     fn of(rig: &RigTopology) -> Self {
         let gauged_shaft = judged_shaft(rig);
+        let watched = watched_gear(rig);
         Self {
             gauged_shaft,
             motor: rig.motor.unwrap_or(0),
             slip_ring_body: gauged_shaft_body(rig),
-            watched_gear: watched_gear(rig).map_or(gauged_shaft_body(rig), |(g, _)| g),
+            watched_gear: watched.map_or(gauged_shaft_body(rig), |(g, _)| g),
+            watched_teeth: watched.map(|(_, teeth)| teeth),
         }
     }
 
