@@ -31,6 +31,7 @@ pub mod panel;
 pub mod plots;
 pub mod recording;
 pub mod rig_point;
+pub mod rig_roles;
 pub mod runtime;
 pub mod scenario;
 pub mod steady_point;

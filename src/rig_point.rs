@@ -12,13 +12,13 @@ use std::time::Instant;
 
 use anyhow::Context;
 use rig::{
-    Approach, FaultedGear, JudgeInput, Judgement, NetworkBlock, NetworkImpact, NetworkPlant,
-    RigTopology, judge,
+    Approach, FaultedGear, JudgeInput, Judgement, Motion, NetworkBlock, NetworkImpact,
+    NetworkPlant, Regime, RigTopology, SteadySummary, impacts_per_tooth, judge,
 };
 use serde::Serialize;
 
 use crate::chain::{GearCondition, GearConditionReport};
-use crate::steady_point::{InputNames, check_times};
+use crate::vocabulary::{InputNames, check_times};
 use crate::vocabulary::{check_load_nm, check_speed_rpm};
 
 /// What to run.
@@ -95,6 +95,50 @@ pub struct RigPointSummary {
     pub condition: Option<serde_json::Value>,
 }
 
+impl RigPointSummary {
+    /// This window as the thesis's plant sums its own up (a sweep's case, a scenario's
+    /// point): the judged shaft's torque and motion, impacts on the first mesh's driving
+    /// gear per revolution of the motor's body, the first mesh's time apart, the motor's
+    /// speed offset from `rpm` (rev/min) on body `motor`; `impacts` those of the window.
+    pub fn steady(
+        &self,
+        rig: &RigTopology,
+        motor: usize,
+        rpm: f64,
+        impacts: &[NetworkImpact],
+    ) -> SteadySummary {
+        let judged = &self.shafts[judged_shaft(rig)];
+        let teeth = rig.meshes.first().map_or(0, |m| m.teeth[0]);
+        let first_mesh = impacts.iter().filter(|i| i.mesh == 0);
+        SteadySummary {
+            measured_s: self.measured_s,
+            impacts: impacts.len(),
+            torque_rms_nm: judged.torque_ac_rms_nm.hypot(judged.torque_mean_nm),
+            regime: regime_of(self.motion.motion),
+            motion: self.motion.clone(),
+            revolutions: self.revolutions,
+            impacts_per_rev: impacts.len() as f64 / self.revolutions.max(1) as f64,
+            impacts_per_tooth: impacts_per_tooth(teeth, first_mesh.map(|i| i.teeth[0])),
+            separates: self.meshes.iter().any(|m| m.apart_fraction > 0.0),
+            apart_fraction: self.meshes.first().map_or(0.0, |m| m.apart_fraction),
+            torque_mean_nm: judged.torque_mean_nm,
+            torque_ac_rms_nm: judged.torque_ac_rms_nm,
+            speed_offset_rpm: self.bodies[motor].speed_mean_rpm - rpm,
+        }
+    }
+}
+
+/// The regime a rig file's window reports: the judge's period (at rest: period 1),
+/// aperiodic otherwise (the thesis's plant classifies its own state once per revolution;
+/// a rig file's plant is judged on the gauged shaft's torque alone).
+pub fn regime_of(motion: Motion) -> Regime {
+    match motion {
+        Motion::Periodic(k) => Regime::Periodic(k),
+        Motion::AtRest => Regime::Periodic(1),
+        _ => Regime::Aperiodic,
+    }
+}
+
 /// The gear a point's condition indicators watch: the first tooth fault's gear, else the
 /// first mesh's driven gear; (body, teeth).
 pub fn watched_gear(rig: &RigTopology) -> Option<(usize, u32)> {
@@ -154,7 +198,7 @@ pub fn run_rig_point(
     let impacts = plant.take_impacts();
     let revolutions = plant.take_revolutions();
     let report = window.condition_report();
-    let mut summary = window.summary(rig, spec, &impacts, &revolutions);
+    let mut summary = window.summary(rig, spec.rpm, &impacts, &revolutions);
     summary.condition = report
         .as_ref()
         .map(|r| condition_json(rig, r, window.watched));
@@ -207,7 +251,9 @@ pub fn judged_shaft(rig: &RigTopology) -> usize {
 
 /// What a measuring window keeps: sums per column, the judged shaft's torque and the
 /// watched gear's synchronous average.
+#[derive(Clone, Debug)]
 pub struct RigWindow {
+    rate_hz: f64,
     start_s: Option<f64>,
     samples: usize,
     speed_sum: Vec<f64>,
@@ -224,6 +270,7 @@ impl RigWindow {
     /// An empty window on `rig`'s signals at `rate_hz`.
     pub fn new(rig: &RigTopology, rate_hz: f64) -> Self {
         Self {
+            rate_hz,
             start_s: None,
             samples: 0,
             speed_sum: vec![0.0; rig.bodies.len()],
@@ -264,37 +311,37 @@ impl RigWindow {
     }
 
     /// The judged shaft's torque at each of `revolutions_s` (the motor body's whole
-    /// revolutions in the window, s), at `rate_hz` (N m).
-    pub fn revolution_torque_nm(&self, revolutions_s: &[f64], rate_hz: f64) -> Vec<f64> {
+    /// revolutions in the window, s) (N m).
+    pub fn revolution_torque_nm(&self, revolutions_s: &[f64]) -> Vec<f64> {
         let start_s = self.start_s.unwrap_or(0.0);
         revolutions_s
             .iter()
             .filter_map(|t| {
-                let i = ((t - start_s) * rate_hz).round() as usize;
+                let i = ((t - start_s) * self.rate_hz).round() as usize;
                 self.judged_torque.get(i).copied()
             })
             .collect()
     }
 
-    /// The window summed up and its motion judged; `impacts` and `revolutions_s` those
-    /// of the window.
+    /// The window summed up and its motion judged, the motor set to `rpm` (rev/min);
+    /// `impacts` and `revolutions_s` those of the window.
     pub fn summary(
         &self,
         rig: &RigTopology,
-        spec: &RigPointSpec,
+        rpm: f64,
         impacts: &[NetworkImpact],
         revolutions_s: &[f64],
     ) -> RigPointSummary {
         let n = self.samples.max(1) as f64;
-        let revolution_torque_nm = self.revolution_torque_nm(revolutions_s, spec.rate_hz);
+        let revolution_torque_nm = self.revolution_torque_nm(revolutions_s);
         let motion = judge(&JudgeInput {
             torque_nm: &self.judged_torque,
-            rate_hz: spec.rate_hz,
-            running_hz: spec.rpm / 60.0,
+            rate_hz: self.rate_hz,
+            running_hz: rpm / 60.0,
             revolution_torque_nm: &revolution_torque_nm,
         });
         RigPointSummary {
-            measured_s: spec.duration_s,
+            measured_s: self.samples as f64 / self.rate_hz,
             revolutions: revolutions_s.len(),
             motor_torque_mean_nm: self.motor_sum / n,
             bodies: rig

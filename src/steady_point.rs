@@ -12,7 +12,8 @@ use rig::{Approach, Plant, PlantConfig, RegimeCriteria, SignalBlock, SteadySumma
 
 use crate::scenario::preset_with_overrides;
 use crate::vocabulary::{
-    check_load_nm, check_load_within_motor, check_simulated_s, check_speed_rpm,
+    InputNames, check_load_nm, check_load_within_motor, check_simulated_s, check_speed_rpm,
+    check_times,
 };
 
 /// What to run.
@@ -35,31 +36,6 @@ pub struct PointSpec<'a> {
     /// How the point is reached (settling counts from the end of a ramp).
     pub approach: Approach,
 }
-
-/// How the caller names each input in its messages (the command line's flags, or the
-/// Python function's arguments).
-#[derive(Clone, Copy, Debug)]
-pub struct InputNames {
-    /// The speed.
-    pub rpm: &'static str,
-    /// The load.
-    pub load: &'static str,
-    /// The settling time.
-    pub settle: &'static str,
-    /// The measuring window.
-    pub duration: &'static str,
-    /// The output rate.
-    pub rate: &'static str,
-}
-
-/// The command line's names.
-pub const FLAG_NAMES: InputNames = InputNames {
-    rpm: "--rpm",
-    load: "--load",
-    settle: "--settle",
-    duration: "--duration",
-    rate: "--rate",
-};
 
 /// A point run: the plant as it ended (its impacts and revolutions), the window's
 /// summary, and the times.
@@ -165,21 +141,4 @@ pub fn approach_named(name: &str, rpm: f64, ramp_rpm_per_s: f64) -> anyhow::Resu
         anyhow::anyhow!("ramp rate {ramp_rpm_per_s} rev/min per s to {rpm} rev/min: the ramp's {e}")
     })?;
     Ok(approach)
-}
-
-/// The settling time, the window and the output rate, each refused under its name.
-pub fn check_times(
-    settle_s: f64,
-    duration_s: f64,
-    rate_hz: f64,
-    names: InputNames,
-) -> anyhow::Result<()> {
-    if !(rate_hz.is_finite() && rate_hz > 0.0) {
-        bail!("{} {}: a sample rate > 0 Hz", names.rate, rate_hz);
-    }
-    check_simulated_s(duration_s, false)
-        .map_err(|e| anyhow::anyhow!("{} {}: {e}", names.duration, duration_s))?;
-    check_simulated_s(settle_s, true)
-        .map_err(|e| anyhow::anyhow!("{} {}: {e}", names.settle, settle_s))?;
-    Ok(())
 }

@@ -15,7 +15,7 @@ use common::{folder, testrig};
 use fmu_support::Fmu;
 use rig::{NetworkBlock, NetworkPlant, NetworkStart, RigTopology, Schedule, Track};
 use testrig::rig_point::{RigPointSpec, run_rig_point};
-use testrig::steady_point::FLAG_NAMES;
+use testrig::vocabulary::FLAG_NAMES;
 use testrig_fmu::ffi::{self, ERROR, OK};
 use testrig_fmu::{Causality, SAMPLE_RATE_HZ, variables};
 use testrig_fmu::{ffi_state, ffi_values};

@@ -12,10 +12,11 @@ const LAYERS: &[&[&str]] = &[
     &["recording", "wav_input"],
     &["plots"],
     &["chain"],
+    &["rig_point"],
+    &["rig_roles"],
     &["scenario"],
     &["runtime"],
     &["steady_point"],
-    &["rig_point"],
     &["panel", "sweep"],
     &["calibrate"],
 ];

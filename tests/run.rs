@@ -16,7 +16,7 @@ const ONE_SUBHARMONIC_POINT: [&str; 4] = [
 ];
 
 /// Shortened runs of each shipped scenario: (file stem, `--set` items, other arguments).
-const SHORTENED: [(&str, &[&str], &[&str]); 7] = [
+const SHORTENED: [(&str, &[&str], &[&str]); 8] = [
     (
         "aliasing-windowing",
         &["analyser.averages=1"],
@@ -50,6 +50,7 @@ const SHORTENED: [(&str, &[&str], &[&str]); 7] = [
     ("subharmonic-0nm", &ONE_SUBHARMONIC_POINT, &[]),
     ("subharmonic-2712nm", &ONE_SUBHARMONIC_POINT, &[]),
     ("subharmonic-5424nm", &ONE_SUBHARMONIC_POINT, &[]),
+    ("two-stage-run", &[], &[]),
 ];
 
 /// Whether a shipped file is for another command: a sweep (`testrig sweep`) or a

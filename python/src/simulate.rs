@@ -7,7 +7,8 @@ use numpy::IntoPyArray;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use rig::{COLUMN_NAMES, Flank, SignalBlock};
-use testrig::steady_point::{InputNames, PointRun, PointSpec, approach_named, run_point};
+use testrig::steady_point::{PointRun, PointSpec, approach_named, run_point};
+use testrig::vocabulary::InputNames;
 
 use crate::interrupt::Interrupt;
 

@@ -19,7 +19,7 @@ use testrig::runtime::run_with_status;
 use testrig::runtime::{Pace, RunOptions, StopSignals, write_manifest};
 use testrig::scenario::{CommandLine, Plan, ScenarioSource, apply_override, build};
 use testrig::vocabulary::ControlHandle;
-use testrig::vocabulary::{DEFAULT_LIVE_CEILING, MAX_SIMULATED_S, max_load_nm};
+use testrig::vocabulary::{DEFAULT_LIVE_CEILING, MAX_SIMULATED_S};
 
 use crate::cli::PanelArgs;
 
@@ -180,7 +180,7 @@ fn info(plan: &Plan, ceiling: LiveCeiling, pace: Pace) -> PanelInfo {
         rate_hz: plan.rate_hz,
         pace: pace.label(),
         max_speed_rpm: ceiling.speed_rpm,
-        max_load_nm: max_load_nm(&plan.params),
+        max_load_nm: plan.rig.max_load_nm(),
         max_oscillating_load_hz: ceiling.oscillating_load_hz,
         analyser: plan.analyser.is_some(),
         scope: plan.chain.scope.is_some(),

@@ -10,9 +10,10 @@ use serde::Serialize;
 
 use crate::cli::SimulateArgs;
 use testrig::plots::{RasterImpact, write_impact_raster};
-use testrig::recording::{PartialFile, start_journal};
+use testrig::recording::{ImpactLog, PartialFile, start_journal};
 use testrig::runtime::{clear_previous_run, write_command_manifest};
-use testrig::steady_point::{FLAG_NAMES, PointRun, PointSpec, run_point};
+use testrig::steady_point::{PointRun, PointSpec, run_point};
+use testrig::vocabulary::FLAG_NAMES;
 
 /// The JSON summary of one run.
 #[derive(Serialize)]
@@ -79,7 +80,9 @@ pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
     };
     if let (Some(dir), Some(w)) = (&args.out, writer) {
         let mut files = vec![w.finish()?];
-        files.push(write_impacts(&dir.join("impacts.csv"), plant.impacts())?);
+        let mut impacts = ImpactLog::of_gears(&dir.join("impacts.csv"))?;
+        impacts.write_gears(plant.impacts())?;
+        files.push(impacts.finish()?);
         files.extend(write_raster(
             dir,
             &report,
@@ -254,20 +257,3 @@ fn write_raster(
 
 /// Revolutions the impact raster shows.
 const RASTER_REVOLUTIONS: f64 = 40.0;
-
-fn write_impacts(path: &Path, impacts: &[Impact]) -> anyhow::Result<PathBuf> {
-    // The header is written here, so that a window without impacts still has one;
-    // `serialize` would write another before the first row.
-    let file = PartialFile::new(path);
-    let mut csv = csv::WriterBuilder::new()
-        .has_headers(false)
-        .from_writer(file.create()?);
-    csv.write_record(["time_s", "flank", "tooth", "closing_speed_rad_s"])?;
-    for i in impacts {
-        csv.serialize(i)?;
-    }
-    csv.flush()
-        .with_context(|| format!("writing {}", path.display()))?;
-    drop(csv);
-    file.commit()
-}

@@ -2,20 +2,19 @@
 
 use std::path::{Path, PathBuf};
 
-use anyhow::Context;
 use rig::{NetworkImpact, column_names, columns};
 use serde::Serialize;
 
 use super::simulate::SignalWriter;
 use crate::cli::SimulateArgs;
 use testrig::plots::{AveragePlot, write_synchronous_average};
-use testrig::recording::PartialFile;
+use testrig::recording::{ImpactLog, PartialFile};
 use testrig::rig_point::{
     RigPointRun, RigPointSpec, RigPointSummary, judged_shaft, run_rig_point, watched_gear,
 };
 use testrig::runtime::write_command_manifest;
 use testrig::scenario::rig_with_overrides;
-use testrig::steady_point::FLAG_NAMES;
+use testrig::vocabulary::FLAG_NAMES;
 
 /// The JSON summary of one run.
 #[derive(Serialize)]
@@ -81,7 +80,7 @@ pub fn run(args: &SimulateArgs, path: &Path) -> anyhow::Result<()> {
     if let (Some(dir), Some(w)) = (&args.out, writer) {
         let mut files = vec![
             w.finish()?,
-            write_impacts(&dir.join("impacts.csv"), &rig, &impacts)?,
+            impact_log(dir, &rig, &impacts)?,
             PartialFile::write_whole(
                 &dir.join("summary.json"),
                 serde_json::to_string_pretty(&report)?,
@@ -192,40 +191,13 @@ fn write_average(
     write_synchronous_average(&dir.join("synchronous-average"), &plot)
 }
 
-/// `impacts.csv`: time, mesh, flank, closing speed and the teeth struck of each impact in
-/// the window.
-fn write_impacts(
-    path: &Path,
+/// `impacts.csv` of the window's `impacts`.
+fn impact_log(
+    dir: &Path,
     rig: &rig::RigTopology,
     impacts: &[NetworkImpact],
 ) -> anyhow::Result<PathBuf> {
-    let file = PartialFile::new(path);
-    let mut csv = csv::Writer::from_writer(file.create()?);
-    csv.write_record([
-        "time_s",
-        "mesh",
-        "flank",
-        "closing_speed_m_s",
-        "driver_tooth",
-        "driven_tooth",
-    ])?;
-    for i in impacts {
-        let flank = if i.flank == rig::Contact::Drive {
-            "drive"
-        } else {
-            "back"
-        };
-        csv.write_record([
-            i.time_s.to_string(),
-            rig.meshes[i.mesh].name.clone(),
-            flank.to_string(),
-            i.approach_m_s.abs().to_string(),
-            i.teeth[0].to_string(),
-            i.teeth[1].to_string(),
-        ])?;
-    }
-    csv.flush()
-        .with_context(|| format!("writing {}", path.display()))?;
-    drop(csv);
-    file.commit()
+    let mut log = ImpactLog::of_meshes(&dir.join("impacts.csv"), rig)?;
+    log.write_meshes(impacts)?;
+    log.finish()
 }

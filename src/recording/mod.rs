@@ -4,11 +4,12 @@
 //! Files: `partial.rs` (written as `NAME.partial`, renamed when complete, and then named in
 //! the folder's `journal.rs`: `files.journal`, so that a killed run's files are known),
 //! `cleanup.rs`, `frame_writer.rs` (the face of every recording), `wav.rs` (float32/int24 +
-//! JSON sidecar), `csv_stream.rs`, `uff58.rs`/`uff58_stream.rs`, `spectrum_csv.rs`.
+//! JSON sidecar), `csv_stream.rs`, `impact_log.rs` (`impacts.csv` of either plant), `uff58.rs`/`uff58_stream.rs`, `spectrum_csv.rs`.
 
 pub(crate) mod cleanup;
 pub(crate) mod csv_stream;
 pub(crate) mod frame_writer;
+pub(crate) mod impact_log;
 pub(crate) mod journal;
 pub(crate) mod partial;
 pub(crate) mod spectrum_csv;
@@ -19,6 +20,7 @@ pub(crate) mod wav;
 pub use cleanup::{remove_files_with_extension, remove_partial_files};
 pub use csv_stream::CsvRecorder;
 pub use frame_writer::{CsvFrames, FrameWriter, Written};
+pub use impact_log::ImpactLog;
 pub use journal::{
     JOURNAL_NAME, end_journal, journaled_files, journaled_scenario, note_finished, start_journal,
 };

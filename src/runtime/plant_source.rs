@@ -5,25 +5,26 @@ use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 
 use crossbeam_channel::{Sender, TrySendError};
-use rig::{Plant, RigParams, SetPoints, SignalBlock};
+use rig::SetPoints;
 
 use super::pacing::{LatenessHistogram, Pace, Pacer};
 use super::point_judge::PointJudge;
 use super::rolling_regime::RollingRegime;
+use super::scenario_plant::ScenarioPlant;
 use super::status::SharedStatus;
 use crate::scenario::Overflow;
 use crate::vocabulary::Refusal;
 use crate::vocabulary::frame::Frame;
-use crate::vocabulary::limits::{check_load_nm, check_load_within_motor, check_speed_rpm};
+use crate::vocabulary::limits::{check_load_nm, check_speed_rpm};
 use crate::vocabulary::{CommandInbox, Pending, PointVerdict, RigCommand};
 
 /// Overrun times kept (the count goes on beyond).
 const OVERRUN_TIMES_KEPT: usize = 1000;
 
 /// What the plant's thread was asked to do.
-pub struct PlantJob {
+pub struct PlantJob<P> {
     /// The plant, at t = 0.
-    pub plant: Plant,
+    pub plant: P,
     /// Samples to produce.
     pub total_samples: u64,
     /// Samples per block.
@@ -65,14 +66,9 @@ pub struct PlantReport {
 }
 
 /// Runs the job, sending frames to `out`; returns when done, stopped or disconnected.
-pub fn run_plant(mut job: PlantJob, out: Sender<Frame>) -> PlantReport {
+pub fn run_plant<P: ScenarioPlant>(mut job: PlantJob<P>, out: Sender<Frame>) -> PlantReport {
     let step_s = job.plant.output_step_s();
-    let mut judge = PointJudge::new(
-        &job.measures_s,
-        job.total_samples,
-        step_s,
-        job.plant.params().teeth,
-    );
+    let mut judge = PointJudge::new(&job.measures_s, job.total_samples, step_s);
     let pacer = match job.pace {
         Pace::Factor(f) => Some(Pacer::new(1.0 / step_s, f)),
         Pace::Max => None,
@@ -87,46 +83,39 @@ pub fn run_plant(mut job: PlantJob, out: Sender<Frame>) -> PlantReport {
         points: Vec::new(),
         error: None,
     };
-    let mut block = SignalBlock::default();
+    let mut block = P::Block::default();
     let mut seq = 0;
     // The regime of the last 10 s is for the live panel only.
     let mut rolling = job
         .inbox
         .is_live()
-        .then(|| RollingRegime::new(job.plant.params().teeth, step_s, job.status.clone()));
+        .then(|| RollingRegime::new(&job.plant, job.status.clone()));
     while report.samples < job.total_samples && !job.stop.load(Ordering::Relaxed) {
         let n = (job.total_samples - report.samples).min(job.block_samples as u64) as usize;
         let commands = take_commands(&mut job, report.samples, report.samples as f64 * step_s);
         if job.stop.load(Ordering::Relaxed) {
             break;
         }
-        block.clear();
-        if let Err(e) = job.plant.run(n, &mut block) {
+        if let Err(e) = job.plant.advance(n, &mut block) {
             report.error = Some(format!(
                 "the plant stopped at t = {:.6} s: {e}",
                 job.plant.time_s()
             ));
             break;
         }
-        let impacts = job.plant.drain_impacts();
-        let revolutions = job.plant.drain_revolutions();
-        report.impacts += impacts.len() as u64;
+        report.impacts += P::impacts_in(&block) as u64;
         let start_s = report.samples as f64 * step_s;
         let last = report.samples + n as u64 >= job.total_samples;
-        let verdicts = judge.add(
-            report.samples,
-            &block,
-            &job.plant.set_points(),
-            &impacts,
-            &revolutions,
-            last,
-        );
+        let set = job.plant.set_points();
+        let verdicts = judge.add(&job.plant, report.samples, &block, &set, last);
         report.points.extend(verdicts.iter().cloned());
         if let Some(rolling) = rolling.as_mut() {
-            rolling.add(&block, &job.plant.set_points(), &impacts, &revolutions);
+            rolling.add(&job.plant, &block, n, &set);
         }
-        let frame = Frame::of_block(seq, report.samples, &block, impacts)
-            .with_commands(commands, job.plant.set_points())
+        let frame = job
+            .plant
+            .frame(seq, report.samples, &mut block)
+            .with_commands(commands, set)
             .with_points(verdicts);
         report.samples += n as u64;
         seq += 1;
@@ -149,7 +138,11 @@ pub fn run_plant(mut job: PlantJob, out: Sender<Frame>) -> PlantReport {
 
 /// The commands due at the block starting at `start_sample` (`at_s`): the plant's own
 /// (set points, quit) carried out and answered here, the others returned for the frame.
-fn take_commands(job: &mut PlantJob, start_sample: u64, at_s: f64) -> Vec<Pending> {
+fn take_commands<P: ScenarioPlant>(
+    job: &mut PlantJob<P>,
+    start_sample: u64,
+    at_s: f64,
+) -> Vec<Pending> {
     let mut onward = Vec::new();
     // The set points as the commands of this block leave them (the plant takes them up
     // at its next step, so it cannot be asked between two commands of one block).
@@ -173,8 +166,8 @@ fn take_commands(job: &mut PlantJob, start_sample: u64, at_s: f64) -> Vec<Pendin
                 continue;
             }
         }
-        let outcome = check_set_points(&set, job.plant.params())
-            .and_then(|()| job.plant.set_points_from_now(set).map_err(Refusal::from));
+        let outcome = check_set_points(&set, &job.plant)
+            .and_then(|()| job.plant.hold(set).map_err(Refusal::from));
         if outcome.is_ok() {
             current = set;
         }
@@ -188,11 +181,12 @@ fn take_commands(job: &mut PlantJob, start_sample: u64, at_s: f64) -> Vec<Pendin
 }
 
 /// The bounds every command shares (speed, brake load), as for a scenario's set points.
-fn check_set_points(set: &SetPoints, params: &RigParams) -> Result<(), Refusal> {
+fn check_set_points(set: &SetPoints, plant: &impl ScenarioPlant) -> Result<(), Refusal> {
     let limit = |what| move |source| Refusal::Limit { what, source };
     check_speed_rpm(set.speed_rpm).map_err(limit("speed"))?;
     check_load_nm(set.load_nm).map_err(limit("load"))?;
-    check_load_within_motor(set.load_nm + set.oscillating_load_nm, params)
+    plant
+        .check_load(set.load_nm + set.oscillating_load_nm)
         .map_err(limit("load with its oscillating part"))?;
     for (value, what) in [
         (set.oscillating_load_nm, "oscillating load amplitude (N m)"),
@@ -208,8 +202,8 @@ fn check_set_points(set: &SetPoints, params: &RigParams) -> Result<(), Refusal> 
 }
 
 /// Sends one frame by the overflow policy; false when nobody listens any more.
-fn release(
-    job: &PlantJob,
+fn release<P>(
+    job: &PlantJob<P>,
     out: &Sender<Frame>,
     frame: Frame,
     start_s: f64,

@@ -7,12 +7,10 @@
 
 use std::sync::Arc;
 
-use rig::{Impact, RegimeCriteria, RevolutionSample, SetPoints, SignalBlock, SteadyWindow};
-
-use crate::chain::GearCondition;
-use crate::vocabulary::GearIndicators;
+use rig::SetPoints;
 
 use super::rolling_regime::REGIME_WINDOW_S;
+use super::scenario_plant::{PointWindow, ScenarioPlant};
 use crate::vocabulary::PointVerdict;
 
 /// One point's window, in samples of the run.
@@ -25,28 +23,26 @@ struct Span {
 /// The set speed (rev/min) and load (N m) a window was opened under.
 type HeldSetPoints = (f64, f64);
 
-/// A point's window being filled: its index, its summary, the driven gear's average and
-/// the set points it was opened under.
-struct OpenWindow {
+/// A point's window being filled: its index, the window and the set points it was
+/// opened under.
+struct OpenWindow<W> {
     index: usize,
-    window: SteadyWindow,
-    condition: GearCondition,
+    window: W,
     held: HeldSetPoints,
 }
 
 /// The windows of a run's points and the one being filled.
-pub struct PointJudge {
+pub struct PointJudge<W> {
     spans: Vec<Span>,
     next: usize,
-    open: Option<OpenWindow>,
-    teeth: u32,
+    open: Option<OpenWindow<W>>,
     step_s: f64,
 }
 
-impl PointJudge {
+impl<W: PointWindow> PointJudge<W> {
     /// Windows for measurements at `measures_s` (s; empty: the run is one point) in a run
-    /// of `total_samples` samples every `step_s` of a plant of `teeth` teeth.
-    pub fn new(measures_s: &[f64], total_samples: u64, step_s: f64, teeth: u32) -> Self {
+    /// of `total_samples` samples every `step_s`.
+    pub fn new(measures_s: &[f64], total_samples: u64, step_s: f64) -> Self {
         let duration_s = total_samples as f64 * step_s;
         let sample = |s: f64| ((s / step_s).round().max(0.0) as u64).min(total_samples);
         let spans = if measures_s.is_empty() {
@@ -69,21 +65,19 @@ impl PointJudge {
             spans,
             next: 0,
             open: None,
-            teeth,
             step_s,
         }
     }
 
-    /// Adds the block starting at sample `start`, made under set points `set` (with its
-    /// impacts and revolution samples); returns the verdicts on windows that ended before
-    /// it, or with it when `last` (the run's last block).
-    pub fn add(
+    /// Adds `plant`'s block starting at sample `start`, made under set points `set`;
+    /// returns the verdicts on windows that ended before it, or with it when `last` (the
+    /// run's last block).
+    pub fn add<P: ScenarioPlant<Window = W>>(
         &mut self,
+        plant: &P,
         start: u64,
-        block: &SignalBlock,
+        block: &W::Block,
         set: &SetPoints,
-        impacts: &[Impact],
-        revolutions: &[RevolutionSample],
         last: bool,
     ) -> Vec<Arc<PointVerdict>> {
         let held = (set.speed_rpm, set.load_nm);
@@ -94,13 +88,10 @@ impl PointJudge {
             verdicts.extend(self.close());
         }
         if self.open.is_none() {
-            self.open_window_at(start, held);
+            self.open_window_at(start, held, plant);
         }
         if let Some(open) = &mut self.open {
-            open.window.add_block(block, set.speed_rad_s());
-            open.window.add_impacts(impacts);
-            open.window.add_revolutions(revolutions);
-            open.condition.add(block);
+            open.window.add(block, set);
         }
         if last {
             verdicts.extend(self.close());
@@ -110,7 +101,12 @@ impl PointJudge {
 
     /// Opens the window the block starting at `start` falls in, if any (windows that no
     /// block started in are passed over).
-    fn open_window_at(&mut self, start: u64, held: HeldSetPoints) {
+    fn open_window_at<P: ScenarioPlant<Window = W>>(
+        &mut self,
+        start: u64,
+        held: HeldSetPoints,
+        plant: &P,
+    ) {
         while let Some(span) = self.spans.get(self.next) {
             if start >= span.to {
                 self.next += 1;
@@ -119,8 +115,7 @@ impl PointJudge {
             if start >= span.from {
                 self.open = Some(OpenWindow {
                     index: self.next,
-                    window: SteadyWindow::new(self.teeth, self.step_s),
-                    condition: GearCondition::new(1.0 / self.step_s),
+                    window: plant.window(),
                     held,
                 });
                 self.next += 1;
@@ -132,12 +127,12 @@ impl PointJudge {
     /// The verdict on the open window, which is closed.
     fn close(&mut self) -> Option<Arc<PointVerdict>> {
         let open = self.open.take()?;
-        let report = open.condition.report(self.teeth as usize);
+        let (summary, condition) = open.window.verdict();
         Some(Arc::new(PointVerdict {
             index: open.index,
             from_s: self.spans[open.index].from as f64 * self.step_s,
-            summary: open.window.summary(&RegimeCriteria::default()),
-            condition: report.as_ref().map(GearIndicators::from),
+            summary,
+            condition,
         }))
     }
 }

@@ -7,8 +7,9 @@
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
 
-use rig::{Impact, RegimeCriteria, RevolutionSample, SetPoints, SignalBlock, SteadyWindow};
+use rig::SetPoints;
 
+use super::scenario_plant::{PointWindow, ScenarioPlant};
 use super::status::SharedStatus;
 
 /// Longest stretch at the end of a run whose once-per-revolution samples decide the regime (s).
@@ -23,9 +24,8 @@ pub const SETTLE_S: f64 = 15.0;
 pub const SETTLING: &str = "settling";
 
 /// The window being filled; the shared status receives each full window's verdicts.
-pub struct RollingRegime {
-    window: SteadyWindow,
-    teeth: u32,
+pub struct RollingRegime<W> {
+    window: W,
     step_s: f64,
     /// Time settled so far since the last change of set points (s), up to [`SETTLE_S`].
     settled_s: f64,
@@ -36,13 +36,12 @@ pub struct RollingRegime {
     status: SharedStatus,
 }
 
-impl RollingRegime {
-    /// For a plant of `teeth` teeth sampled every `step_s`, reporting into `status`.
-    pub fn new(teeth: u32, step_s: f64, status: SharedStatus) -> Self {
+impl<W: PointWindow> RollingRegime<W> {
+    /// For `plant`, reporting into `status`.
+    pub fn new<P: ScenarioPlant<Window = W>>(plant: &P, status: SharedStatus) -> Self {
         Self {
-            window: SteadyWindow::new(teeth, step_s),
-            teeth,
-            step_s,
+            window: plant.window(),
+            step_s: plant.output_step_s(),
             settled_s: 0.0,
             filled_s: 0.0,
             held: None,
@@ -51,34 +50,34 @@ impl RollingRegime {
         }
     }
 
-    /// Adds a block made under `set`; when a window has just filled, its regime goes to
-    /// the status at once and its judged motion when the judge's thread is done.
-    pub fn add(
+    /// Adds `plant`'s block of `samples` samples made under `set`; when a window has just
+    /// filled, its regime goes to the status at once where the plant tells it cheaply, and
+    /// the judge's regime and motion when the judge's thread is done.
+    pub fn add<P: ScenarioPlant<Window = W>>(
         &mut self,
-        block: &SignalBlock,
+        plant: &P,
+        block: &W::Block,
+        samples: usize,
         set: &SetPoints,
-        impacts: &[Impact],
-        revolutions: &[RevolutionSample],
     ) {
         if self.held.as_ref() != Some(set) {
-            self.restart(*set);
+            self.restart(plant, *set);
         }
-        let block_s = block.len() as f64 * self.step_s;
+        let block_s = samples as f64 * self.step_s;
         if self.settled_s < SETTLE_S {
             self.settled_s += block_s;
             return;
         }
-        self.window.add_block(block, set.speed_rad_s());
-        self.window.add_impacts(impacts);
-        self.window.add_revolutions(revolutions);
+        self.window.add(block, set);
         self.filled_s += block_s;
         if self.filled_s < REGIME_WINDOW_S {
             return;
         }
-        let full = std::mem::replace(&mut self.window, SteadyWindow::new(self.teeth, self.step_s));
+        let full = std::mem::replace(&mut self.window, plant.window());
         self.filled_s = 0.0;
-        let regime = full.regime(&RegimeCriteria::default());
-        self.status.update(|s| s.regime = Some(regime.to_string()));
+        if let Some(regime) = full.quick_regime() {
+            self.status.update(|s| s.regime = Some(regime));
+        }
         let status = self.status.clone();
         let generation = Arc::clone(&self.generation);
         let began = generation.load(Ordering::Relaxed);
@@ -86,18 +85,21 @@ impl RollingRegime {
         let _ = std::thread::Builder::new()
             .name("judge".into())
             .spawn(move || {
-                let motion = full.judgement().motion;
+                let (regime, motion) = full.judged();
                 if generation.load(Ordering::Relaxed) == began {
-                    status.update(|s| s.motion = Some(motion.to_string()));
+                    status.update(|s| {
+                        s.regime = Some(regime);
+                        s.motion = Some(motion);
+                    });
                 }
             });
     }
 
     /// New set points: the window so far is dropped and the rig left to settle again.
-    fn restart(&mut self, set: SetPoints) {
+    fn restart<P: ScenarioPlant<Window = W>>(&mut self, plant: &P, set: SetPoints) {
         self.held = Some(set);
         self.generation.fetch_add(1, Ordering::Relaxed);
-        self.window = SteadyWindow::new(self.teeth, self.step_s);
+        self.window = plant.window();
         self.settled_s = 0.0;
         self.filled_s = 0.0;
         self.status.update(|s| {

@@ -13,6 +13,8 @@ use super::console::Console;
 use super::pacing::Pace;
 use super::plant_source::{PlantJob, PlantReport, run_plant};
 use super::process_usage::cpu_s_and_peak_rss_mib;
+use super::rig_file_plant::RigFilePlant;
+use super::scenario_plant::ScenarioPlant;
 use super::sinks::analyser::AnalyserSink;
 use super::sinks::monitor::MonitorSink;
 use super::sinks::recorder::RecorderSink;
@@ -23,7 +25,8 @@ use super::status::SharedStatus;
 use super::wiring::{channel, guarded, run_sink, run_stage};
 use crate::chain::NamedStage;
 use crate::recording::start_journal;
-use crate::scenario::Plan;
+use crate::rig_roles::RIG_SIGNALS;
+use crate::scenario::{Plan, PlanRig};
 use crate::vocabulary::control::refusals;
 use crate::vocabulary::frame::SignalNames;
 use crate::vocabulary::signal_names::{AMPLIFIER_V, FILTER_V};
@@ -112,62 +115,91 @@ pub fn run_with_status(
         )
     })?;
     start_journal(&options.out, &plan.name)?;
-    let config = PlantConfig {
-        output_rate_hz: plan.rate_hz,
-        live_ceiling: plan.live_ceiling,
-        ..PlantConfig::default()
-    };
-    let plant = Plant::new(plan.params.clone(), plan.schedule.clone(), config)
-        .context("the rig and schedule of the scenario")?;
-    let mut names = SignalNames::plant();
-    let stages = plan.chain.stages.build(plan.rate_hz, &mut names)?;
-    let live = options.control.is_some();
-    let sinks = build_sinks(plan, &options.out, &names, &status, live)?;
-    let total_samples = (plan.duration_s * plan.rate_hz).round() as u64;
-    let inbox = CommandInbox::new(
-        &plan.commands,
-        options.control.clone(),
-        command_targets(plan),
-        plan.rate_hz,
-    );
-    let scheduled_answers = inbox.scheduled_answers();
-    let job = PlantJob {
-        plant,
-        total_samples,
-        block_samples: plan.block_samples,
-        pace: options.pace,
-        overflow: plan.overflow,
-        stop: Arc::clone(&options.stop),
-        status: status.clone(),
-        inbox,
-        measures_s: plan.measures.iter().map(|m| m.at_s).collect(),
-    };
-    let (cpu_before, _) = cpu_s_and_peak_rss_mib();
-    let started = Instant::now();
-    let console = Console::new(total_samples, plan.rate_hz, options.console);
-    let errors = Mutex::new(Vec::new());
-    let threads = Threads {
-        queue_blocks: plan.queue_blocks,
-        stop: &options.stop,
-        errors: &errors,
-        console: &console,
+    let run = RunParts {
+        plan,
+        options,
         status: &status,
     };
-    let (plant, sink_reports) = threads.run(job, stages, sinks);
-    console.finish();
-    let plant = plant.map_err(|_| anyhow::anyhow!("the plant's thread panicked"))?;
-    let (cpu_after, peak_rss_mib) = cpu_s_and_peak_rss_mib();
-    let errors = errors.into_inner().unwrap_or_else(PoisonError::into_inner);
-    Ok(RunResult {
-        stopped_early: plant.samples < total_samples,
-        plant,
-        sinks: sink_reports,
-        wall_s: started.elapsed().as_secs_f64(),
-        cpu_s: cpu_after - cpu_before,
-        peak_rss_mib,
-        errors,
-        refused_commands: refusals(&scheduled_answers),
-    })
+    match &plan.rig {
+        PlanRig::Preset { params, .. } => {
+            let config = PlantConfig {
+                output_rate_hz: plan.rate_hz,
+                live_ceiling: plan.live_ceiling,
+                ..PlantConfig::default()
+            };
+            let plant = Plant::new((**params).clone(), plan.schedule.clone(), config)
+                .context("the rig and schedule of the scenario")?;
+            run.run(plant, SignalNames::plant())
+        }
+        PlanRig::File(rig) => {
+            let ceiling = plan.live_ceiling.map(|c| c.speed_rpm);
+            let plant = RigFilePlant::new(rig, plan.schedule.clone(), plan.rate_hz, ceiling)
+                .with_context(|| format!("rig `{}` and the scenario's schedule", rig.name))?;
+            run.run(plant, SignalNames::of(&RIG_SIGNALS))
+        }
+    }
+}
+
+/// A run's plan, options and status, before its plant is built.
+struct RunParts<'a> {
+    plan: &'a Plan,
+    options: &'a RunOptions,
+    status: &'a SharedStatus,
+}
+
+impl RunParts<'_> {
+    /// Runs `plant`, whose channels `names` names, through the chain into the sinks.
+    fn run<P: ScenarioPlant>(&self, plant: P, mut names: SignalNames) -> anyhow::Result<RunResult> {
+        let (plan, options, status) = (self.plan, self.options, self.status);
+        let stages = plan.chain.stages.build(plan.rate_hz, &mut names)?;
+        let live = options.control.is_some();
+        let sinks = build_sinks(plan, &options.out, &names, status, live)?;
+        let total_samples = (plan.duration_s * plan.rate_hz).round() as u64;
+        let inbox = CommandInbox::new(
+            &plan.commands,
+            options.control.clone(),
+            command_targets(plan),
+            plan.rate_hz,
+        );
+        let scheduled_answers = inbox.scheduled_answers();
+        let job = PlantJob {
+            plant,
+            total_samples,
+            block_samples: plan.block_samples,
+            pace: options.pace,
+            overflow: plan.overflow,
+            stop: Arc::clone(&options.stop),
+            status: status.clone(),
+            inbox,
+            measures_s: plan.measures.iter().map(|m| m.at_s).collect(),
+        };
+        let (cpu_before, _) = cpu_s_and_peak_rss_mib();
+        let started = Instant::now();
+        let console = Console::new(total_samples, plan.rate_hz, options.console);
+        let errors = Mutex::new(Vec::new());
+        let threads = Threads {
+            queue_blocks: plan.queue_blocks,
+            stop: &options.stop,
+            errors: &errors,
+            console: &console,
+            status,
+        };
+        let (plant, sink_reports) = threads.run(job, stages, sinks);
+        console.finish();
+        let plant = plant.map_err(|_| anyhow::anyhow!("the plant's thread panicked"))?;
+        let (cpu_after, peak_rss_mib) = cpu_s_and_peak_rss_mib();
+        let errors = errors.into_inner().unwrap_or_else(PoisonError::into_inner);
+        Ok(RunResult {
+            stopped_early: plant.samples < total_samples,
+            plant,
+            sinks: sink_reports,
+            wall_s: started.elapsed().as_secs_f64(),
+            cpu_s: cpu_after - cpu_before,
+            peak_rss_mib,
+            errors,
+            refused_commands: refusals(&scheduled_answers),
+        })
+    }
 }
 
 /// What the threads of a run share.
@@ -184,9 +216,9 @@ type PlantOutcome = std::thread::Result<PlantReport>;
 impl Threads<'_> {
     /// Spawns the plant, a thread per stage (each feeding the next, the last feeding every
     /// sink) and a thread per sink; draws the console until the plant is done; joins all.
-    fn run(
+    fn run<P: ScenarioPlant>(
         &self,
-        job: PlantJob,
+        job: PlantJob<P>,
         stages: Vec<NamedStage>,
         sinks: Vec<NamedSink>,
     ) -> (PlantOutcome, Vec<SinkReport>) {

@@ -1,14 +1,16 @@
 //! From a parsed scenario file to a checked [`Plan`].
 
 use super::read_chain::{analyser_plan, chain_plan, record_plan};
-use super::read_rig::{rig_params, schedule_and_measures};
-use super::read_stages::read_signal;
-use super::run_plan::{Plan, RecordPlan};
+use super::read_rig::{plan_rig, schedule_and_measures};
+use super::read_stages::read_signal_among;
+use super::rig_chain::rig_chain;
+use super::run_plan::{Plan, PlanRig, RecordPlan};
 use super::scenario_toml::ScenarioFile;
 use super::source::ScenarioSource;
 use super::values::Positive;
+use crate::rig_roles::rig_signal_names;
 use crate::vocabulary::choices::WavFormat;
-use crate::vocabulary::limits::{check_load_within_motor, check_simulated_s};
+use crate::vocabulary::limits::check_simulated_s;
 
 /// Run-time choices from the command line that override the file.
 #[derive(Clone, Copy, Debug, Default)]
@@ -32,9 +34,9 @@ pub fn build(src: &ScenarioSource, command_line: CommandLine) -> anyhow::Result<
         }
     }
     let seed = command_line.seed.unwrap_or(file.seed);
-    let (preset, params) = rig_params(src, &file.rig)?;
+    let rig = plan_rig(src, &file.rig)?;
     let (schedule, measures, survey_s) = schedule_and_measures(src, &file)?;
-    check_load_within_motor(schedule.load_nm.range().1, &params)
+    rig.check_load(schedule.load_nm.range().1)
         .map_err(|message| src.error(0..0, "load_nm", message))?;
     let duration_s = match (command_line.duration_s, &file.duration_s, survey_s) {
         (Some(d), _, _) => d,
@@ -56,18 +58,20 @@ pub fn build(src: &ScenarioSource, command_line: CommandLine) -> anyhow::Result<
         None => None,
     };
     let band_hz = analyser.as_ref().map(|a| a.settings.fmax_hz);
-    let chain = chain_plan(src, &file.chain, rate_hz, seed, band_hz)?;
+    let mut chain = chain_plan(src, &file.chain, rate_hz, seed, band_hz)?;
+    let names = match &rig {
+        PlanRig::Preset { .. } => chain.stages.signal_names(),
+        PlanRig::File(topology) => {
+            chain = rig_chain(src, topology, &chain, rate_hz)?;
+            rig_signal_names(&chain.stages)
+        }
+    };
     if let (Some(a), Some(written)) = (&analyser, &file.analyser) {
-        read_signal(
-            src,
-            &chain.stages,
-            written.input.as_ref(),
-            "analyser.input",
-            &a.input,
-        )?;
+        let input = written.input.as_ref();
+        read_signal_among(src, &names, input, "analyser.input", &a.input)?;
     }
     let record = match &file.record {
-        Some(r) => Some(record_plan(src, r, &chain, &chain.stages.signal_names())?),
+        Some(r) => Some(record_plan(src, r, &chain, &names)?),
         None => None,
     };
     if let (Some(r), Some(written)) = (&record, &file.record)
@@ -97,8 +101,7 @@ pub fn build(src: &ScenarioSource, command_line: CommandLine) -> anyhow::Result<
         block_samples: *file.block_samples.get_ref(),
         overflow: file.overflow,
         queue_blocks: *file.queue_blocks.get_ref(),
-        preset,
-        params,
+        rig,
         schedule,
         measures,
         is_survey: file.survey.is_some(),

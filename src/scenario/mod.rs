@@ -21,12 +21,14 @@ pub(crate) mod read_chain;
 
 pub(crate) mod coverage;
 pub(crate) mod overrides;
+pub(crate) mod plan_rig;
 pub(crate) mod preset_file;
 pub(crate) mod read_instrument;
 pub(crate) mod read_rig;
 pub(crate) mod read_rig_file;
 pub(crate) mod read_rig_mesh;
 pub(crate) mod read_stages;
+pub(crate) mod rig_chain;
 pub(crate) mod rig_file_toml;
 pub(crate) mod run_plan;
 pub(crate) mod scenario_toml;
@@ -41,6 +43,6 @@ pub use preset_file::preset_with_overrides;
 pub use read_rig_file::{
     read_rig_file, rig_topology, rig_with_overrides, source_rig_with_overrides,
 };
-pub use run_plan::{AnalyserPlan, ChainPlan, Measure, Plan, RecordPlan, ScopePlan};
+pub use run_plan::{AnalyserPlan, ChainPlan, Measure, Plan, PlanRig, RecordPlan, ScopePlan};
 pub use scenario_toml::Overflow;
 pub use source::ScenarioSource;

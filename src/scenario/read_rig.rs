@@ -4,25 +4,33 @@ use rig::{DEFAULT_PRESET, ParamValue, RigParams, Schedule, Track};
 use toml::Spanned;
 
 use super::preset_file::preset_params;
-use super::run_plan::Measure;
+use super::read_rig_file::rig_of_file_table;
+use super::run_plan::{Measure, PlanRig};
 use super::scenario_toml::{ChangeFile, RigFile, ScenarioFile, ScheduleFile, SurveyFile};
 use super::source::ScenarioSource;
 use super::values::param_value;
 
-/// The preset with the backlash setting and every `[rig.set]` override applied.
-pub fn rig_params(src: &ScenarioSource, rig: &RigFile) -> anyhow::Result<(String, RigParams)> {
-    if let Some(file) = &rig.file {
-        return Err(src.error(
-            file.span(),
-            "rig.file",
-            "a rig file runs in a sweep (`testrig sweep`), `testrig simulate --rig` and an FMU; this command takes a preset",
-        ));
+/// The rig of a scenario's `[rig]` table: a rig file's (`file`, relative to the
+/// scenario, with its `[rig.set]` and `[[rig.fault]]`), else a preset's.
+pub fn plan_rig(src: &ScenarioSource, rig: &RigFile) -> anyhow::Result<PlanRig> {
+    if rig.file.is_some() {
+        return Ok(PlanRig::File(Box::new(rig_of_file_table(src, rig)?)));
     }
+    let (name, params) = rig_params(src, rig)?;
+    Ok(PlanRig::Preset {
+        name,
+        params: Box::new(params),
+    })
+}
+
+/// The preset with the backlash setting and every `[rig.set]` override applied (a
+/// `[rig]` table without `file`).
+pub fn rig_params(src: &ScenarioSource, rig: &RigFile) -> anyhow::Result<(String, RigParams)> {
     if let Some(f) = rig.fault.first() {
         return Err(src.error(
             f.gear.span(),
             "rig.fault",
-            "faults are seeded on a rig file's meshes: give rig.file in a sweep",
+            "faults are seeded on a rig file's meshes: give rig.file",
         ));
     }
     let (name, span) = match &rig.preset {

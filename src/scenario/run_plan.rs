@@ -1,8 +1,10 @@
 //! A scenario checked and turned into settings the runtime uses directly.
 
 use crate::vocabulary::choices::WavFormat;
-use instruments::{AdcSettings, AnalyserSettings, ScopeSettings};
-use rig::{RigParams, Schedule};
+use instruments::{AdcSettings, AnalyserSettings, ScopeSettings, ShaftStrain};
+use rig::Schedule;
+
+pub use super::plan_rig::PlanRig;
 
 use super::scenario_toml::Overflow;
 use crate::chain::{ChainStages, Instrument, MICROSTRAIN_PER_STRAIN};
@@ -29,10 +31,8 @@ pub struct Plan {
     pub overflow: Overflow,
     /// Queue length (blocks).
     pub queue_blocks: usize,
-    /// Preset name.
-    pub preset: String,
-    /// Rig parameters after overrides.
-    pub params: RigParams,
+    /// The rig: a preset's parameters or a rig file's rig.
+    pub rig: PlanRig,
     /// Knobs over time.
     pub schedule: Schedule,
     /// Readings of the rack, in time order.
@@ -78,6 +78,18 @@ pub struct ChainPlan {
 }
 
 impl ChainPlan {
+    /// This chain with its strain stage and static calibration on `shaft` (a rig file's
+    /// gauged shaft): the amplifier's volts per N m scale with the strain per N m.
+    pub fn on_gauged_shaft(&self, shaft: ShaftStrain) -> Self {
+        let strain_per_nm = shaft.strain_per_nm();
+        Self {
+            stages: self.stages.with_gauged_shaft(shaft),
+            strain_per_nm,
+            volts_per_nm: self.volts_per_nm * strain_per_nm / self.strain_per_nm,
+            scope: self.scope.clone(),
+        }
+    }
+
     /// Strain (µε) per unit of signal `name`, where the signal is the gauged shaft's strain
     /// or a static calibration holds it: the amplifier's output, and the anti-alias
     /// filter's output when the filter (unity gain in its pass band) reads the amplifier.

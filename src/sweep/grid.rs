@@ -14,9 +14,10 @@ use crate::vocabulary::limits::check_simulated_s;
 
 use super::case_rig::CaseRig;
 use super::knock::knock_rad_s;
-use super::rig_case::{RIG_CASE_SIGNALS, motor_of, rig_case_signal_names, rig_case_stages};
 use super::sequence::{Direction, Sequence};
 use super::sweep_toml::{CaseFile, GridFile, SweepFile};
+use crate::rig_roles::rig_signal_names;
+use crate::scenario::rig_chain::rig_chain;
 use crate::vocabulary::frame::SignalNames;
 use crate::vocabulary::limits::MAX_SWEEP_CASES;
 use crate::vocabulary::seeds::{NoiseSource, case_seed};
@@ -102,8 +103,8 @@ pub fn build_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<Swe
     let names = match &base {
         CaseRig::Preset(_) => chain.stages.signal_names(),
         CaseRig::File(rig) => {
-            check_rig_case_chain(src, rig, &chain, rate_hz)?;
-            rig_case_signal_names(&chain.stages)
+            rig_chain(src, rig, &chain, rate_hz)?;
+            rig_signal_names(&chain.stages)
         }
     };
     let input = file.analyser.input.as_ref();
@@ -314,31 +315,6 @@ fn sweep_record_plan(
         ));
     }
     record_plan(src, file, chain, names)
-}
-
-/// A rig file's rig checked for what its cases need: a motor to set the speed of, a
-/// gauged shaft for the strain stage, and the chain's stages wired on the signals such a
-/// case offers ([`RIG_CASE_SIGNALS`]).
-fn check_rig_case_chain(
-    src: &ScenarioSource,
-    rig: &rig::RigTopology,
-    chain: &ChainPlan,
-    rate_hz: f64,
-) -> anyhow::Result<()> {
-    motor_of(rig).map_err(|e| src.error(0..0, "rig.file", e))?;
-    let stages = rig_case_stages(&chain.stages, rig).map_err(|e| src.error(0..0, "rig.file", e))?;
-    let mut names = SignalNames::of(&RIG_CASE_SIGNALS);
-    stages.build(rate_hz, &mut names).map_err(|e| {
-        src.error(
-            0..0,
-            &format!("chain.stage `{}`", e.output()),
-            format!(
-                "{e} (a rig file's case offers {} to the chain)",
-                RIG_CASE_SIGNALS.join(", ")
-            ),
-        )
-    })?;
-    Ok(())
 }
 
 /// The lab's run: one series per load, the speeds up in ascending order, then down from

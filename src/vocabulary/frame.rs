@@ -3,7 +3,7 @@
 
 use std::sync::Arc;
 
-use rig::{Impact, SetPoints, SignalBlock};
+use rig::{Impact, NetworkImpact, SetPoints, SignalBlock};
 
 use crate::vocabulary::Pending;
 use crate::vocabulary::point_verdict::PointVerdict;
@@ -19,7 +19,7 @@ pub struct Frame {
     /// The samples, one channel per signal.
     pub channels: Vec<Arc<[f64]>>,
     /// Contacts that started within the block.
-    pub impacts: Arc<[Impact]>,
+    pub impacts: FrameImpacts,
     /// Commands that take effect at the block's start, for the stages and sinks they
     /// address (each carries them out before the block's samples).
     pub commands: Arc<[Pending]>,
@@ -38,7 +38,7 @@ impl Frame {
             seq: 0,
             start_sample: 0,
             channels: channels.into_iter().map(Arc::from).collect(),
-            impacts: Arc::new([]),
+            impacts: FrameImpacts::default(),
             commands: Arc::new([]),
             set_points: None,
             points: Arc::new([]),
@@ -71,7 +71,7 @@ impl Frame {
             seq,
             start_sample,
             channels,
-            impacts: impacts.into(),
+            impacts: FrameImpacts::Gears(impacts.into()),
             commands: Arc::new([]),
             set_points: None,
             points: Arc::new([]),
@@ -110,11 +110,41 @@ impl Frame {
             seq: self.seq,
             start_sample: self.start_sample,
             channels,
-            impacts: Arc::clone(&self.impacts),
+            impacts: self.impacts.clone(),
             commands: Arc::clone(&self.commands),
             set_points: self.set_points,
             points: Arc::clone(&self.points),
         }
+    }
+}
+
+/// The contacts that started within a frame's block, as its plant logs them.
+#[derive(Clone, Debug)]
+pub enum FrameImpacts {
+    /// The thesis's plant: its one gear pair's impacts.
+    Gears(Arc<[Impact]>),
+    /// A rig file's plant: each mesh's impacts.
+    Meshes(Arc<[NetworkImpact]>),
+}
+
+impl Default for FrameImpacts {
+    fn default() -> Self {
+        Self::Gears(Arc::new([]))
+    }
+}
+
+impl FrameImpacts {
+    /// How many contacts started.
+    pub fn len(&self) -> usize {
+        match self {
+            Self::Gears(i) => i.len(),
+            Self::Meshes(i) => i.len(),
+        }
+    }
+
+    /// Whether none did.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
     }
 }
 

@@ -135,6 +135,26 @@ pub enum LimitError {
         /// The motor's torque limit (N m).
         limit_nm: f64,
     },
+    /// A brake load beyond what a rig file's motor holds through its gears.
+    #[error(
+        "{load_nm} N m is more than rig `{rig}` can hold at its brake ({max_nm:.3} N m: its motor's torque_limit_nm through its gears)"
+    )]
+    LoadAboveRigMotor {
+        /// The load given (N m).
+        load_nm: f64,
+        /// The most the rig holds (N m).
+        max_nm: f64,
+        /// The rig's name.
+        rig: String,
+    },
+    /// A brake load on a rig file's rig without a brake.
+    #[error("{load_nm} N m: rig `{rig}` has no [brake] to load; give 0")]
+    NoBrake {
+        /// The load given (N m).
+        load_nm: f64,
+        /// The rig's name.
+        rig: String,
+    },
     /// A speed set point out of range.
     #[error(
         "{value} rev/min is not allowed: a speed set point lies in [0, {MAX_SPEED_RPM}] rev/min (and is 0 or a normal number, ≥ 2.2e-308)"

@@ -15,7 +15,8 @@
 //! — with the residual drag, within the motor's limit — simulated time, averages) with its
 //! typed `LimitError`; `seeds.rs` every derived seed (each noise source in a run and in a
 //! sweep case, each case of a grid); `gear_indicators.rs` a gear's condition indicators as
-//! a row
+//! a row; `input_names.rs` how a caller names a point's inputs in errors, and the checks
+//! of its times
 
 pub(crate) mod choices;
 pub(crate) mod command;
@@ -23,6 +24,7 @@ pub(crate) mod control;
 pub(crate) mod display;
 pub(crate) mod frame;
 pub(crate) mod gear_indicators;
+pub(crate) mod input_names;
 pub(crate) mod limits;
 pub(crate) mod point_verdict;
 pub(crate) mod refusal;
@@ -35,6 +37,7 @@ pub use control::{CommandInbox, ControlHandle, MAX_QUEUED_COMMANDS, Pending, Req
 pub use display::{AppliedChain, AppliedFilter, LiveSpectrum, LiveTrace};
 pub use frame::{Frame, SignalNames};
 pub use gear_indicators::GearIndicators;
+pub use input_names::{FLAG_NAMES, InputNames, check_times};
 pub use limits::{
     DEFAULT_LIVE_CEILING, MAX_SIMULATED_S, check_load_nm, check_load_within_motor,
     check_simulated_s, check_speed_rpm, max_load_nm,

@@ -3,7 +3,10 @@
 
 Starts `testrig panel`, opens the page, moves the speed to 1300 rev/min and the load to
 2.712 N m with the page's own controls, sees the tacho DVM follow, starts an average and
-reads the half-order line with the marker; keeps screenshots. Run by .ci/run:
+reads the half-order line with the marker; then the panel of a rig file's scenario (the
+two-stage reduction): its name shown, the load box unbounded (its motor has no torque
+limit), the speed moved with the page's controls and followed by the DVM, the impacts
+counted; keeps screenshots. Run by .ci/run:
 
     python3 tests/browser/panel_browser.py --binary target/release/testrig --shots target/panel-screenshots
 """
@@ -22,10 +25,9 @@ from playwright.sync_api import sync_playwright
 CHROMIUM = "/usr/bin/chromium"
 
 
-def start_panel(binary, out):
+def start_panel(binary, out, extra):
     panel = subprocess.Popen(
-        [binary, "panel", "--listen", "127.0.0.1:0", "--pace", "10", "--out", out,
-         "--set", "analyser.averages=4"],
+        [binary, "panel", "--listen", "127.0.0.1:0", "--pace", "10", "--out", out] + extra,
         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     line = panel.stdout.readline()
     match = re.search(r"http://[0-9.:]+/", line)
@@ -51,7 +53,7 @@ def main():
     shots = Path(args.shots)
     shots.mkdir(parents=True, exist_ok=True)
     out = tempfile.mkdtemp(prefix="testrig-browser-")
-    panel, url = start_panel(args.binary, out)
+    panel, url = start_panel(args.binary, out, ["--set", "analyser.averages=4"])
     try:
         with sync_playwright() as p:
             browser = p.chromium.launch(executable_path=CHROMIUM, headless=True,
@@ -118,12 +120,50 @@ def main():
             sys.exit(f"FAILED: the panel exited with {code}: {panel.stderr.read()}")
         if not (Path(out) / "session.toml").exists():
             sys.exit("FAILED: no session.toml")
+        rig_file_panel(args.binary, shots)
         print(f"browser test passed; screenshots in {shots}")
         # The panel's folder goes once the test passed; a failure (sys.exit above) keeps
         # it, and says where.
         shutil.rmtree(out, ignore_errors=True)
     except SystemExit:
         print(f"the panel's files are kept in {out}", file=sys.stderr)
+        raise
+    finally:
+        if panel.poll() is None:
+            panel.kill()
+
+
+def rig_file_panel(binary, shots):
+    """The panel of `scenarios/two-stage-run.toml`, a rig file's rig, in the browser."""
+    out = tempfile.mkdtemp(prefix="testrig-browser-rig-")
+    scenario = str(Path(__file__).resolve().parents[2] / "scenarios" / "two-stage-run.toml")
+    panel, url = start_panel(binary, out, [scenario])
+    try:
+        with sync_playwright() as p:
+            browser = p.chromium.launch(executable_path=CHROMIUM, headless=True,
+                                        args=["--no-sandbox"])
+            page = browser.new_page(viewport={"width": 1280, "height": 900})
+            page.goto(url)
+            wait_until("the scenario's name", lambda: page.inner_text("#scenario") == "two-stage-run")
+            if page.get_attribute("#load", "max") not in (None, ""):
+                sys.exit("FAILED: a load limit on a motor without one")
+            rpm = lambda: float(re.sub(r"[^0-9.]", "", page.inner_text("#dvm-rpm")) or 0)
+            wait_until("the tacho DVM at 1500 rev/min", lambda: abs(rpm() - 1500) <= 15)
+            wait_until("impacts under the reversing load",
+                       lambda: page.evaluate("() => state.impacts") > 100)
+            page.fill("#speed", "1000")
+            page.click("#set-speed")
+            wait_until("the tacho DVM at 1000 rev/min", lambda: abs(rpm() - 1000) <= 10)
+            print(f"two-stage rig: DVM {rpm():.0f} rev/min, {page.evaluate('() => state.impacts')} impacts")
+            page.screenshot(path=str(shots / "3-two-stage.png"))
+            page.click("#quit")
+            browser.close()
+        code = panel.wait(timeout=60)
+        if code != 0:
+            sys.exit(f"FAILED: the rig file's panel exited with {code}: {panel.stderr.read()}")
+        shutil.rmtree(out, ignore_errors=True)
+    except SystemExit:
+        print(f"the rig file's panel's files are kept in {out}", file=sys.stderr)
         raise
     finally:
         if panel.poll() is None:

@@ -55,7 +55,7 @@ pub fn loaded_600_rpm(rig: &RigTopology) -> testrig::rig_point::RigPointRun {
         rate_hz: 10_240.0,
         approach: rig::Approach::Static,
     };
-    testrig::rig_point::run_rig_point(&spec, testrig::steady_point::FLAG_NAMES, |_| Ok(()))
+    testrig::rig_point::run_rig_point(&spec, testrig::vocabulary::FLAG_NAMES, |_| Ok(()))
         .expect("run")
 }
 

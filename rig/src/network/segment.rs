@@ -12,6 +12,11 @@ use crate::schedule::SetPoints;
 use super::plant::{NetworkPlant, OSCILLATING_HOLD_S};
 
 impl NetworkPlant {
+    /// The set points now (during a ramp, the ramp's value at this sample).
+    pub fn set_points(&self) -> SetPoints {
+        self.schedule.held_over(self.time_s(), 0.0)
+    }
+
     /// From the current sample on, holds `set` (a knob turned while the rig runs, an
     /// FMU's inputs held over a communication step); the set points it had scheduled
     /// after now are dropped.

@@ -246,7 +246,7 @@ function show() {
   $("record").classList.toggle("on", state.recording);
   $("record").textContent = state.recording ? "Stop recording" : "Record";
   $("status").textContent =
-    `t ${state.simulated_s.toFixed(1)} s | set ${state.speed_set_rpm} rev/min ${state.load_set_nm} N m | ` +
+    `t ${state.simulated_s.toFixed(1)} s | set ${+state.speed_set_rpm.toPrecision(6)} rev/min ${+state.load_set_nm.toPrecision(6)} N m | ` +
     `late ${state.lateness_ms.toFixed(2)} ms | overruns ${state.overruns} | ADC overloads ${state.adc_overloads} | ` +
     `pace ${info ? info.pace : "–"} | impacts ${impactRate.toFixed(0)}/s | ${motionText(state)}`;
   drawScope();
@@ -260,7 +260,8 @@ async function connect() {
   $("speed").min = 0;
   $("speed").max = info.max_speed_rpm;
   $("load").min = 0;
-  $("load").max = info.max_load_nm;
+  // A rig file's motor without a torque limit holds any load: the info says null.
+  if (info.max_load_nm !== null) $("load").max = info.max_load_nm;
   $("osc-hz").max = info.max_oscillating_load_hz;
   const ws = new WebSocket(`ws://${location.host}${api("/api/stream")}`);
   ws.onmessage = (m) => { state = JSON.parse(m.data); show(); };

@@ -12,7 +12,6 @@ use crate::scenario::Plan;
 use crate::vocabulary::choices::WindowChoice;
 use crate::vocabulary::command::RigCommand;
 use crate::vocabulary::control::ControlHandle;
-use crate::vocabulary::max_load_nm;
 
 /// What every client of one rig shares.
 #[derive(Clone)]
@@ -78,7 +77,7 @@ pub fn scpi_rack(
         ),
         rate_hz: plan.rate_hz,
         max_speed_rpm: ceiling.speed_rpm,
-        max_load_nm: max_load_nm(&plan.params),
+        max_load_nm: plan.rig.max_load_nm(),
         max_oscillating_hz: ceiling.oscillating_load_hz,
         reset,
         has_analyser: plan.analyser.is_some(),

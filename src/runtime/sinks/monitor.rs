@@ -6,6 +6,7 @@
 
 use std::path::{Path, PathBuf};
 
+use anyhow::Context;
 use instruments::CROMPTON_PARKINSON_V_PER_RPM;
 use serde::Serialize;
 
@@ -62,6 +63,8 @@ pub struct MonitorSink {
     readings_at: MeasureClock,
     volts_per_microstrain: f64,
     microstrain_per_nm: f64,
+    /// The gauged shaft's steady torque at each measurement's set points (N m).
+    static_torque_nm: Vec<f64>,
     window: (f64, f64, usize),
     csv: CsvRecorder,
     points: Vec<SurveyPoint>,
@@ -111,6 +114,14 @@ impl MonitorSink {
         .into_iter()
         .chain(GearIndicators::COLUMNS.map(String::from))
         .collect::<Vec<_>>();
+        let static_torque_nm = measures
+            .iter()
+            .map(|m| {
+                plan.rig
+                    .static_torque_nm(m.speed_rpm, m.load_nm, plan.rate_hz)
+            })
+            .collect::<Result<Vec<_>, _>>()
+            .context("the gauged shaft's static torque at a measurement's set points")?;
         Ok(Self {
             inputs: Inputs {
                 dvm: index(DVM_V)?,
@@ -125,6 +136,7 @@ impl MonitorSink {
             measures,
             volts_per_microstrain: chain.volts_per_nm / microstrain_per_nm,
             microstrain_per_nm,
+            static_torque_nm,
             window: (0.0, 0.0, 0),
             csv: CsvRecorder::create(&dir.join("readings.csv"), &header)?,
             points: Vec::new(),
@@ -165,7 +177,7 @@ impl MonitorSink {
             true_torque_mean_nm: mean,
             true_torque_ac_rms_nm: ac_rms,
             true_ac_rms_microstrain: ac_rms * self.microstrain_per_nm,
-            static_microstrain: m.load_nm * self.microstrain_per_nm,
+            static_microstrain: self.static_torque_nm[index] * self.microstrain_per_nm,
             motion: String::new(),
             half_order_db: None,
             condition: [None; 10],

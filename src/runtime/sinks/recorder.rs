@@ -4,16 +4,15 @@
 use std::path::{Path, PathBuf};
 
 use instruments::{AntiAliasFilter, FilterKind, LowPassSpec};
-use rig::Impact;
 
 use super::{Sink, SinkReport};
 use crate::chain::ChainStages;
 use crate::recording::{
-    ChannelInfo, CsvFrames, CsvRecorder, FrameWriter, Uff58Channel, Uff58Recorder, WavRecorder,
+    ChannelInfo, CsvFrames, FrameWriter, ImpactLog, Uff58Channel, Uff58Recorder, WavRecorder,
     WavSamples, Written,
 };
 use crate::runtime::status::SharedStatus;
-use crate::scenario::{Plan, RecordPlan};
+use crate::scenario::{Plan, PlanRig, RecordPlan};
 use crate::vocabulary::Refusal;
 use crate::vocabulary::RigCommand;
 use crate::vocabulary::choices::WavFormat;
@@ -35,7 +34,7 @@ pub struct RecorderSink {
     /// Per recorded signal, the decimation's anti-alias filter (`None`: kept as sampled).
     decimators: Vec<Option<AntiAliasFilter>>,
     writers: Vec<Box<dyn FrameWriter>>,
-    impacts: CsvRecorder,
+    impacts: ImpactLog,
     row: Vec<f64>,
     rate_hz: f64,
     expected_seq: u64,
@@ -52,10 +51,11 @@ pub struct RecorderSink {
 impl RecorderSink {
     /// Opens the files in `dir` for `plan`'s recording, over channels named by `names`.
     pub fn create(dir: &Path, plan: &Plan, names: &SignalNames) -> anyhow::Result<Self> {
-        let impacts = CsvRecorder::create(
-            &dir.join("impacts.csv"),
-            &["time_s", "flank", "tooth", "closing_speed_rad_s"].map(String::from),
-        )?;
+        let path = dir.join("impacts.csv");
+        let impacts = match &plan.rig {
+            PlanRig::Preset { .. } => ImpactLog::of_gears(&path)?,
+            PlanRig::File(rig) => ImpactLog::of_meshes(&path, rig)?,
+        };
         let mut sink = Self {
             indices: Vec::new(),
             decimate: 1,
@@ -140,13 +140,6 @@ impl RecorderSink {
         if let Some(status) = &self.status {
             status.update(|s| s.recording = on);
         }
-    }
-
-    fn write_impacts(&mut self, impacts: &[Impact]) -> anyhow::Result<()> {
-        for impact in impacts {
-            self.impacts.write_row(impact)?;
-        }
-        Ok(())
     }
 }
 
@@ -285,7 +278,7 @@ impl Sink for RecorderSink {
             self.gaps += frame.seq - self.expected_seq;
         }
         self.expected_seq = frame.seq + 1;
-        self.write_impacts(&frame.impacts)?;
+        self.impacts.write(&frame.impacts)?;
         if self.writers.is_empty() {
             return Ok(());
         }

@@ -1,0 +1,136 @@
+//! What a rig file's plant hands the measuring chain, in a sweep's case and in a
+//! scenario's run alike: the chain's standard stages read the rig under the standard
+//! chain's input names — the gauged shaft's torque as `torque_intermediate_shaft_nm` (the
+//! strain stage takes the gauge's diameter and shear modulus), the motor body's speed as
+//! `speed1_rad_s` (the tacho), and the speed of the gauged shaft's first body as
+//! `speed3_rad_s` (the slip rings turn with it) — and the watched gear's
+//! once-per-revolution pulse as `keyphasor_v`.
+
+use instruments::ShaftStrain;
+use rig::{Gauge, NetworkBlock, RigTopology};
+
+use crate::chain::ChainStages;
+use crate::rig_point::{judged_shaft, watched_gear};
+use crate::vocabulary::frame::{Frame, SignalNames};
+use crate::vocabulary::signal_names::{
+    KEYPHASOR_V, MOTOR_SPEED_RAD_S, SHAFT_TORQUE_NM, SLIP_RING_SPEED_RAD_S,
+};
+
+/// The signals a rig file's plant hands the chain, in frame order.
+pub const RIG_SIGNALS: [&str; 5] = [
+    "time_s",
+    SHAFT_TORQUE_NM,
+    MOTOR_SPEED_RAD_S,
+    SLIP_RING_SPEED_RAD_S,
+    KEYPHASOR_V,
+];
+
+/// The keyphasor's high level (V): [`KEYPHASOR_V`] is this over the first
+/// 1/[`KEYPHASOR_MARK_SHARE`] of each turn of the watched gear (a reflective mark under an
+/// optical probe), 0 V otherwise; its rising edges are the revolutions a synchronous
+/// average starts from.
+const KEYPHASOR_HIGH_V: f64 = 5.0;
+
+/// Revolutions per keyphasor mark width: the mark spans 1/64 of a turn.
+const KEYPHASOR_MARK_SHARE: f64 = 64.0;
+
+/// Every signal of a rig file's run or case: [`RIG_SIGNALS`], then the stages' outputs.
+pub fn rig_signal_names(stages: &ChainStages) -> SignalNames {
+    let mut names = SignalNames::of(&RIG_SIGNALS);
+    for output in stages.outputs() {
+        names.push(output);
+    }
+    names
+}
+
+/// The body the motor drives: sweeps and scenarios set its speed.
+pub fn motor_of(rig: &RigTopology) -> anyhow::Result<usize> {
+    rig.motor.ok_or_else(|| {
+        anyhow::anyhow!(
+            "rig `{}` has no [motor]: sweeps and scenarios set the motor's speed",
+            rig.name
+        )
+    })
+}
+
+/// The rig's strain gauges: sweeps and scenarios measure the strain of a gauged shaft.
+pub fn gauge_of(rig: &RigTopology) -> anyhow::Result<&Gauge> {
+    rig.gauge.as_ref().ok_or_else(|| {
+        anyhow::anyhow!(
+            "rig `{}` has no [gauge]: sweeps and scenarios measure the strain of a gauged shaft",
+            rig.name
+        )
+    })
+}
+
+/// The shaft under `rig`'s gauges, as the chain's strain stage sees it.
+pub fn gauged_shaft_strain(rig: &RigTopology) -> anyhow::Result<ShaftStrain> {
+    let gauge = gauge_of(rig)?;
+    Ok(ShaftStrain::new(gauge.diameter_m, gauge.shear_modulus_pa)?)
+}
+
+/// The chain's stages for `rig`: the strain stage on its gauged shaft.
+pub fn gauged_stages(stages: &ChainStages, rig: &RigTopology) -> anyhow::Result<ChainStages> {
+    Ok(stages.with_gauged_shaft(gauged_shaft_strain(rig)?))
+}
+
+/// Where the standard chain's inputs sit in a rig's block.
+#[derive(Clone, Copy, Debug)]
+pub struct RoleColumns {
+    /// The gauged (judged) shaft.
+    pub gauged_shaft: usize,
+    /// The motor's body.
+    pub motor: usize,
+    /// The body the slip rings turn with: the gauged shaft's first.
+    pub slip_ring_body: usize,
+    /// The body whose revolutions the keyphasor marks.
+    pub watched_gear: usize,
+    /// The watched gear's teeth (none without a mesh: no indicators then).
+    pub watched_teeth: Option<u32>,
+}
+
+/// The first body of the gauged shaft (a rig without meshes has no watched gear).
+fn gauged_shaft_body(rig: &RigTopology) -> usize {
+    rig.shafts[judged_shaft(rig)].between[0]
+}
+
+impl RoleColumns {
+    /// The roles' places in `rig`.
+    pub fn of(rig: &RigTopology) -> Self {
+        let gauged_shaft = judged_shaft(rig);
+        let watched = watched_gear(rig);
+        Self {
+            gauged_shaft,
+            motor: rig.motor.unwrap_or(0),
+            slip_ring_body: gauged_shaft_body(rig),
+            watched_gear: watched.map_or(gauged_shaft_body(rig), |(g, _)| g),
+            watched_teeth: watched.map(|(_, teeth)| teeth),
+        }
+    }
+
+    /// The frame of [`RIG_SIGNALS`] of `block`, starting at sample `start`.
+    pub fn frame(&self, block: &NetworkBlock, start: u64) -> Frame {
+        let mut frame = Frame::of_channels(vec![
+            block.time_s.clone(),
+            block.shaft_torque_nm[self.gauged_shaft].clone(),
+            block.speed_rad_s[self.motor].clone(),
+            block.speed_rad_s[self.slip_ring_body].clone(),
+            block.angle_rad[self.watched_gear]
+                .iter()
+                .map(|&angle| keyphasor_v(angle))
+                .collect(),
+        ]);
+        frame.start_sample = start;
+        frame
+    }
+}
+
+/// The keyphasor's output (V) with the watched gear at `angle_rad`.
+fn keyphasor_v(angle_rad: f64) -> f64 {
+    let turn = (angle_rad / std::f64::consts::TAU).rem_euclid(1.0);
+    if turn < 1.0 / KEYPHASOR_MARK_SHARE {
+        KEYPHASOR_HIGH_V
+    } else {
+        0.0
+    }
+}

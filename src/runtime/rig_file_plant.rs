@@ -1,0 +1,179 @@
+//! A rig file's plant (`rig::NetworkPlant`) as a scenario's run drives it: it hands the
+//! chain the signals `crate::rig_roles` names, logs each mesh's impacts, and its windows
+//! are judged on the gauged shaft's torque as `testrig simulate --rig` judges its point.
+
+use std::sync::Arc;
+
+use rig::{
+    NetworkBlock, NetworkImpact, NetworkPlant, NetworkStart, RigError, RigTopology, Schedule,
+    SetPoints, SteadySummary,
+};
+
+use super::scenario_plant::{PointWindow, ScenarioPlant};
+use crate::rig_point::{RigWindow, regime_of};
+use crate::rig_roles::{RoleColumns, motor_of};
+use crate::scenario::plan_rig::check_rig_file_load;
+use crate::vocabulary::GearIndicators;
+use crate::vocabulary::frame::{Frame, FrameImpacts};
+use crate::vocabulary::limits::LimitError;
+
+/// A rig file's plant in a run, with what it needs to frame and judge its blocks.
+pub struct RigFilePlant {
+    plant: NetworkPlant,
+    rig: Arc<RigTopology>,
+    roles: RoleColumns,
+    motor: usize,
+    rate_hz: f64,
+}
+
+impl RigFilePlant {
+    /// `rig`'s plant in steady motion at `schedule`'s first set points, sampled at
+    /// `rate_hz`, its step sized for set speeds up to `speed_ceiling_rpm` beside the
+    /// schedule's own (live commands). A rig without a motor is refused.
+    pub fn new(
+        rig: &RigTopology,
+        schedule: Schedule,
+        rate_hz: f64,
+        speed_ceiling_rpm: Option<f64>,
+    ) -> anyhow::Result<Self> {
+        let motor = motor_of(rig)?;
+        let start = NetworkStart::Steady;
+        let plant = match speed_ceiling_rpm {
+            Some(ceiling) => NetworkPlant::live(rig, schedule, rate_hz, start, ceiling)?,
+            None => NetworkPlant::new(rig, schedule, rate_hz, start)?,
+        };
+        Ok(Self {
+            plant,
+            rig: Arc::new(rig.clone()),
+            roles: RoleColumns::of(rig),
+            motor,
+            rate_hz,
+        })
+    }
+}
+
+/// One block of a rig file's plant.
+pub struct RigFileBlock {
+    signals: NetworkBlock,
+    impacts: Vec<NetworkImpact>,
+    revolutions_s: Vec<f64>,
+}
+
+impl Default for RigFileBlock {
+    fn default() -> Self {
+        Self {
+            signals: NetworkBlock::new(0, 0, 0),
+            impacts: Vec::new(),
+            revolutions_s: Vec::new(),
+        }
+    }
+}
+
+impl ScenarioPlant for RigFilePlant {
+    type Block = RigFileBlock;
+    type Window = RigFileWindow;
+
+    fn output_step_s(&self) -> f64 {
+        1.0 / self.rate_hz
+    }
+
+    fn time_s(&self) -> f64 {
+        self.plant.time_s()
+    }
+
+    fn set_points(&self) -> SetPoints {
+        self.plant.set_points()
+    }
+
+    fn check_load(&self, load_nm: f64) -> Result<(), LimitError> {
+        check_rig_file_load(&self.rig, load_nm)
+    }
+
+    fn hold(&mut self, set: SetPoints) -> Result<(), RigError> {
+        self.plant.hold_set_points(set)
+    }
+
+    fn advance(&mut self, samples: usize, block: &mut RigFileBlock) -> Result<(), RigError> {
+        let rig = &self.rig;
+        if block.signals.shaft_torque_nm.len() != rig.shafts.len()
+            || block.signals.speed_rad_s.len() != rig.bodies.len()
+        {
+            block.signals = NetworkBlock::new(rig.bodies.len(), rig.shafts.len(), rig.meshes.len());
+        }
+        block.signals.clear();
+        self.plant.run(samples, &mut block.signals)?;
+        block.impacts = self.plant.take_impacts();
+        block.revolutions_s = self.plant.take_revolutions();
+        Ok(())
+    }
+
+    fn impacts_in(block: &RigFileBlock) -> usize {
+        block.impacts.len()
+    }
+
+    fn frame(&self, seq: u64, start: u64, block: &mut RigFileBlock) -> Frame {
+        let mut frame = self.roles.frame(&block.signals, start);
+        frame.seq = seq;
+        frame.impacts = FrameImpacts::Meshes(std::mem::take(&mut block.impacts).into());
+        frame
+    }
+
+    fn window(&self) -> RigFileWindow {
+        RigFileWindow {
+            window: RigWindow::new(&self.rig, self.rate_hz),
+            rig: Arc::clone(&self.rig),
+            motor: self.motor,
+            rpm: None,
+            impacts: Vec::new(),
+            revolutions_s: Vec::new(),
+        }
+    }
+}
+
+/// A window of a rig file's plant: its sums, the gauged shaft's torque, the watched
+/// gear's average, the window's impacts and the motor body's revolutions.
+pub struct RigFileWindow {
+    window: RigWindow,
+    rig: Arc<RigTopology>,
+    motor: usize,
+    /// The set speed the window was opened under (rev/min).
+    rpm: Option<f64>,
+    impacts: Vec<NetworkImpact>,
+    revolutions_s: Vec<f64>,
+}
+
+impl RigFileWindow {
+    /// The window summed up and judged as a steady point.
+    fn steady(&self) -> SteadySummary {
+        let rpm = self.rpm.unwrap_or(0.0);
+        let summary = self
+            .window
+            .summary(&self.rig, rpm, &self.impacts, &self.revolutions_s);
+        summary.steady(&self.rig, self.motor, rpm, &self.impacts)
+    }
+}
+
+impl PointWindow for RigFileWindow {
+    type Block = RigFileBlock;
+
+    fn add(&mut self, block: &RigFileBlock, set: &SetPoints) {
+        self.rpm.get_or_insert(set.speed_rpm);
+        self.window.add(&block.signals);
+        self.impacts.extend_from_slice(&block.impacts);
+        self.revolutions_s.extend_from_slice(&block.revolutions_s);
+    }
+
+    fn verdict(&self) -> (SteadySummary, Option<GearIndicators>) {
+        let report = self.window.condition_report();
+        (self.steady(), report.as_ref().map(GearIndicators::from))
+    }
+
+    fn quick_regime(&self) -> Option<String> {
+        None
+    }
+
+    fn judged(self) -> (String, String) {
+        let motion = self.steady().motion.motion;
+        (regime_of(motion).to_string(), motion.to_string())
+    }
+}
