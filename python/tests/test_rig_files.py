@@ -1,6 +1,7 @@
 """Rig files from Python: the same rig by path and as a dict, its signals named after
 it, and the load carried through both stages of the two-stage example."""
 
+import time
 import tomllib
 from pathlib import Path
 
@@ -57,3 +58,27 @@ def test_a_sweep_on_a_rig_file_labels_its_faults(tmp_path):
         rows = sorted((s, r) for k, s, r in zip(kinds, severities, residual) if k == kind)
         assert all(b[1] > a[1] for a, b in zip(rows, rows[1:])), rows
     assert "measured_fm4" in table
+
+
+def test_a_rig_file_scenario_runs_and_its_rig_follows_live_commands(tmp_path):
+    scenario = ROOT / "scenarios" / "two-stage-run.toml"
+    result = testrig.run(scenario, out=tmp_path / "run", set={"duration_s": 6})
+    recording = result["recording"]
+    assert recording["units"]["torque_intermediate_shaft_nm"] == "N m"
+    # The gauged output shaft carries the brake's mean load, 20 N m.
+    torque = recording["channels"]["torque_intermediate_shaft_nm"]
+    assert np.mean(torque[int(recording["rate_hz"]) * 2:]) == pytest.approx(20, rel=0.02)
+    assert result["manifest"]["rig"] == "two-stage"
+    with testrig.Rig(scenario, out=tmp_path / "live", pace=20) as rig:
+        reply = rig.set_speed(900)
+        assert reply["ok"]
+        rig.set_oscillating_load(0, 0)
+        rig.set_load(45)
+        while rig.state()["simulated_s"] < reply["at_s"] + 10:
+            time.sleep(0.05)
+        block = rig.read()
+        # The motor's body follows the set speed (within 2 % after 10 s).
+        speed = block["channels"]["speed1_rad_s"]
+        assert np.mean(speed) == pytest.approx(900 * np.pi / 30, rel=0.02)
+        with pytest.raises(testrig.TestrigError, match="speed"):
+            rig.set_speed(-10)

@@ -83,7 +83,7 @@ pub fn run_plant<P: ScenarioPlant>(mut job: PlantJob<P>, out: Sender<Frame>) -> 
         points: Vec::new(),
         error: None,
     };
-    let mut block = P::Block::default();
+    let mut block = job.plant.block();
     let mut seq = 0;
     // The regime of the last 10 s is for the live panel only.
     let mut rolling = job

@@ -59,16 +59,6 @@ pub struct RigFileBlock {
     revolutions_s: Vec<f64>,
 }
 
-impl Default for RigFileBlock {
-    fn default() -> Self {
-        Self {
-            signals: NetworkBlock::new(0, 0, 0),
-            impacts: Vec::new(),
-            revolutions_s: Vec::new(),
-        }
-    }
-}
-
 impl ScenarioPlant for RigFilePlant {
     type Block = RigFileBlock;
     type Window = RigFileWindow;
@@ -93,13 +83,16 @@ impl ScenarioPlant for RigFilePlant {
         self.plant.hold_set_points(set)
     }
 
-    fn advance(&mut self, samples: usize, block: &mut RigFileBlock) -> Result<(), RigError> {
+    fn block(&self) -> RigFileBlock {
         let rig = &self.rig;
-        if block.signals.shaft_torque_nm.len() != rig.shafts.len()
-            || block.signals.speed_rad_s.len() != rig.bodies.len()
-        {
-            block.signals = NetworkBlock::new(rig.bodies.len(), rig.shafts.len(), rig.meshes.len());
+        RigFileBlock {
+            signals: NetworkBlock::new(rig.bodies.len(), rig.shafts.len(), rig.meshes.len()),
+            impacts: Vec::new(),
+            revolutions_s: Vec::new(),
         }
+    }
+
+    fn advance(&mut self, samples: usize, block: &mut RigFileBlock) -> Result<(), RigError> {
         block.signals.clear();
         self.plant.run(samples, &mut block.signals)?;
         block.impacts = self.plant.take_impacts();

@@ -12,7 +12,7 @@ use crate::vocabulary::limits::LimitError;
 /// A plant a scenario's run advances.
 pub trait ScenarioPlant: Send {
     /// One block of the plant's output: its signals, impacts and revolutions.
-    type Block: Default + Send;
+    type Block: Send;
     /// A window of blocks whose motion is judged.
     type Window: PointWindow<Block = Self::Block>;
 
@@ -26,6 +26,8 @@ pub trait ScenarioPlant: Send {
     fn check_load(&self, load_nm: f64) -> Result<(), LimitError>;
     /// Holds `set` from the next sample on.
     fn hold(&mut self, set: SetPoints) -> Result<(), RigError>;
+    /// An empty block, shaped for this plant's signals.
+    fn block(&self) -> Self::Block;
     /// Advances `samples` samples into `block` (cleared first).
     fn advance(&mut self, samples: usize, block: &mut Self::Block) -> Result<(), RigError>;
     /// Contacts that started in `block`.

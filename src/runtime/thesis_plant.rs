@@ -43,6 +43,10 @@ impl ScenarioPlant for Plant {
         self.set_points_from_now(set)
     }
 
+    fn block(&self) -> ThesisBlock {
+        ThesisBlock::default()
+    }
+
     fn advance(&mut self, samples: usize, block: &mut ThesisBlock) -> Result<(), RigError> {
         block.signals.clear();
         self.run(samples, &mut block.signals)?;
