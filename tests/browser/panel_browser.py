@@ -37,6 +37,11 @@ def start_panel(binary, out, extra):
     return panel, match.group(0)
 
 
+def dvm_rpm(page):
+    """The tacho DVM's reading on `page` (rev/min; 0 before the first)."""
+    return float(re.sub(r"[^0-9.]", "", page.inner_text("#dvm-rpm")) or 0)
+
+
 def wait_until(what, test, limit_s=120):
     start = time.time()
     while not test():
@@ -52,79 +57,37 @@ def main():
     args = parser.parse_args()
     shots = Path(args.shots)
     shots.mkdir(parents=True, exist_ok=True)
+    out = on_panel(args.binary, ["--set", "analyser.averages=4"],
+                   lambda browser, page, url: thesis_rig(browser, page, url, shots))
+    if not (Path(out) / "session.toml").exists():
+        sys.exit(f"FAILED: no session.toml in {out}")
+    shutil.rmtree(out, ignore_errors=True)
+    scenario = Path(__file__).resolve().parents[2] / "scenarios" / "two-stage-run.toml"
+    out = on_panel(args.binary, [str(scenario)],
+                   lambda browser, page, url: two_stage_rig(page, shots))
+    shutil.rmtree(out, ignore_errors=True)
+    print(f"browser test passed; screenshots in {shots}")
+
+
+def on_panel(binary, extra, check):
+    """Starts `testrig panel` with `extra` arguments, runs `check(browser, page, url)` on
+    its page in chromium, quits from the page and sees the panel exit cleanly; returns
+    its folder. A failure keeps the folder, and says where."""
     out = tempfile.mkdtemp(prefix="testrig-browser-")
-    panel, url = start_panel(args.binary, out, ["--set", "analyser.averages=4"])
+    panel, url = start_panel(binary, out, extra)
     try:
         with sync_playwright() as p:
             browser = p.chromium.launch(executable_path=CHROMIUM, headless=True,
                                         args=["--no-sandbox"])
             page = browser.new_page(viewport={"width": 1280, "height": 900})
             page.goto(url)
-            rpm = lambda: float(re.sub(r"[^0-9.]", "", page.inner_text("#dvm-rpm")) or 0)
-            wait_until("a first DVM reading", lambda: rpm() > 0)
-            before = rpm()
-            page.screenshot(path=str(shots / "1-opening.png"))
-            # An empty speed box refuses the command in the page; the rig keeps its speed.
-            set_before = page.evaluate("() => state.speed_set_rpm")
-            page.fill("#speed", "")
-            page.click("#set-speed")
-            said = page.inner_text("#error")
-            if "give a number" not in said:
-                sys.exit(f"FAILED: an empty speed box was not refused: {said!r}")
-            time.sleep(0.5)
-            if page.evaluate("() => state.speed_set_rpm") != set_before:
-                sys.exit("FAILED: an empty speed box changed the set speed")
-            limit = page.get_attribute("#speed", "max")
-            if float(limit) != page.evaluate("() => info.max_speed_rpm"):
-                sys.exit(f"FAILED: the speed box's limit {limit} is not the rig's")
-            # The controls echo what the rig applies: a refused gain returns to the applied one.
-            page.fill("#gain", "1e300")
-            page.click("#set-gain")
-            wait_until("the refused gain replaced by the applied one",
-                       lambda: float(page.input_value("#gain"))
-                       == page.evaluate("() => state.chain.amplifier_gain"))
-            page.fill("#speed", "1300")
-            page.click("#set-speed")
-            page.fill("#load", "2.712")
-            page.click("#set-load")
-            wait_until("the tacho DVM at 1300 rev/min", lambda: abs(rpm() - 1300) <= 13)
-            print(f"DVM: {before:.0f} -> {rpm():.0f} rev/min")
-            # The rig settles into its period-2 motion within some 20 s of its start.
-            wait_until("20 s simulated", lambda: page.evaluate("() => state.simulated_s") > 20)
-            page.click("#start-average")
-            # The page's own state: first the new average under way (the panel's own first
-            # average, already at 1300 rev/min, must not be taken for it), then complete.
-            started = "() => state.spectrum && !state.spectrum.complete"
-            wait_until("the new average under way", lambda: page.evaluate(started))
-            done = "() => state.spectrum && state.spectrum.complete && state.spectrum.averages === 4" \
-                   " && state.spectrum.running_hz > 21"
-            wait_until("an average of 4 at 1300 rev/min", lambda: page.evaluate(done))
-            page.click("#marker-half")
-            readout = page.inner_text("#marker-readout")
-            print(f"marker: {readout}")
-            page.screenshot(path=str(shots / "2-half-order.png"))
-            order = float(re.search(r"order ([0-9.]+)", readout).group(1))
-            level = float(re.search(r"(-?[0-9.]+) dB", readout).group(1))
-            if not (abs(order - 0.5) <= 0.02 and "not an alias" in readout and level > -20):
-                sys.exit(f"FAILED: the marker does not read a half-order line: {readout}")
-            # A second page sees the same rig.
-            other = browser.new_page()
-            other.goto(url)
-            wait_until("the second page's DVM", lambda: "1300" in other.inner_text("#dvm-rpm")
-                       or abs(float(re.sub(r"[^0-9.]", "", other.inner_text("#dvm-rpm")) or 0) - 1300) <= 13)
-            other.close()
+            check(browser, page, url)
             page.click("#quit")
             browser.close()
         code = panel.wait(timeout=60)
         if code != 0:
             sys.exit(f"FAILED: the panel exited with {code}: {panel.stderr.read()}")
-        if not (Path(out) / "session.toml").exists():
-            sys.exit("FAILED: no session.toml")
-        rig_file_panel(args.binary, shots)
-        print(f"browser test passed; screenshots in {shots}")
-        # The panel's folder goes once the test passed; a failure (sys.exit above) keeps
-        # it, and says where.
-        shutil.rmtree(out, ignore_errors=True)
+        return out
     except SystemExit:
         print(f"the panel's files are kept in {out}", file=sys.stderr)
         raise
@@ -133,41 +96,77 @@ def main():
             panel.kill()
 
 
-def rig_file_panel(binary, shots):
-    """The panel of `scenarios/two-stage-run.toml`, a rig file's rig, in the browser."""
-    out = tempfile.mkdtemp(prefix="testrig-browser-rig-")
-    scenario = str(Path(__file__).resolve().parents[2] / "scenarios" / "two-stage-run.toml")
-    panel, url = start_panel(binary, out, [scenario])
-    try:
-        with sync_playwright() as p:
-            browser = p.chromium.launch(executable_path=CHROMIUM, headless=True,
-                                        args=["--no-sandbox"])
-            page = browser.new_page(viewport={"width": 1280, "height": 900})
-            page.goto(url)
-            wait_until("the scenario's name", lambda: page.inner_text("#scenario") == "two-stage-run")
-            if page.get_attribute("#load", "max") not in (None, ""):
-                sys.exit("FAILED: a load limit on a motor without one")
-            rpm = lambda: float(re.sub(r"[^0-9.]", "", page.inner_text("#dvm-rpm")) or 0)
-            wait_until("the tacho DVM at 1500 rev/min", lambda: abs(rpm() - 1500) <= 15)
-            wait_until("impacts under the reversing load",
-                       lambda: page.evaluate("() => state.impacts") > 100)
-            page.fill("#speed", "1000")
-            page.click("#set-speed")
-            wait_until("the tacho DVM at 1000 rev/min", lambda: abs(rpm() - 1000) <= 10)
-            print(f"two-stage rig: DVM {rpm():.0f} rev/min, {page.evaluate('() => state.impacts')} impacts")
-            page.screenshot(path=str(shots / "3-two-stage.png"))
-            page.click("#quit")
-            browser.close()
-        code = panel.wait(timeout=60)
-        if code != 0:
-            sys.exit(f"FAILED: the rig file's panel exited with {code}: {panel.stderr.read()}")
-        shutil.rmtree(out, ignore_errors=True)
-    except SystemExit:
-        print(f"the rig file's panel's files are kept in {out}", file=sys.stderr)
-        raise
-    finally:
-        if panel.poll() is None:
-            panel.kill()
+def thesis_rig(browser, page, url, shots):
+    """The bundled scenario: the 1983 rig moved to its half-order point."""
+    rpm = lambda: dvm_rpm(page)
+    wait_until("a first DVM reading", lambda: rpm() > 0)
+    before = rpm()
+    page.screenshot(path=str(shots / "1-opening.png"))
+    # An empty speed box refuses the command in the page; the rig keeps its speed.
+    set_before = page.evaluate("() => state.speed_set_rpm")
+    page.fill("#speed", "")
+    page.click("#set-speed")
+    said = page.inner_text("#error")
+    if "give a number" not in said:
+        sys.exit(f"FAILED: an empty speed box was not refused: {said!r}")
+    time.sleep(0.5)
+    if page.evaluate("() => state.speed_set_rpm") != set_before:
+        sys.exit("FAILED: an empty speed box changed the set speed")
+    limit = page.get_attribute("#speed", "max")
+    if float(limit) != page.evaluate("() => info.max_speed_rpm"):
+        sys.exit(f"FAILED: the speed box's limit {limit} is not the rig's")
+    # The controls echo what the rig applies: a refused gain returns to the applied one.
+    page.fill("#gain", "1e300")
+    page.click("#set-gain")
+    wait_until("the refused gain replaced by the applied one",
+               lambda: float(page.input_value("#gain"))
+               == page.evaluate("() => state.chain.amplifier_gain"))
+    page.fill("#speed", "1300")
+    page.click("#set-speed")
+    page.fill("#load", "2.712")
+    page.click("#set-load")
+    wait_until("the tacho DVM at 1300 rev/min", lambda: abs(rpm() - 1300) <= 13)
+    print(f"DVM: {before:.0f} -> {rpm():.0f} rev/min")
+    # The rig settles into its period-2 motion within some 20 s of its start.
+    wait_until("20 s simulated", lambda: page.evaluate("() => state.simulated_s") > 20)
+    page.click("#start-average")
+    # The page's own state: first the new average under way (the panel's own first
+    # average, already at 1300 rev/min, must not be taken for it), then complete.
+    started = "() => state.spectrum && !state.spectrum.complete"
+    wait_until("the new average under way", lambda: page.evaluate(started))
+    done = "() => state.spectrum && state.spectrum.complete && state.spectrum.averages === 4" \
+           " && state.spectrum.running_hz > 21"
+    wait_until("an average of 4 at 1300 rev/min", lambda: page.evaluate(done))
+    page.click("#marker-half")
+    readout = page.inner_text("#marker-readout")
+    print(f"marker: {readout}")
+    page.screenshot(path=str(shots / "2-half-order.png"))
+    order = float(re.search(r"order ([0-9.]+)", readout).group(1))
+    level = float(re.search(r"(-?[0-9.]+) dB", readout).group(1))
+    if not (abs(order - 0.5) <= 0.02 and "not an alias" in readout and level > -20):
+        sys.exit(f"FAILED: the marker does not read a half-order line: {readout}")
+    # A second page sees the same rig.
+    other = browser.new_page()
+    other.goto(url)
+    wait_until("the second page's DVM", lambda: abs(dvm_rpm(other) - 1300) <= 13)
+    other.close()
+
+
+def two_stage_rig(page, shots):
+    """`scenarios/two-stage-run.toml`, a rig file's rig: its name shown, the load box
+    unbounded (its motor has no torque limit), impacts counted, the speed followed."""
+    wait_until("the scenario's name", lambda: page.inner_text("#scenario") == "two-stage-run")
+    if page.get_attribute("#load", "max") not in (None, ""):
+        sys.exit("FAILED: a load limit on a motor without one")
+    rpm = lambda: dvm_rpm(page)
+    wait_until("the tacho DVM at 1500 rev/min", lambda: abs(rpm() - 1500) <= 15)
+    wait_until("impacts under the reversing load",
+               lambda: page.evaluate("() => state.impacts") > 100)
+    page.fill("#speed", "1000")
+    page.click("#set-speed")
+    wait_until("the tacho DVM at 1000 rev/min", lambda: abs(rpm() - 1000) <= 10)
+    print(f"two-stage rig: DVM {rpm():.0f} rev/min, {page.evaluate('() => state.impacts')} impacts")
+    page.screenshot(path=str(shots / "3-two-stage.png"))
 
 
 if __name__ == "__main__":
