@@ -1,8 +1,8 @@
 //! What a rig file's plant hands the measuring chain, in a sweep's case and in a
 //! scenario's run alike: the chain's standard stages read the rig under the standard
 //! chain's input names — the gauged shaft's torque as `torque_intermediate_shaft_nm` (the
-//! strain stage takes the gauge's diameter and shear modulus), the motor body's speed as
-//! `speed1_rad_s` (the tacho), and the speed of the gauged shaft's first body as
+//! strain stage takes the gauge's diameter and shear modulus), the speed of the tacho's
+//! body (`[tacho]`, else the motor's) as `speed1_rad_s`, and the speed of the gauged shaft's first body as
 //! `speed3_rad_s` (the slip rings turn with it) — and the watched gear's
 //! once-per-revolution pulse as `keyphasor_v`.
 
@@ -79,8 +79,8 @@ pub fn gauged_stages(stages: &ChainStages, rig: &RigTopology) -> anyhow::Result<
 pub struct RoleColumns {
     /// The gauged (judged) shaft.
     pub gauged_shaft: usize,
-    /// The motor's body.
-    pub motor: usize,
+    /// The body the tacho turns with: the `[tacho]`'s, else the motor's.
+    pub tacho: usize,
     /// The body the slip rings turn with: the gauged shaft's first.
     pub slip_ring_body: usize,
     /// The body whose revolutions the keyphasor marks.
@@ -101,7 +101,7 @@ impl RoleColumns {
         let watched = watched_gear(rig);
         Self {
             gauged_shaft,
-            motor: rig.motor.unwrap_or(0),
+            tacho: rig.tacho.or(rig.motor).unwrap_or(0),
             slip_ring_body: gauged_shaft_body(rig),
             watched_gear: watched.map_or(gauged_shaft_body(rig), |(g, _)| g),
             watched_teeth: watched.map(|(_, teeth)| teeth),
@@ -113,7 +113,7 @@ impl RoleColumns {
         let mut frame = Frame::of_channels(vec![
             block.time_s.clone(),
             block.shaft_torque_nm[self.gauged_shaft].clone(),
-            block.speed_rad_s[self.motor].clone(),
+            block.speed_rad_s[self.tacho].clone(),
             block.speed_rad_s[self.slip_ring_body].clone(),
             block.angle_rad[self.watched_gear]
                 .iter()

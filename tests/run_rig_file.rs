@@ -154,9 +154,32 @@ fn a_loops_run_holds_its_locked_torque_as_simulate_finds_over_the_same_window() 
     );
 }
 
+/// The tacho where the rig file puts it (`[tacho] body = "brake"`): the DVM reads the
+/// brake's speed, a ninth of the motor's 1500 rev/min through the two stages.
+#[test]
+fn the_tacho_reads_the_body_the_rig_file_puts_it_on() {
+    let dir = folder("run-rig-tacho");
+    let rig = dir.join("two-stage-tacho.toml");
+    let text = std::fs::read_to_string(rig_file("two-stage")).expect("rig");
+    std::fs::write(&rig, format!("{text}\n[tacho]\nbody = \"brake\"\n")).expect("write");
+    let path = dir.join("tacho.toml");
+    let scenario = format!(
+        "name = \"tacho\"\nduration_s = 4\n[rig]\nfile = {:?}\n[schedule]\nspeed_rpm = 1500\nload_nm = 50\n[[measure]]\nat_s = 3\nlabel = \"read\"\n",
+        rig.to_str().expect("utf-8")
+    );
+    std::fs::write(&path, scenario).expect("write");
+    let (out, _) = run_ok("run-rig-tacho-out", path.to_str().expect("utf-8"), &[]);
+    let reading = csv_rows(&out.join("readings.csv")).remove(0);
+    let dvm_rpm = number(&reading, "dvm_rpm");
+    assert!(
+        (dvm_rpm - 1500.0 / 9.0).abs() < 3.0,
+        "the DVM reads {dvm_rpm} rev/min"
+    );
+}
+
 /// What a rig file's run cannot do is refused before it starts, at the field: a load on
 /// a rig without a brake, a stage reading a signal only the thesis's plant has, a rig
-/// without strain gauges.
+/// without strain gauges, a tacho on a body the rig lacks.
 #[test]
 fn a_rig_file_scenario_is_refused_at_the_field_it_cannot_run() {
     let dir = folder("run-rig-refusals");
@@ -169,6 +192,12 @@ fn a_rig_file_scenario_is_refused_at_the_field_it_cannot_run() {
     let two_stage = std::fs::read_to_string(rig_file("two-stage")).expect("rig");
     let cut = two_stage.find("[gauge]").expect("a gauge section");
     std::fs::write(&ungauged, &two_stage[..cut]).expect("write");
+    let misplaced = dir.join("misplaced.toml");
+    std::fs::write(
+        &misplaced,
+        format!("{two_stage}\n[tacho]\nbody = \"nowhere\"\n"),
+    )
+    .expect("write");
     let cases = [
         (
             base(&rig_file("fzg-back-to-back"), "").replace("load_nm = 0", "load_nm = 5"),
@@ -188,6 +217,10 @@ fn a_rig_file_scenario_is_refused_at_the_field_it_cannot_run() {
         (
             base(ungauged.to_str().expect("utf-8"), ""),
             vec!["rig.file", "has no [gauge]"],
+        ),
+        (
+            base(misplaced.to_str().expect("utf-8"), ""),
+            vec!["tacho.body", "no body `nowhere`"],
         ),
     ];
     for (i, (text, words)) in cases.iter().enumerate() {

@@ -227,4 +227,7 @@ pub struct RigTopology {
     pub drive: DriveSettings,
     /// The strain gauges, if the rig has them.
     pub gauge: Option<Gauge>,
+    /// The body the tacho generator turns with (index); the motor's when `None`.
+    #[serde(default)]
+    pub tacho: Option<usize>,
 }

@@ -219,6 +219,11 @@ fn build(src: &ScenarioSource, file: &RigFileToml) -> anyhow::Result<RigTopology
         locked_torque,
         drive: drive(file),
         gauge,
+        tacho: file
+            .tacho
+            .as_ref()
+            .map(|t| body(&t.body, "tacho.body"))
+            .transpose()?,
     })
 }
 

@@ -1,5 +1,6 @@
 //! The rig file's schema (TOML; `docs/rig-files.md`): bodies, shafts, meshes, the motor's
-//! and the brake's body, the torque locked into a loop. Unknown keys are refused; every
+//! and the brake's body, the torque locked into a loop, the gauged shaft and the tacho's
+//! body. Unknown keys are refused; every
 //! value keeps its place in the file for errors.
 
 use serde::Deserialize;
@@ -31,6 +32,16 @@ pub struct RigFileToml {
     pub locked_torque: Option<LockedTorqueToml>,
     /// `[gauge]`: the strain gauges' shaft.
     pub gauge: Option<GaugeToml>,
+    /// `[tacho]`: the body the tacho generator turns with.
+    pub tacho: Option<TachoToml>,
+}
+
+/// `[tacho]`: the tacho generator on a body.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TachoToml {
+    /// The body, by name; the motor's when the file has no `[tacho]`.
+    pub body: Spanned<String>,
 }
 
 /// `[gauge]`: strain gauges on a shaft.
