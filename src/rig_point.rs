@@ -139,16 +139,27 @@ pub fn regime_of(motion: Motion) -> Regime {
     }
 }
 
-/// The gear a point's condition indicators watch: the first tooth fault's gear, else the
-/// first mesh's driven gear; (body, teeth).
+/// The gear a point's condition indicators watch: the `[keyphasor]`'s gear, else the
+/// first tooth fault's gear, else the first mesh's driven gear; (body, teeth).
 pub fn watched_gear(rig: &RigTopology) -> Option<(usize, u32)> {
-    let faulted = rig.meshes.iter().find_map(|m| {
-        m.faults.first().map(|f| match f.gear {
-            FaultedGear::Driver => (m.gears[0], m.teeth[0]),
-            FaultedGear::Driven => (m.gears[1], m.teeth[1]),
+    let marked = rig.keyphasor.and_then(|body| {
+        rig.meshes.iter().find_map(|m| {
+            (0..2)
+                .find(|&side| m.gears[side] == body)
+                .map(|side| (body, m.teeth[side]))
         })
     });
-    faulted.or_else(|| rig.meshes.first().map(|m| (m.gears[1], m.teeth[1])))
+    let faulted = || {
+        rig.meshes.iter().find_map(|m| {
+            m.faults.first().map(|f| match f.gear {
+                FaultedGear::Driver => (m.gears[0], m.teeth[0]),
+                FaultedGear::Driven => (m.gears[1], m.teeth[1]),
+            })
+        })
+    };
+    marked
+        .or_else(faulted)
+        .or_else(|| rig.meshes.first().map(|m| (m.gears[1], m.teeth[1])))
 }
 
 /// A point run: the plant as it ended, the window's impacts and summary, and the times.

@@ -154,17 +154,20 @@ fn a_loops_run_holds_its_locked_torque_as_simulate_finds_over_the_same_window() 
     );
 }
 
-/// The tacho where the rig file puts it (`[tacho] body = "brake"`): the DVM reads the
-/// brake's speed, a ninth of the motor's 1500 rev/min through the two stages.
+/// The tacho and the keyphasor where the rig file puts them (`[tacho] body = "brake"`,
+/// `[keyphasor] gear = "wheel2"`): the DVM reads the brake's speed, a ninth of the
+/// motor's 1500 rev/min through the two stages; the keyphasor rises once per turn of the
+/// output wheel (166.7 rev/min), and the indicators average that wheel's revolutions.
 #[test]
-fn the_tacho_reads_the_body_the_rig_file_puts_it_on() {
+fn the_tacho_and_the_keyphasor_sit_where_the_rig_file_puts_them() {
     let dir = folder("run-rig-tacho");
-    let rig = dir.join("two-stage-tacho.toml");
+    let rig = dir.join("two-stage-instrumented.toml");
     let text = std::fs::read_to_string(rig_file("two-stage")).expect("rig");
-    std::fs::write(&rig, format!("{text}\n[tacho]\nbody = \"brake\"\n")).expect("write");
-    let path = dir.join("tacho.toml");
+    let placed = "[tacho]\nbody = \"brake\"\n[keyphasor]\ngear = \"wheel2\"\n";
+    std::fs::write(&rig, format!("{text}\n{placed}")).expect("write");
+    let path = dir.join("instrumented.toml");
     let scenario = format!(
-        "name = \"tacho\"\nduration_s = 4\n[rig]\nfile = {:?}\n[schedule]\nspeed_rpm = 1500\nload_nm = 50\n[[measure]]\nat_s = 3\nlabel = \"read\"\n",
+        "name = \"instrumented\"\nduration_s = 9\n[rig]\nfile = {:?}\n[schedule]\nspeed_rpm = 1500\nload_nm = 50\n[[measure]]\nat_s = 3\nlabel = \"read\"\n[record]\nsignals = [\"keyphasor_v\"]\nformats = [\"csv\"]\n",
         rig.to_str().expect("utf-8")
     );
     std::fs::write(&path, scenario).expect("write");
@@ -175,11 +178,32 @@ fn the_tacho_reads_the_body_the_rig_file_puts_it_on() {
         (dvm_rpm - 1500.0 / 9.0).abs() < 3.0,
         "the DVM reads {dvm_rpm} rev/min"
     );
+    let keyphasor: Vec<f64> = csv_rows(&out.join("recording.csv"))
+        .iter()
+        .map(|r| number(r, "keyphasor_v"))
+        .collect();
+    let rises = keyphasor
+        .windows(2)
+        .filter(|w| w[0] < 2.5 && w[1] >= 2.5)
+        .count();
+    let turns = 1500.0 / 9.0 / 60.0 * 9.0;
+    assert!(
+        (rises as f64 - turns).abs() <= 1.0,
+        "{rises} pulses, {turns} turns of wheel2"
+    );
+    let averaged = number(&reading, "revolutions_averaged");
+    let window_turns = 1500.0 / 9.0 / 60.0 * 6.0;
+    // Whole revolutions between the window's first and last mark: one or two fewer
+    // than the turns (wheel1 would give 50, the motor 150).
+    assert!(
+        (window_turns - 2.0..=window_turns).contains(&averaged),
+        "{averaged} revolutions averaged, wheel2 turns {window_turns} times in the window"
+    );
 }
 
 /// What a rig file's run cannot do is refused before it starts, at the field: a load on
 /// a rig without a brake, a stage reading a signal only the thesis's plant has, a rig
-/// without strain gauges, a tacho on a body the rig lacks.
+/// without strain gauges, a tacho on a body the rig lacks, a keyphasor on no gear.
 #[test]
 fn a_rig_file_scenario_is_refused_at_the_field_it_cannot_run() {
     let dir = folder("run-rig-refusals");
@@ -196,6 +220,12 @@ fn a_rig_file_scenario_is_refused_at_the_field_it_cannot_run() {
     std::fs::write(
         &misplaced,
         format!("{two_stage}\n[tacho]\nbody = \"nowhere\"\n"),
+    )
+    .expect("write");
+    let off_gear = dir.join("off-gear.toml");
+    std::fs::write(
+        &off_gear,
+        format!("{two_stage}\n[keyphasor]\ngear = \"motor\"\n"),
     )
     .expect("write");
     let cases = [
@@ -221,6 +251,10 @@ fn a_rig_file_scenario_is_refused_at_the_field_it_cannot_run() {
         (
             base(misplaced.to_str().expect("utf-8"), ""),
             vec!["tacho.body", "no body `nowhere`"],
+        ),
+        (
+            base(off_gear.to_str().expect("utf-8"), ""),
+            vec!["keyphasor.gear", "body `motor` is no mesh's gear", "wheel2"],
         ),
     ];
     for (i, (text, words)) in cases.iter().enumerate() {

@@ -230,4 +230,9 @@ pub struct RigTopology {
     /// The body the tacho generator turns with (index); the motor's when `None`.
     #[serde(default)]
     pub tacho: Option<usize>,
+    /// The gear the keyphasor marks (index of a body that is some mesh's gear): the gear
+    /// whose revolutions the condition indicators average over; `None`: the first tooth
+    /// fault's gear, else the first mesh's driven gear.
+    #[serde(default)]
+    pub keyphasor: Option<usize>,
 }

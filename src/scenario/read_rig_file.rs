@@ -8,11 +8,11 @@ use std::path::Path;
 
 use anyhow::Context;
 
-use rig::{Body, DriveSettings, Gauge, LockedTorque, RigTopology, Shaft, TopologyPlace};
+use rig::{Body, DriveSettings, Gauge, LockedTorque, Mesh, RigTopology, Shaft, TopologyPlace};
 use toml::Spanned;
 
 use super::read_rig_mesh::{mesh, or, seed_faults};
-use super::rig_file_toml::{MotorToml, RigFileToml, ShaftToml};
+use super::rig_file_toml::{KeyphasorToml, MotorToml, RigFileToml, ShaftToml};
 use super::scenario_toml::RigFile;
 use super::source::ScenarioSource;
 
@@ -192,6 +192,11 @@ fn build(src: &ScenarioSource, file: &RigFileToml) -> anyhow::Result<RigTopology
             })
         }
     };
+    let keyphasor = file
+        .keyphasor
+        .as_ref()
+        .map(|k| keyphasor_gear(src, file, &meshes, body(&k.gear, "keyphasor.gear")?, k))
+        .transpose()?;
     Ok(RigTopology {
         name: file.name.get_ref().clone(),
         description: file.description.clone().unwrap_or_default(),
@@ -224,7 +229,35 @@ fn build(src: &ScenarioSource, file: &RigFileToml) -> anyhow::Result<RigTopology
             .as_ref()
             .map(|t| body(&t.body, "tacho.body"))
             .transpose()?,
+        keyphasor,
     })
+}
+
+/// The keyphasor's gear, body `gear`: refused unless it is some mesh's gear (the
+/// indicators it starts need its teeth).
+fn keyphasor_gear(
+    src: &ScenarioSource,
+    file: &RigFileToml,
+    meshes: &[Mesh],
+    gear: usize,
+    table: &KeyphasorToml,
+) -> anyhow::Result<usize> {
+    if meshes.iter().any(|m| m.gears.contains(&gear)) {
+        return Ok(gear);
+    }
+    let gears = meshes
+        .iter()
+        .flat_map(|m| m.gears)
+        .map(|g| file.bodies[g].name.get_ref());
+    Err(src.error(
+        table.gear.span(),
+        "keyphasor.gear",
+        format!(
+            "body `{}` is no mesh's gear; the gears are {}",
+            table.gear.get_ref(),
+            listed(gears)
+        ),
+    ))
 }
 
 /// The drive settings of `[motor]` and `[brake]`, defaults where they are silent.

@@ -1,6 +1,6 @@
 //! The rig file's schema (TOML; `docs/rig-files.md`): bodies, shafts, meshes, the motor's
-//! and the brake's body, the torque locked into a loop, the gauged shaft and the tacho's
-//! body. Unknown keys are refused; every
+//! and the brake's body, the torque locked into a loop, the gauged shaft, the tacho's
+//! body and the keyphasor's gear. Unknown keys are refused; every
 //! value keeps its place in the file for errors.
 
 use serde::Deserialize;
@@ -34,6 +34,16 @@ pub struct RigFileToml {
     pub gauge: Option<GaugeToml>,
     /// `[tacho]`: the body the tacho generator turns with.
     pub tacho: Option<TachoToml>,
+    /// `[keyphasor]`: the gear whose revolutions it marks.
+    pub keyphasor: Option<KeyphasorToml>,
+}
+
+/// `[keyphasor]`: a once-per-revolution mark on a gear.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct KeyphasorToml {
+    /// The gear, by its body's name: a gear of some mesh.
+    pub gear: Spanned<String>,
 }
 
 /// `[tacho]`: the tacho generator on a body.
