@@ -1,8 +1,10 @@
 //! The motion of the last stretch of a live run: after each change of the set points the
 //! rig is left [`SETTLE_S`] to settle (the panel says "settling"), then windows of
 //! [`REGIME_WINDOW_S`] are summarised, each started afresh when the one before fills. The
-//! regime (cheap) is taken in the plant's thread; the physics judge (a spectrum of the
-//! window) runs in a thread of its own, so that the paced thread is never held up by it.
+//! regime, where the plant tells it cheaply (the thesis's, from its once-per-revolution
+//! states), is taken in the plant's thread; the physics judge (a spectrum of the window)
+//! runs in a thread of its own, so that the paced thread is never held up by it, and
+//! gives a rig file's regime with its motion.
 
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};

@@ -33,16 +33,14 @@ impl PlanRig {
 
     /// The largest brake load (N m) the motor can hold: a preset's torque limit less its
     /// residual drag; a rig file's motor limit over the brake's speed per unit motor speed
-    /// (no limit where the file gives none, or without a brake: 0).
+    /// (infinite where the file gives no limit, 0 without a brake).
     pub fn max_load_nm(&self) -> f64 {
         match self {
             Self::Preset { params, .. } => crate::vocabulary::max_load_nm(params),
             Self::File(rig) => file_max_load_nm(rig),
         }
     }
-}
 
-impl PlanRig {
     /// Whether the motor holds a brake load of `load_nm` (N m), as [`Self::max_load_nm`]
     /// says.
     pub fn check_load(&self, load_nm: f64) -> Result<(), LimitError> {
@@ -50,6 +48,21 @@ impl PlanRig {
             Self::Preset { params, .. } => check_load_within_motor(load_nm, params),
             Self::File(rig) => check_rig_file_load(rig, load_nm),
         }
+    }
+
+    /// The gauged shaft's torque (N m) in the steady state at `rpm` (rev/min) and
+    /// `load_nm` on the brake: a preset's intermediate shaft carries the brake's load; a
+    /// rig file's shaft what its steady state gives it (the load through the gears, a
+    /// loop's locked torque, bearing drag), sampled at `rate_hz` as the run is.
+    pub fn static_torque_nm(&self, rpm: f64, load_nm: f64, rate_hz: f64) -> Result<f64, RigError> {
+        let Self::File(rig) = self else {
+            return Ok(load_nm);
+        };
+        let schedule = Schedule::constant(rpm, load_nm);
+        let mut plant = NetworkPlant::new(rig, schedule, rate_hz, NetworkStart::Steady)?;
+        let mut block = NetworkBlock::new(rig.bodies.len(), rig.shafts.len(), rig.meshes.len());
+        plant.sample_now(&mut block);
+        Ok(block.shaft_torque_nm[judged_shaft(rig)][0])
     }
 }
 
@@ -70,23 +83,6 @@ pub fn check_rig_file_load(rig: &RigTopology, load_nm: f64) -> Result<(), LimitE
             max_nm,
             rig: rig.name.clone(),
         })
-    }
-}
-
-impl PlanRig {
-    /// The gauged shaft's torque (N m) in the steady state at `rpm` (rev/min) and
-    /// `load_nm` on the brake: a preset's intermediate shaft carries the brake's load; a
-    /// rig file's shaft what its steady state gives it (the load through the gears, a
-    /// loop's locked torque, bearing drag), sampled at `rate_hz` as the run is.
-    pub fn static_torque_nm(&self, rpm: f64, load_nm: f64, rate_hz: f64) -> Result<f64, RigError> {
-        let Self::File(rig) = self else {
-            return Ok(load_nm);
-        };
-        let schedule = Schedule::constant(rpm, load_nm);
-        let mut plant = NetworkPlant::new(rig, schedule, rate_hz, NetworkStart::Steady)?;
-        let mut block = NetworkBlock::new(rig.bodies.len(), rig.shafts.len(), rig.meshes.len());
-        plant.sample_now(&mut block);
-        Ok(block.shaft_torque_nm[judged_shaft(rig)][0])
     }
 }
 

@@ -109,8 +109,7 @@ pub struct RigFile {
     /// as `testrig params --rig` lists them).
     #[serde(default)]
     pub set: BTreeMap<String, Spanned<toml::Value>>,
-    /// A rig file (`rigs/basmaji-1983.toml`), relative to this file, instead of a preset:
-    /// sweeps only.
+    /// A rig file (`rigs/basmaji-1983.toml`), relative to this file, instead of a preset.
     pub file: Option<Spanned<String>>,
     /// `[[rig.fault]]`: tooth faults seeded on the rig file's meshes, each naming its mesh.
     #[serde(default)]
