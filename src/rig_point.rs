@@ -295,6 +295,12 @@ impl RigWindow {
         }
     }
 
+    /// This window without the watched gear's average (no condition report then).
+    pub fn without_condition(mut self) -> Self {
+        self.watched = None;
+        self
+    }
+
     /// Adds a block of the window.
     pub fn add(&mut self, block: &NetworkBlock) {
         if self.start_s.is_none() {

@@ -115,7 +115,7 @@ impl<W: PointWindow> PointJudge<W> {
             if start >= span.from {
                 self.open = Some(OpenWindow {
                     index: self.next,
-                    window: plant.window(),
+                    window: plant.window(true),
                     held,
                 });
                 self.next += 1;

@@ -111,9 +111,14 @@ impl ScenarioPlant for RigFilePlant {
         frame
     }
 
-    fn window(&self) -> RigFileWindow {
+    fn window(&self, indicators: bool) -> RigFileWindow {
+        let window = RigWindow::new(&self.rig, self.rate_hz);
         RigFileWindow {
-            window: RigWindow::new(&self.rig, self.rate_hz),
+            window: if indicators {
+                window
+            } else {
+                window.without_condition()
+            },
             rig: Arc::clone(&self.rig),
             motor: self.motor,
             rpm: None,

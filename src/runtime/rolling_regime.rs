@@ -42,7 +42,7 @@ impl<W: PointWindow> RollingRegime<W> {
     /// For `plant`, reporting into `status`.
     pub fn new<P: ScenarioPlant<Window = W>>(plant: &P, status: SharedStatus) -> Self {
         Self {
-            window: plant.window(),
+            window: plant.window(false),
             step_s: plant.output_step_s(),
             settled_s: 0.0,
             filled_s: 0.0,
@@ -75,7 +75,7 @@ impl<W: PointWindow> RollingRegime<W> {
         if self.filled_s < REGIME_WINDOW_S {
             return;
         }
-        let full = std::mem::replace(&mut self.window, plant.window());
+        let full = std::mem::replace(&mut self.window, plant.window(false));
         self.filled_s = 0.0;
         if let Some(regime) = full.quick_regime() {
             self.status.update(|s| s.regime = Some(regime));
@@ -101,7 +101,7 @@ impl<W: PointWindow> RollingRegime<W> {
     fn restart<P: ScenarioPlant<Window = W>>(&mut self, plant: &P, set: SetPoints) {
         self.held = Some(set);
         self.generation.fetch_add(1, Ordering::Relaxed);
-        self.window = plant.window();
+        self.window = plant.window(false);
         self.settled_s = 0.0;
         self.filled_s = 0.0;
         self.status.update(|s| {

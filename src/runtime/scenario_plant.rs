@@ -35,8 +35,10 @@ pub trait ScenarioPlant: Send {
     /// The frame of `block` (sequence `seq`, from sample `start`); its impacts are moved
     /// into the frame.
     fn frame(&self, seq: u64, start: u64, block: &mut Self::Block) -> Frame;
-    /// An empty window.
-    fn window(&self) -> Self::Window;
+    /// An empty window; with `indicators`, it also averages the watched gear's
+    /// revolutions for its condition indicators (a point's window; the live regime's
+    /// needs none).
+    fn window(&self, indicators: bool) -> Self::Window;
 }
 
 /// A window of a plant's blocks, summed up and judged as a point's verdict.

@@ -68,20 +68,21 @@ impl ScenarioPlant for Plant {
         )
     }
 
-    fn window(&self) -> ThesisWindow {
+    fn window(&self, indicators: bool) -> ThesisWindow {
         let step_s = Plant::output_step_s(self);
         ThesisWindow {
             window: SteadyWindow::new(self.params().teeth, step_s),
-            condition: GearCondition::new(1.0 / step_s),
+            condition: indicators.then(|| GearCondition::new(1.0 / step_s)),
             teeth: self.params().teeth,
         }
     }
 }
 
-/// A window of the thesis's plant: its steady summary and the driven gear's average.
+/// A window of the thesis's plant: its steady summary and the driven gear's average,
+/// if taken.
 pub struct ThesisWindow {
     window: SteadyWindow,
-    condition: GearCondition,
+    condition: Option<GearCondition>,
     teeth: u32,
 }
 
@@ -92,11 +93,14 @@ impl PointWindow for ThesisWindow {
         self.window.add_block(&block.signals, set.speed_rad_s());
         self.window.add_impacts(&block.impacts);
         self.window.add_revolutions(&block.revolutions);
-        self.condition.add(&block.signals);
+        if let Some(condition) = &mut self.condition {
+            condition.add(&block.signals);
+        }
     }
 
     fn verdict(&self) -> (SteadySummary, Option<GearIndicators>) {
-        let report = self.condition.report(self.teeth as usize);
+        let teeth = self.teeth as usize;
+        let report = self.condition.as_ref().and_then(|c| c.report(teeth));
         (
             self.window.summary(&RegimeCriteria::default()),
             report.as_ref().map(GearIndicators::from),
