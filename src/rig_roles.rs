@@ -2,9 +2,9 @@
 //! scenario's run alike: the chain's standard stages read the rig under the standard
 //! chain's input names — the gauged shaft's torque as `torque_intermediate_shaft_nm` (the
 //! strain stage takes the gauge's diameter and shear modulus), the speed of the tacho's
-//! body (`[tacho]`, else the motor's) as `speed1_rad_s`, and the speed of the gauged shaft's first body as
-//! `speed3_rad_s` (the slip rings turn with it) — and the watched gear's
-//! once-per-revolution pulse as `keyphasor_v`.
+//! body (`[tacho]`, else the motor's) as `speed1_rad_s`, and the speed of the gauged
+//! shaft's first body as `speed3_rad_s` (the slip rings turn with it) — and the watched
+//! gear's (`[keyphasor]`) once-per-revolution pulse as `keyphasor_v`.
 
 use instruments::ShaftStrain;
 use rig::{Gauge, NetworkBlock, RigTopology};
