@@ -11,7 +11,7 @@ use rig::{Gauge, NetworkBlock, RigTopology};
 
 use crate::chain::ChainStages;
 use crate::rig_point::{judged_shaft, watched_gear};
-use crate::vocabulary::frame::{Frame, SignalNames};
+use crate::vocabulary::frame::Frame;
 use crate::vocabulary::signal_names::{
     KEYPHASOR_V, MOTOR_SPEED_RAD_S, SHAFT_TORQUE_NM, SLIP_RING_SPEED_RAD_S,
 };
@@ -33,15 +33,6 @@ const KEYPHASOR_HIGH_V: f64 = 5.0;
 
 /// Revolutions per keyphasor mark width: the mark spans 1/64 of a turn.
 const KEYPHASOR_MARK_SHARE: f64 = 64.0;
-
-/// Every signal of a rig file's run or case: [`RIG_SIGNALS`], then the stages' outputs.
-pub fn rig_signal_names(stages: &ChainStages) -> SignalNames {
-    let mut names = SignalNames::of(&RIG_SIGNALS);
-    for output in stages.outputs() {
-        names.push(output);
-    }
-    names
-}
 
 /// The body the motor drives: sweeps and scenarios set its speed.
 pub fn motor_of(rig: &RigTopology) -> anyhow::Result<usize> {

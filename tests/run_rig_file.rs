@@ -239,9 +239,9 @@ fn a_rig_file_scenario_is_refused_at_the_field_it_cannot_run() {
                 "[[chain.stage]]\noutput = \"slow_v\"\ninput = \"speed2_rad_s\"\nlowpass = { cutoff_hz = 50 }\n",
             ),
             vec![
-                "chain.stage `slow_v`",
+                ":10:9: chain.stage #1.input",
                 "speed2_rad_s",
-                "a rig file's plant offers",
+                "known: time_s, torque_intermediate_shaft_nm, speed1_rad_s, speed3_rad_s, keyphasor_v,",
             ],
         ),
         (

@@ -117,9 +117,9 @@ impl ChainStages {
         }
     }
 
-    /// Every signal of the run: the plant's, then the stages' outputs.
-    pub fn signal_names(&self) -> SignalNames {
-        let mut names = SignalNames::plant();
+    /// Every signal of a run on the plant signals `plant`, then the stages' outputs.
+    pub fn signal_names_on(&self, plant: &SignalNames) -> SignalNames {
+        let mut names = plant.clone();
         for output in self.outputs() {
             names.push(output);
         }

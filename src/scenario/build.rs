@@ -1,6 +1,6 @@
 //! From a parsed scenario file to a checked [`Plan`].
 
-use super::read_chain::{analyser_plan, chain_plan, record_plan};
+use super::read_chain::{ChainSetting, analyser_plan, chain_plan, record_plan};
 use super::read_rig::{plan_rig, schedule_and_measures};
 use super::read_stages::read_signal_among;
 use super::rig_chain::rig_chain;
@@ -8,7 +8,6 @@ use super::run_plan::{Plan, PlanRig, RecordPlan};
 use super::scenario_toml::ScenarioFile;
 use super::source::ScenarioSource;
 use super::values::Positive;
-use crate::rig_roles::rig_signal_names;
 use crate::vocabulary::choices::WavFormat;
 use crate::vocabulary::limits::check_simulated_s;
 
@@ -58,14 +57,18 @@ pub fn build(src: &ScenarioSource, command_line: CommandLine) -> anyhow::Result<
         None => None,
     };
     let band_hz = analyser.as_ref().map(|a| a.settings.fmax_hz);
-    let mut chain = chain_plan(src, &file.chain, rate_hz, seed, band_hz)?;
-    let names = match &rig {
-        PlanRig::Preset { .. } => chain.stages.signal_names(),
-        PlanRig::File(topology) => {
-            chain = rig_chain(src, topology, &chain, rate_hz)?;
-            rig_signal_names(&chain.stages)
-        }
+    let plant = rig.plant_signals();
+    let setting = ChainSetting {
+        plant: &plant,
+        rate_hz,
+        seed,
+        band_hz,
     };
+    let mut chain = chain_plan(src, &file.chain, setting)?;
+    if let PlanRig::File(topology) = &rig {
+        chain = rig_chain(src, topology, &chain)?;
+    }
+    let names = chain.stages.signal_names_on(&plant);
     if let (Some(a), Some(written)) = (&analyser, &file.analyser) {
         let input = written.input.as_ref();
         read_signal_among(src, &names, input, "analyser.input", &a.input)?;

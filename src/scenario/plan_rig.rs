@@ -5,6 +5,8 @@
 use rig::{NetworkBlock, NetworkPlant, NetworkStart, RigError, RigParams, RigTopology, Schedule};
 
 use crate::rig_point::judged_shaft;
+use crate::rig_roles::RIG_SIGNALS;
+use crate::vocabulary::frame::SignalNames;
 use crate::vocabulary::limits::{LimitError, check_load_within_motor};
 
 /// The rig a scenario runs.
@@ -38,6 +40,15 @@ impl PlanRig {
         match self {
             Self::Preset { params, .. } => crate::vocabulary::max_load_nm(params),
             Self::File(rig) => file_max_load_nm(rig),
+        }
+    }
+
+    /// The signals its plant hands the chain: the thesis's plant's columns, or what a rig
+    /// file's plant offers (`crate::rig_roles`).
+    pub fn plant_signals(&self) -> SignalNames {
+        match self {
+            Self::Preset { .. } => SignalNames::plant(),
+            Self::File(_) => SignalNames::of(&RIG_SIGNALS),
         }
     }
 

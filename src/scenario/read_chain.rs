@@ -8,12 +8,12 @@ use toml::Spanned;
 
 use super::chain_toml::AmplifierFile;
 use super::read_instrument::{filter_spec, meter_settings};
-use super::read_stages::{read_signal, read_signal_among, wired_stages};
+use super::read_stages::{read_signal_among, wired_stages};
 use super::run_plan::{AnalyserPlan, ChainPlan, RecordPlan, ScopePlan};
 use super::scenario_toml::{AnalyserFile, ChainFile, RecordFile};
 use super::source::ScenarioSource;
 use crate::chain::analyser_setup::{AdcChoice, AnalyserSetting, AnalyserWords};
-use crate::chain::{ChainStages, DvmSettings, StandardChain};
+use crate::chain::{DvmSettings, StandardChain};
 use crate::vocabulary::choices::RecordFormatChoice;
 use crate::vocabulary::choices::WavFormat;
 use crate::vocabulary::frame::SignalNames;
@@ -23,19 +23,37 @@ use crate::vocabulary::signal_names::{AMPLIFIER_V, FILTER_V};
 /// Carrier frequency when the scenario gives none and the stream allows it (Hz).
 pub const DEFAULT_CARRIER_HZ: f64 = 10_000.0;
 
-/// The chain's stages and scope, each instrument checked by building it once, as the run
-/// builds it. `band_hz` is the analyser's Fmax, the anti-alias filter's cut-off when the
-/// file gives none.
+/// The plant's signals the chain reads, the stream's rate, the seed and the analyser's
+/// band: what a chain is planned on.
+#[derive(Clone, Copy, Debug)]
+pub struct ChainSetting<'a> {
+    /// The plant's signals (the thesis's plant's, or what a rig file's hands the chain).
+    pub plant: &'a SignalNames,
+    /// The stream's rate (Hz).
+    pub rate_hz: f64,
+    /// The run's base seed.
+    pub seed: u64,
+    /// The analyser's Fmax, the anti-alias filter's cut-off when the file gives none (Hz).
+    pub band_hz: Option<f64>,
+}
+
+/// The chain's stages and scope on the plant's signals, each instrument checked by
+/// building it once, as the run builds it; every input must be a plant signal or a
+/// stage's output.
 pub fn chain_plan(
     src: &ScenarioSource,
     chain: &ChainFile,
-    rate_hz: f64,
-    seed: u64,
-    band_hz: Option<f64>,
+    setting: ChainSetting,
 ) -> anyhow::Result<ChainPlan> {
+    let ChainSetting {
+        plant,
+        rate_hz,
+        seed,
+        band_hz,
+    } = setting;
     let standard = standard_chain(src, chain, rate_hz, seed, band_hz)?;
-    let stages = wired_stages(src, chain, &standard, rate_hz, band_hz)?;
-    let scope = scope_plan(src, chain, rate_hz, &stages)?;
+    let stages = wired_stages(src, chain, &standard, plant, (rate_hz, band_hz))?;
+    let scope = scope_plan(src, chain, rate_hz, &stages.signal_names_on(plant))?;
     Ok(ChainPlan {
         stages,
         strain_per_nm: standard.shaft.strain_per_nm(),
@@ -104,7 +122,7 @@ fn scope_plan(
     src: &ScenarioSource,
     chain: &ChainFile,
     rate_hz: f64,
-    stages: &ChainStages,
+    names: &SignalNames,
 ) -> anyhow::Result<Option<ScopePlan>> {
     let Some(s) = &chain.scope else {
         return Ok(None);
@@ -127,9 +145,9 @@ fn scope_plan(
     Ok(Some(ScopePlan {
         settings,
         ac_coupling_hz: coupling,
-        input: read_signal(
+        input: read_signal_among(
             src,
-            stages,
+            names,
             s.input.as_ref(),
             "chain.scope.input",
             AMPLIFIER_V,

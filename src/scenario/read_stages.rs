@@ -26,14 +26,14 @@ struct Origin {
     input_span: Option<Range<usize>>,
 }
 
-/// The standard stages and the file's own, in running order, each built once on a stream
-/// at `rate_hz` to check it.
+/// The standard stages and the file's own on the `plant`'s signals, in running order, each
+/// built once on a stream at `rate_hz` to check it (`band_hz`: the analyser's Fmax).
 pub fn wired_stages(
     src: &ScenarioSource,
     chain: &ChainFile,
     standard: &StandardChain,
-    rate_hz: f64,
-    band_hz: Option<f64>,
+    plant: &SignalNames,
+    (rate_hz, band_hz): (f64, Option<f64>),
 ) -> anyhow::Result<ChainStages> {
     let mut plans = standard_stages(standard);
     let mut origins: Vec<Origin> = plans
@@ -50,27 +50,16 @@ pub fn wired_stages(
             input_span: Some(file.input.span()),
         });
     }
-    let stages = ChainStages::ordered(plans).map_err(|e| wiring_error(src, &origins, &e))?;
+    let stages =
+        ChainStages::ordered_on(plans, plant).map_err(|e| wiring_error(src, &origins, &e))?;
     stages
-        .build(rate_hz, &mut SignalNames::plant())
+        .build(rate_hz, &mut plant.clone())
         .map_err(|e| wiring_error(src, &origins, &e))?;
     Ok(stages)
 }
 
 /// The signal a reader (analyser, scope, recording) names at `field`, or `default` when
-/// the file names none; it must be a signal of the run.
-pub fn read_signal(
-    src: &ScenarioSource,
-    stages: &ChainStages,
-    given: Option<&Spanned<String>>,
-    field: &str,
-    default: &str,
-) -> anyhow::Result<String> {
-    read_signal_among(src, &stages.signal_names(), given, field, default)
-}
-
-/// As [`read_signal`], among the signals `names` (a rig file's case offers others than
-/// the preset plant's).
+/// the file names none; it must be one of the run's signals `names`.
 pub fn read_signal_among(
     src: &ScenarioSource,
     names: &SignalNames,

@@ -4,7 +4,7 @@ use rig::Approach;
 
 use crate::scenario::build::stream_rate_hz;
 use crate::scenario::read_chain::record_plan;
-use crate::scenario::read_chain::{analyser_plan, chain_plan};
+use crate::scenario::read_chain::{ChainSetting, analyser_plan, chain_plan};
 use crate::scenario::read_rig::rig_params;
 use crate::scenario::read_rig_file::rig_of_file_table;
 use crate::scenario::read_stages::read_signal_among;
@@ -16,7 +16,7 @@ use super::case_rig::CaseRig;
 use super::knock::knock_rad_s;
 use super::sequence::{Direction, Sequence};
 use super::sweep_toml::{CaseFile, GridFile, SweepFile};
-use crate::rig_roles::rig_signal_names;
+use crate::rig_roles::RIG_SIGNALS;
 use crate::scenario::rig_chain::rig_chain;
 use crate::vocabulary::frame::SignalNames;
 use crate::vocabulary::limits::MAX_SWEEP_CASES;
@@ -99,14 +99,22 @@ pub fn build_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<Swe
     };
     let analyser = analyser_plan(src, &file.analyser, rate_hz, file.seed)?;
     let band_hz = Some(analyser.settings.fmax_hz);
-    let chain = chain_plan(src, &file.chain, rate_hz, file.seed, band_hz)?;
-    let names = match &base {
-        CaseRig::Preset(_) => chain.stages.signal_names(),
-        CaseRig::File(rig) => {
-            rig_chain(src, rig, &chain, rate_hz)?;
-            rig_signal_names(&chain.stages)
-        }
+    let plant = match &base {
+        CaseRig::Preset(_) => SignalNames::plant(),
+        CaseRig::File(_) => SignalNames::of(&RIG_SIGNALS),
     };
+    let setting = ChainSetting {
+        plant: &plant,
+        rate_hz,
+        seed: file.seed,
+        band_hz,
+    };
+    let chain = chain_plan(src, &file.chain, setting)?;
+    if let CaseRig::File(rig) = &base {
+        // Checked here: a motor and gauges; each case puts the strain stage on its gauge.
+        rig_chain(src, rig, &chain)?;
+    }
+    let names = chain.stages.signal_names_on(&plant);
     let input = file.analyser.input.as_ref();
     read_signal_among(src, &names, input, "analyser.input", &analyser.input)?;
     let (settle_s, measure_s) = case_timing(src, &file.case, &analyser)?;
