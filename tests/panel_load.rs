@@ -17,7 +17,7 @@ use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::time::{Duration, Instant};
 
 use common::folder;
-use panel_support::{Panel, http};
+use panel_support::{Panel, http, try_http};
 
 const WS_CLIENTS: usize = 200;
 const IDLE_SOCKETS: usize = 1000;
@@ -59,18 +59,18 @@ fn ws_client(address: std::net::SocketAddr, stop: Arc<AtomicBool>, got: Arc<Atom
 }
 
 /// One flooder: sends speed commands back to back until `stop`; counts the answers by
-/// status (200, 400 busy or refused, 503 no room).
+/// status (200, 400 busy or refused, 503 no room — a connection the server closed before
+/// taking the request counts as no room too).
 fn flooder(address: std::net::SocketAddr, stop: Arc<AtomicBool>, counts: Arc<[AtomicU64; 3]>) {
     let mut k = 0u64;
     while !stop.load(Ordering::Relaxed) {
         let rpm = if k.is_multiple_of(2) { 1250 } else { 1300 };
         k += 1;
         let body = format!("{{\"cmd\": \"set_speed\", \"rpm\": {rpm}}}");
-        let (status, _) = http(address, "POST", "/api/command", &body);
-        let slot = match status {
-            200 => 0,
-            503 => 2,
-            _ => 1,
+        let slot = match try_http(address, "POST", "/api/command", &body) {
+            Ok((200, _)) => 0,
+            Ok((503, _)) | Err(_) => 2,
+            Ok(_) => 1,
         };
         counts[slot].fetch_add(1, Ordering::Relaxed);
     }

@@ -152,7 +152,19 @@ impl Drop for Panel {
 
 /// One HTTP/1.1 request, the connection closed after it: status and body.
 pub fn http(address: SocketAddr, method: &str, path: &str, body: &str) -> (u16, String) {
-    let response = http_response(address, method, path, body);
+    try_http(address, method, path, body).expect("an HTTP exchange")
+}
+
+/// [`http`], its failure returned (a server that closes a connection it has no room for
+/// may do so before the request is written).
+pub fn try_http(
+    address: SocketAddr,
+    method: &str,
+    path: &str,
+    body: &str,
+) -> std::io::Result<(u16, String)> {
+    let headers = format!("Host: {address}\r\nContent-Type: application/json\r\n");
+    let response = try_http_with(address, method, path, &headers, body)?;
     let status = response
         .split_whitespace()
         .nth(1)
@@ -161,7 +173,7 @@ pub fn http(address: SocketAddr, method: &str, path: &str, body: &str) -> (u16, 
     let body = response
         .split_once("\r\n\r\n")
         .map_or(String::new(), |(_, b)| b.to_string());
-    (status, body)
+    Ok((status, body))
 }
 
 /// One HTTP/1.1 request, the connection closed after it: the whole response as text.
@@ -179,17 +191,25 @@ pub fn http_with(
     headers: &str,
     body: &str,
 ) -> String {
-    let mut stream = TcpStream::connect(address).expect("connects");
-    stream
-        .set_read_timeout(Some(Duration::from_secs(30)))
-        .expect("timeout");
+    try_http_with(address, method, path, headers, body).expect("an HTTP exchange")
+}
+
+/// [`http_with`], its failure returned.
+fn try_http_with(
+    address: SocketAddr,
+    method: &str,
+    path: &str,
+    headers: &str,
+    body: &str,
+) -> std::io::Result<String> {
+    let mut stream = TcpStream::connect(address)?;
+    stream.set_read_timeout(Some(Duration::from_secs(30)))?;
     write!(
         stream,
         "{method} {path} HTTP/1.1\r\n{headers}Content-Length: {}\r\nConnection: close\r\n\r\n{body}",
         body.len()
-    )
-    .expect("sends");
+    )?;
     let mut response = String::new();
-    stream.read_to_string(&mut response).expect("reads");
-    response
+    stream.read_to_string(&mut response)?;
+    Ok(response)
 }
