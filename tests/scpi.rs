@@ -101,7 +101,7 @@ fn settings_are_carried_out_and_journalled_and_refusals_queued_with_their_number
     c.write("RIG:SPE 5000");
     let (code, message) = c.error();
     assert_eq!(code, -222);
-    assert!(message.contains("0 … 3000 rev/min"), "{message}");
+    assert!(message.contains("0 to 3000 rev/min"), "{message}");
     assert_eq!(
         c.query("RIG:SPE?"),
         "9E2",
@@ -222,7 +222,8 @@ fn a_measurement_is_waited_for_and_read_as_text_and_as_a_block() {
     );
 }
 
-/// A mangled line certain to be refused, from a seeded generator.
+/// A mangled line certain to be refused, from a seeded generator; three kinds of the
+/// thirteen carry a character beyond ASCII or a control byte in the header, a string or a number.
 fn mangled(rng: &mut Pcg64Mcg, k: usize) -> String {
     let headers = [
         "RIG:SPE",
@@ -233,8 +234,13 @@ fn mangled(rng: &mut Pcg64Mcg, k: usize) -> String {
         "RIG:OSC:FREQ",
     ];
     let header = headers[rng.random_range(0..headers.len())];
-    match k % 10 {
+    let beyond_ascii = ["É", "≥", "µε", "\u{7f}", "\u{85}", "…", "😀"];
+    let odd = beyond_ascii[rng.random_range(0..beyond_ascii.len())];
+    match k % 13 {
         0 => format!("QZ{}:{}", rng.random::<u32>(), header),
+        10 => format!("{header}{odd} 1"),
+        11 => format!("{header} \"{odd}\""),
+        12 => format!("{header} {odd}5"),
         1 => format!("{header} 1e{}", rng.random_range(30..400)),
         2 => format!("{header} NaN"),
         3 => format!("{header} {}", -rng.random_range(1.0..1e6_f64)),
@@ -265,6 +271,10 @@ fn mangled_lines_are_each_refused_and_the_rig_keeps_real_time() {
         c.write(&line);
         let (code, message) = c.error();
         assert!(code < 0, "{line:?} was not refused");
+        assert!(
+            message.bytes().all(|b| (0x20..0x7f).contains(&b)),
+            "{line:?}: the answer {message:?} is not printable 7-bit ASCII (IEEE 488.2)"
+        );
         assert_eq!(
             c.error().0,
             0,

@@ -1,7 +1,7 @@
 """pyvisa (with the pure-Python pyvisa-py backend) drives the live rig over SCPI, as a lab
 script does (run by the Rust test `pyvisa_drives_the_rig`, tests/scpi.rs):
 
-identify; set speed and load; 10 Hanning averages at 200 Hz span; the spectrum read as
+identify; set speed and load; refusals read with pyvisa's default (ASCII) encoding; 10 Hanning averages at 200 Hz span; the spectrum read as
 REAL,32 (query_binary_values) and as ASCII (query_ascii_values); the half-order line at
 1300 rev/min and 2.712 N m found; the same spectrum as the panel's JSON API within
 float32 rounding; then examples/python/scpi_rehearsal.py at three speeds.
@@ -51,6 +51,16 @@ def main():
         inst.write("RIG:SPEED 1300;LOAD 2.712")
         inst.write("SENSE:FREQUENCY:SPAN 200;:SENS:WINDOW:TYPE HANNING;:AVERAGE:COUNT 10;STATE ON")
         check(inst.query("SYST:ERR?").startswith("0,"), "settings taken without error")
+        # pyvisa decodes answers as ASCII by default (the encoding is left as it is): a
+        # refusal's range, and a header of bytes beyond ASCII echoed back, must decode.
+        inst.write("SENS:FREQ:SPAN -5")
+        refusal = inst.query("SYST:ERR?")
+        check(refusal.startswith("-222,") and "0.001 to " in refusal,
+              f"a range refused in ASCII through pyvisa's default encoding: {refusal}")
+        inst.write_raw("RIG:SP\u00c9ED 1\n".encode("utf-8"))
+        echoed = inst.query("SYST:ERR?")
+        check(echoed.startswith("-1") and "\\xC3\\x89" in echoed,
+              f"a header beyond ASCII echoed as \\xNN: {echoed}")
         while float(inst.query("RIG:TIME?")) < 60.0:     # settled (docs/physics.md)
             pass
         inst.write("INIT:IMM")

@@ -1,6 +1,8 @@
 //! SCPI's error numbers (SCPI 1999 vol. 2 §21.8) as the error queue holds them: the
 //! standard text, then after a semicolon what this instrument says of the case.
 
+use super::ascii::ascii;
+
 /// One error: its number and message.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct ScpiError {
@@ -11,11 +13,13 @@ pub struct ScpiError {
 }
 
 impl ScpiError {
+    /// The message is kept to printable ASCII (`ascii.rs`): a detail's typographic signs
+    /// spelled out, anything else beyond ASCII as `\xNN`.
     fn new(code: i32, text: &str, detail: &str) -> Self {
         let message = if detail.is_empty() {
             text.to_string()
         } else {
-            format!("{text};{detail}")
+            ascii(&format!("{text};{detail}"))
         };
         Self { code, message }
     }

@@ -9,6 +9,7 @@ use std::sync::Arc;
 use std::sync::atomic::Ordering;
 use std::time::Duration;
 
+use super::ascii::ascii as ascii_text;
 use super::data::{Format, ascii, block};
 use super::error::ScpiError;
 use super::message::{Parameter, Unit, units};
@@ -171,9 +172,9 @@ impl Instrument {
     fn query(&mut self, command: Command) -> Result<Vec<u8>, ScpiError> {
         let s = self.state();
         let number = |x: f64| Ok(ascii(&[x]).into_bytes());
-        let text = |t: &str| Ok(format!("\"{t}\"").into_bytes());
+        let text = |t: &str| Ok(format!("\"{}\"", ascii_text(t).replace('"', "'")).into_bytes());
         match command {
-            Command::Identify => Ok(self.rack.identity.clone().into_bytes()),
+            Command::Identify => Ok(ascii_text(&self.rack.identity).into_bytes()),
             Command::OperationComplete => {
                 self.wait_for_measurement();
                 Ok(b"1".to_vec())

@@ -3,6 +3,7 @@
 //! after `;` without one continues from the previous header's node, SCPI 1999 §6.2.4;
 //! common commands `*XXX` leave the path alone), and its parameters split at commas.
 
+use super::ascii::escaped;
 use super::error::ScpiError;
 
 /// Longest line read (bytes); a longer one is refused whole with -363.
@@ -20,6 +21,18 @@ pub enum Parameter {
     Word(String),
     /// A quoted string, quotes taken off.
     Text(String),
+}
+
+impl Parameter {
+    /// The parameter as a message shows it: the number, the word, or the string quoted
+    /// (a client's bytes beyond ASCII as `\xNN`).
+    pub fn shown(&self) -> String {
+        match self {
+            Self::Number(x) => x.to_string(),
+            Self::Word(w) => w.clone(),
+            Self::Text(t) => format!("'{}'", escaped(t)),
+        }
+    }
 }
 
 /// One unit of a message, its header resolved.
@@ -69,7 +82,7 @@ fn unit(text: &str, node: &[String]) -> Result<Unit, ScpiError> {
         Some(h) => (h, true),
         None => (header, false),
     };
-    let shown: String = header.chars().take(40).collect();
+    let shown = escaped(&header.chars().take(40).collect::<String>());
     let path = if let Some(common) = header_body.strip_prefix('*') {
         if common.is_empty() || !common.chars().all(|c| c.is_ascii_alphabetic()) {
             return Err(ScpiError::syntax(&format!("header `{shown}`")));
@@ -118,7 +131,7 @@ fn parameters(text: &str) -> Result<Vec<Parameter>, ScpiError> {
 }
 
 fn parameter(item: &str) -> Result<Parameter, ScpiError> {
-    let shown: String = item.chars().take(40).collect();
+    let shown = escaped(&item.chars().take(40).collect::<String>());
     let Some(first) = item.chars().next() else {
         return Err(ScpiError::missing_parameter(
             "an empty parameter between commas",

@@ -76,13 +76,14 @@ pub(crate) fn number(
         Parameter::Word(w) if w == "MAX" || w == "MAXIMUM" => range.1,
         other => {
             return Err(ScpiError::data_type(&format!(
-                "{what}: {other:?} is not a number"
+                "{what}: `{}` is not a number",
+                other.shown()
             )));
         }
     };
     if !(range.0..=range.1).contains(&value) {
         return Err(ScpiError::out_of_range(&format!(
-            "{what} {value}: {} … {} {unit}",
+            "{what} {value}: {} to {} {unit}",
             range.0, range.1
         )));
     }
@@ -97,7 +98,8 @@ pub(crate) fn word<'a>(params: &[Parameter], allowed: &[&'a str]) -> Result<&'a 
             ScpiError::illegal_value(&format!("{w}: one of {}", allowed.join(", ")))
         }),
         other => Err(ScpiError::data_type(&format!(
-            "{other:?}: one of {}",
+            "`{}`: one of {}",
+            other.shown(),
             allowed.join(", ")
         ))),
     }
@@ -112,7 +114,8 @@ pub(crate) fn boolean(params: &[Parameter]) -> Result<bool, ScpiError> {
         Parameter::Number(x) if *x == 1.0 => Ok(true),
         Parameter::Number(x) if *x == 0.0 => Ok(false),
         other => Err(ScpiError::illegal_value(&format!(
-            "{other:?}: ON, OFF, 1 or 0"
+            "`{}`: ON, OFF, 1 or 0",
+            other.shown()
         ))),
     }
 }
