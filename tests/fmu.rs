@@ -1,6 +1,7 @@
 //! The FMU (`testrig fmu`, `docs/fmu.md`) through its C functions, as an importer calls
 //! them: outputs equal `simulate --rig --approach rest` of the same point and do not
-//! depend on the communication step; a set point changed between steps is the
+//! depend on the communication step, nor on inputs set again before every step to the
+//! values they have; a set point changed between steps is the
 //! schedule's step at that instant; a saved state repeats the same future; a steady
 //! point carries the brake's load through the shafts; bad calls and values are refused
 //! with a message, never a crash. FMPy and a second importer judge it in
@@ -111,6 +112,65 @@ fn outputs_equal_simulate_from_rest_whatever_the_communication_step() {
         impacts > 10.0,
         "the run-up rattles: {impacts} impacts in 2 s"
     );
+}
+
+/// Runs `fmu` from 0 to `to_s` in steps of `h_s` as a master with connected inputs does:
+/// every input set before every step, the speed stepping to `later_rpm` at `change_s`.
+fn run_setting_inputs(
+    fmu: &mut Fmu,
+    to_s: f64,
+    h_s: f64,
+    change_s: f64,
+    later_rpm: f64,
+) -> Vec<(f64, Vec<f64>)> {
+    let steps = (to_s / h_s).round() as usize;
+    (0..steps)
+        .map(|k| {
+            let t = k as f64 * h_s;
+            let rpm = if t + 1e-9 >= change_s {
+                later_rpm
+            } else {
+                1300.0
+            };
+            assert_eq!(fmu.set("set_speed_rpm", rpm), OK);
+            assert_eq!(fmu.set("load_nm", 2.712), OK);
+            assert_eq!(fmu.step(t, h_s), OK, "{:?}", fmu.messages());
+            (t + h_s, fmu.outputs())
+        })
+        .collect()
+}
+
+#[test]
+fn inputs_set_before_every_step_give_the_same_motion_whatever_the_step() {
+    let rig = rig();
+    let dir = folder("fmu-inputs-every-step");
+    let names = output_names(&rig);
+    // Constant inputs set every step, then a speed stepped at 1 s, a shared point.
+    for later_rpm in [1300.0, 1000.0] {
+        let mut fine = started(&rig, dir.path(), 1300.0, 2.712);
+        let mut coarse = started(&rig, dir.path(), 1300.0, 2.712);
+        let fine_out = run_setting_inputs(&mut fine, 2.0, 0.001, 1.0, later_rpm);
+        let coarse_out = run_setting_inputs(&mut coarse, 2.0, 0.01, 1.0, later_rpm);
+        let mut held = started(&rig, dir.path(), 1300.0, 2.712);
+        let held_out = run(&mut held, 0.0, 1.0, 0.01);
+        for (t, coarse_values) in &coarse_out {
+            let k = (t / 0.001).round() as usize - 1;
+            for (j, (got, want)) in coarse_values.iter().zip(&fine_out[k].1).enumerate() {
+                assert!(
+                    (got - want).abs() <= 1e-9 * want.abs().max(1e-6),
+                    "{} at {t} s ({later_rpm} rev/min after 1 s): 10 ms steps {got}, 1 ms {want}",
+                    names[j]
+                );
+            }
+        }
+        // Setting an input to the value it has is no change at all: to the bit.
+        for (k, (_, values)) in held_out.iter().enumerate() {
+            assert_eq!(
+                *values, coarse_out[k].1,
+                "inputs left alone vs set again, step {k}"
+            );
+        }
+    }
 }
 
 #[test]
@@ -311,6 +371,28 @@ fn a_wrong_token_or_missing_resources_give_no_instance_and_say_why() {
         "{:?}",
         fmu.messages()
     );
+}
+
+#[test]
+fn an_installed_binary_elsewhere_finds_the_library_it_was_built_with() {
+    // `cargo install --path .` builds in the workspace's target/release and copies only
+    // the binary to ~/.cargo/bin: a copy in another folder must still export.
+    let dir = folder("fmu-installed");
+    let installed = dir.path().join("testrig");
+    std::fs::copy(env!("CARGO_BIN_EXE_testrig"), &installed).expect("copy the binary");
+    let fmu = dir.path().join("rig.fmu");
+    let out = std::process::Command::new(&installed)
+        .args(["fmu", "--rig", &rig_path(), "--out"])
+        .arg(&fmu)
+        .env_remove("TESTRIG_FMU_LIBRARY")
+        .output()
+        .expect("runs");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(std::fs::metadata(&fmu).expect("the FMU").len() > 100_000);
 }
 
 #[test]

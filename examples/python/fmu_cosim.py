@@ -4,12 +4,13 @@ torque in the gauged (intermediate) shaft with the impacts of the gears. The FMU
 rig file's plant (`testrig fmu`, docs/fmu.md); FMPy is the importer.
 
     cargo build --release
-    target/release/testrig fmu --rig scenarios/rigs/basmaji-1983.toml --out rig.fmu
+    target/release/testrig fmu --rig scenarios/rigs/basmaji-1983.toml --out out/rig.fmu
     python3 -m pip install fmpy matplotlib
-    python3 examples/python/fmu_cosim.py rig.fmu      # writes fmu-cosim.png
+    python3 examples/python/fmu_cosim.py out/rig.fmu      # writes out/fmu-cosim.png, beside the FMU
 """
 
 import sys
+from pathlib import Path
 
 import matplotlib
 
@@ -19,7 +20,7 @@ import numpy as np  # noqa: E402
 from fmpy import simulate_fmu  # noqa: E402
 
 fmu = sys.argv[1] if len(sys.argv) > 1 else "rig.fmu"
-out = sys.argv[2] if len(sys.argv) > 2 else "fmu-cosim.png"
+out = sys.argv[2] if len(sys.argv) > 2 else str(Path(fmu).with_name("fmu-cosim.png"))
 
 # The master's input signal: FMPy holds each row's values until the next row's time.
 times = np.arange(0.0, 40.0, 0.1)

@@ -64,23 +64,31 @@ pub fn run(args: &FmuArgs) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// The FMU's shared library: `TESTRIG_FMU_LIBRARY`, else the one built beside this binary.
+/// The FMU's shared library: `TESTRIG_FMU_LIBRARY`, else the one built beside this binary,
+/// else the one in the folder this binary was built in (`cargo install --path .` builds
+/// in the workspace's `target/release` and copies only the binary).
 fn library() -> anyhow::Result<PathBuf> {
     if let Some(path) = std::env::var_os("TESTRIG_FMU_LIBRARY") {
         return Ok(PathBuf::from(path));
     }
     let exe = std::env::current_exe().context("cannot find this program's own path")?;
     let dir = exe.parent().map(PathBuf::from).unwrap_or_default();
+    let built = PathBuf::from(env!("TESTRIG_BUILD_PROFILE_DIR"));
     let beside = dir.join(LIBRARY);
     // `cargo build` puts the library beside the binary; `cargo test` leaves it in deps/.
-    for candidate in [&beside, &dir.join("deps").join(LIBRARY)] {
-        if candidate.is_file() {
-            return Ok(candidate.clone());
-        }
+    let candidates = [
+        beside.clone(),
+        dir.join("deps").join(LIBRARY),
+        built.join(LIBRARY),
+        built.join("deps").join(LIBRARY),
+    ];
+    if let Some(found) = candidates.iter().find(|c| c.is_file()) {
+        return Ok(found.clone());
     }
     anyhow::bail!(
-        "the FMU's library {} is not there: build it with `cargo build --release` (the workspace builds it beside testrig), or name it with TESTRIG_FMU_LIBRARY",
-        beside.display()
+        "the FMU's library {} is not there, nor in {} where this testrig was built: build it with `cargo build --release` (the workspace builds it beside testrig), or name it with TESTRIG_FMU_LIBRARY",
+        beside.display(),
+        built.display()
     )
 }
 

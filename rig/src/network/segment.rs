@@ -19,7 +19,9 @@ impl NetworkPlant {
 
     /// From the current sample on, holds `set` (a knob turned while the rig runs, an
     /// FMU's inputs held over a communication step); the set points it had scheduled
-    /// after now are dropped.
+    /// after now are dropped. Holding the set points already held, with nothing scheduled
+    /// after now, changes nothing: the stretch under way goes on, so a master that sets
+    /// its inputs every step gets the same motion however it cuts the steps.
     pub fn hold_set_points(&mut self, set: SetPoints) -> Result<(), RigError> {
         let values = [
             set.speed_rpm,
@@ -38,8 +40,12 @@ impl NetworkPlant {
                 set.speed_rpm, self.speed_ceiling_rpm
             )));
         }
+        let now = self.time_s();
+        if self.schedule.next_knot_after(now).is_none() && self.set_points() == set {
+            return Ok(());
+        }
         let mut schedule = self.schedule.clone();
-        schedule.hold_from(self.time_s(), set);
+        schedule.hold_from(now, set);
         schedule.validate()?;
         self.schedule = schedule;
         self.segment_end = Some(self.sample);
