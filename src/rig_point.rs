@@ -134,7 +134,7 @@ impl RigPointSummary {
 pub fn regime_of(motion: Motion) -> Regime {
     match motion {
         Motion::Periodic(k) => Regime::Periodic(k),
-        Motion::AtRest => Regime::Periodic(1),
+        Motion::NoVibration => Regime::Periodic(1),
         _ => Regime::Aperiodic,
     }
 }
@@ -181,6 +181,17 @@ pub struct RigPointRun {
 /// Samples per block handed to the caller.
 const BLOCK: usize = 4096;
 
+/// The body the motor drives: every run of a rig file (simulate, sweeps, scenarios, the
+/// panel) sets its speed, so a rig without a `[motor]` is refused here, by name.
+pub fn motor_of(rig: &RigTopology) -> anyhow::Result<usize> {
+    rig.motor.ok_or_else(|| {
+        anyhow::anyhow!(
+            "rig `{}` has no [motor]: a run sets the motor's speed, so the rig needs one ([motor] body = \"...\", docs/rig-files.md)",
+            rig.name
+        )
+    })
+}
+
 /// Checks `spec` (each input refused under its name in `names`), runs it and hands `sink`
 /// every block of the measuring window.
 pub fn run_rig_point(
@@ -193,6 +204,7 @@ pub fn run_rig_point(
         .map_err(|e| anyhow::anyhow!("{} {}: {e}", names.load, spec.load_nm))?;
     check_times(spec.settle_s, spec.duration_s, spec.rate_hz, names)?;
     let rig = spec.rig;
+    motor_of(rig)?;
     let started = Instant::now();
     let mut plant = settled_rig_plant(spec, names)?;
     let mut block = NetworkBlock::new(rig.bodies.len(), rig.shafts.len(), rig.meshes.len());

@@ -63,11 +63,12 @@
 //! physics judge of a settled motion from the output-shaft torque: `spread.rs` (scatter of
 //! samples every k revolutions), `order_lines.rs` (Hann spectrum in orders: power on the
 //! period-k lines, a subharmonic's height over the broadband floor), `zero_one.rs` (the 0-1
-//! test for chaos), `verdict.rs` (period-k / quasi-periodic / chaotic / at rest, thresholds
+//! test for chaos), `verdict.rs` (period-k / quasi-periodic / chaotic / no vibration, thresholds
 //! and their reasons; see `docs/physics.md`). `steady.rs` settle-then-measure runs
 //! (`SteadyWindow` keeps the window's torque for the judge and the motor's mean speed
 //! against the set speed; its `regime()` is the cheap part a paced thread uses). `modal.rs`
-//! natural frequencies and shapes. `energy.rs` energy terms for tests.
+//! natural frequencies and shapes. `energy.rs` energy terms for tests. `nearest.rs` the
+//! known names nearest a mistyped one, for refusals.
 //!
 //! `network/` the plant of any rig a rig file describes (`RigTopology`): any number of
 //! bodies, shafts and up to four meshes, loops with a locked-in torque, the same exact
@@ -113,6 +114,7 @@ pub mod mesh_stiffness;
 pub mod modal;
 mod mode;
 mod model;
+pub mod nearest;
 pub mod network;
 pub mod options;
 mod pair_zones;

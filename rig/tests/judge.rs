@@ -1,5 +1,6 @@
-//! The physics judge on signals whose answer is known: synthetic period-2 and
-//! quasi-periodic torques, a chaotic sequence from the logistic map, a still rig, and the
+//! The physics judge on signals whose answer is known: synthetic period-2 (a strong and
+//! a faint half-order line, at any phase), period-3 and
+//! quasi-periodic torques, a chaotic sequence from the logistic map, a torque that does not vibrate, and the
 //! plant itself in its linear regime and in the thesis's period-2 motion.
 
 mod support;
@@ -67,6 +68,50 @@ fn a_synthetic_period_two_torque_is_period_two_with_a_clear_half_order_line() {
 }
 
 #[test]
+fn a_small_half_order_part_makes_period_two_whatever_its_phase_at_the_turn_marks() {
+    // 1 %, 2.6 % and 4.5 % of the AC power on the half order: the once-per-revolution
+    // samples differ by less than the 5 % a period needs (or not at all, where the
+    // half-order part crosses zero at the turn marks) and the period-1 lines hold 95 % of
+    // the power, yet the half-order line stands far over the floor: a subharmonic on the
+    // analyser's log display, and a motion that repeats every two revolutions.
+    let w = TAU * RUNNING_HZ;
+    for (share, phase) in [(0.01_f64, 0.3), (0.026, 0.0), (0.026, 0.2), (0.045, 0.0)] {
+        let a = (share / (1.0 - share)).sqrt();
+        let j = judge_signal(600, |t, _| {
+            2.712 + (w * t).sin() + a * (0.5 * w * t + phase).sin()
+        });
+        assert!(
+            j.spread[0].unwrap() <= rig::judge::SPREAD_MAX && j.line_fraction[0].unwrap() >= 0.95,
+            "share {share}, phase {phase}: period 1 by samples and power alone: {j:?}"
+        );
+        assert!(j.half_order_clear(), "share {share}: {j:?}");
+        assert_eq!(
+            j.motion,
+            Motion::Periodic(2),
+            "share {share}, phase {phase}: {j:?}"
+        );
+    }
+}
+
+#[test]
+fn a_third_order_line_makes_period_three_not_one() {
+    let w = TAU * RUNNING_HZ;
+    let j = judge_signal(600, |t, _| (w * t).sin() + 0.12 * (w * t / 3.0).sin());
+    assert!(j.third_order_db.unwrap() >= 20.0, "{j:?}");
+    assert_eq!(j.motion, Motion::Periodic(3), "{j:?}");
+}
+
+#[test]
+fn a_clean_period_one_torque_stays_period_one() {
+    let w = TAU * RUNNING_HZ;
+    let j = judge_signal(600, |t, _| {
+        2.712 + (w * t).sin() + 0.3 * (2.0 * w * t + 1.0).sin() + 0.05 * (30.0 * w * t).cos()
+    });
+    assert!(!j.half_order_clear(), "{j:?}");
+    assert_eq!(j.motion, Motion::Periodic(1), "{j:?}");
+}
+
+#[test]
 fn a_period_two_torque_buried_in_broadband_motion_is_not_period_two() {
     // The same lines with a random revolution-to-revolution amplitude on top: the
     // half-order line is there, but the motion does not repeat.
@@ -99,9 +144,9 @@ fn an_incommensurate_second_frequency_is_quasi_periodic() {
 }
 
 #[test]
-fn a_still_torque_is_at_rest() {
+fn a_torque_that_does_not_vibrate_is_no_vibration() {
     let j = judge_signal(200, |_, _| 2.712);
-    assert_eq!(j.motion, Motion::AtRest, "{j:?}");
+    assert_eq!(j.motion, Motion::NoVibration, "{j:?}");
 }
 
 fn plant_judgement(params: rig::RigParams, rpm: f64, load_nm: f64) -> Judgement {

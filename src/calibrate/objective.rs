@@ -131,6 +131,8 @@ mod tests {
             line_fraction: fraction.map(Some).to_vec(),
             half_order_db: Some(half_db),
             third_order_db: None,
+            half_order_share: Some(0.1),
+            third_order_share: None,
             chaos_k: Some(k),
         }
     }

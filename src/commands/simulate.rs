@@ -161,7 +161,11 @@ fn print_text(r: &Report) {
         s.speed_offset_rpm
     );
     let c = &r.condition;
-    if !c.is_null() {
+    if m.motion == rig::judge::Motion::NoVibration {
+        println!(
+            "gear condition   not shown: the output-shaft torque does not vibrate (the indicators' ratios would be of rounding; --json keeps them)"
+        );
+    } else if !c.is_null() {
         let n = |k: &str| c[k].as_f64().unwrap_or(f64::NAN);
         println!(
             "gear condition   synchronous average of the output-shaft torque over {} revolutions of the driven gear:\n  FM0 {:.3}, FM4 {:.3}, M6A {:.3}, M8A {:.3}, NA4 {:.3}, sideband level {:.3}, crest factor {:.3}, kurtosis {:.3}",

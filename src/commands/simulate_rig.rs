@@ -139,7 +139,12 @@ fn print_text(r: &Report) {
             100.0 * m.apart_fraction
         );
     }
-    if let Some(c) = &s.condition {
+    if s.motion.motion == rig::judge::Motion::NoVibration {
+        println!(
+            "gear condition   not shown: shaft {}'s torque does not vibrate (the indicators' ratios would be of rounding; --json keeps them)",
+            s.judged_shaft
+        );
+    } else if let Some(c) = &s.condition {
         let n = |key: &str| c[key].as_f64().unwrap_or(f64::NAN);
         println!(
             "gear condition   shaft {} averaged over {} revolutions of {}:\n  FM0 {:.3}, FM4 {:.3}, NA4 {:.3}, sideband level {:.4}, residual RMS {:.3e} N m",

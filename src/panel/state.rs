@@ -42,7 +42,7 @@ pub struct PanelState {
     /// `settling` for the first 15 s after the set points change.
     pub regime: Option<String>,
     /// The physics judge's motion of the last full 10 s after settling (`period-k`,
-    /// `quasi-periodic`, `chaotic`, `at-rest`), or `settling` for the first 15 s after the
+    /// `quasi-periodic`, `chaotic`, `no-vibration`), or `settling` for the first 15 s after the
     /// set points change.
     pub motion: Option<String>,
     /// Whether the recorder is writing.

@@ -103,6 +103,21 @@ impl OrderSpectrum {
         Some(10.0 * (line / floor_power).log10())
     }
 
+    /// Share of the band's power (above the mean's leakage) within the main lobe of the
+    /// line at `order`; `None` when the line lies beyond the band or in the mean's
+    /// leakage.
+    pub fn line_share(&self, order: f64) -> Option<f64> {
+        let centre = (order * self.running_hz / self.bin_hz).round() as usize;
+        if centre < DC_BINS + LINE_HALF_WIDTH || centre + LINE_HALF_WIDTH > self.band_bins {
+            return None;
+        }
+        let all: f64 = self.power.iter().skip(DC_BINS).sum();
+        let line: f64 = self.power[centre - LINE_HALF_WIDTH..=centre + LINE_HALF_WIDTH]
+            .iter()
+            .sum();
+        Some(if all > 0.0 { line / all } else { 0.0 })
+    }
+
     /// The bins within `half_width` of a line at a multiple of running speed / k.
     fn family_mask(&self, k: usize, half_width: usize) -> Option<Vec<bool>> {
         let spacing = self.running_hz / k as f64 / self.bin_hz;
@@ -128,4 +143,9 @@ impl OrderSpectrum {
 /// between the lines of period k.
 pub fn subharmonic_height_db(spectrum: &OrderSpectrum, k: usize) -> Option<f64> {
     spectrum.height_over_floor_db(1.0 / k as f64, k)
+}
+
+/// Share of the band's power on the 1/k-order line of `spectrum`.
+pub fn subharmonic_share(spectrum: &OrderSpectrum, k: usize) -> Option<f64> {
+    spectrum.line_share(1.0 / k as f64)
 }
