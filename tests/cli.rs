@@ -335,31 +335,42 @@ fn a_load_and_drag_beyond_the_motor_are_refused_naming_the_drag() {
 }
 
 #[test]
-fn an_unknown_set_name_lists_the_scenario_sections_and_the_rig_parameters() {
+fn an_unknown_set_name_lists_the_scenario_sections_and_the_nearest_rig_parameters() {
     let scratch = common::folder("unknown-set");
     let scenario = format!(
         "{}/scenarios/subharmonic-2712nm.toml",
         env!("CARGO_MANIFEST_DIR")
     );
-    let out = testrig(&[
-        "run",
-        &scenario,
-        "--set",
-        "nonsense=1",
-        "--out",
-        scratch.to_str().expect("utf-8"),
-    ]);
-    assert!(!out.status.success());
-    let stderr = String::from_utf8_lossy(&out.stderr);
+    let refusal = |set: &str| {
+        let out = testrig(&[
+            "run",
+            &scenario,
+            "--set",
+            set,
+            "--out",
+            scratch.to_str().expect("utf-8"),
+        ]);
+        assert!(!out.status.success());
+        String::from_utf8_lossy(&out.stderr).to_string()
+    };
+    // A typo of a rig parameter: the sections, and the parameter meant, not all 45.
+    let typo = refusal("backlsh_mm=1");
     for expected in [
-        "--set nonsense=1",
+        "--set backlsh_mm=1",
         "`schedule`",
         "`analyser`",
-        "k12_input_shaft_nm_per_rad",
-        "backlash_mm",
+        "did you mean `backlash_mm`?",
     ] {
-        assert!(stderr.contains(expected), "{expected} missing: {stderr}");
+        assert!(typo.contains(expected), "{expected} missing: {typo}");
     }
+    assert!(!typo.contains("k12_input_shaft_nm_per_rad"), "{typo}");
+    // Nothing near: the sections, and where the parameters are listed.
+    let nonsense = refusal("nonsense=1");
+    assert!(
+        nonsense.contains("`testrig params` lists them"),
+        "{nonsense}"
+    );
+    assert!(!nonsense.contains("did you mean"), "{nonsense}");
     assert!(
         !scratch.join("manifest.json").exists(),
         "nothing is run on a bad --set"

@@ -14,10 +14,12 @@ pub enum RigError {
         allowed: String,
     },
     /// A parameter name that does not exist.
-    #[error("unknown parameter `{name}` (`testrig params` lists them all)")]
+    #[error("unknown parameter `{name}`{near} (`testrig params` lists them all)")]
     UnknownParameter {
         /// The name given.
         name: String,
+        /// The nearest known names as a clause ("; did you mean `x`?"), or empty.
+        near: String,
     },
     /// A preset name that does not exist.
     #[error("unknown preset `{name}` (known: {known})")]

@@ -2,6 +2,7 @@
 
 use crate::error::RigError;
 use crate::geometry::{GearGeometry, centre_distance_shift_m};
+use crate::nearest::did_you_mean;
 use crate::options::{ContactLaw, MeshPairs};
 use crate::params::RigParams;
 
@@ -226,6 +227,10 @@ pub fn param_spec(name: &str) -> Result<&'static ParamSpec, RigError> {
         .find(|spec| spec.name == name)
         .ok_or_else(|| RigError::UnknownParameter {
             name: name.to_string(),
+            near: did_you_mean(
+                name,
+                PARAM_SPECS.iter().chain(DERIVED_SPECS).map(|s| s.name),
+            ),
         })
 }
 

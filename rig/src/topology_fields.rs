@@ -4,6 +4,7 @@
 //! and what `--set`, sweeps and calibration change.
 
 use crate::error::RigError;
+use crate::nearest::did_you_mean;
 use crate::tooth_fault::FaultKind;
 use crate::topology::RigTopology;
 
@@ -162,14 +163,22 @@ impl RigTopology {
             .collect()
     }
 
+    /// The refusal of an unknown `path`, with the rig's nearest paths.
+    fn unknown_path(&self, path: &str) -> RigError {
+        let paths: Vec<String> = self.fields().into_iter().map(|f| f.path).collect();
+        RigError::UnknownParameter {
+            name: path.to_string(),
+            near: did_you_mean(path, paths.iter().map(String::as_str)),
+        }
+    }
+
     /// Sets the number at `path` (checked with the whole rig by [`RigTopology::check`]).
     pub fn set_field(&mut self, path: &str, value: f64) -> Result<(), RigError> {
         if path == "motor.torque_limit_nm" {
             self.drive.torque_limit_nm.get_or_insert(value);
         }
-        let slot = self.slot(path).ok_or_else(|| RigError::UnknownParameter {
-            name: path.to_string(),
-        })?;
+        let unknown = self.unknown_path(path);
+        let slot = self.slot(path).ok_or(unknown)?;
         *slot = value;
         Ok(())
     }
@@ -189,28 +198,28 @@ impl RigTopology {
     /// Sets the word at `path`: a tooth fault's kind, `mesh.NAME.faultK.kind`, one of
     /// [`FaultKind::NAMES`] (a sweep's grid turns a seeded crack into a pit so).
     pub fn set_word(&mut self, path: &str, word: &str) -> Result<(), RigError> {
-        let unknown = || RigError::UnknownParameter {
-            name: path.to_string(),
-        };
         let parts: Vec<&str> = path.split('.').collect();
-        let ["mesh", name, fault, "kind"] = parts.as_slice() else {
-            return Err(unknown());
+        let found = match parts.as_slice() {
+            ["mesh", name, fault, "kind"] => fault
+                .strip_prefix("fault")
+                .and_then(|k| k.parse::<usize>().ok())
+                .and_then(|k| {
+                    let m = self.meshes.iter().position(|m| m.name == *name)?;
+                    (1..=self.meshes[m].faults.len())
+                        .contains(&k)
+                        .then_some((m, k - 1))
+                }),
+            _ => None,
         };
-        let k: usize = fault
-            .strip_prefix("fault")
-            .and_then(|k| k.parse().ok())
-            .ok_or_else(unknown)?;
-        let slot = self
-            .meshes
-            .iter_mut()
-            .find(|m| m.name == *name)
-            .and_then(|m| m.faults.get_mut(k.checked_sub(1)?))
-            .ok_or_else(unknown)?;
-        slot.kind = FaultKind::parse(word).ok_or_else(|| RigError::InvalidParameter {
-            name: path.to_string(),
-            value: word.to_string(),
-            allowed: format!("the kinds are {}", FaultKind::NAMES.join(", ")),
-        })?;
+        let Some((m, f)) = found else {
+            return Err(self.unknown_path(path));
+        };
+        self.meshes[m].faults[f].kind =
+            FaultKind::parse(word).ok_or_else(|| RigError::InvalidParameter {
+                name: path.to_string(),
+                value: word.to_string(),
+                allowed: format!("the kinds are {}", FaultKind::NAMES.join(", ")),
+            })?;
         Ok(())
     }
 

@@ -142,14 +142,16 @@ impl ScenarioSource {
         }
         if let Some(item) = self.set_item_at(span.start) {
             let message = message.to_string();
-            // An unknown key may have been meant as a rig parameter: list those too.
-            let hint = if message.starts_with("unknown field") {
-                format!(
-                    "; or a rig parameter by its bare name (as `testrig params` lists them): {}",
-                    rig_parameter_names().join(", ")
-                )
-            } else {
-                String::new()
+            // An unknown key may have been meant as a rig parameter: name the nearest.
+            let hint = match message
+                .strip_prefix("unknown field `")
+                .and_then(|rest| rest.split('`').next())
+            {
+                Some(key) => format!(
+                    "; or a rig parameter by its bare name{} (`testrig params` lists them)",
+                    rig::nearest::did_you_mean(key, rig_parameter_names())
+                ),
+                None => String::new(),
             };
             return anyhow!(
                 "--set {item} (on {}): {field}: {message}{hint}",
