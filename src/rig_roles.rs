@@ -34,16 +34,6 @@ const KEYPHASOR_HIGH_V: f64 = 5.0;
 /// Revolutions per keyphasor mark width: the mark spans 1/64 of a turn.
 const KEYPHASOR_MARK_SHARE: f64 = 64.0;
 
-/// The body the motor drives: sweeps and scenarios set its speed.
-pub fn motor_of(rig: &RigTopology) -> anyhow::Result<usize> {
-    rig.motor.ok_or_else(|| {
-        anyhow::anyhow!(
-            "rig `{}` has no [motor]: sweeps and scenarios set the motor's speed",
-            rig.name
-        )
-    })
-}
-
 /// The rig's strain gauges: sweeps and scenarios measure the strain of a gauged shaft.
 pub fn gauge_of(rig: &RigTopology) -> anyhow::Result<&Gauge> {
     rig.gauge.as_ref().ok_or_else(|| {

@@ -126,9 +126,11 @@ fn until_done_or_interrupted<T: Send + 'static>(
 }
 
 /// The channels of a WAV recording written by testrig, by name (its sidecar's), as
-/// arrays in their units, with `rate_hz` and `units`.
+/// arrays in their units, with `rate_hz` and `units`. The file is read as a WAV first,
+/// so a file that is none is refused as such, before its sidecar is looked for.
 #[pyfunction]
 pub fn read_recording<'py>(py: Python<'py>, path: PathBuf) -> PyResult<Bound<'py, PyDict>> {
+    let mut first = Some(read_signal(&path, "0", 0.0, None).map_err(to_py)?);
     let sidecar_path = PathBuf::from(format!("{}.json", path.display()));
     let sidecar: serde_json::Value = std::fs::read_to_string(&sidecar_path)
         .map_err(anyhow::Error::from)
@@ -143,8 +145,11 @@ pub fn read_recording<'py>(py: Python<'py>, path: PathBuf) -> PyResult<Bound<'py
     let channels = PyDict::new(py);
     let units = PyDict::new(py);
     let mut rate_hz = f64::NAN;
-    for name in names {
-        let signal = read_signal(&path, &name, 0.0, None).map_err(to_py)?;
+    for (index, name) in names.into_iter().enumerate() {
+        let signal = match first.take().filter(|_| index == 0) {
+            Some(signal) => signal,
+            None => read_signal(&path, &name, 0.0, None).map_err(to_py)?,
+        };
         rate_hz = signal.rate_hz;
         units.set_item(&name, &signal.unit)?;
         channels.set_item(&name, signal.samples.into_pyarray(py))?;

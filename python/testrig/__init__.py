@@ -13,6 +13,7 @@ The same engine as the `testrig` command line, on numpy arrays:
   recording's channels, the spectra with their alias truth, the meter readings.
 - ``Rig(scenario, ...)``: a live rig paced in real time, driven as the panel drives it
   (every panel command, the panel's state) and read block by block; a context manager.
+- ``read_recording(path)``: a WAV recording testrig wrote, its channels by name.
 - ``sweep(scenario, ...)``: a sweep run into a folder, its ``cases.csv`` as a table (a
   pandas DataFrame when pandas is installed, else a dict of arrays).
 
@@ -29,11 +30,28 @@ from pathlib import Path
 
 import numpy as np
 
-from ._testrig import TestrigError, __version__, analyse, read_recording, run_into, simulate
+from ._testrig import TestrigError, __version__, analyse, run_into, simulate
+from ._testrig import read_recording as _read_recording
 from ._testrig import Rig as _Rig
 from ._testrig import sweep_into
 
-__all__ = ["Rig", "TestrigError", "__version__", "analyse", "run", "simulate", "sweep"]
+__all__ = ["Rig", "TestrigError", "__version__", "analyse", "read_recording", "run", "simulate",
+           "sweep"]
+
+
+def __dir__():
+    """What ``dir(testrig)`` lists: the package's own names, not the modules it uses."""
+    return sorted(__all__)
+
+
+def read_recording(path):
+    """The channels of a WAV recording testrig wrote (``run``'s ``recording.wav``, a sweep
+    case's ``recordings/case-NNNNN.wav``): a dict of ``rate_hz``, ``channels`` (name ->
+    array, in its unit), ``units`` and ``sidecar`` (the JSON sidecar ``<file>.json`` that
+    names and scales the channels). A file that is no WAV is refused as such."""
+    recording = _read_recording(str(path))
+    recording["sidecar"] = json.loads(Path(f"{path}.json").read_text())
+    return recording
 
 
 class _Folder:
@@ -113,8 +131,7 @@ def run(scenario, out=None, set=None, seed=None, duration_s=None, replace=False,
     wav = folder / "recording.wav"
     recording = None
     if wav.exists():
-        recording = read_recording(str(wav))
-        recording["sidecar"] = json.loads((folder / "recording.wav.json").read_text())
+        recording = read_recording(wav)
     readings = folder / "readings.csv"
     result = RunResult(
         out=folder,

@@ -104,6 +104,11 @@ class Recording(TypedDict):
     """Each channel's unit: V, µε, N m, rad/s…"""
     sidecar: dict[str, Any]
 
+def read_recording(path: Union[str, "os.PathLike[str]"]) -> Recording:
+    """The channels of a WAV recording testrig wrote, by the names its JSON sidecar
+    (`<file>.json`) gives, as arrays in their units; a file that is no WAV is refused as
+    such, and one without its sidecar names the sidecar it looked for."""
+
 class MeasuredSpectrum(TypedDict):
     name: str
     metadata: dict[str, str]

@@ -152,6 +152,29 @@ def test_run_writes_the_command_lines_bytes(tmp_path):
     assert "label" in result["readings"]
 
 
+def test_read_recording_reads_a_runs_wav_and_refuses_a_file_that_is_no_wav(tmp_path):
+    result = testrig.run(ROOT / "scenarios" / "subharmonic-2712nm.toml", out=tmp_path / "run",
+                         set={"duration_s": 10})
+    recording = testrig.read_recording(tmp_path / "run" / "recording.wav")
+    assert recording["units"] == result["recording"]["units"]
+    for name, samples in recording["channels"].items():
+        assert np.array_equal(samples, result["recording"]["channels"][name]), name
+    text = tmp_path / "notes.wav"
+    text.write_text("not a recording\n")
+    with pytest.raises(testrig.TestrigError) as refused:
+        testrig.read_recording(text)
+    message = str(refused.value)
+    assert "notes.wav" in message and "RIFF" in message and "sidecar" not in message, message
+
+
+def test_dir_lists_the_packages_own_names_only():
+    listed = dir(testrig)
+    assert listed == sorted(testrig.__all__)
+    for module in ["np", "csv", "json", "shutil", "tempfile", "time", "weakref", "Path"]:
+        assert module not in listed, module
+    assert {"simulate", "run", "sweep", "analyse", "Rig", "read_recording"} <= set(listed)
+
+
 def test_run_takes_a_dict_shaped_like_the_toml(tmp_path):
     scenario = {
         "name": "from-python",

@@ -10,8 +10,9 @@ use rig::{
 };
 
 use super::scenario_plant::{PointWindow, ScenarioPlant};
+use crate::rig_point::motor_of;
 use crate::rig_point::{RigWindow, regime_of};
-use crate::rig_roles::{RoleColumns, motor_of};
+use crate::rig_roles::RoleColumns;
 use crate::scenario::plan_rig::check_rig_file_load;
 use crate::vocabulary::GearIndicators;
 use crate::vocabulary::frame::{Frame, FrameImpacts};

@@ -201,7 +201,8 @@ pub struct MeasureFile {
 pub struct RecordFile {
     /// Signal names (`testrig run --list-signals`, or scenarios/README.md).
     pub signals: Vec<Spanned<String>>,
-    /// Any of wav, csv, uff58.
+    /// Any of wav, csv, uff58 (wav, with its JSON sidecar, when left out).
+    #[serde(default = "default_formats")]
     pub formats: Vec<RecordFormatChoice>,
     /// WAV sample format: float32 or int24.
     #[serde(default)]
@@ -215,6 +216,10 @@ pub struct RecordFile {
     /// Full scale of a signal in its unit for int24 WAV (defaults by unit).
     #[serde(default)]
     pub full_scale: BTreeMap<String, Spanned<Positive>>,
+}
+
+fn default_formats() -> Vec<RecordFormatChoice> {
+    vec![RecordFormatChoice::Wav]
 }
 
 fn default_decimate() -> Spanned<usize> {

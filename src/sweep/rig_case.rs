@@ -15,8 +15,9 @@ use super::case::{
 use super::case_recording::CaseRecording;
 use super::grid::{Case, SweepPlan};
 use super::measured_condition::MeasuredCondition;
+use crate::rig_point::motor_of;
 use crate::rig_point::{RigPointSpec, RigWindow, settled_rig_plant};
-use crate::rig_roles::{RIG_SIGNALS, RoleColumns, gauge_of, gauged_stages, motor_of};
+use crate::rig_roles::{RIG_SIGNALS, RoleColumns, gauge_of, gauged_stages};
 use crate::vocabulary::GearIndicators;
 use crate::vocabulary::InputNames;
 use crate::vocabulary::frame::SignalNames;

@@ -64,8 +64,10 @@ pub fn read_signal(
     })
 }
 
-/// Interleaved samples, channels, rate (Hz) and whether the samples were integers.
+/// Interleaved samples, channels, rate (Hz) and whether the samples were integers; a file
+/// cut short is read to its last whole frame, with a warning.
 fn read_interleaved(path: &Path) -> anyhow::Result<(Vec<f64>, usize, f64, bool)> {
+    std::fs::File::open(path).with_context(|| format!("{}: cannot read", path.display()))?;
     let mut reader = match hound::WavReader::open(path) {
         Ok(reader) => reader,
         Err(error) => {
@@ -86,26 +88,52 @@ fn read_interleaved(path: &Path) -> anyhow::Result<(Vec<f64>, usize, f64, bool)>
         }
     };
     let spec = reader.spec();
-    let samples: Vec<f64> = match spec.sample_format {
-        hound::SampleFormat::Float => reader
-            .samples::<f32>()
-            .map(|s| s.map(f64::from))
-            .collect::<Result<_, _>>(),
+    let declared = reader.len() as usize;
+    let (mut samples, stopped): (Vec<f64>, Option<hound::Error>) = match spec.sample_format {
+        hound::SampleFormat::Float => read_until_error(reader.samples::<f32>(), f64::from),
         hound::SampleFormat::Int => {
             let full_scale = f64::from(1u32 << (spec.bits_per_sample - 1));
-            reader
-                .samples::<i32>()
-                .map(|s| s.map(|v| f64::from(v) / full_scale))
-                .collect::<Result<_, _>>()
+            read_until_error(reader.samples::<i32>(), |v| f64::from(v) / full_scale)
         }
+    };
+    if let Some(error) = stopped {
+        let channels = usize::from(spec.channels).max(1);
+        let frames = samples.len() / channels;
+        if frames == 0 {
+            bail!(
+                "{}: the file is cut short: its data chunk declares {declared} samples and holds none whole ({error})",
+                path.display()
+            );
+        }
+        eprintln!(
+            "warning: {}: the file is cut short: its data chunk declares {declared} samples and holds {}; the {frames} whole frames there are read",
+            path.display(),
+            samples.len()
+        );
+        samples.truncate(frames * channels);
     }
-    .with_context(|| format!("{}: damaged sample data", path.display()))?;
     Ok((
         samples,
         usize::from(spec.channels),
         f64::from(spec.sample_rate),
         spec.sample_format == hound::SampleFormat::Int,
     ))
+}
+
+/// The samples `read` yields, each through `convert`, up to the first that cannot be read,
+/// and that error.
+fn read_until_error<T>(
+    read: impl Iterator<Item = Result<T, hound::Error>>,
+    convert: impl Fn(T) -> f64,
+) -> (Vec<f64>, Option<hound::Error>) {
+    let mut samples = Vec::new();
+    for sample in read {
+        match sample {
+            Ok(v) => samples.push(convert(v)),
+            Err(e) => return (samples, Some(e)),
+        }
+    }
+    (samples, None)
 }
 
 /// The index `channel` names: a number, or a name the sidecar lists.

@@ -137,13 +137,15 @@ impl AnalyserSink {
         Ok(())
     }
 
-    /// Writes the measurement under way (if any spectrum was averaged) and ends it.
+    /// Writes the measurement under way (if any spectrum was averaged) and ends it; a
+    /// spectrum of fewer averages than set is noted. One restarted before its first
+    /// average (a setting changed, as a replayed session does) wrote nothing and is not.
     pub(super) fn close_measurement(&mut self) -> anyhow::Result<()> {
         let Some(index) = self.active.take() else {
             return Ok(());
         };
         let count = self.measurement.average_count();
-        if count < self.plan.settings.averages {
+        if count > 0 && count < self.plan.settings.averages {
             self.incomplete.push(format!(
                 "measurement {} ({}): spectrum of {count} of {} averages",
                 index + 1,
