@@ -4,10 +4,12 @@
 //! Files: `partial.rs` (written as `NAME.partial`, renamed when complete, and then named in
 //! the folder's `journal.rs`: `files.journal`, so that a killed run's files are known),
 //! `cleanup.rs`, `frame_writer.rs` (the face of every recording), `wav.rs` (float32/int24 +
-//! JSON sidecar), `csv_stream.rs`, `impact_log.rs` (`impacts.csv` of either plant), `uff58.rs`/`uff58_stream.rs`, `spectrum_csv.rs`.
+//! JSON sidecar), `csv_stream.rs`, `impact_log.rs` (`impacts.csv` of either plant), `uff58.rs`/`uff58_stream.rs` (numbers in
+//! Fortran's E format by `fortran_e.rs`), `spectrum_csv.rs`.
 
 pub(crate) mod cleanup;
 pub(crate) mod csv_stream;
+pub(crate) mod fortran_e;
 pub(crate) mod frame_writer;
 pub(crate) mod impact_log;
 pub(crate) mod journal;

@@ -4,6 +4,8 @@
 
 use std::io::Write;
 
+use super::fortran_e::FortranE;
+
 /// How the abscissa runs.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Uff58Abscissa {
@@ -48,14 +50,9 @@ pub struct Uff58Record<'a> {
 
 /// Fortran E format: `width` characters, `digits` after the point, two-digit exponent.
 fn fortran_e(value: f64, width: usize, digits: usize) -> String {
-    let text = format!("{value:.digits$e}");
-    let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
-    let exponent: i32 = exponent.parse().unwrap_or(0);
-    let sign = if exponent < 0 { '-' } else { '+' };
-    format!(
-        "{:>width$}",
-        format!("{mantissa}e{sign}{:02}", exponent.abs())
-    )
+    let mut text = String::new();
+    FortranE::default().push(&mut text, value, width, digits);
+    text
 }
 
 /// A unit label in ASCII, as the universal file format's fixed columns need: µε is
@@ -131,11 +128,7 @@ pub fn write_uff58_header(
 
 /// Writes values as record 12 lines (four a line, 4E20.12; the last line may be shorter).
 pub fn write_uff58_values(out: &mut impl Write, values: &[f64]) -> std::io::Result<()> {
-    for row in values.chunks(4) {
-        let line: String = row.iter().map(|&v| fortran_e(v, 20, 11)).collect();
-        writeln!(out, "{line}")?;
-    }
-    Ok(())
+    FortranE::default().write_values(out, values)
 }
 
 /// Closes a dataset.

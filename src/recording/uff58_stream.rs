@@ -8,11 +8,10 @@ use std::path::{Path, PathBuf};
 
 use anyhow::Context;
 
+use super::fortran_e::FortranE;
 use super::frame_writer::{FrameWriter, Written};
 use super::partial::PartialFile;
-use super::uff58::{
-    Uff58Abscissa, Uff58Record, write_uff58_header, write_uff58_trailer, write_uff58_values,
-};
+use super::uff58::{Uff58Abscissa, Uff58Record, write_uff58_header, write_uff58_trailer};
 
 /// What identifies one channel's dataset.
 #[derive(Clone, Debug, PartialEq)]
@@ -34,6 +33,7 @@ struct Body {
     path: PathBuf,
     writer: BufWriter<File>,
     pending: Vec<f64>,
+    text: FortranE,
     count: usize,
 }
 
@@ -68,6 +68,7 @@ impl Uff58Recorder {
                     path: body,
                     writer: BufWriter::new(writer),
                     pending: Vec::with_capacity(4),
+                    text: FortranE::default(),
                     count: 0,
                 })
             })
@@ -87,7 +88,8 @@ impl Uff58Recorder {
             body.pending.push(v);
             body.count += 1;
             if body.pending.len() == 4 {
-                write_uff58_values(&mut body.writer, &body.pending)
+                body.text
+                    .write_values(&mut body.writer, &body.pending)
                     .with_context(|| format!("writing {}", body.path.display()))?;
                 body.pending.clear();
             }
@@ -99,7 +101,7 @@ impl Uff58Recorder {
     pub fn finish(self) -> anyhow::Result<PathBuf> {
         let mut out = self.file.create()?;
         for mut body in self.bodies {
-            write_uff58_values(&mut body.writer, &body.pending)?;
+            body.text.write_values(&mut body.writer, &body.pending)?;
             body.writer.flush()?;
             drop(body.writer);
             let c = &body.channel;

@@ -22,7 +22,7 @@ use super::sinks::scope::ScopeSink;
 use super::sinks::tap::TapSink;
 use super::sinks::{Sink, SinkReport};
 use super::status::SharedStatus;
-use super::wiring::{channel, guarded, run_sink, run_stage};
+use super::wiring::{channel, guarded, run_chain, run_sink};
 use crate::chain::NamedStage;
 use crate::recording::start_journal;
 use crate::rig_roles::RIG_SIGNALS;
@@ -214,8 +214,8 @@ struct Threads<'a> {
 type PlantOutcome = std::thread::Result<PlantReport>;
 
 impl Threads<'_> {
-    /// Spawns the plant, a thread per stage (each feeding the next, the last feeding every
-    /// sink) and a thread per sink; draws the console until the plant is done; joins all.
+    /// Spawns the plant, the chain's thread (its stages in turn, feeding every sink) and a
+    /// thread per sink; draws the console until the plant is done; joins all.
     fn run<P: ScenarioPlant>(
         &self,
         job: PlantJob<P>,
@@ -223,31 +223,15 @@ impl Threads<'_> {
         sinks: Vec<NamedSink>,
     ) -> (PlantOutcome, Vec<SinkReport>) {
         std::thread::scope(|scope| {
-            let (plant_tx, mut input) = channel(self.queue_blocks);
+            let (plant_tx, input) = channel(self.queue_blocks);
             let plant = scope.spawn(move || run_plant(job, plant_tx));
             let (sink_outputs, sink_inputs): (Vec<_>, Vec<_>) =
                 sinks.iter().map(|_| channel(self.queue_blocks)).unzip();
-            let mut sink_outputs = Some(sink_outputs);
-            let count = stages.len();
-            for (i, stage) in stages.into_iter().enumerate() {
-                let (outputs, next) = if i + 1 == count {
-                    (sink_outputs.take().unwrap_or_default(), None)
-                } else {
-                    let (tx, rx) = channel(self.queue_blocks);
-                    (vec![tx], Some(rx))
-                };
-                let stage_input = input;
-                let name = format!("stage {}", stage.output);
-                scope.spawn(move || {
-                    guarded(&name, self.stop, self.errors, (), || {
-                        run_stage(stage, stage_input, outputs, self.status)
-                    })
-                });
-                match next {
-                    Some(rx) => input = rx,
-                    None => break,
-                }
-            }
+            scope.spawn(move || {
+                guarded("chain", self.stop, self.errors, (), || {
+                    run_chain(stages, input, sink_outputs, self.status)
+                })
+            });
             let handles: Vec<_> = sinks
                 .into_iter()
                 .zip(sink_inputs)
