@@ -340,7 +340,7 @@ fn a_face_width_gives_the_mesh_stiffness_by_the_potential_energy_method() {
         addendum_coefficient: 1.0,
         youngs_modulus_pa: 206e9,
         poisson_ratio: 0.3,
-        bore_ratio: 0.5,
+        bore_diameter_m: None,
     };
     let lumped = geometry.lumped();
     let single = read("face_width_m = 0.020").expect("a face width");

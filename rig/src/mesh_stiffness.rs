@@ -15,8 +15,10 @@
 
 use std::f64::consts::PI;
 
+use serde::{Deserialize, Serialize};
+
 /// A spur pair's geometry and material.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct PairGeometry {
     /// Teeth of the driver and the driven gear.
     pub teeth: [u32; 2],
@@ -32,8 +34,9 @@ pub struct PairGeometry {
     pub youngs_modulus_pa: f64,
     /// Poisson's ratio.
     pub poisson_ratio: f64,
-    /// Each gear's bore over its base radius (the fillet foundation's inner radius).
-    pub bore_ratio: f64,
+    /// The gears' bore diameter (m), the fillet foundation's inner circle (Sainsot's
+    /// r_int is half of it); `None`: each gear's bore radius half its base radius.
+    pub bore_diameter_m: Option<f64>,
 }
 
 /// Sainsot's fillet-foundation coefficients (A, B, C, D, E, F) of L*, M*, P*, Q*, each
@@ -60,6 +63,12 @@ impl PairGeometry {
         self.module_m * f64::from(self.teeth[g]) * self.pressure_angle_rad.cos() / 2.0
     }
 
+    /// The bore radius of gear `g` (m): half the bore diameter, else half its base radius.
+    pub fn bore_radius_m(&self, g: usize) -> f64 {
+        self.bore_diameter_m
+            .map_or(0.5 * self.base_radius_m(g), |d| 0.5 * d)
+    }
+
     /// Half the tooth's angle at the base circle of gear `g`: π/(2z) + inv α (rad).
     fn half_base_angle(&self, g: usize) -> f64 {
         PI / (2.0 * f64::from(self.teeth[g])) + involute(self.pressure_angle_rad)
@@ -73,7 +82,7 @@ impl PairGeometry {
     }
 
     /// Root radius of gear `g`: the standard dedendum 1.25 m below the pitch circle (m).
-    fn root_radius_m(&self, g: usize) -> f64 {
+    pub fn root_radius_m(&self, g: usize) -> f64 {
         self.module_m * (f64::from(self.teeth[g]) / 2.0 - 1.25)
     }
 
@@ -196,7 +205,8 @@ impl PairGeometry {
 
     /// The fillet foundation's compliance (m/N) of gear `g`'s tooth, force at angle `a1`
     /// (Sainsot et al. 2004): S_f the tooth's thickness at the root circle, u_f the
-    /// distance from there to where the force's line meets the centre line.
+    /// distance from there to where the force's line meets the centre line, h_f the root
+    /// radius over the bore radius.
     fn fillet_compliance(&self, g: usize, a1: f64) -> f64 {
         let rb = self.base_radius_m(g);
         let rf = self.root_radius_m(g);
@@ -205,7 +215,7 @@ impl PairGeometry {
         } else {
             (self.flank_point(g, 0.0).1 / rf).asin()
         };
-        let h_f = 1.0 / self.bore_ratio;
+        let h_f = rf / self.bore_radius_m(g);
         let [lf, mf, pf, qf] = FILLET.map(|[a, b, c, d, e, f]| {
             a / (theta_f * theta_f) + b * h_f * h_f + c * h_f / theta_f + d / theta_f + e * h_f + f
         });

@@ -7,6 +7,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::mesh_stiffness::PairGeometry;
 use crate::options::MeshPairs;
 use crate::tooth_fault::ToothFault;
 
@@ -95,6 +96,10 @@ pub struct Mesh {
     /// Faults seeded on single teeth (none: a healthy pair).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub faults: Vec<ToothFault>,
+    /// The geometry and material `stiffness_n_per_m` was derived from by the
+    /// potential-energy method (a file giving `face_width_m`), for `params` to show.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub potential_energy: Option<PairGeometry>,
 }
 
 impl Mesh {

@@ -15,7 +15,7 @@ fn gears(teeth: [u32; 2]) -> PairGeometry {
         addendum_coefficient: 1.0,
         youngs_modulus_pa: 206e9,
         poisson_ratio: 0.3,
-        bore_ratio: 0.5,
+        bore_diameter_m: None,
     }
 }
 

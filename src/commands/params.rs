@@ -161,6 +161,12 @@ fn rig_file_params(path: &std::path::Path, as_json: bool) -> anyhow::Result<()> 
             "m",
             "r_b = m z cos(alpha) / 2",
         ));
+        if let Some(g) = &m.potential_energy {
+            derived.extend(
+                potential_energy_rows(g)
+                    .map(|(field, value, unit, meaning)| row(p(field), value, unit, meaning)),
+            );
+        }
     }
     let speeds = rig.relative_speeds();
     let reference = rig.motor.and_then(|m| speeds[m]).unwrap_or(1.0);
@@ -188,4 +194,61 @@ fn rig_file_params(path: &std::path::Path, as_json: bool) -> anyhow::Result<()> 
     println!("rig {} ({})", rig.name, rig.description);
     print_table(&[("", fields), ("derived", derived)]);
     Ok(())
+}
+
+/// What the potential-energy method derives for a mesh given by its face width, with the
+/// material and bore it used: (field, value, unit, meaning).
+fn potential_energy_rows(
+    g: &rig::mesh_stiffness::PairGeometry,
+) -> [(&'static str, String, &'static str, &'static str); 7] {
+    let lumped = g.lumped();
+    let e = |v: f64| format!("{v:.6e}");
+    [
+        (
+            "contact_ratio",
+            format!("{:.6}", g.contact_ratio()),
+            "1",
+            "transverse contact ratio at the standard centre distance (potential-energy method)",
+        ),
+        (
+            "pair_stiffness_n_per_m",
+            e(lumped.single_n_per_m),
+            "N/m",
+            "one pair's stiffness, its mean over the stretch it carries alone (potential-energy method)",
+        ),
+        (
+            "mean_mesh_stiffness_n_per_m",
+            e(lumped.cycle_mean_n_per_m),
+            "N/m",
+            "the mesh's stiffness averaged over a tooth period, one and two pairs in turn (potential-energy method)",
+        ),
+        (
+            "double_pair_ratio_derived",
+            format!("{:.6}", lumped.double_pair_ratio),
+            "1",
+            "two pairs' mean stiffness over one pair's (potential-energy method)",
+        ),
+        (
+            "youngs_modulus_pa_used",
+            e(g.youngs_modulus_pa),
+            "Pa",
+            "Young's modulus the method used",
+        ),
+        (
+            "poisson_ratio_used",
+            format!("{}", g.poisson_ratio),
+            "1",
+            "Poisson's ratio the method used",
+        ),
+        (
+            "bore_diameters_m_used",
+            format!(
+                "{:.6e}/{:.6e}",
+                2.0 * g.bore_radius_m(0),
+                2.0 * g.bore_radius_m(1)
+            ),
+            "m",
+            "each gear's bore diameter the fillet foundation used (bore_diameter_m, else the base radius)",
+        ),
+    ]
 }

@@ -2,6 +2,7 @@
 //! stiffness (as given, or by the potential-energy method from its face width), its
 //! pairs, and its `[[mesh.fault]]`s; every fault at its place with what is allowed.
 
+use rig::mesh_stiffness::PairGeometry;
 use rig::{FaultKind, FaultedGear, Mesh, MeshPairs, RigTopology, ToothFault};
 use toml::Spanned;
 
@@ -49,6 +50,7 @@ pub(super) fn mesh(
             .map_or(DEFAULT_PRESSURE_ANGLE_DEG, |a| *a.get_ref()),
         backlash_mm: *m.backlash_mm.get_ref(),
         stiffness_n_per_m: stiffness.0,
+        potential_energy: stiffness.2,
         damping_ns_per_m: or(&m.damping_ns_per_m, 0.0),
         pairs: pairs(src, m)?,
         double_pair_ratio: or(&m.double_pair_ratio, stiffness.1),
@@ -69,61 +71,121 @@ pub(super) fn mesh(
     })
 }
 
-/// A mesh's stiffness of one pair (N/m) and the double-pair ratio where the file leaves
-/// it out: as given (ratio 2), or from `face_width_m` by the potential-energy method
-/// (`rig::mesh_stiffness`; with one pair always, the mean over the tooth period). Both or
-/// neither given is refused.
+/// A mesh's stiffness of one pair (N/m), the double-pair ratio where the file leaves it
+/// out, and the geometry the stiffness was derived from: as given (ratio 2), or from
+/// `face_width_m` by the potential-energy method (`rig::mesh_stiffness`; with one pair
+/// always, the mean over the tooth period). Both or neither given is refused, and so is
+/// a material or bore without the face width.
 fn mesh_stiffness(
     src: &ScenarioSource,
     m: &MeshToml,
     teeth: [u32; 2],
-) -> anyhow::Result<(f64, f64)> {
+) -> anyhow::Result<(f64, f64, Option<PairGeometry>)> {
     let field = format!("mesh `{}`.stiffness_n_per_m", m.name.get_ref());
-    match (&m.stiffness_n_per_m, &m.face_width_m) {
-        (Some(k), None) => Ok((*k.get_ref(), 2.0)),
-        (Some(k), Some(_)) => Err(src.error(
+    let Some(width) = &m.face_width_m else {
+        for (given, name) in [
+            (&m.youngs_modulus_pa, "youngs_modulus_pa"),
+            (&m.poisson_ratio, "poisson_ratio"),
+            (&m.bore_diameter_m, "bore_diameter_m"),
+        ] {
+            if let Some(v) = given {
+                return Err(src.error(
+                    v.span(),
+                    &format!("mesh.{name}"),
+                    "used by the potential-energy method only: give face_width_m (m) instead of stiffness_n_per_m",
+                ));
+            }
+        }
+        return match &m.stiffness_n_per_m {
+            Some(k) => Ok((*k.get_ref(), 2.0, None)),
+            None => Err(src.error(
+                m.name.span(),
+                &field,
+                "missing: give stiffness_n_per_m (N/m, one pair along the line of action), or face_width_m (m) for the potential-energy method",
+            )),
+        };
+    };
+    if let Some(k) = &m.stiffness_n_per_m {
+        return Err(src.error(
             k.span(),
             &field,
             "give the stiffness or the face width (the potential-energy method then gives the stiffness), not both",
-        )),
-        (None, None) => Err(src.error(
-            m.name.span(),
-            &field,
-            "missing: give stiffness_n_per_m (N/m, one pair along the line of action), or face_width_m (m) for the potential-energy method",
-        )),
-        (None, Some(width)) => {
-            let positive = |v: f64| v.is_finite() && v > 0.0;
-            if !positive(*width.get_ref()) {
-                return Err(src.error(width.span(), "mesh.face_width_m", "a width > 0 m"));
-            }
-            let youngs = m.youngs_modulus_pa.as_ref().map_or(STEEL_YOUNGS_MODULUS_PA, |e| *e.get_ref());
-            if !positive(youngs) {
-                let span = m.youngs_modulus_pa.as_ref().map_or(width.span(), Spanned::span);
-                return Err(src.error(span, "mesh.youngs_modulus_pa", "a modulus > 0 Pa"));
-            }
-            let alpha = m
-                .pressure_angle_deg
-                .as_ref()
-                .map_or(DEFAULT_PRESSURE_ANGLE_DEG, |a| *a.get_ref());
-            let geometry = rig::mesh_stiffness::PairGeometry {
-                teeth,
-                module_m: *m.module_m.get_ref(),
-                pressure_angle_rad: alpha.to_radians(),
-                face_width_m: *width.get_ref(),
-                addendum_coefficient: or(&m.addendum_coefficient, 1.0),
-                youngs_modulus_pa: youngs,
-                poisson_ratio: STEEL_POISSON_RATIO,
-                bore_ratio: 0.5,
-            };
-            let lumped = geometry.lumped();
-            let alternating = m.pairs.as_ref().is_some_and(|p| p.get_ref() == "alternating");
-            Ok(if alternating {
-                (lumped.single_n_per_m, lumped.double_pair_ratio)
-            } else {
-                (lumped.cycle_mean_n_per_m, 2.0)
-            })
+        ));
+    }
+    let geometry = pair_geometry(src, m, teeth, width)?;
+    let lumped = geometry.lumped();
+    let alternating = m
+        .pairs
+        .as_ref()
+        .is_some_and(|p| p.get_ref() == "alternating");
+    let (k, ratio) = if alternating {
+        (lumped.single_n_per_m, lumped.double_pair_ratio)
+    } else {
+        (lumped.cycle_mean_n_per_m, 2.0)
+    };
+    Ok((k, ratio, Some(geometry)))
+}
+
+/// The pair's geometry and material for the potential-energy method, each number checked
+/// at its field: a width and modulus > 0, Poisson's ratio in (0, 0.5), a bore inside each
+/// gear's root circle.
+fn pair_geometry(
+    src: &ScenarioSource,
+    m: &MeshToml,
+    teeth: [u32; 2],
+    width: &Spanned<f64>,
+) -> anyhow::Result<PairGeometry> {
+    let positive = |v: f64| v.is_finite() && v > 0.0;
+    if !positive(*width.get_ref()) {
+        return Err(src.error(width.span(), "mesh.face_width_m", "a width > 0 m"));
+    }
+    let number = |given: &Option<Spanned<f64>>, default: f64| {
+        given.as_ref().map_or(default, |v| *v.get_ref())
+    };
+    let span_of = |given: &Option<Spanned<f64>>| given.as_ref().map_or(width.span(), Spanned::span);
+    let youngs = number(&m.youngs_modulus_pa, STEEL_YOUNGS_MODULUS_PA);
+    if !positive(youngs) {
+        return Err(src.error(
+            span_of(&m.youngs_modulus_pa),
+            "mesh.youngs_modulus_pa",
+            "a modulus > 0 Pa",
+        ));
+    }
+    let poisson = number(&m.poisson_ratio, STEEL_POISSON_RATIO);
+    if !(poisson > 0.0 && poisson < 0.5) {
+        return Err(src.error(
+            span_of(&m.poisson_ratio),
+            "mesh.poisson_ratio",
+            "a ratio in (0, 0.5)",
+        ));
+    }
+    let alpha = m
+        .pressure_angle_deg
+        .as_ref()
+        .map_or(DEFAULT_PRESSURE_ANGLE_DEG, |a| *a.get_ref());
+    let geometry = PairGeometry {
+        teeth,
+        module_m: *m.module_m.get_ref(),
+        pressure_angle_rad: alpha.to_radians(),
+        face_width_m: *width.get_ref(),
+        addendum_coefficient: or(&m.addendum_coefficient, 1.0),
+        youngs_modulus_pa: youngs,
+        poisson_ratio: poisson,
+        bore_diameter_m: m.bore_diameter_m.as_ref().map(|d| *d.get_ref()),
+    };
+    if let Some(bore) = &m.bore_diameter_m {
+        let root_diameter_m = (0..2)
+            .map(|g| 2.0 * geometry.root_radius_m(g))
+            .fold(f64::INFINITY, f64::min);
+        if !(positive(*bore.get_ref()) && *bore.get_ref() < root_diameter_m) {
+            return Err(src.error(
+                bore.span(),
+                "mesh.bore_diameter_m",
+                format!("a diameter > 0 m and inside the smaller gear's root circle ({root_diameter_m:.4} m)"),
+            ));
         }
     }
+    Ok(geometry)
 }
 
 /// Seeds each of `faults` (a sweep's `[[rig.fault]]`, each naming its mesh) on the mesh

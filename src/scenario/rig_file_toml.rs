@@ -125,6 +125,13 @@ pub struct MeshToml {
     /// out.
     #[serde(default)]
     pub youngs_modulus_pa: Option<Spanned<f64>>,
+    /// Poisson's ratio for the potential-energy method; steel's 0.3 when left out.
+    #[serde(default)]
+    pub poisson_ratio: Option<Spanned<f64>>,
+    /// The gears' bore diameter (m) for the potential-energy method's fillet foundation;
+    /// each gear's base radius when left out (a bore radius of half the base radius).
+    #[serde(default)]
+    pub bore_diameter_m: Option<Spanned<f64>>,
     /// Damping along the line of action (N s/m); 0 when left out.
     #[serde(default)]
     pub damping_ns_per_m: Option<Spanned<f64>>,

@@ -218,7 +218,7 @@ fn crack(m: &Mesh) -> impl Fn(FaultedGear, f64) -> f64 {
         addendum_coefficient: m.addendum_coefficient,
         youngs_modulus_pa: 206e9,
         poisson_ratio: 0.3,
-        bore_ratio: 0.5,
+        bore_diameter_m: None,
     };
     move |gear, share| {
         let g = match gear {
