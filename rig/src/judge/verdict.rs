@@ -264,7 +264,7 @@ pub fn judge(input: &JudgeInput) -> Judgement {
 /// Whether a subharmonic line at 1/m of the running speed, for some m (2..=[`MAX_PERIOD`])
 /// that does not divide `k`, stands clear ([`stands_clear`]): a line period k cannot have.
 fn foreign_subharmonic_clear(spectrum: &OrderSpectrum, k: usize) -> bool {
-    (2..=MAX_PERIOD).filter(|m| k % m != 0).any(|m| {
+    (2..=MAX_PERIOD).filter(|m| !k.is_multiple_of(*m)).any(|m| {
         stands_clear(
             subharmonic_height_db(spectrum, m),
             subharmonic_share(spectrum, m),
