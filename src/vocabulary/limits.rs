@@ -64,7 +64,9 @@ pub fn max_load_nm(params: &rig::RigParams) -> f64 {
 
 /// A motor speed set point (rev/min) as an input accepts it: finite, in [0, 10 000].
 pub fn check_speed_rpm(value: f64) -> Result<f64, LimitError> {
-    if value.is_finite() && (0.0..=MAX_SPEED_RPM).contains(&value) && !value.is_subnormal() {
+    if value.is_subnormal() {
+        Err(LimitError::SpeedSubnormal { value })
+    } else if value.is_finite() && (0.0..=MAX_SPEED_RPM).contains(&value) {
         Ok(value)
     } else {
         Err(LimitError::Speed { value })
@@ -156,10 +158,16 @@ pub enum LimitError {
         rig: String,
     },
     /// A speed set point out of range.
-    #[error(
-        "{value} rev/min is not allowed: a speed set point lies in [0, {MAX_SPEED_RPM}] rev/min (and is 0 or a normal number, ≥ 2.2e-308)"
-    )]
+    #[error("{value} rev/min is not allowed: a speed set point lies in [0, {MAX_SPEED_RPM}] rev/min")]
     Speed {
+        /// The speed given (rev/min).
+        value: f64,
+    },
+    /// A speed set point too close to 0 to be a speed (a subnormal number).
+    #[error(
+        "{value:e} rev/min is not allowed: a speed set point is 0 or at least 2.2e-308 rev/min (a smaller one is no speed a number can hold exactly)"
+    )]
+    SpeedSubnormal {
         /// The speed given (rev/min).
         value: f64,
     },
@@ -175,4 +183,19 @@ pub enum LimitError {
         /// The averages given.
         averages: usize,
     },
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{MAX_SPEED_RPM, check_speed_rpm};
+
+    #[test]
+    fn a_speed_refusal_names_the_bound_it_broke_and_only_that() {
+        let beyond = check_speed_rpm(2.0 * MAX_SPEED_RPM).expect_err("too fast").to_string();
+        assert!(beyond.contains(&format!("[0, {MAX_SPEED_RPM}]")), "{beyond}");
+        assert!(!beyond.contains("2.2e-308"), "{beyond}");
+        let tiny = check_speed_rpm(5e-324).expect_err("subnormal").to_string();
+        assert!(tiny.contains("2.2e-308"), "{tiny}");
+        assert_eq!(check_speed_rpm(0.0), Ok(0.0));
+    }
 }
