@@ -11,6 +11,21 @@ use crate::schedule::SetPoints;
 
 use super::plant::{NetworkPlant, OSCILLATING_HOLD_S};
 
+/// Relative difference of a set point from the one held below which it is the same set
+/// point: a co-simulation master interpolating between two equal rows of its input table
+/// (FMPy's `w0 v0 + (1 − w0) v1`) lands an ulp or two off the value, and a changed segment
+/// would restart the exact stepping for nothing (1e-12 of 1300 rev/min is 1.3e-9 rev/min).
+const SET_POINT_ROUNDING: f64 = 1e-12;
+
+/// Whether `a` and `b` are the same set points to within [`SET_POINT_ROUNDING`].
+fn same_set_points(a: &SetPoints, b: &SetPoints) -> bool {
+    let close = |x: f64, y: f64| (x - y).abs() <= SET_POINT_ROUNDING * x.abs().max(y.abs());
+    close(a.speed_rpm, b.speed_rpm)
+        && close(a.load_nm, b.load_nm)
+        && close(a.oscillating_load_nm, b.oscillating_load_nm)
+        && close(a.oscillating_load_hz, b.oscillating_load_hz)
+}
+
 impl NetworkPlant {
     /// The set points now (during a ramp, the ramp's value at this sample).
     pub fn set_points(&self) -> SetPoints {
@@ -19,9 +34,10 @@ impl NetworkPlant {
 
     /// From the current sample on, holds `set` (a knob turned while the rig runs, an
     /// FMU's inputs held over a communication step); the set points it had scheduled
-    /// after now are dropped. Holding the set points already held, with nothing scheduled
-    /// after now, changes nothing: the stretch under way goes on, so a master that sets
-    /// its inputs every step gets the same motion however it cuts the steps.
+    /// after now are dropped. Holding the set points already held (to within 1e-12 of
+    /// each, a master's rounding), with nothing scheduled after now, changes nothing: the
+    /// stretch under way goes on, so a master that sets its inputs every step gets the
+    /// same motion however it cuts the steps.
     pub fn hold_set_points(&mut self, set: SetPoints) -> Result<(), RigError> {
         let values = [
             set.speed_rpm,
@@ -41,7 +57,8 @@ impl NetworkPlant {
             )));
         }
         let now = self.time_s();
-        if self.schedule.next_knot_after(now).is_none() && self.set_points() == set {
+        if self.schedule.next_knot_after(now).is_none() && same_set_points(&self.set_points(), &set)
+        {
             return Ok(());
         }
         let mut schedule = self.schedule.clone();
