@@ -199,9 +199,9 @@ pub fn run_rig_point(
     names: InputNames,
     mut sink: impl FnMut(&NetworkBlock) -> anyhow::Result<()>,
 ) -> anyhow::Result<RigPointRun> {
-    check_speed_rpm(spec.rpm).map_err(|e| anyhow::anyhow!("{} {}: {e}", names.rpm, spec.rpm))?;
+    check_speed_rpm(spec.rpm).map_err(|e| anyhow::anyhow!("{} {:?}: {e}", names.rpm, spec.rpm))?;
     check_load_nm(spec.load_nm)
-        .map_err(|e| anyhow::anyhow!("{} {}: {e}", names.load, spec.load_nm))?;
+        .map_err(|e| anyhow::anyhow!("{} {:?}: {e}", names.load, spec.load_nm))?;
     check_times(spec.settle_s, spec.duration_s, spec.rate_hz, names)?;
     let rig = spec.rig;
     motor_of(rig)?;

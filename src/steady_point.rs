@@ -66,7 +66,7 @@ pub fn run_point(
     check_point(spec, names)?;
     let params = preset_with_overrides(spec.preset, spec.overrides)?;
     check_load_within_motor(spec.load_nm, &params)
-        .map_err(|e| anyhow::anyhow!("{} {}: {e}", names.load, spec.load_nm))?;
+        .map_err(|e| anyhow::anyhow!("{} {:?}: {e}", names.load, spec.load_nm))?;
     let config = PlantConfig {
         output_rate_hz: spec.rate_hz,
         ..PlantConfig::default()
@@ -113,9 +113,9 @@ pub fn run_point(
 
 /// The set points, times and rate, each refused under its name.
 fn check_point(spec: &PointSpec, names: InputNames) -> anyhow::Result<()> {
-    check_speed_rpm(spec.rpm).map_err(|e| anyhow::anyhow!("{} {}: {e}", names.rpm, spec.rpm))?;
+    check_speed_rpm(spec.rpm).map_err(|e| anyhow::anyhow!("{} {:?}: {e}", names.rpm, spec.rpm))?;
     check_load_nm(spec.load_nm)
-        .map_err(|e| anyhow::anyhow!("{} {}: {e}", names.load, spec.load_nm))?;
+        .map_err(|e| anyhow::anyhow!("{} {:?}: {e}", names.load, spec.load_nm))?;
     check_times(spec.settle_s, spec.duration_s, spec.rate_hz, names)
 }
 
