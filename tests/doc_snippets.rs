@@ -5,7 +5,6 @@
 mod common;
 
 use std::path::Path;
-use std::process::Command;
 
 use common::{folder, testrig};
 
@@ -70,18 +69,9 @@ fn the_rig_file_pages_scenario_runs_as_written() {
 #[test]
 #[ignore = "needs Python modules (python3 -m pip install -r tests/requirements.txt) and 40 s at pace 1; run by .ci/run"]
 fn the_scpi_pages_pyvisa_lines_run_as_written() {
-    let dir = folder("doc-scpi-snippet");
-    let done = Command::new("python3")
-        .arg(Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/docs/scpi_snippet.py"))
-        .arg(env!("CARGO_BIN_EXE_testrig"))
-        .arg(dir.path())
-        .output()
-        .expect("python3 runs");
-    println!("{}", String::from_utf8_lossy(&done.stdout));
-    assert!(
-        done.status.success(),
-        "{}{}",
-        String::from_utf8_lossy(&done.stdout),
-        String::from_utf8_lossy(&done.stderr)
+    common::run_python_check(
+        "docs/scpi_snippet.py",
+        "doc-scpi-snippet",
+        &["pyvisa", "numpy"],
     );
 }

@@ -5,9 +5,6 @@
 
 mod common;
 
-use std::path::Path;
-use std::process::Command;
-
 use common::{folder, testrig_ok};
 
 #[test]
@@ -118,18 +115,9 @@ fn a_bore_outside_the_root_circle_or_a_material_without_a_face_width_is_refused(
 #[test]
 #[ignore = "needs Python modules (python3 -m pip install -r tests/requirements.txt) and ROSS's wheel from PyPI; run by .ci/run"]
 fn the_mesh_stiffness_agrees_with_ross() {
-    let dir = folder("ross-compare");
-    let done = Command::new("python3")
-        .arg(Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/mesh_stiffness/compare_ross.py"))
-        .arg(env!("CARGO_BIN_EXE_testrig"))
-        .arg(dir.path())
-        .output()
-        .expect("python3 runs");
-    println!("{}", String::from_utf8_lossy(&done.stdout));
-    assert!(
-        done.status.success(),
-        "{}{}",
-        String::from_utf8_lossy(&done.stdout),
-        String::from_utf8_lossy(&done.stderr)
+    common::run_python_check(
+        "mesh_stiffness/compare_ross.py",
+        "ross-compare",
+        &["numpy", "scipy", "pint", "toml"],
     );
 }
