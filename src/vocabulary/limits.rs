@@ -158,7 +158,9 @@ pub enum LimitError {
         rig: String,
     },
     /// A speed set point out of range.
-    #[error("{value} rev/min is not allowed: a speed set point lies in [0, {MAX_SPEED_RPM}] rev/min")]
+    #[error(
+        "{value} rev/min is not allowed: a speed set point lies in [0, {MAX_SPEED_RPM}] rev/min"
+    )]
     Speed {
         /// The speed given (rev/min).
         value: f64,
@@ -191,8 +193,13 @@ mod tests {
 
     #[test]
     fn a_speed_refusal_names_the_bound_it_broke_and_only_that() {
-        let beyond = check_speed_rpm(2.0 * MAX_SPEED_RPM).expect_err("too fast").to_string();
-        assert!(beyond.contains(&format!("[0, {MAX_SPEED_RPM}]")), "{beyond}");
+        let beyond = check_speed_rpm(2.0 * MAX_SPEED_RPM)
+            .expect_err("too fast")
+            .to_string();
+        assert!(
+            beyond.contains(&format!("[0, {MAX_SPEED_RPM}]")),
+            "{beyond}"
+        );
         assert!(!beyond.contains("2.2e-308"), "{beyond}");
         let tiny = check_speed_rpm(5e-324).expect_err("subnormal").to_string();
         assert!(tiny.contains("2.2e-308"), "{tiny}");
