@@ -1,6 +1,6 @@
 //! The chain on one thread: every stage in turn on a frame, each adding its output as a
-//! channel. The sweeps' cases and `testrig analyse` drive their stages here; `testrig run`
-//! and the panel give each stage a thread of its own (`runtime::wiring`).
+//! channel. The sweeps' cases and `testrig analyse` drive their stages here, and so does
+//! the chain's thread of `testrig run` and the panel (`runtime::wiring::run_chain`).
 
 use super::stage_plan::NamedStage;
 use crate::vocabulary::frame::Frame;
@@ -14,6 +14,16 @@ impl InlineChain {
     /// The stages `stages`, in running order (as [`super::ChainStages::build`] gives them).
     pub fn new(stages: Vec<NamedStage>) -> Self {
         Self { stages }
+    }
+
+    /// The stages, in running order.
+    pub fn stages(&self) -> &[NamedStage] {
+        &self.stages
+    }
+
+    /// The stages, in running order, to carry out their commands.
+    pub fn stages_mut(&mut self) -> &mut [NamedStage] {
+        &mut self.stages
     }
 
     /// `frame` with every stage's output added, in order.

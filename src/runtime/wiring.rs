@@ -7,52 +7,46 @@ use std::sync::{Mutex, PoisonError};
 use crossbeam_channel::{Receiver, Sender, bounded};
 
 use super::sinks::{Sink, SinkReport};
-use crate::chain::NamedStage;
 use crate::chain::stage_commands::{apply_to_stage, echo_stage};
+use crate::chain::{InlineChain, NamedStage};
 use crate::runtime::status::SharedStatus;
 use crate::vocabulary::frame::Frame;
 
-/// Runs the chain's stages in turn in one thread: each frame in, each stage adding its
-/// output to the frame, out to every listener; ends when its input closes or no one
-/// listens. What each stage applies is echoed in `status` (at the start and after every
-/// command it carries out). One thread rather than one a stage: a block wakes one thread
-/// instead of a dozen, which on two cores costs more than the stages' arithmetic.
+/// Runs the chain's stages in turn in one thread (`chain::InlineChain`, as sweeps run
+/// them): each frame in, its commands carried out by the stages they address, each stage
+/// adding its output to the frame, out to every listener; ends when its input closes or
+/// no one listens. What each stage applies is echoed in `status` (at the start and after
+/// every command it carries out, before the answer goes: a client reading the state after
+/// its reply sees what it set). One thread rather than one a stage: a block wakes one
+/// thread instead of a dozen, which on two cores costs more than the stages' arithmetic.
 pub fn run_chain(
-    mut stages: Vec<NamedStage>,
+    stages: Vec<NamedStage>,
     input: Receiver<Frame>,
     outputs: Vec<Sender<Frame>>,
     status: &SharedStatus,
 ) {
     let mut outputs = outputs;
+    let mut chain = InlineChain::new(stages);
     status.update(|st| {
-        for stage in &stages {
+        for stage in chain.stages() {
             echo_stage(stage, &mut st.chain);
         }
     });
-    for mut frame in input {
-        for stage in &mut stages {
-            frame = through_stage(stage, &frame, status);
+    for frame in input {
+        for pending in frame.commands.iter() {
+            for stage in chain.stages_mut() {
+                if let Some(outcome) = apply_to_stage(stage, &pending.command) {
+                    status.update(|st| echo_stage(stage, &mut st.chain));
+                    pending.answer(outcome);
+                }
+            }
         }
+        let frame = chain.process(frame);
         outputs.retain(|tx| tx.send(frame.clone()).is_ok());
         if outputs.is_empty() {
             break;
         }
     }
-}
-
-/// `frame` with `stage`'s output added, the frame's commands for the stage carried out
-/// first (the state echoes a setting before its answer goes: a client reading the state
-/// after its reply sees what it set).
-fn through_stage(stage: &mut NamedStage, frame: &Frame, status: &SharedStatus) -> Frame {
-    for pending in frame.commands.iter() {
-        if let Some(outcome) = apply_to_stage(stage, &pending.command) {
-            status.update(|st| echo_stage(stage, &mut st.chain));
-            pending.answer(outcome);
-        }
-    }
-    let mut out = vec![0.0; frame.len()];
-    stage.stage.process(frame, &mut out);
-    frame.with(out)
 }
 
 /// Runs a sink until its input closes, then finishes it. A failure stops the run (through
