@@ -11,7 +11,7 @@ pub use order_lines::{MAX_HEIGHT_DB, OrderSpectrum, subharmonic_height_db, subha
 pub use spread::section_spread;
 pub use verdict::{
     CHAOS_K_MIN, JudgeInput, Judgement, LINE_FRACTION_MIN, MAX_PERIOD, Motion,
-    NO_VIBRATION_AC_RMS_NM, SPREAD_MAX, SUBHARMONIC_CLEAR_DB, SUBHARMONIC_VISIBLE_SHARE, ac_rms,
-    judge, stands_clear,
+    NO_VIBRATION_AC_RMS_NM, SPREAD_MAX, SUBHARMONIC_CLEAR_DB, SUBHARMONIC_VISIBLE_SHARE, judge,
+    stands_clear,
 };
 pub use zero_one::zero_one_k;

@@ -272,8 +272,7 @@ fn foreign_subharmonic_clear(spectrum: &OrderSpectrum, k: usize) -> bool {
     })
 }
 
-/// The RMS of `values` about their mean (their unit; 0 for none).
-pub fn ac_rms(values: &[f64]) -> f64 {
+fn ac_rms(values: &[f64]) -> f64 {
     let n = values.len().max(1) as f64;
     let mean = values.iter().sum::<f64>() / n;
     (values.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / n).sqrt()
