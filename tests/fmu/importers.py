@@ -1,5 +1,5 @@
 """Third-party importers judge the FMU of the 1983 rig file (run by the Rust test
-`fmu_importers_agree`, tests/fmu.rs):
+`fmu_importers_agree`, tests/fmu_export.rs):
 
 1. FMPy's validator and the FMU Manipulation Toolbox's checker (the FMI 3.0 schema and
    its semantic rules) find no problem;
