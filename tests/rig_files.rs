@@ -212,6 +212,24 @@ fn bad_rig_files_are_refused_at_their_line_naming_the_field_and_what_is_allowed(
             vec!["body.name", "`motor` names two bodys"],
         ),
         (
+            "ratings-and-torque-limit",
+            "\n[brake]",
+            "torque_limit_nm = 7.0\nrated_power_w = 1491.4\nrated_speed_rpm = 2000.0\n\n[brake]",
+            vec!["motor.torque_limit_nm", "not both"],
+        ),
+        (
+            "ratings-without-speed",
+            "\n[brake]",
+            "current_limit_pct = 150.0\n\n[brake]",
+            vec!["motor.rated_power_w", "rated_speed_rpm (rev/min) both"],
+        ),
+        (
+            "negative-brake-drag",
+            "\n[gauge]",
+            "drag_nm = -0.5\n\n[gauge]",
+            vec!["brake.drag_nm", "must be 0 or a number"],
+        ),
+        (
             "unknown-key",
             "module_m = 0.003",
             "modul_m = 0.003",

@@ -281,7 +281,7 @@ impl Instance {
         }
         let rig = self.rig_with_parameters()?;
         let set = self.set_points();
-        if let Some(limit) = rig.drive.torque_limit_nm {
+        if let Some(limit) = rig.drive.limit_nm() {
             check_load_within(set.load_nm, limit)?;
         }
         let schedule = Schedule {
@@ -400,12 +400,10 @@ impl Instance {
                 }
                 Ok(())
             }
-            Role::Input(SetPoint::LoadNm) => {
-                match self.rig_with_parameters()?.drive.torque_limit_nm {
-                    Some(limit) => check_load_within(value, limit),
-                    None => Ok(()),
-                }
-            }
+            Role::Input(SetPoint::LoadNm) => match self.rig_with_parameters()?.drive.limit_nm() {
+                Some(limit) => check_load_within(value, limit),
+                None => Ok(()),
+            },
             _ => Ok(()),
         }
     }

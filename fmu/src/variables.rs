@@ -190,7 +190,7 @@ fn inputs(rig: &RigTopology) -> Vec<Variable> {
             .unit(unit)
             .start(0.0)
     };
-    let load_max = rig.drive.torque_limit_nm;
+    let load_max = rig.drive.limit_nm();
     vec![
         input("set_speed_rpm", SetPoint::SpeedRpm, "rev/min")
             .range(Some(0.0), Some(MAX_SPEED_RPM))

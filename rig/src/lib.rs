@@ -166,7 +166,8 @@ pub use signals::{COLUMN_NAMES, COLUMN_UNITS, DRIVEN_GEAR, INTERMEDIATE_SHAFT, S
 pub use steady::{SteadySummary, SteadyWindow, run_steady};
 pub use tooth_fault::{FaultKind, FaultedGear, ToothFault};
 pub use topology::{
-    Body, DriveSettings, Gauge, LockedTorque, MAX_BODIES, MAX_MESHES, Mesh, RigTopology, Shaft,
+    Body, DriveRatings, DriveSettings, Gauge, LockedTorque, MAX_BODIES, MAX_MESHES, Mesh,
+    RigTopology, Shaft,
 };
 pub use topology_check::{TopologyError, TopologyPlace};
 pub use topology_fields::TopologyField;

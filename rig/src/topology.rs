@@ -93,6 +93,14 @@ pub struct Mesh {
     /// Seed of the spacing errors' draws.
     #[serde(default)]
     pub tooth_spacing_seed: u32,
+    /// C2: a gear-error torque once per revolution of the driver, −C2 cos θ on both gears
+    /// (each in its own sense of rotation), whether the teeth touch or not (thesis
+    /// eq. 5.1's F2, F3; N m).
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub gear_error_c2_nm: f64,
+    /// C3: the same twice per revolution, −C3 cos 2θ (N m).
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub gear_error_c3_nm: f64,
     /// Faults seeded on single teeth (none: a healthy pair).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub faults: Vec<ToothFault>,
@@ -137,6 +145,8 @@ impl Mesh {
             || self.te_mesh_frequency_um != 0.0
             || self.run_out_driver_um != 0.0
             || self.run_out_driven_um != 0.0
+            || self.gear_error_c2_nm != 0.0
+            || self.gear_error_c3_nm != 0.0
     }
 
     /// Speed of the driven gear per unit speed of the driver: −z₁/z₂ (external gears turn
@@ -179,12 +189,45 @@ impl Gauge {
     }
 }
 
+/// A DC drive's nameplate and current limit, which bound its torque: rated power at
+/// rated speed is the torque at full-load current, and the armature current limit as a
+/// share of full-load current bounds the torque either way (the torque constant times
+/// the current).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct DriveRatings {
+    /// Rated output (W).
+    pub rated_power_w: f64,
+    /// Rated (top) speed (rev/min).
+    pub rated_speed_rpm: f64,
+    /// Full-load armature current (A), for the torque constant; `None` where not given.
+    pub full_load_current_a: Option<f64>,
+    /// The armature current limit as a share of full-load current (%).
+    pub current_limit_pct: f64,
+}
+
+impl DriveRatings {
+    /// Torque at full-load current (N m): rated power over rated speed.
+    pub fn full_load_torque_nm(&self) -> f64 {
+        self.rated_power_w / (self.rated_speed_rpm * std::f64::consts::PI / 30.0)
+    }
+
+    /// The torque limit either way (N m): full-load torque times the current limit.
+    pub fn torque_limit_nm(&self) -> f64 {
+        self.full_load_torque_nm() * self.current_limit_pct / 100.0
+    }
+}
+
 /// The drive and the load: the motor's speed loop and torque limit, the brake's
-/// slope (settings beyond the topology; the 1983 rig's values where a file is silent).
+/// slope, drag and characteristic (settings beyond the topology; the 1983 rig's values
+/// where a file is silent).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct DriveSettings {
-    /// Most torque the motor gives either way (N m); `None`: no limit.
+    /// Most torque the motor gives either way (N m), given as a number; `None`: none
+    /// given (the ratings' limit, else no limit). See [`DriveSettings::limit_nm`].
     pub torque_limit_nm: Option<f64>,
+    /// The drive's nameplate and current limit, whose torque limit holds where given.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ratings: Option<DriveRatings>,
     /// Speed-loop natural frequency (Hz) on the whole rig's inertia seen at the motor.
     pub speed_loop_hz: f64,
     /// Speed-loop damping ratio.
@@ -193,6 +236,26 @@ pub struct DriveSettings {
     pub feedback_filter_hz: f64,
     /// Rise of the brake's torque with its speed about the set speed (N m s/rad).
     pub brake_slope_nms_per_rad: f64,
+    /// Residual drag at the brake (N m, ≥ 0): bearing and seal friction, windage and the
+    /// brake's remanence, added to the set load (and present at zero set load).
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub brake_drag_nm: f64,
+    /// Critical speed of the eddy-current brake (rev/min of the brake body, ≥ 0; 0 off):
+    /// its torque at a fixed excitation follows T ∝ 2x/(1 + x²), x = ω/ω_c (Wouterse
+    /// 1991), linearised about the set point where it brakes with load and drag.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub brake_critical_speed_rpm: f64,
+}
+
+impl DriveSettings {
+    /// The motor's torque limit either way (N m): the ratings', else the number given;
+    /// `None`: no limit.
+    pub fn limit_nm(&self) -> Option<f64> {
+        self.ratings
+            .as_ref()
+            .map(DriveRatings::torque_limit_nm)
+            .or(self.torque_limit_nm)
+    }
 }
 
 impl Default for DriveSettings {
@@ -205,6 +268,9 @@ impl Default for DriveSettings {
             speed_loop_damping_ratio: 0.7,
             feedback_filter_hz: 2.0,
             brake_slope_nms_per_rad: 0.0,
+            brake_drag_nm: 0.0,
+            brake_critical_speed_rpm: 0.0,
+            ratings: None,
         }
     }
 }

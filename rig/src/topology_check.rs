@@ -38,6 +38,22 @@ fn fault(table: &'static str, index: usize, field: &'static str, message: String
     }
 }
 
+/// Refuses a number that is not finite (NaN or infinite).
+fn finite(
+    value: f64,
+    (table, index, field): (&'static str, usize, &'static str),
+) -> Result<(), TopologyError> {
+    if value.is_finite() && value.abs() <= LARGEST {
+        return Ok(());
+    }
+    Err(fault(
+        table,
+        index,
+        field,
+        format!("{value}: must be a number between -{LARGEST:e} and {LARGEST:e}"),
+    ))
+}
+
 /// Smallest positive number a rig takes in its units (kg m², N m/rad, m, …): far
 /// below any real part, far above the subnormal numbers that would overflow A.
 const SMALLEST: f64 = 1e-12;
@@ -208,6 +224,8 @@ impl RigTopology {
         non_negative(m.run_out_driver_um, ("mesh", i, "run_out_driver_um"))?;
         non_negative(m.run_out_driven_um, ("mesh", i, "run_out_driven_um"))?;
         non_negative(m.te_mesh_frequency_um, ("mesh", i, "te_mesh_frequency_um"))?;
+        finite(m.gear_error_c2_nm, ("mesh", i, "gear_error_c2_nm"))?;
+        finite(m.gear_error_c3_nm, ("mesh", i, "gear_error_c3_nm"))?;
         non_negative(
             m.tooth_spacing_error_um,
             ("mesh", i, "tooth_spacing_error_um"),
@@ -285,8 +303,31 @@ impl RigTopology {
         positive(d.feedback_filter_hz, ("motor", 0, "feedback_filter_hz"))?;
         if let Some(limit) = d.torque_limit_nm {
             positive(limit, ("motor", 0, "torque_limit_nm"))?;
+            if d.ratings.is_some() {
+                return Err(fault(
+                    "motor",
+                    0,
+                    "torque_limit_nm",
+                    format!(
+                        "{limit}: give the torque limit or the drive's ratings (rated_power_w, rated_speed_rpm, current_limit_pct), not both"
+                    ),
+                ));
+            }
+        }
+        if let Some(r) = &d.ratings {
+            positive(r.rated_power_w, ("motor", 0, "rated_power_w"))?;
+            positive(r.rated_speed_rpm, ("motor", 0, "rated_speed_rpm"))?;
+            positive(r.current_limit_pct, ("motor", 0, "current_limit_pct"))?;
+            if let Some(current) = r.full_load_current_a {
+                positive(current, ("motor", 0, "full_load_current_a"))?;
+            }
         }
         non_negative(d.brake_slope_nms_per_rad, ("brake", 0, "slope_nms_per_rad"))?;
+        non_negative(d.brake_drag_nm, ("brake", 0, "drag_nm"))?;
+        non_negative(
+            d.brake_critical_speed_rpm,
+            ("brake", 0, "critical_speed_rpm"),
+        )?;
         if let Some(g) = &self.gauge {
             positive(g.diameter_m, ("gauge", 0, "diameter_m"))?;
             positive(g.shear_modulus_pa, ("gauge", 0, "shear_modulus_pa"))?;

@@ -30,7 +30,7 @@ const SHAFT: [(&str, &str, &str); 2] = [
     ("stiffness_nm_per_rad", "N m/rad", "torsional stiffness"),
     ("damping_nms_per_rad", "N m s/rad", "torsional damping"),
 ];
-const MESH: [(&str, &str, &str); 13] = [
+const MESH: [(&str, &str, &str); 15] = [
     ("module_m", "m", "module"),
     ("pressure_angle_deg", "deg", "pressure angle"),
     (
@@ -80,8 +80,18 @@ const MESH: [(&str, &str, &str); 13] = [
         "um",
         "RMS of the tooth-pair spacing errors along the line of action",
     ),
+    (
+        "gear_error_c2_nm",
+        "N m",
+        "C2 of the gear-error torque -C2 cos θ on both gears",
+    ),
+    (
+        "gear_error_c3_nm",
+        "N m",
+        "C3 of the gear-error torque -C3 cos 2θ on both gears",
+    ),
 ];
-const MOTOR: [(&str, &str, &str); 4] = [
+const MOTOR: [(&str, &str, &str); 8] = [
     (
         "torque_limit_nm",
         "N m",
@@ -90,6 +100,27 @@ const MOTOR: [(&str, &str, &str); 4] = [
     ("speed_loop_hz", "Hz", "speed-loop natural frequency"),
     ("speed_loop_damping_ratio", "1", "speed-loop damping ratio"),
     ("feedback_filter_hz", "Hz", "speed feedback filter corner"),
+    ("rated_power_w", "W", "the drive's rated output"),
+    ("rated_speed_rpm", "rev/min", "the drive's rated speed"),
+    ("full_load_current_a", "A", "the drive's full-load current"),
+    (
+        "current_limit_pct",
+        "%",
+        "armature current limit over full-load current",
+    ),
+];
+const BRAKE: [(&str, &str, &str); 3] = [
+    (
+        "slope_nms_per_rad",
+        "N m s/rad",
+        "rise of the brake torque with speed",
+    ),
+    ("drag_nm", "N m", "residual drag added to the set load"),
+    (
+        "critical_speed_rpm",
+        "rev/min",
+        "the eddy-current brake's critical speed (0: off)",
+    ),
 ];
 
 impl RigTopology {
@@ -121,14 +152,7 @@ impl RigTopology {
             }
         }
         add("motor".into(), &MOTOR);
-        add(
-            "brake".into(),
-            &[(
-                "slope_nms_per_rad",
-                "N m s/rad",
-                "rise of the brake torque with speed",
-            )],
-        );
+        add("brake".into(), &BRAKE);
         if self.gauge.is_some() {
             add(
                 "gauge".into(),
@@ -259,6 +283,8 @@ impl RigTopology {
                     "run_out_driven_um" => Some(&mut m.run_out_driven_um),
                     "tooth_spacing_error_um" => Some(&mut m.tooth_spacing_error_um),
                     "te_mesh_frequency_um" => Some(&mut m.te_mesh_frequency_um),
+                    "gear_error_c2_nm" => Some(&mut m.gear_error_c2_nm),
+                    "gear_error_c3_nm" => Some(&mut m.gear_error_c3_nm),
                     _ => None,
                 }
             }
@@ -274,10 +300,19 @@ impl RigTopology {
                     "speed_loop_hz" => Some(&mut d.speed_loop_hz),
                     "speed_loop_damping_ratio" => Some(&mut d.speed_loop_damping_ratio),
                     "feedback_filter_hz" => Some(&mut d.feedback_filter_hz),
+                    "rated_power_w" => d.ratings.as_mut().map(|r| &mut r.rated_power_w),
+                    "rated_speed_rpm" => d.ratings.as_mut().map(|r| &mut r.rated_speed_rpm),
+                    "full_load_current_a" => d
+                        .ratings
+                        .as_mut()
+                        .and_then(|r| r.full_load_current_a.as_mut()),
+                    "current_limit_pct" => d.ratings.as_mut().map(|r| &mut r.current_limit_pct),
                     _ => None,
                 }
             }
             ["brake", "slope_nms_per_rad"] => Some(&mut self.drive.brake_slope_nms_per_rad),
+            ["brake", "drag_nm"] => Some(&mut self.drive.brake_drag_nm),
+            ["brake", "critical_speed_rpm"] => Some(&mut self.drive.brake_critical_speed_rpm),
             ["gauge", "diameter_m"] => self.gauge.as_mut().map(|g| &mut g.diameter_m),
             ["gauge", "shear_modulus_pa"] => self.gauge.as_mut().map(|g| &mut g.shear_modulus_pa),
             ["locked_torque", "torque_nm"] => self.locked_torque.as_mut().map(|l| &mut l.torque_nm),

@@ -102,12 +102,12 @@ fn file_max_load_nm(rig: &RigTopology) -> f64 {
     let (Some(motor), Some(brake)) = (rig.motor, rig.brake) else {
         return 0.0;
     };
-    let Some(limit_nm) = rig.drive.torque_limit_nm else {
+    let Some(limit_nm) = rig.drive.limit_nm() else {
         return f64::INFINITY;
     };
     let speeds = rig.relative_speeds();
     match (speeds[motor], speeds[brake]) {
-        (Some(m), Some(b)) if b != 0.0 => limit_nm * (m / b).abs(),
+        (Some(m), Some(b)) if b != 0.0 => limit_nm * (m / b).abs() - rig.drive.brake_drag_nm,
         _ => f64::INFINITY,
     }
 }

@@ -8,11 +8,13 @@ use std::path::Path;
 
 use anyhow::Context;
 
-use rig::{Body, DriveSettings, Gauge, LockedTorque, Mesh, RigTopology, Shaft, TopologyPlace};
+use rig::{
+    Body, DriveRatings, DriveSettings, Gauge, LockedTorque, Mesh, RigTopology, Shaft, TopologyPlace,
+};
 use toml::Spanned;
 
 use super::read_rig_mesh::{mesh, or, seed_faults};
-use super::rig_file_toml::{KeyphasorToml, MotorToml, RigFileToml, ShaftToml};
+use super::rig_file_toml::{BrakeToml, KeyphasorToml, MotorToml, RigFileToml, ShaftToml};
 use super::scenario_toml::RigFile;
 use super::source::ScenarioSource;
 
@@ -222,7 +224,7 @@ fn build(src: &ScenarioSource, file: &RigFileToml) -> anyhow::Result<RigTopology
             .map(|b| body(&b.body, "brake.body"))
             .transpose()?,
         locked_torque,
-        drive: drive(file),
+        drive: drive(src, file)?,
         gauge,
         tacho: file
             .tacho
@@ -261,24 +263,55 @@ fn keyphasor_gear(
 }
 
 /// The drive settings of `[motor]` and `[brake]`, defaults where they are silent.
-fn drive(file: &RigFileToml) -> DriveSettings {
+fn drive(src: &ScenarioSource, file: &RigFileToml) -> anyhow::Result<DriveSettings> {
     let d = DriveSettings::default();
     let motor = file.motor.as_ref();
     let motor_field = |f: fn(&MotorToml) -> &Option<Spanned<f64>>, default: f64| {
         motor.map_or(default, |m| or(f(m), default))
     };
-    DriveSettings {
+    let brake_field = |f: fn(&BrakeToml) -> &Option<Spanned<f64>>| {
+        file.brake.as_ref().map_or(0.0, |b| or(f(b), 0.0))
+    };
+    Ok(DriveSettings {
         torque_limit_nm: motor.and_then(|m| m.torque_limit_nm.as_ref().map(|t| *t.get_ref())),
+        ratings: motor.map(|m| ratings(src, m)).transpose()?.flatten(),
         speed_loop_hz: motor_field(|m| &m.speed_loop_hz, d.speed_loop_hz),
         speed_loop_damping_ratio: motor_field(
             |m| &m.speed_loop_damping_ratio,
             d.speed_loop_damping_ratio,
         ),
         feedback_filter_hz: motor_field(|m| &m.feedback_filter_hz, d.feedback_filter_hz),
-        brake_slope_nms_per_rad: file.brake.as_ref().map_or(d.brake_slope_nms_per_rad, |b| {
-            or(&b.slope_nms_per_rad, d.brake_slope_nms_per_rad)
-        }),
-    }
+        brake_slope_nms_per_rad: brake_field(|b| &b.slope_nms_per_rad),
+        brake_drag_nm: brake_field(|b| &b.drag_nm),
+        brake_critical_speed_rpm: brake_field(|b| &b.critical_speed_rpm),
+    })
+}
+
+/// The drive's ratings of `[motor]`, if it gives any: rated power and speed both, the
+/// current limit 100 % of full-load current where left out.
+fn ratings(src: &ScenarioSource, m: &MotorToml) -> anyhow::Result<Option<DriveRatings>> {
+    let given = [
+        &m.rated_power_w,
+        &m.rated_speed_rpm,
+        &m.full_load_current_a,
+        &m.current_limit_pct,
+    ];
+    let Some(first) = given.iter().find_map(|v| v.as_ref()) else {
+        return Ok(None);
+    };
+    let (Some(power), Some(speed)) = (&m.rated_power_w, &m.rated_speed_rpm) else {
+        return Err(src.error(
+            first.span(),
+            "motor.rated_power_w",
+            "the drive's ratings need rated_power_w (W) and rated_speed_rpm (rev/min) both; current_limit_pct (%, 100 when left out) sets the torque limit from them",
+        ));
+    };
+    Ok(Some(DriveRatings {
+        rated_power_w: *power.get_ref(),
+        rated_speed_rpm: *speed.get_ref(),
+        full_load_current_a: m.full_load_current_a.as_ref().map(|c| *c.get_ref()),
+        current_limit_pct: or(&m.current_limit_pct, 100.0),
+    }))
 }
 
 /// Each name of a `table`'s items to its index; a repeated name is refused at its place.
@@ -385,6 +418,8 @@ fn span_of(file: &RigFileToml, place: &TopologyPlace) -> Range<usize> {
             "run_out_driver_um" => m.run_out_driver_um.as_ref().map(Spanned::span),
             "run_out_driven_um" => m.run_out_driven_um.as_ref().map(Spanned::span),
             "tooth_spacing_error_um" => m.tooth_spacing_error_um.as_ref().map(Spanned::span),
+            "gear_error_c2_nm" => m.gear_error_c2_nm.as_ref().map(Spanned::span),
+            "gear_error_c3_nm" => m.gear_error_c3_nm.as_ref().map(Spanned::span),
             _ => Some(m.name.span()),
         }),
         ("locked_torque", _) => file.locked_torque.as_ref().map(|l| l.torque_nm.span()),
@@ -393,6 +428,10 @@ fn span_of(file: &RigFileToml, place: &TopologyPlace) -> Range<usize> {
             "speed_loop_hz" => m.speed_loop_hz.as_ref().map(Spanned::span),
             "speed_loop_damping_ratio" => m.speed_loop_damping_ratio.as_ref().map(Spanned::span),
             "feedback_filter_hz" => m.feedback_filter_hz.as_ref().map(Spanned::span),
+            "rated_power_w" => m.rated_power_w.as_ref().map(Spanned::span),
+            "rated_speed_rpm" => m.rated_speed_rpm.as_ref().map(Spanned::span),
+            "full_load_current_a" => m.full_load_current_a.as_ref().map(Spanned::span),
+            "current_limit_pct" => m.current_limit_pct.as_ref().map(Spanned::span),
             _ => Some(m.body.span()),
         }),
         ("gauge", field) => file.gauge.as_ref().map(|g| match field {
@@ -402,10 +441,13 @@ fn span_of(file: &RigFileToml, place: &TopologyPlace) -> Range<usize> {
                 .map_or(g.shaft.span(), Spanned::span),
             _ => g.diameter_m.span(),
         }),
-        ("brake", _) => file.brake.as_ref().and_then(|b| {
-            b.slope_nms_per_rad
-                .as_ref()
-                .map_or(Some(b.body.span()), |s| Some(s.span()))
+        ("brake", field) => file.brake.as_ref().map(|b| {
+            let value = match field {
+                "drag_nm" => &b.drag_nm,
+                "critical_speed_rpm" => &b.critical_speed_rpm,
+                _ => &b.slope_nms_per_rad,
+            };
+            value.as_ref().map_or(b.body.span(), Spanned::span)
         }),
         _ => None,
     };

@@ -63,6 +63,8 @@ pub(super) fn mesh(
         tooth_spacing_error_um: or(&m.tooth_spacing_error_um, 0.0),
         tooth_spacing_seed: m.tooth_spacing_seed.unwrap_or(0),
         tooth_shifting: m.tooth_shifting.unwrap_or(false),
+        gear_error_c2_nm: or(&m.gear_error_c2_nm, 0.0),
+        gear_error_c3_nm: or(&m.gear_error_c3_nm, 0.0),
         faults: m
             .fault
             .iter()

@@ -168,6 +168,12 @@ pub struct MeshToml {
     /// Run-out of the driven gear (µm); 0 when left out.
     #[serde(default)]
     pub run_out_driven_um: Option<Spanned<f64>>,
+    /// Gear-error torque once per revolution of the driver, C2 (N m); 0 when left out.
+    #[serde(default)]
+    pub gear_error_c2_nm: Option<Spanned<f64>>,
+    /// Gear-error torque twice per revolution, C3 (N m); 0 when left out.
+    #[serde(default)]
+    pub gear_error_c3_nm: Option<Spanned<f64>>,
     /// `[[mesh.fault]]`: faults seeded on single teeth.
     #[serde(default)]
     pub fault: Vec<FaultToml>,
@@ -210,6 +216,19 @@ pub struct MotorToml {
     /// Speed feedback filter corner (Hz); 2 when left out.
     #[serde(default)]
     pub feedback_filter_hz: Option<Spanned<f64>>,
+    /// The drive's rated output (W): with `rated_speed_rpm`, its torque limit instead of
+    /// `torque_limit_nm`.
+    #[serde(default)]
+    pub rated_power_w: Option<Spanned<f64>>,
+    /// The drive's rated speed (rev/min).
+    #[serde(default)]
+    pub rated_speed_rpm: Option<Spanned<f64>>,
+    /// The drive's full-load armature current (A), for its torque constant.
+    #[serde(default)]
+    pub full_load_current_a: Option<Spanned<f64>>,
+    /// The armature current limit over full-load current (%); 100 when left out.
+    #[serde(default)]
+    pub current_limit_pct: Option<Spanned<f64>>,
 }
 
 /// `[brake]`: the body it loads and its torque's slope with speed.
@@ -221,6 +240,12 @@ pub struct BrakeToml {
     /// Rise of torque with speed (N m s/rad); 0 when left out.
     #[serde(default)]
     pub slope_nms_per_rad: Option<Spanned<f64>>,
+    /// Residual drag added to the set load (N m); 0 when left out.
+    #[serde(default)]
+    pub drag_nm: Option<Spanned<f64>>,
+    /// The eddy-current characteristic's critical speed (rev/min); 0 (off) when left out.
+    #[serde(default)]
+    pub critical_speed_rpm: Option<Spanned<f64>>,
 }
 
 /// `[locked_torque]`: the twist locked into one shaft of a back-to-back loop.

@@ -105,7 +105,7 @@ fn solve(
         f[i] -= drag * model.speed_ratio[i] * speed_rad_s;
     }
     if let Some(b) = &model.brake {
-        f[b.body] -= b.direction * load_nm;
+        f[b.body] -= b.direction * (load_nm + b.drag_nm);
     }
     for s in &model.shafts {
         let [a, b] = s.between;

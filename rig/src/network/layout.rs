@@ -7,7 +7,8 @@
 //! zones and revolutions). Set speed and load ramp exactly: Ω' = rate, load' = rate.
 //! Then, for each mesh with a backlash variation or transmission error, the harmonic
 //! pairs of its driver's share of the set rotation: (cos θ, sin θ) and, with a
-//! mesh-frequency error, (cos zθ, sin zθ); and for each mesh with spacing errors, the
+//! mesh-frequency error, (cos zθ, sin zθ), with a gear-error torque twice per revolution
+//! (C3), (cos 2θ, sin 2θ); and for each mesh with spacing errors, the
 //! error e of the pair in mesh (m along the line of action, e' = 0, set as pairs change).
 
 use crate::topology::{MAX_MESHES, RigTopology};
@@ -22,6 +23,9 @@ pub struct NetLayout {
     pub revolution: [Option<usize>; MAX_MESHES],
     /// Per mesh: where cos zθ sits (sin zθ follows), if it has a mesh-frequency error.
     pub tooth: [Option<usize>; MAX_MESHES],
+    /// Per mesh: where cos 2θ sits (sin 2θ follows), if it has a gear-error torque twice
+    /// per revolution (C3).
+    pub second: [Option<usize>; MAX_MESHES],
     /// Per mesh: where cos θ₂ of its driven gear's turn sits (sin θ₂ follows), if the
     /// driven gear has run-out.
     pub run_out: [Option<usize>; MAX_MESHES],
@@ -42,6 +46,7 @@ impl NetLayout {
         let mut len = 2 * bodies + 2 + 8;
         let mut revolution = [None; MAX_MESHES];
         let mut tooth = [None; MAX_MESHES];
+        let mut second = [None; MAX_MESHES];
         let mut run_out = [None; MAX_MESHES];
         let mut spacing = [None; MAX_MESHES];
         let mut driven_teeth = [0; MAX_MESHES];
@@ -54,6 +59,10 @@ impl NetLayout {
             }
             if m.te_mesh_frequency_um != 0.0 {
                 tooth[i] = Some(len);
+                len += 2;
+            }
+            if m.gear_error_c3_nm != 0.0 {
+                second[i] = Some(len);
                 len += 2;
             }
             if m.run_out_driven_um != 0.0 {
@@ -70,6 +79,7 @@ impl NetLayout {
             bodies,
             revolution,
             tooth,
+            second,
             run_out,
             spacing,
             driver_teeth,
@@ -92,6 +102,9 @@ impl NetLayout {
             }
             if let Some(index) = self.tooth[i] {
                 pairs.push((index, i, f64::from(self.driver_teeth[i])));
+            }
+            if let Some(index) = self.second[i] {
+                pairs.push((index, i, 2.0));
             }
             if let Some(index) = self.run_out[i] {
                 let turns = f64::from(self.driver_teeth[i]) / f64::from(self.driven_teeth[i]);

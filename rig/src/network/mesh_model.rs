@@ -50,6 +50,10 @@ pub struct MeshModel {
     pub driven_turns: f64,
     /// The thesis's numerical tooth shifting at each tooth pass in contact.
     pub tooth_shifting: bool,
+    /// Gear-error torque once per revolution of the driver, C2 (N m).
+    pub gear_error_c2_nm: f64,
+    /// Gear-error torque twice per revolution of the driver, C3 (N m).
+    pub gear_error_c3_nm: f64,
     /// Each tooth's stiffness factor on the driver and on the driven gear over its pair's
     /// whole time in mesh (1 healthy; a crack or a broken-off share less), teeth numbered
     /// from the pair in mesh at angle 0.
@@ -98,6 +102,8 @@ impl MeshModel {
             driven_turns: f64::from(m.teeth[0]) / f64::from(m.teeth[1]),
             te_mesh_m: m.te_mesh_frequency_um * 1e-6,
             tooth_shifting: m.tooth_shifting,
+            gear_error_c2_nm: m.gear_error_c2_nm,
+            gear_error_c3_nm: m.gear_error_c3_nm,
             tooth_factors,
             single_stretch_factors,
             faulted,

@@ -11,9 +11,12 @@
 //! pushes with F = k(δ − b) + c δ', on its back flank (δ < −b) with F = k(δ + b) + c δ'
 //! (thesis eq. 5.6: the spring-damper acts on the overlap), −r_a F on the driver and
 //! −r_b F on the driven gear; two pairs multiply k and c by the mesh's double-pair ratio.
+//! A mesh's gear-error torques −C2 cos θ − C3 cos 2θ (θ its driver's share of the set
+//! rotation) act on both its gears, each in its own sense of rotation, touching or not.
 //! The motor's PI loop on the first-order filtered speed gives kp(Ω − ω_f) + ki z,
-//! or its limit, on the motor body; the brake resists with its load, its slope about the
-//! set speed and the oscillating load; each body has its bearing drag.
+//! or its limit, on the motor body; the brake resists with its load and residual drag,
+//! its slope about the set speed (the set slope plus the eddy-current characteristic's,
+//! linearised at the set point) and the oscillating load; each body has its bearing drag.
 
 use nalgebra::DMatrix;
 
@@ -63,6 +66,42 @@ pub struct BrakeModel {
     pub direction: f64,
     /// Rise of its torque with speed (N m s/rad).
     pub slope_nms_per_rad: f64,
+    /// Residual drag added to the set load (N m).
+    pub drag_nm: f64,
+    /// The eddy-current characteristic's critical speed (rad/s of the brake body); 0 off.
+    pub critical_rad_s: f64,
+    /// The brake body's speed per unit speed of the motor's body (|s|).
+    pub speed_share: f64,
+}
+
+impl BrakeModel {
+    /// Slope (N m s/rad) of the eddy-current brake's torque with its speed at the motor's
+    /// set speed `speed_rad_s`, braking `load_nm` and its drag there: T(ω) = T_set
+    /// g(ω)/g(Ω_b) with g(ω) = 2x/(1 + x²), x = ω/ω_c (Wouterse 1991), linearised about
+    /// the brake's set speed Ω_b: dT/dω = T_set (1 − x²)/((1 + x²) Ω_b). Positive below
+    /// the critical speed (the brake damps), negative above it; 0 when the characteristic
+    /// is off or the rig stands.
+    pub fn characteristic_slope(&self, speed_rad_s: f64, load_nm: f64) -> f64 {
+        let brake_rad_s = self.speed_share * speed_rad_s;
+        if self.critical_rad_s <= 0.0 || brake_rad_s <= 0.0 {
+            return 0.0;
+        }
+        let x2 = (brake_rad_s / self.critical_rad_s).powi(2);
+        (load_nm + self.drag_nm) * (1.0 - x2) / ((1.0 + x2) * brake_rad_s)
+    }
+}
+
+/// What of a stretch of set points enters A: the rates the harmonic pairs and the
+/// oscillating load turn at, and the slope of the brake's characteristic there.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct SegmentRates {
+    /// The motor's set speed the meshes' harmonic pairs turn with (rad/s; 0 where the rig
+    /// has none).
+    pub harmonic_rad_s: f64,
+    /// The oscillating load's angular frequency (rad/s).
+    pub oscillating_rad_s: f64,
+    /// The eddy-current characteristic's slope at the set point (N m s/rad).
+    pub brake_characteristic_nms_per_rad: f64,
 }
 
 /// The constants of a whole rig.
@@ -128,12 +167,15 @@ impl NetworkModel {
             kp_nms_per_rad: 2.0 * d.speed_loop_damping_ratio * wn * seen,
             ki_nm_per_rad: seen * wn * wn,
             filter_rad_s: 2.0 * std::f64::consts::PI * d.feedback_filter_hz,
-            limit_nm: d.torque_limit_nm,
+            limit_nm: d.limit_nm(),
         });
         let brake = rig.brake.map(|body| BrakeModel {
             body,
             direction: if speed_ratio[body] < 0.0 { -1.0 } else { 1.0 },
             slope_nms_per_rad: d.brake_slope_nms_per_rad,
+            drag_nm: d.brake_drag_nm,
+            critical_rad_s: d.brake_critical_speed_rpm * std::f64::consts::PI / 30.0,
+            speed_share: speed_ratio[body].abs(),
         });
         let mut model = Self {
             layout: NetLayout::new(rig),
@@ -250,16 +292,11 @@ impl NetworkModel {
         })
     }
 
-    /// A of u' = A u in `mode`, the set speed held at `speed_rad_s` for the harmonic
-    /// pairs of the meshes' excitation, the oscillating load turning at
-    /// `oscillating_rad_s`.
-    pub fn system_matrix(
-        &self,
-        mode: &NetMode,
-        speed_rad_s: f64,
-        oscillating_rad_s: f64,
-    ) -> DMatrix<f64> {
+    /// A of u' = A u in `mode` over a stretch of set points turning at `rates`.
+    pub fn system_matrix(&self, mode: &NetMode, rates: &SegmentRates) -> DMatrix<f64> {
         let l = &self.layout;
+        let speed_rad_s = rates.harmonic_rad_s;
+        let oscillating_rad_s = rates.oscillating_rad_s;
         let mut a = DMatrix::zeros(l.len(), l.len());
         for i in 0..l.bodies {
             a[(l.angle(i), l.speed(i))] = 1.0;
@@ -277,8 +314,9 @@ impl NetworkModel {
             a[(index, index + 1)] = -w;
             a[(index + 1, index)] = w;
         }
+        self.add_gear_errors(&mut a);
         self.add_motor(&mut a, mode.motor);
-        self.add_brake(&mut a);
+        self.add_brake(&mut a, rates.brake_characteristic_nms_per_rad);
         a[(l.set_speed(), l.set_rate())] = 1.0;
         a[(l.load(), l.load_rate())] = 1.0;
         a[(l.phase(), l.set_speed())] = 1.0;
@@ -408,16 +446,40 @@ impl NetworkModel {
         }
     }
 
-    fn add_brake(&self, a: &mut DMatrix<f64>) {
+    /// Each mesh's gear-error torques −C2 cos θ − C3 cos 2θ on both its gears, each in
+    /// its own sense of rotation.
+    fn add_gear_errors(&self, a: &mut DMatrix<f64>) {
+        let l = &self.layout;
+        for (i, m) in self.meshes.iter().enumerate() {
+            let harmonics = [
+                (l.revolution[i], m.gear_error_c2_nm),
+                (l.second[i], m.gear_error_c3_nm),
+            ];
+            for (index, amplitude) in harmonics {
+                let Some(cos) = index.filter(|_| amplitude != 0.0) else {
+                    continue;
+                };
+                for body in m.gears {
+                    let sense = self.speed_ratio[body].signum();
+                    self.add_torque(a, body, &[(cos, -sense * amplitude)]);
+                }
+            }
+        }
+    }
+
+    /// The brake's load, drag, slope (the set one plus the characteristic's `characteristic`
+    /// at the set point) and oscillating load, all resisting.
+    fn add_brake(&self, a: &mut DMatrix<f64>, characteristic: f64) {
         let Some(b) = &self.brake else {
             return;
         };
         let l = &self.layout;
         let dir = b.direction;
-        let slope = b.slope_nms_per_rad;
+        let slope = b.slope_nms_per_rad + characteristic;
         let nominal = self.speed_ratio[b.body];
         let terms = [
             (l.load(), -dir),
+            (l.unit(), -dir * b.drag_nm),
             (l.oscillating() + 1, -dir),
             (l.speed(b.body), -slope),
             (l.set_speed(), slope * nominal),

@@ -9,6 +9,7 @@ use crate::error::RigError;
 use crate::mode::MotorMode;
 use crate::schedule::SetPoints;
 
+use super::model::SegmentRates;
 use super::plant::{NetworkPlant, OSCILLATING_HOLD_S};
 
 /// Relative difference of a set point from the one held below which it is the same set
@@ -75,10 +76,18 @@ impl NetworkPlant {
         let t = self.time_s();
         let knot = self.schedule.next_knot_after(t);
         let s = &self.schedule;
+        // Held in short stretches: what enters the matrix while it ramps (the oscillating
+        // load's frequency, the harmonics' speed, the brake characteristic's slope).
         let harmonics_turn = self.model.layout.has_harmonics();
+        let characteristic = self
+            .model
+            .brake
+            .as_ref()
+            .is_some_and(|b| b.critical_rad_s > 0.0);
         let oscillating_ramps = s.oscillating_load_nm.ramping_at(t)
             || s.oscillating_load_hz.ramping_at(t)
-            || (harmonics_turn && s.speed_rpm.ramping_at(t));
+            || (harmonics_turn && s.speed_rpm.ramping_at(t))
+            || (characteristic && (s.speed_rpm.ramping_at(t) || s.load_nm.ramping_at(t)));
         let end_s = match (knot, oscillating_ramps) {
             (Some(k), true) => Some(k.min(t + OSCILLATING_HOLD_S)),
             (None, true) => Some(t + OSCILLATING_HOLD_S),
@@ -119,8 +128,15 @@ impl NetworkPlant {
             0.0
         };
         self.harmonic_speed_rad_s = harmonic_speed;
+        let rates = SegmentRates {
+            harmonic_rad_s: harmonic_speed,
+            oscillating_rad_s: held.oscillating_load_rad_s(),
+            brake_characteristic_nms_per_rad: self.model.brake.as_ref().map_or(0.0, |b| {
+                b.characteristic_slope(held.speed_rad_s(), held.load_nm)
+            }),
+        };
         if let Some(cache) = self.cache.as_mut() {
-            cache.set_frequencies(harmonic_speed, held.oscillating_load_rad_s());
+            cache.set_rates(rates);
         }
         self.resync_harmonics();
         self.segment_end = end;

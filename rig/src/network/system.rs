@@ -1,5 +1,5 @@
 //! Per mode: A, e^{A h} and the switching functions, built when the mode is first met
-//! and kept until the oscillating load's frequency changes.
+//! and kept until the set points' rates (`SegmentRates`) change.
 
 use std::collections::HashMap;
 
@@ -9,7 +9,7 @@ use crate::matrix_exp::{exp_powers_balanced, forcing_scales, spectral_radius};
 
 use super::events::{EventForm, event_forms};
 use super::mode::NetMode;
-use super::model::NetworkModel;
+use super::model::{NetworkModel, SegmentRates};
 
 /// One mode's linear system.
 #[derive(Clone, Debug)]
@@ -32,9 +32,8 @@ pub struct SystemCache {
     last: Option<(NetMode, usize)>,
     step_s: f64,
     rho: f64,
-    /// The set speed the harmonic pairs turn with (rad/s; 0 where the rig has none).
-    speed_rad_s: f64,
-    oscillating_rad_s: f64,
+    /// The rates of the set points the systems were built for.
+    rates: SegmentRates,
 }
 
 impl SystemCache {
@@ -46,20 +45,18 @@ impl SystemCache {
             last: None,
             step_s,
             rho,
-            speed_rad_s: 0.0,
-            oscillating_rad_s: 0.0,
+            rates: SegmentRates::default(),
         }
     }
 
-    /// Sets the set speed the harmonic pairs turn with and the oscillating load's
-    /// frequency (rad/s); a change empties the cache.
-    pub fn set_frequencies(&mut self, speed_rad_s: f64, oscillating_rad_s: f64) {
-        if (speed_rad_s, oscillating_rad_s) != (self.speed_rad_s, self.oscillating_rad_s) {
+    /// Sets the rates of the set points the systems are built for; a change empties the
+    /// cache.
+    pub fn set_rates(&mut self, rates: SegmentRates) {
+        if rates != self.rates {
             self.systems.clear();
             self.built.clear();
             self.last = None;
-            self.speed_rad_s = speed_rad_s;
-            self.oscillating_rad_s = oscillating_rad_s;
+            self.rates = rates;
         }
     }
 
@@ -81,7 +78,7 @@ impl SystemCache {
         if let Some(&index) = self.systems.get(mode) {
             return index;
         }
-        let a = model.system_matrix(mode, self.speed_rad_s, self.oscillating_rad_s);
+        let a = model.system_matrix(mode, &self.rates);
         let padded = model.layout.padded();
         let step = padded_columns(&exp_step(model, &a, self.step_s, self.rho), padded);
         let events = event_forms(model, mode, &a);
@@ -141,7 +138,7 @@ pub fn fastest_rate(model: &NetworkModel) -> f64 {
         state.contact = super::mode::Contact::Drive;
         state.two_pairs = m.alternating;
     }
-    let a = model.system_matrix(&mode, 0.0, 0.0);
+    let a = model.system_matrix(&mode, &SegmentRates::default());
     if a.iter().all(|x| x.is_finite()) {
         spectral_radius(&a)
     } else {
