@@ -200,3 +200,46 @@ fn the_thesis_plants_drive_brake_and_gear_errors_run_on_the_rig_file() {
         "the motor held its {limit_nm} N m limit for {at_limit} samples"
     );
 }
+
+/// The no-pull contact law as a rig-file field (issue 45): the 1983 file with
+/// `contact_law = "no-pull"` against the thesis plant with `ContactLaw::NoPull`, with
+/// the thesis's tooth shifting and without, at 600 rev/min under 2.712 N m and rattling
+/// with 3 N m oscillating at 25 Hz: the intermediate shaft's torque within 1e-6 of its
+/// range and the impacts one for one within 1 ns. The law matters here: the same runs
+/// under the thesis's law differ from them by more than 1 % of the torque's range.
+#[test]
+fn the_no_pull_law_runs_on_the_rig_file_as_on_the_thesis_plant() {
+    let rattle = Schedule {
+        oscillating_load_nm: Track::hold(3.0),
+        oscillating_load_hz: Track::hold(25.0),
+        ..Schedule::constant(600.0, 0.5)
+    };
+    for shifting in [true, false] {
+        let mut rig = shipped("basmaji-1983");
+        rig.meshes[0].contact_law = rig::ContactLaw::NoPull;
+        rig.meshes[0].tooth_shifting = shifting;
+        let mut params = rig::preset("basmaji-1983").expect("preset");
+        params.contact_law = rig::ContactLaw::NoPull;
+        params.tooth_shifting = shifting;
+        for (schedule, seconds) in [
+            (Schedule::constant(600.0, 2.712), 2.0),
+            (rattle.clone(), 0.5),
+        ] {
+            let (worst, scale, impacts, reference) =
+                both_plants(&rig, &params, schedule.clone(), seconds);
+            assert!(
+                worst < 1e-6 * scale,
+                "shifting {shifting}: torques differ by {worst} N m of {scale}"
+            );
+            assert_eq!(impacts.len(), reference.len(), "shifting {shifting}");
+            assert!(impacts.len() > 5, "{impacts:?}");
+            for (a, b) in impacts.iter().zip(&reference) {
+                assert!((a - b).abs() < 1e-9, "{a} s against {b} s");
+            }
+            params.contact_law = rig::ContactLaw::Thesis;
+            let (other, ..) = both_plants(&rig, &params, schedule, seconds);
+            params.contact_law = rig::ContactLaw::NoPull;
+            assert!(other > 0.01 * scale, "the law changes nothing: {other} N m");
+        }
+    }
+}

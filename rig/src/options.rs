@@ -3,11 +3,12 @@
 use serde::{Deserialize, Serialize};
 
 /// How the mesh torque behaves while the teeth overlap.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum ContactLaw {
     /// Thesis eq. (5.6) as written: spring and damper act whenever |d| ≥ B, so the
     /// damper can pull the teeth together while they separate.
+    #[default]
     Thesis,
     /// The contact torque is clipped at zero (it never pulls), as Modelica's
     /// `ElastoBacklash` does: contact ends when spring + damper torque reaches zero.

@@ -8,7 +8,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::mesh_stiffness::PairGeometry;
-use crate::options::MeshPairs;
+use crate::options::{ContactLaw, MeshPairs};
 use crate::tooth_fault::ToothFault;
 
 /// Most bodies a rig may have.
@@ -62,6 +62,10 @@ pub struct Mesh {
     pub damping_ns_per_m: f64,
     /// One tooth pair always, or one and two alternating as the contact ratio says.
     pub pairs: MeshPairs,
+    /// The contact law: the thesis's spring-damper on the overlap (the damper may pull),
+    /// or no-pull (the force clipped at zero while the teeth still overlap).
+    #[serde(default, skip_serializing_if = "is_thesis_law")]
+    pub contact_law: ContactLaw,
     /// Stiffness and damping of two pairs over one pair's (with `pairs` alternating).
     pub double_pair_ratio: f64,
     /// Addendum over the module (standard teeth: 1), for the contact ratio.
@@ -154,6 +158,11 @@ impl Mesh {
     pub fn speed_ratio(&self) -> f64 {
         -f64::from(self.teeth[0]) / f64::from(self.teeth[1])
     }
+}
+
+/// Whether a contact law is the thesis's (left out of a rig's JSON).
+fn is_thesis_law(law: &ContactLaw) -> bool {
+    *law == ContactLaw::Thesis
 }
 
 /// Whether a number is 0 (left out of a rig's JSON).

@@ -3,7 +3,7 @@
 //! pairs, and its `[[mesh.fault]]`s; every fault at its place with what is allowed.
 
 use rig::mesh_stiffness::PairGeometry;
-use rig::{FaultKind, FaultedGear, Mesh, MeshPairs, RigTopology, ToothFault};
+use rig::{ContactLaw, FaultKind, FaultedGear, Mesh, MeshPairs, RigTopology, ToothFault};
 use toml::Spanned;
 
 use super::rig_file_toml::{FaultToml, MeshToml};
@@ -53,6 +53,7 @@ pub(super) fn mesh(
         potential_energy: stiffness.2,
         damping_ns_per_m: or(&m.damping_ns_per_m, 0.0),
         pairs: pairs(src, m)?,
+        contact_law: contact_law(src, m)?,
         double_pair_ratio: or(&m.double_pair_ratio, stiffness.1),
         addendum_coefficient: or(&m.addendum_coefficient, 1.0),
         backlash_variation: or(&m.backlash_variation, 0.0),
@@ -295,6 +296,20 @@ fn pairs(src: &ScenarioSource, m: &MeshToml) -> anyhow::Result<MeshPairs> {
             text.span(),
             &format!("mesh `{}`.pairs", m.name.get_ref()),
             format!("`{}`: one of {}", text.get_ref(), MeshPairs::NAMES),
+        )
+    })
+}
+
+/// A mesh's `contact_law`: the thesis's when left out.
+fn contact_law(src: &ScenarioSource, m: &MeshToml) -> anyhow::Result<ContactLaw> {
+    let Some(text) = &m.contact_law else {
+        return Ok(ContactLaw::Thesis);
+    };
+    ContactLaw::parse(text.get_ref()).ok_or_else(|| {
+        src.error(
+            text.span(),
+            &format!("mesh `{}`.contact_law", m.name.get_ref()),
+            format!("`{}`: one of {}", text.get_ref(), ContactLaw::NAMES),
         )
     })
 }

@@ -138,6 +138,9 @@ pub struct MeshToml {
     /// `single` or `alternating`; single when left out.
     #[serde(default)]
     pub pairs: Option<Spanned<String>>,
+    /// `thesis` or `no-pull`; thesis when left out.
+    #[serde(default)]
+    pub contact_law: Option<Spanned<String>>,
     /// Two pairs' stiffness over one's; 2 when left out.
     #[serde(default)]
     pub double_pair_ratio: Option<Spanned<f64>>,

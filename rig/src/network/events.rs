@@ -6,7 +6,7 @@ use nalgebra::DMatrix;
 
 use crate::mode::MotorMode;
 
-use super::mode::{Contact, NetMode};
+use super::mode::{Contact, MeshState, NetMode};
 use super::model::NetworkModel;
 
 /// What a crossing means.
@@ -16,6 +16,10 @@ pub enum NetEvent {
     Touch(usize, Contact),
     /// Mesh `.0`'s teeth part.
     Leave(usize),
+    /// Mesh `.0`'s force reaches zero while its flanks overlap (no-pull law): clipped.
+    Unload(usize),
+    /// Mesh `.0`'s clipped force would push again (no-pull law).
+    Reload(usize),
     /// Mesh `.0`'s driver turns past the end of its pair zone (followed in contact where
     /// pairs alternate or a tooth is faulted, and while a broken pair leaves no tooth).
     ZoneEnd(usize),
@@ -93,8 +97,14 @@ impl EventForm {
     }
 }
 
-/// The switching functions of `mode` with A = `a`.
-pub fn event_forms(model: &NetworkModel, mode: &NetMode, a: &DMatrix<f64>) -> Vec<EventForm> {
+/// The switching functions of `mode` with A = `a`, the meshes' harmonic pairs turning
+/// with the set speed `speed_rad_s`.
+pub fn event_forms(
+    model: &NetworkModel,
+    mode: &NetMode,
+    a: &DMatrix<f64>,
+    speed_rad_s: f64,
+) -> Vec<EventForm> {
     let mut forms = Vec::new();
     let mut push = |event, terms: Vec<(usize, f64)>, target| {
         forms.push(EventForm::new(event, terms, target, a));
@@ -129,6 +139,27 @@ pub fn event_forms(model: &NetworkModel, mode: &NetMode, a: &DMatrix<f64>) -> Ve
             }
             Contact::Drive => push(NetEvent::Leave(i), overlap(1.0, -1.0), Target::Fixed),
             Contact::Back => push(NetEvent::Leave(i), overlap(-1.0, 1.0), Target::Fixed),
+        }
+        if m.no_pull && state.contact != Contact::Apart {
+            // The push f·F of the flank in contact (its spring as if it pushed): clipped,
+            // it pushes again when this rises through 0; else it is clipped when it falls.
+            let flank = f64::from(state.contact.sign());
+            let pushing = MeshState {
+                clipped: false,
+                ..state
+            };
+            let sign = if state.clipped { flank } else { -flank };
+            let force = model
+                .force_terms(i, pushing, flank, speed_rad_s)
+                .into_iter()
+                .map(|(index, v)| (index, sign * v))
+                .collect();
+            let event = if state.clipped {
+                NetEvent::Reload(i)
+            } else {
+                NetEvent::Unload(i)
+            };
+            push(event, force, Target::Fixed);
         }
         if m.tooth_shifting && mode.meshes[i].contact != Contact::Apart {
             let sense = m.share.signum();

@@ -50,6 +50,8 @@ pub struct MeshModel {
     pub driven_turns: f64,
     /// The thesis's numerical tooth shifting at each tooth pass in contact.
     pub tooth_shifting: bool,
+    /// The no-pull law: the force clipped at zero while the flanks still overlap.
+    pub no_pull: bool,
     /// Gear-error torque once per revolution of the driver, C2 (N m).
     pub gear_error_c2_nm: f64,
     /// Gear-error torque twice per revolution of the driver, C3 (N m).
@@ -102,6 +104,7 @@ impl MeshModel {
             driven_turns: f64::from(m.teeth[0]) / f64::from(m.teeth[1]),
             te_mesh_m: m.te_mesh_frequency_um * 1e-6,
             tooth_shifting: m.tooth_shifting,
+            no_pull: m.contact_law == crate::options::ContactLaw::NoPull,
             gear_error_c2_nm: m.gear_error_c2_nm,
             gear_error_c3_nm: m.gear_error_c3_nm,
             tooth_factors,

@@ -40,6 +40,10 @@ pub struct MeshState {
     /// Apart because the pair in mesh has no tooth to touch (broken through): no flank
     /// can be touched until the next pair comes into mesh.
     pub toothless: bool,
+    /// On its flank, the flanks still overlapping, but the no-pull law has clipped the
+    /// force to zero (the damper would pull as the teeth separate): no force until it
+    /// pushes again or the overlap ends.
+    pub clipped: bool,
 }
 
 impl MeshState {
@@ -49,11 +53,22 @@ impl MeshState {
         two_pairs: false,
         factor_bits: 0x3FF0_0000_0000_0000,
         toothless: false,
+        clipped: false,
     };
 
     /// The share of the healthy pairs' stiffness the pairs in mesh keep.
     pub fn factor(self) -> f64 {
         f64::from_bits(self.factor_bits)
+    }
+
+    /// The flank whose spring pushes (+1 drive, −1 back), if any: none apart or clipped.
+    pub fn pushing_flank(self) -> Option<f64> {
+        match self.contact {
+            _ if self.clipped => None,
+            Contact::Apart => None,
+            Contact::Drive => Some(1.0),
+            Contact::Back => Some(-1.0),
+        }
     }
 }
 

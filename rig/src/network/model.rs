@@ -26,7 +26,7 @@ use crate::topology::RigTopology;
 
 use super::layout::NetLayout;
 use super::mesh_model::MeshModel;
-use super::mode::{Contact, MeshState, NetMode};
+use super::mode::{MeshState, NetMode};
 
 /// A shaft's constants.
 #[derive(Clone, Debug, PartialEq)]
@@ -251,10 +251,8 @@ impl NetworkModel {
 
     /// The force (N) a mesh in `state` pushes with at `u`; 0 apart.
     pub fn mesh_force_n(&self, mesh: usize, state: MeshState, u: &[f64], speed_rad_s: f64) -> f64 {
-        let flank = match state.contact {
-            Contact::Apart => return 0.0,
-            Contact::Drive => 1.0,
-            Contact::Back => -1.0,
+        let Some(flank) = state.pushing_flank() else {
+            return 0.0;
         };
         let (k, c) = self.meshes[mesh].spring(state);
         let (overlap, rate) = self.overlap(mesh, flank, u, speed_rad_s);
@@ -355,10 +353,8 @@ impl NetworkModel {
     /// (cos θ)') (f = +1 on the drive flank, −1 on the back flank), −r_a F on its driver
     /// and −r_b F on its driven gear.
     fn add_mesh(&self, a: &mut DMatrix<f64>, mesh: usize, state: MeshState, speed_rad_s: f64) {
-        let flank = match state.contact {
-            Contact::Apart => return,
-            Contact::Drive => 1.0,
-            Contact::Back => -1.0,
+        let Some(flank) = state.pushing_flank() else {
+            return;
         };
         let force = self.overlap_terms(mesh, flank, speed_rad_s);
         let m = &self.meshes[mesh];
@@ -371,6 +367,29 @@ impl NetworkModel {
                 .collect();
             self.add_torque(a, body, &terms);
         }
+    }
+
+    /// The force of a mesh's `flank` (+1 drive, −1 back) in `state` as a linear form
+    /// (index, coefficient): k·overlap + c·overlap rate, the harmonic pairs turning at
+    /// the driver's share of `speed_rad_s`.
+    pub fn force_terms(
+        &self,
+        mesh: usize,
+        state: MeshState,
+        flank: f64,
+        speed_rad_s: f64,
+    ) -> Vec<(usize, f64)> {
+        let (k, c) = self.meshes[mesh].spring(state);
+        let mut terms: Vec<(usize, f64)> = Vec::new();
+        for (index, stiff, damp) in self.overlap_terms(mesh, flank, speed_rad_s) {
+            let v = k * stiff + c * damp;
+            match terms.iter_mut().find(|(i, _)| *i == index) {
+                Some(t) => t.1 += v,
+                None => terms.push((index, v)),
+            }
+        }
+        terms.retain(|&(_, v)| v != 0.0);
+        terms
     }
 
     /// The overlap of a mesh's `flank` (+1 drive, −1 back) as terms (state, coefficient

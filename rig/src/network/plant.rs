@@ -288,7 +288,27 @@ impl NetworkPlant {
         if flank * rate <= 0.0 {
             self.mode.meshes[i].contact = Contact::Apart;
             self.mode.meshes[i].two_pairs = false;
+            self.mode.meshes[i].clipped = false;
+        } else {
+            self.reclip(i);
         }
+    }
+
+    /// With the no-pull law, mesh `i` on a flank is clipped where its spring would not
+    /// push there now (as the thesis plant decides at a tooth pass).
+    pub(super) fn reclip(&mut self, i: usize) {
+        let state = self.mode.meshes[i];
+        if !self.model.meshes[i].no_pull || state.contact == Contact::Apart {
+            return;
+        }
+        let pushing = MeshState {
+            clipped: false,
+            ..state
+        };
+        let flank = f64::from(state.contact.sign());
+        let speed = self.harmonic_speed_rad_s;
+        let force = self.model.mesh_force_n(i, pushing, &self.u, speed);
+        self.mode.meshes[i].clipped = flank * force <= 0.0;
     }
 
     /// The pair zone mesh `i`'s driver enters at a tooth pass: the next period's first
@@ -470,11 +490,9 @@ impl NetworkPlant {
             .map(|i| {
                 let state = self.mode.meshes[i];
                 let (k, _) = self.model.meshes[i].spring(state);
-                let overlap = match state.contact {
-                    Contact::Apart => 0.0,
-                    Contact::Drive => self.model.overlap(i, 1.0, u, speed).0,
-                    Contact::Back => self.model.overlap(i, -1.0, u, speed).0,
-                };
+                let overlap = state
+                    .pushing_flank()
+                    .map_or(0.0, |flank| self.model.overlap(i, flank, u, speed).0);
                 0.5 * k * overlap * overlap
             })
             .sum();

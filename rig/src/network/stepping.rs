@@ -129,10 +129,12 @@ impl NetworkPlant {
         if factor == 0.0 {
             state.contact = Contact::Apart;
             state.toothless = true;
+            state.clipped = false;
             return;
         }
         state.contact = flank;
         state.toothless = false;
+        state.clipped = false;
         let (_, approach_m_s) = self.model.deflection(i, &self.u);
         // The pair that strikes: the one coming into mesh in a double-pair stretch.
         let teeth = self.model.meshes[i].pair_teeth(zone.div_euclid(2));
@@ -183,6 +185,7 @@ impl NetworkPlant {
             state.contact = Contact::Apart;
             state.two_pairs = false;
             state.toothless = true;
+            state.clipped = false;
             return;
         }
         let flank = state.contact.sign();
@@ -194,6 +197,8 @@ impl NetworkPlant {
             let speed = self.harmonic_speed_rad_s;
             if flank * self.model.overlap(i, flank, &self.u, speed).0 < 0.0 {
                 self.mode.meshes[i] = MeshState::APART;
+            } else {
+                self.reclip(i);
             }
         }
     }
@@ -256,7 +261,10 @@ impl NetworkPlant {
             NetEvent::Leave(i) => {
                 self.mode.meshes[i].contact = Contact::Apart;
                 self.mode.meshes[i].two_pairs = false;
+                self.mode.meshes[i].clipped = false;
             }
+            NetEvent::Unload(i) => self.mode.meshes[i].clipped = true,
+            NetEvent::Reload(i) => self.mode.meshes[i].clipped = false,
             NetEvent::ZoneEnd(i) | NetEvent::ZoneStart(i) => {
                 self.zones[i] += if matches!(event, NetEvent::ZoneEnd(_)) {
                     1

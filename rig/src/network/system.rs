@@ -81,7 +81,7 @@ impl SystemCache {
         let a = model.system_matrix(mode, &self.rates);
         let padded = model.layout.padded();
         let step = padded_columns(&exp_step(model, &a, self.step_s, self.rho), padded);
-        let events = event_forms(model, mode, &a);
+        let events = event_forms(model, mode, &a, self.rates.harmonic_rad_s);
         let a_columns = padded_columns(&a, padded);
         self.built.push(ModeSystem {
             a_columns,
