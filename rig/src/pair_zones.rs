@@ -23,6 +23,10 @@ pub struct PairZones {
     starts: Vec<f64>,
     /// Stiffness level of each zone.
     levels: Vec<PairZone>,
+    /// The double-pair fraction f of the pitch (the sharp change into one pair).
+    double_fraction: f64,
+    /// The zone of each period that starts at the period's start (the tooth pass).
+    entry: usize,
 }
 
 impl PairZones {
@@ -52,7 +56,31 @@ impl PairZones {
             origin: -w / 2.0,
             starts,
             levels,
+            double_fraction: f,
+            // The rising staircase is centred on the period's start: its middle step
+            // starts there (−w/2 + (steps/2)·(w/steps) = 0 exactly).
+            entry: usize::from(steps / 2),
         }
+    }
+
+    /// The zone that starts at the start of period `period` (a tooth pass; the pair
+    /// that enters there takes the load from then on).
+    pub fn entering(&self, period: i64) -> i64 {
+        period * self.len() + self.entry as i64
+    }
+
+    /// Whether zone `index` starts at a period's start (a tooth pass).
+    pub fn starts_period(&self, index: i64) -> bool {
+        index.rem_euclid(self.len()) as usize == self.entry
+    }
+
+    /// The zone of the sharp division (w = 0: 2p two pairs, pairs p − 1 and p; 2p + 1 pair
+    /// p alone) that holds zone `index`'s midpoint: which pairs a zone's teeth are.
+    pub fn sharp(&self, index: i64) -> i64 {
+        let (start, end) = self.bounds(index);
+        let middle = 0.5 * (start + end);
+        let period = middle.floor();
+        2 * period as i64 + i64::from(middle - period >= self.double_fraction)
     }
 
     fn len(&self) -> i64 {

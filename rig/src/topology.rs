@@ -56,6 +56,11 @@ pub struct Mesh {
     pub pressure_angle_deg: f64,
     /// Total circular backlash at the pitch circles (mm).
     pub backlash_mm: f64,
+    /// Increase of the operating centre distance over the standard m(z₁ + z₂)/2 (mm; 0:
+    /// standard), where the contact ratio is taken (the 1983 rig's backlash is the
+    /// 1 mm shift's, 2ΔC tan α).
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub centre_distance_shift_mm: f64,
     /// Stiffness of one tooth pair along the line of action (N/m).
     pub stiffness_n_per_m: f64,
     /// Damping along the line of action (N s/m).
@@ -68,6 +73,11 @@ pub struct Mesh {
     pub contact_law: ContactLaw,
     /// Stiffness and damping of two pairs over one pair's (with `pairs` alternating).
     pub double_pair_ratio: f64,
+    /// Width of each change between one and two pairs as a fraction of the tooth pitch
+    /// (0: sharp; alternating pairs only), centred on the geometric change, as a
+    /// staircase of four equal steps (`rig::pair_zones`; ISO 6336-1's gradual load take-up).
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub stiffness_smoothing: f64,
     /// Addendum over the module (standard teeth: 1), for the contact ratio.
     pub addendum_coefficient: f64,
     /// Backlash variation C1: the free play b(1 − C1 cos θ) once per revolution of the
@@ -127,17 +137,19 @@ impl Mesh {
         0.5 * self.backlash_mm * 1e-3 * self.pressure_angle_deg.to_radians().cos()
     }
 
-    /// Transverse contact ratio ε of standard gears at the standard centre distance:
-    /// (√(r_a1² − r_b1²) + √(r_a2² − r_b2²) − a sin α) / (π m cos α).
+    /// Transverse contact ratio ε of standard gears at the operating centre distance
+    /// a = m(z₁ + z₂)/2 + ΔC, operating pressure angle cos α_w = (r_b1 + r_b2)/a:
+    /// (√(r_a1² − r_b1²) + √(r_a2² − r_b2²) − a sin α_w) / (π m cos α).
     pub fn contact_ratio(&self) -> f64 {
         let alpha = self.pressure_angle_deg.to_radians();
         let m = self.module_m;
         let [rb1, rb2] = self.base_radii_m();
         let [z1, z2] = self.teeth.map(f64::from);
         let ra = |z: f64| m * z / 2.0 + self.addendum_coefficient * m;
-        let centre = m * (z1 + z2) / 2.0;
+        let centre = m * (z1 + z2) / 2.0 + self.centre_distance_shift_mm * 1e-3;
+        let alpha_w = ((rb1 + rb2) / centre).clamp(-1.0, 1.0).acos();
         let path = (ra(z1).powi(2) - rb1 * rb1).sqrt() + (ra(z2).powi(2) - rb2 * rb2).sqrt()
-            - centre * alpha.sin();
+            - centre * alpha_w.sin();
         path / (std::f64::consts::PI * m * alpha.cos())
     }
 

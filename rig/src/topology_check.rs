@@ -242,6 +242,40 @@ impl RigTopology {
             ));
         }
         self.check_faults(i)?;
+        if !(0.0..=m.module_m * 1e3).contains(&m.centre_distance_shift_mm) {
+            return Err(fault(
+                "mesh",
+                i,
+                "centre_distance_shift_mm",
+                format!(
+                    "{}: 0 to one module ({} mm): the teeth must still reach each other",
+                    m.centre_distance_shift_mm,
+                    m.module_m * 1e3
+                ),
+            ));
+        }
+        if !(0.0..=1.0).contains(&m.stiffness_smoothing) {
+            return Err(fault(
+                "mesh",
+                i,
+                "stiffness_smoothing",
+                format!(
+                    "{}: a fraction of the tooth pitch, 0 to 1",
+                    m.stiffness_smoothing
+                ),
+            ));
+        }
+        if m.stiffness_smoothing > 0.0 && m.pairs != crate::options::MeshPairs::Alternating {
+            return Err(fault(
+                "mesh",
+                i,
+                "stiffness_smoothing",
+                format!(
+                    "{}: smooths the changes between one and two pairs, which need pairs = \"alternating\"",
+                    m.stiffness_smoothing
+                ),
+            ));
+        }
         let ratio = m.contact_ratio();
         if m.pairs == crate::options::MeshPairs::Alternating && !(1.0..2.0).contains(&ratio) {
             return Err(fault(

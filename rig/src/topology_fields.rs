@@ -30,13 +30,18 @@ const SHAFT: [(&str, &str, &str); 2] = [
     ("stiffness_nm_per_rad", "N m/rad", "torsional stiffness"),
     ("damping_nms_per_rad", "N m s/rad", "torsional damping"),
 ];
-const MESH: [(&str, &str, &str); 15] = [
+const MESH: [(&str, &str, &str); 17] = [
     ("module_m", "m", "module"),
     ("pressure_angle_deg", "deg", "pressure angle"),
     (
         "backlash_mm",
         "mm",
         "total circular backlash at the pitch circles",
+    ),
+    (
+        "centre_distance_shift_mm",
+        "mm",
+        "operating centre distance over the standard, for the contact ratio",
     ),
     (
         "stiffness_n_per_m",
@@ -50,6 +55,11 @@ const MESH: [(&str, &str, &str); 15] = [
         "two pairs' stiffness over one pair's",
     ),
     ("addendum_coefficient", "1", "addendum over the module"),
+    (
+        "stiffness_smoothing",
+        "1",
+        "width of each one/two-pair change over the pitch (0: sharp)",
+    ),
     (
         "backlash_variation",
         "1",
@@ -273,10 +283,12 @@ impl RigTopology {
                     "module_m" => Some(&mut m.module_m),
                     "pressure_angle_deg" => Some(&mut m.pressure_angle_deg),
                     "backlash_mm" => Some(&mut m.backlash_mm),
+                    "centre_distance_shift_mm" => Some(&mut m.centre_distance_shift_mm),
                     "stiffness_n_per_m" => Some(&mut m.stiffness_n_per_m),
                     "damping_ns_per_m" => Some(&mut m.damping_ns_per_m),
                     "double_pair_ratio" => Some(&mut m.double_pair_ratio),
                     "addendum_coefficient" => Some(&mut m.addendum_coefficient),
+                    "stiffness_smoothing" => Some(&mut m.stiffness_smoothing),
                     "backlash_variation" => Some(&mut m.backlash_variation),
                     "te_once_per_rev_um" => Some(&mut m.te_once_per_rev_um),
                     "run_out_driver_um" => Some(&mut m.run_out_driver_um),

@@ -49,6 +49,7 @@ pub(super) fn mesh(
             .as_ref()
             .map_or(DEFAULT_PRESSURE_ANGLE_DEG, |a| *a.get_ref()),
         backlash_mm: *m.backlash_mm.get_ref(),
+        centre_distance_shift_mm: or(&m.centre_distance_shift_mm, 0.0),
         stiffness_n_per_m: stiffness.0,
         potential_energy: stiffness.2,
         damping_ns_per_m: or(&m.damping_ns_per_m, 0.0),
@@ -56,6 +57,7 @@ pub(super) fn mesh(
         contact_law: contact_law(src, m)?,
         double_pair_ratio: or(&m.double_pair_ratio, stiffness.1),
         addendum_coefficient: or(&m.addendum_coefficient, 1.0),
+        stiffness_smoothing: or(&m.stiffness_smoothing, 0.0),
         backlash_variation: or(&m.backlash_variation, 0.0),
         te_once_per_rev_um: or(&m.te_once_per_rev_um, 0.0),
         te_mesh_frequency_um: or(&m.te_mesh_frequency_um, 0.0),

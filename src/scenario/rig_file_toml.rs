@@ -114,6 +114,10 @@ pub struct MeshToml {
     pub pressure_angle_deg: Option<Spanned<f64>>,
     /// Total circular backlash at the pitch circles (mm).
     pub backlash_mm: Spanned<f64>,
+    /// Operating centre distance over the standard (mm), for the contact ratio; 0 when
+    /// left out.
+    #[serde(default)]
+    pub centre_distance_shift_mm: Option<Spanned<f64>>,
     /// Stiffness of one tooth pair along the line of action (N/m); left out, the
     /// potential-energy method gives it from `face_width_m` (docs/faults.md).
     #[serde(default)]
@@ -144,6 +148,9 @@ pub struct MeshToml {
     /// Two pairs' stiffness over one's; 2 when left out.
     #[serde(default)]
     pub double_pair_ratio: Option<Spanned<f64>>,
+    /// Width of each change between one and two pairs over the pitch; 0 when left out.
+    #[serde(default)]
+    pub stiffness_smoothing: Option<Spanned<f64>>,
     /// Addendum over the module; 1 when left out.
     #[serde(default)]
     pub addendum_coefficient: Option<Spanned<f64>>,

@@ -13,6 +13,7 @@
 use nalgebra::{DMatrix, DVector};
 
 use crate::error::RigError;
+use crate::mode::PairZone;
 use crate::topology_modes::add_coupling;
 
 use super::mode::{Contact, MeshState};
@@ -33,12 +34,12 @@ pub struct Equilibrium {
 }
 
 /// The steady state at `speed_rad_s` of the motor's body and `load_nm` on the brake,
-/// each mesh with `two_pairs` as given.
+/// each mesh's pairs at `levels`.
 pub fn equilibrium(
     model: &NetworkModel,
     speed_rad_s: f64,
     load_nm: f64,
-    two_pairs: &[bool],
+    levels: &[PairZone],
 ) -> Result<Equilibrium, RigError> {
     let count = model.meshes.len();
     for combination in 0..3_usize.pow(count as u32) {
@@ -46,7 +47,7 @@ pub fn equilibrium(
             .map(|i| MeshState {
                 contact: [Contact::Drive, Contact::Back, Contact::Apart]
                     [combination / 3_usize.pow(i as u32) % 3],
-                two_pairs: two_pairs[i],
+                level: levels[i],
                 ..MeshState::APART
             })
             .collect();
@@ -169,10 +170,10 @@ pub fn assembly_preload_nm(
     locked_nm: f64,
 ) -> Result<f64, RigError> {
     let mut trial = model.clone();
-    let two_pairs = vec![false; model.meshes.len()];
+    let levels = vec![PairZone::ONE; model.meshes.len()];
     let mut carried = |preload: f64| -> Result<(f64, Vec<MeshState>), RigError> {
         trial.shafts[shaft].preload_nm = preload;
-        let rest = equilibrium(&trial, 0.0, 0.0, &two_pairs)?;
+        let rest = equilibrium(&trial, 0.0, 0.0, &levels)?;
         let s = &trial.shafts[shaft];
         let [a, b] = s.between;
         let twist = rest.angles_rad[a] - rest.angles_rad[b];

@@ -3,7 +3,9 @@
 //! run-outs, its pair zones, and each tooth's stiffness factor where a tooth is faulted.
 
 use crate::mesh_stiffness::PairGeometry;
+use crate::mode::PairZone;
 use crate::options::MeshPairs;
+use crate::pair_zones::PairZones;
 use crate::spacing::mesh_spacing_m;
 use crate::tooth_fault::{FaultedGear, ToothFault, tooth_factors};
 use crate::topology::Mesh;
@@ -31,8 +33,9 @@ pub struct MeshModel {
     pub double_pair_ratio: f64,
     /// The driver's tooth pitch (rad).
     pub pitch_rad: f64,
-    /// Share of each tooth period with two pairs in contact (ε − 1).
-    pub two_pair_share: f64,
+    /// The pair zones of a tooth period: two pairs over the first ε − 1 of it (each
+    /// change a staircase where the stiffness is smoothed), one pair over the rest.
+    pub zones: PairZones,
     /// The driver's teeth z.
     pub teeth: f64,
     /// The driver's speed per unit set speed (signed).
@@ -95,7 +98,10 @@ impl MeshModel {
             alternating: m.pairs == MeshPairs::Alternating,
             double_pair_ratio: m.double_pair_ratio,
             pitch_rad: 2.0 * std::f64::consts::PI / f64::from(m.teeth[0]),
-            two_pair_share: (m.contact_ratio() - 1.0).clamp(0.0, 1.0),
+            zones: PairZones::new(
+                (m.contact_ratio() - 1.0).clamp(0.0, 1.0),
+                m.stiffness_smoothing,
+            ),
             teeth: f64::from(m.teeth[0]),
             share: speed_ratio[m.gears[0]],
             variation_m: m.half_backlash_m() * m.backlash_variation,
@@ -122,16 +128,28 @@ impl MeshModel {
             + self.te_once_m
             + self.te_mesh_m
             + self.run_out_driven_m
-            + self.zone_spacing_m(0)
+            + self.zone_spacing_m(self.zones.zone_at(0.0))
+    }
+
+    /// The stiffness level in pair zone `zone`: one pair, two, or a step between (one
+    /// pair always where pairs do not alternate).
+    pub fn level(&self, zone: i64) -> PairZone {
+        if self.alternating {
+            self.zones.level(zone)
+        } else {
+            PairZone::ONE
+        }
+    }
+
+    /// The pair that comes into mesh in pair zone `zone`'s tooth period (the one that
+    /// strikes in a double-pair stretch).
+    pub fn pair_of_zone(&self, zone: i64) -> i64 {
+        self.zones.sharp(zone).div_euclid(2)
     }
 
     /// Stiffness (N/m) and damping (N s/m) in `state`.
     pub fn spring(&self, state: MeshState) -> (f64, f64) {
-        let ratio = if state.two_pairs {
-            self.double_pair_ratio
-        } else {
-            1.0
-        };
+        let ratio = 1.0 + (self.double_pair_ratio - 1.0) * state.level.share_of_second_pair();
         let factor = state.factor();
         (
             ratio * self.stiffness_n_per_m * factor,
@@ -162,9 +180,11 @@ impl MeshModel {
         tooth(&self.spacing_m[0]) + tooth(&self.spacing_m[1])
     }
 
-    /// The spacing error in pair zone `zone` (m): its pair's, or where two pairs share the
+    /// The spacing error in pair zone `zone` (m), by the sharp zone holding it: its
+    /// pair's, or where two pairs share the
     /// load, their mean weighted by their stiffness factors (both pairs touching).
     pub fn zone_spacing_m(&self, zone: i64) -> f64 {
+        let zone = self.zones.sharp(zone);
         let pair = zone.div_euclid(2);
         if !(self.alternating && zone.rem_euclid(2) == 0) {
             return self.pair_spacing_m(pair);
@@ -182,11 +202,13 @@ impl MeshModel {
         [driver.len(), driven.len()].map(|z| pair.rem_euclid(z as i64) as u32 + 1)
     }
 
-    /// The stiffness factor in pair zone `zone` (2p: pairs p − 1 and p share the load
+    /// The stiffness factor in pair zone `zone`, by the sharp zone holding it (2p: pairs
+    /// p − 1 and p share the load
     /// where pairs alternate, pair p alone over the first ε − 1 of its period where one
     /// pair is modelled; 2p + 1: pair p alone over the rest, its single-contact stretch,
     /// where a pit acts too).
     pub fn zone_factor(&self, zone: i64) -> f64 {
+        let zone = self.zones.sharp(zone);
         let pair = zone.div_euclid(2);
         if zone.rem_euclid(2) == 1 {
             self.pair_factor(pair) * factor_of(&self.single_stretch_factors, pair)

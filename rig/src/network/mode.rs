@@ -2,7 +2,7 @@
 //! pairs (their stiffness scaled where a faulted tooth is in mesh), and the motor linear
 //! or held at a torque limit.
 
-use crate::mode::MotorMode;
+use crate::mode::{MotorMode, PairZone};
 use crate::topology::MAX_MESHES;
 
 /// How a mesh's teeth meet.
@@ -32,8 +32,9 @@ impl Contact {
 pub struct MeshState {
     /// Which flank, if any.
     pub contact: Contact,
-    /// Two pairs share the load (alternating pairs only).
-    pub two_pairs: bool,
+    /// The pairs in mesh: one, two (alternating pairs only), or a step of a smoothed
+    /// change between them.
+    pub level: PairZone,
     /// The share of the healthy pairs' stiffness the pairs in mesh keep (a tooth fault;
     /// 1 healthy), as the bits of an f64 so that modes hash.
     pub factor_bits: u64,
@@ -50,7 +51,7 @@ impl MeshState {
     /// Apart, one pair, healthy.
     pub const APART: Self = Self {
         contact: Contact::Apart,
-        two_pairs: false,
+        level: PairZone::ONE,
         factor_bits: 0x3FF0_0000_0000_0000,
         toothless: false,
         clipped: false,

@@ -4,6 +4,7 @@
 use std::f64::consts::PI;
 
 use crate::error::RigError;
+use crate::mode::PairZone;
 use crate::schedule::Schedule;
 use crate::taylor::{MAX_RHO_H, TAYLOR_ORDER};
 use crate::topology::RigTopology;
@@ -166,23 +167,19 @@ impl NetworkPlant {
             NetworkStart::Rest => (0.0, self.schedule.load_nm.value_at(0.0)),
         };
         let l = self.model.layout;
-        let mut two_pairs = vec![false; self.model.meshes.len()];
-        let mut state = equilibrium(&self.model, speed_rad_s, load_nm, &two_pairs)?;
+        let mut levels = vec![PairZone::ONE; self.model.meshes.len()];
+        let mut state = equilibrium(&self.model, speed_rad_s, load_nm, &levels)?;
         for _ in 0..3 {
             self.u[..l.bodies].copy_from_slice(&state.angles_rad);
             self.set_zones_from_angles();
-            let zones: Vec<bool> = self.zones.iter().map(|q| q % 2 == 0).collect();
-            let alternating = self.model.meshes.iter().map(|m| m.alternating);
-            let now: Vec<bool> = zones
-                .iter()
-                .zip(alternating)
-                .map(|(z, a)| *z && a)
+            let now: Vec<PairZone> = (0..levels.len())
+                .map(|i| self.model.meshes[i].level(self.zones[i]))
                 .collect();
-            if now == two_pairs {
+            if now == levels {
                 break;
             }
-            two_pairs = now;
-            state = equilibrium(&self.model, speed_rad_s, load_nm, &two_pairs)?;
+            levels = now;
+            state = equilibrium(&self.model, speed_rad_s, load_nm, &levels)?;
         }
         self.u[..l.bodies].copy_from_slice(&state.angles_rad);
         for i in 0..l.bodies {
@@ -287,7 +284,7 @@ impl NetworkPlant {
         }
         if flank * rate <= 0.0 {
             self.mode.meshes[i].contact = Contact::Apart;
-            self.mode.meshes[i].two_pairs = false;
+            self.mode.meshes[i].level = PairZone::ONE;
             self.mode.meshes[i].clipped = false;
         } else {
             self.reclip(i);
@@ -316,32 +313,27 @@ impl NetworkPlant {
     fn zone_after_pass(&self, i: usize) -> i64 {
         let m = &self.model.meshes[i];
         let period = (self.model.absolute_angle_rad(m.gears[0], &self.u) / m.pitch_rad).round();
+        let entering = m.zones.entering(period as i64);
         if m.share > 0.0 {
-            2 * period as i64
+            entering
         } else {
-            2 * period as i64 - 1
+            entering - 1
         }
     }
 
-    /// The pair zone mesh `i`'s driver is in: 2k with two pairs, 2k + 1 with one.
+    /// The pair zone mesh `i`'s driver is in (`rig::pair_zones`: without smoothing 2k
+    /// over the first ε − 1 of period k, 2k + 1 over the rest).
     pub(super) fn zone_at(&self, i: usize) -> i64 {
         let m = &self.model.meshes[i];
         let phase = self.model.absolute_angle_rad(m.gears[0], &self.u) / m.pitch_rad;
-        let period = phase.floor();
-        let single = phase - period >= m.two_pair_share;
-        2 * period as i64 + i64::from(single)
+        m.zones.zone_at(phase)
     }
 
     /// The start and end (rad of the driver) of pair zone `zone` of mesh `i`.
     pub(super) fn zone_bounds(&self, i: usize, zone: i64) -> (f64, f64) {
         let m = &self.model.meshes[i];
-        let period = zone.div_euclid(2) as f64;
-        let split = (period + m.two_pair_share) * m.pitch_rad;
-        if zone.rem_euclid(2) == 0 {
-            (period * m.pitch_rad, split)
-        } else {
-            (split, (period + 1.0) * m.pitch_rad)
-        }
+        let (start, end) = m.zones.bounds(zone);
+        (start * m.pitch_rad, end * m.pitch_rad)
     }
 
     /// Runs `samples` output samples, appending them to `block`: sample n holds the state

@@ -8,7 +8,7 @@
 use std::f64::consts::PI;
 
 use crate::error::RigError;
-use crate::mode::MotorMode;
+use crate::mode::{MotorMode, PairZone};
 use crate::plant::{RELEASE_MARGIN_NM, SWITCH_LIMIT};
 use crate::roots::{first_crossing, may_cross};
 use crate::taylor::TAYLOR_ORDER;
@@ -124,7 +124,7 @@ impl NetworkPlant {
         let zone = self.zones[i];
         let factor = m.zone_factor(zone);
         let state = &mut self.mode.meshes[i];
-        state.two_pairs = m.alternating && zone % 2 == 0;
+        state.level = m.level(zone);
         state.factor_bits = factor.to_bits();
         if factor == 0.0 {
             state.contact = Contact::Apart;
@@ -137,7 +137,8 @@ impl NetworkPlant {
         state.clipped = false;
         let (_, approach_m_s) = self.model.deflection(i, &self.u);
         // The pair that strikes: the one coming into mesh in a double-pair stretch.
-        let teeth = self.model.meshes[i].pair_teeth(zone.div_euclid(2));
+        let m = &self.model.meshes[i];
+        let teeth = m.pair_teeth(m.pair_of_zone(zone));
         self.impacts.push(NetworkImpact {
             time_s: at_s,
             mesh: i,
@@ -179,11 +180,11 @@ impl NetworkPlant {
         }
         let spaced = m.spaced();
         let state = &mut self.mode.meshes[i];
-        state.two_pairs = m.alternating && zone % 2 == 0;
+        state.level = m.level(zone);
         state.factor_bits = factor.to_bits();
         if factor == 0.0 {
             state.contact = Contact::Apart;
-            state.two_pairs = false;
+            state.level = PairZone::ONE;
             state.toothless = true;
             state.clipped = false;
             return;
@@ -191,7 +192,7 @@ impl NetworkPlant {
         let flank = state.contact.sign();
         // At a tooth pass with the thesis's tooth shifting, the pass itself decides
         // whether the new pair stays in contact (`shift_tooth`, next at this instant).
-        let tooth_pass_decides = m.tooth_shifting && zone.rem_euclid(2) == 0;
+        let tooth_pass_decides = m.tooth_shifting && m.zones.starts_period(zone);
         if spaced && flank != 0 && !tooth_pass_decides {
             let flank = f64::from(flank);
             let speed = self.harmonic_speed_rad_s;
@@ -260,7 +261,7 @@ impl NetworkPlant {
             }
             NetEvent::Leave(i) => {
                 self.mode.meshes[i].contact = Contact::Apart;
-                self.mode.meshes[i].two_pairs = false;
+                self.mode.meshes[i].level = PairZone::ONE;
                 self.mode.meshes[i].clipped = false;
             }
             NetEvent::Unload(i) => self.mode.meshes[i].clipped = true,

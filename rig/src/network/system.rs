@@ -136,7 +136,11 @@ pub fn fastest_rate(model: &NetworkModel) -> f64 {
     let mut mode = NetMode::apart();
     for (state, m) in mode.meshes.iter_mut().zip(&model.meshes) {
         state.contact = super::mode::Contact::Drive;
-        state.two_pairs = m.alternating;
+        state.level = if m.alternating {
+            crate::mode::PairZone::TWO
+        } else {
+            crate::mode::PairZone::ONE
+        };
     }
     let a = model.system_matrix(&mode, &SegmentRates::default());
     if a.iter().all(|x| x.is_finite()) {
