@@ -108,7 +108,7 @@ fn write_units(xml: &mut String, vars: &[Variable]) -> Result<(), FmuError> {
         .filter(|u| vars.iter().any(|v| v.unit == u.name))
     {
         let mut base = String::new();
-        for (symbol, power) in ["kg", "m", "s", "rad"].iter().zip(u.exponents) {
+        for (symbol, power) in ["kg", "m", "s", "A", "rad"].iter().zip(u.exponents) {
             if power != 0 {
                 let _ = write!(base, r#" {symbol}="{power}""#);
             }
