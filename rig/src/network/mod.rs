@@ -13,7 +13,7 @@
 //! state at a set speed and load (and at rest, a loop's locked torque carried).
 //! `block.rs` the samples and impacts a run gives, `columns.rs` them as named columns.
 //! `plant.rs` the plant, `segment.rs` its set points over time, `stepping.rs` its exact
-//! steps and switches.
+//! steps and switches, `products.rs` the matrix–state products they take.
 
 mod block;
 mod columns;
@@ -24,6 +24,7 @@ mod mesh_model;
 mod mode;
 mod model;
 mod plant;
+mod products;
 mod segment;
 mod stepping;
 mod system;

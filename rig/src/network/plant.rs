@@ -73,8 +73,9 @@ pub struct NetworkPlant {
     pub(super) edge: Vec<(f64, f64)>,
     /// The same at the step's end.
     pub(super) next_edge: Vec<(f64, f64)>,
-    /// Scratch: the step's end state and the Taylor vectors.
+    /// Scratch: the step's end state, the fused step's rows and the Taylor vectors.
     pub(super) next: Vec<f64>,
+    pub(super) fused_out: Vec<f64>,
     pub(super) taylor: Vec<Vec<f64>>,
 }
 
@@ -151,6 +152,7 @@ impl NetworkPlant {
             edge: Vec::new(),
             next_edge: Vec::new(),
             next: vec![0.0; len],
+            fused_out: Vec::new(),
             taylor: vec![vec![0.0; len]; TAYLOR_ORDER + 1],
         };
         plant.start(start)?;

@@ -17,6 +17,7 @@ use super::block::NetworkImpact;
 use super::events::{EventForm, NetEvent, Target};
 use super::mode::{Contact, MeshState};
 use super::plant::NetworkPlant;
+use super::products;
 use super::system::{ModeSystem, SystemCache};
 
 impl NetworkPlant {
@@ -39,13 +40,18 @@ impl NetworkPlant {
             let system = cache.get(&self.model, &self.mode);
             let span_s = left * self.step_s;
             if left == 1.0 {
-                let forcing = self.model.layout.mechanical();
-                column_major_product(&system.step, &self.u, &mut self.next, forcing);
+                self.fused_step(system);
             } else {
                 self.expand(system, span_s);
                 evaluate(&self.taylor, 1.0, &mut self.next);
+                self.next_edge.clear();
+                self.next_edge.extend(
+                    system
+                        .events
+                        .iter()
+                        .map(|form| (form.value(&self.next), form.rate(&self.next))),
+                );
             }
-            self.next_edge.clear();
             let Some((s, event)) = self.first_switch(system, span_s, left == 1.0) else {
                 std::mem::swap(&mut self.u, &mut self.next);
                 std::mem::swap(&mut self.edge, &mut self.next_edge);
@@ -66,9 +72,29 @@ impl NetworkPlant {
         })
     }
 
+    /// A whole step in one product: `self.next` the state at its end (the forcing states
+    /// advanced apart), `self.next_edge` each switching function's value and rate there.
+    fn fused_step(&mut self, system: &ModeSystem) {
+        let mechanical = self.model.layout.mechanical();
+        if self.fused_out.len() < system.fused_rows {
+            self.fused_out.resize(system.fused_rows, 0.0);
+        }
+        products::rows(&system.fused, system.fused_rows, &self.u, &mut self.fused_out);
+        self.next[..mechanical].copy_from_slice(&self.fused_out[..mechanical]);
+        system.advance_forcing(mechanical, &self.u, &mut self.next);
+        self.next_edge.clear();
+        let (values, rates) = (mechanical, mechanical + system.row_events);
+        for (form, slot) in system.events.iter().zip(&system.row_slot) {
+            self.next_edge.push(match slot {
+                Some(j) => (self.fused_out[values + j], self.fused_out[rates + j]),
+                None => (form.value(&self.next), form.rate(&self.next)),
+            });
+        }
+    }
+
     /// The earliest crossing (fraction of the span, event) of any switching function
-    /// over the span from `self.u` to `self.next`; expands the span when one may cross.
-    /// Each function's value and rate at the span's end are kept for the next step.
+    /// over the span from `self.u` to `self.next` (their values and rates there in
+    /// `self.next_edge`, kept for the next step); expands the span when one may cross.
     fn first_switch(
         &mut self,
         system: &ModeSystem,
@@ -85,8 +111,7 @@ impl NetworkPlant {
             } else {
                 (form.value(&self.u), form.rate(&self.u))
             };
-            let end = (form.value(&self.next), form.rate(&self.next));
-            self.next_edge.push(end);
+            let end = self.next_edge[k];
             let g0 = (value_0 - target).min(0.0);
             let g1 = end.0 - target;
             if !may_cross(g0, rate_0 * span_s, g1, end.1 * span_s) {
@@ -235,7 +260,7 @@ impl NetworkPlant {
         for k in 1..=TAYLOR_ORDER {
             let (done, rest) = self.taylor.split_at_mut(k);
             let out = &mut rest[0];
-            column_major_product(&system.a_columns, &done[k - 1], out, forcing);
+            products::square(&system.a_columns, &done[k - 1], out, forcing);
             let scale = span_s / k as f64;
             for x in out.iter_mut() {
                 *x *= scale;
@@ -292,95 +317,6 @@ fn evaluate(taylor: &[Vec<f64>], s: f64, u: &mut [f64]) {
     for v in taylor[..TAYLOR_ORDER].iter().rev() {
         for (x, c) in u.iter_mut().zip(v) {
             *x = *x * s + c;
-        }
-    }
-}
-
-/// out = M u for a square M stored as columns padded to the state's padded length (a
-/// multiple of 4, `u.len()`), whose rows from `forcing` on are 0 in the columns before it
-/// (the forcing states evolve by themselves), columns whose weight is 0 passed over. Fused
-/// multiply-adds (one rounding each, the same bytes on every CPU, `crate::fma`): compiled
-/// for AVX2 and FMA where the CPU has them, else for baseline x86-64.
-fn column_major_product(m: &[f64], u: &[f64], out: &mut [f64], forcing: usize) {
-    #[cfg(target_arch = "x86_64")]
-    if crate::fma::available() {
-        // SAFETY: the CPU has AVX2 and FMA, checked at run time.
-        return unsafe { product_v3(m, u, out, forcing) };
-    }
-    product_any(m, u, out, forcing);
-}
-
-/// [`product_any`] compiled for AVX2 and FMA.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma")]
-fn product_v3(m: &[f64], u: &[f64], out: &mut [f64], forcing: usize) {
-    product_any(m, u, out, forcing);
-}
-
-#[inline(always)]
-fn product_any(m: &[f64], u: &[f64], out: &mut [f64], forcing: usize) {
-    match u.len() {
-        8 => product_of::<8>(m, u, out),
-        12 => product_of::<12>(m, u, out),
-        16 => product_of::<16>(m, u, out),
-        20 => product_of::<20>(m, u, out),
-        24 => product_of::<24>(m, u, out),
-        28 => product_of::<28>(m, u, out),
-        32 => product_of::<32>(m, u, out),
-        36 => product_of::<36>(m, u, out),
-        40 => product_of::<40>(m, u, out),
-        _ => product_rows(m, u, out, forcing),
-    }
-}
-
-/// [`product_any`] for a state of padded length `N`: the result summed in registers over
-/// the columns (a fixed shape the compiler unrolls), every row of every column taken (the
-/// forcing rows of the mechanical columns are exact zeros, which add nothing).
-#[inline(always)]
-fn product_of<const N: usize>(m: &[f64], u: &[f64], out: &mut [f64]) {
-    // Two chains (the columns taken alternately, zero weights passed over) halve the
-    // latency of the multiply-adds.
-    let (mut even, mut odd) = ([0.0; N], [0.0; N]);
-    let mut columns = m.chunks_exact(N).zip(u).filter(|&(_, &x)| x != 0.0);
-    while let Some((c0, &x0)) = columns.next() {
-        for (s, &a) in even.iter_mut().zip(c0) {
-            *s = a.mul_add(x0, *s);
-        }
-        let Some((c1, &x1)) = columns.next() else {
-            break;
-        };
-        for (s, &a) in odd.iter_mut().zip(c1) {
-            *s = a.mul_add(x1, *s);
-        }
-    }
-    for ((o, e), d) in out[..N].iter_mut().zip(even).zip(odd) {
-        *o = e + d;
-    }
-}
-
-/// [`product_any`] for any padded length, the mechanical columns over the mechanical rows
-/// only.
-#[inline(always)]
-fn product_rows(m: &[f64], u: &[f64], out: &mut [f64], forcing: usize) {
-    let padded = u.len();
-    let mechanical_rows = forcing.div_ceil(4) * 4;
-    out.fill(0.0);
-    for (col, (column, &x)) in m.chunks_exact(padded).zip(u).enumerate() {
-        if x == 0.0 {
-            continue;
-        }
-        let rows = if col < forcing {
-            mechanical_rows
-        } else {
-            padded
-        };
-        for (o, a) in out[..rows]
-            .chunks_exact_mut(4)
-            .zip(column[..rows].chunks_exact(4))
-        {
-            for k in 0..4 {
-                o[k] = a[k].mul_add(x, o[k]);
-            }
         }
     }
 }

@@ -16,10 +16,40 @@ use super::model::{NetworkModel, SegmentRates};
 pub struct ModeSystem {
     /// A of u' = A u, column-major, each column padded to the layout's padded length.
     pub a_columns: Vec<f64>,
-    /// e^{A h}, stored as `a_columns`.
-    pub step: Vec<f64>,
+    /// The fused step, column-major with `fused_rows` rows a column: the mechanical rows
+    /// of e^{A h}, then the value and then the rate of each row event (a switching
+    /// function of fixed target) after the step.
+    pub fused: Vec<f64>,
+    /// Rows of each column of `fused` (a multiple of 4).
+    pub fused_rows: usize,
+    /// Per switching function, its slot among the row events (its value at row
+    /// mechanical + slot of the fused step, its rate `row_events` rows further), or
+    /// `None` for a function of the set rotation (its target moves: evaluated apart).
+    pub row_slot: Vec<Option<usize>>,
+    /// Number of row events.
+    pub row_events: usize,
+    /// The forcing block of e^{A h}, its entries that are not zero: (row, column, value).
+    /// The forcing states evolve by themselves, the same in every mode.
+    pub forcing_step: Vec<(usize, usize, f64)>,
     /// The switching functions.
     pub events: Vec<EventForm>,
+}
+
+impl ModeSystem {
+    /// The forcing states at the step's end, from `u` at its start, into `next` (each
+    /// row summed apart: `forcing_step` runs row by row).
+    #[inline]
+    pub fn advance_forcing(&self, mechanical: usize, u: &[f64], next: &mut [f64]) {
+        next[mechanical..].fill(0.0);
+        let mut entries = self.forcing_step.iter().peekable();
+        while let Some(&(row, col, value)) = entries.next() {
+            let mut sum = value * u[col];
+            while let Some(&(_, col, value)) = entries.next_if(|e| e.0 == row) {
+                sum += value * u[col];
+            }
+            next[row] = sum;
+        }
+    }
 }
 
 /// The modes met so far.
@@ -80,16 +110,63 @@ impl SystemCache {
         }
         let a = model.system_matrix(mode, &self.rates);
         let padded = model.layout.padded();
-        let step = padded_columns(&exp_step(model, &a, self.step_s, self.rho), padded);
+        let step = exp_step(model, &a, self.step_s, self.rho);
         let events = event_forms(model, mode, &a, self.rates.harmonic_rad_s);
         let a_columns = padded_columns(&a, padded);
-        self.built.push(ModeSystem {
-            a_columns,
-            step,
-            events,
-        });
+        self.built.push(fused_system(model, a_columns, &step, events));
         self.systems.insert(*mode, self.built.len() - 1);
         self.built.len() - 1
+    }
+}
+
+/// The system of a mode from its A (`a_columns`), e^{A h} (`step`) and switching
+/// functions.
+fn fused_system(
+    model: &NetworkModel,
+    a_columns: Vec<f64>,
+    step: &DMatrix<f64>,
+    events: Vec<EventForm>,
+) -> ModeSystem {
+    let l = &model.layout;
+    let mechanical = l.mechanical();
+    let mut row_slot = Vec::with_capacity(events.len());
+    let mut forms: Vec<&EventForm> = Vec::new();
+    for form in &events {
+        let moving = form.terms.iter().any(|&(i, _)| i == l.phase());
+        row_slot.push((!moving).then_some(forms.len()));
+        if !moving {
+            forms.push(form);
+        }
+    }
+    let row_events = forms.len();
+    let fused_rows = (mechanical + 2 * row_events).div_ceil(4) * 4;
+    let mut fused = vec![0.0; fused_rows * l.padded()];
+    let times_step = |terms: &[(usize, f64)], col: usize| -> f64 {
+        terms.iter().map(|&(i, c)| c * step[(i, col)]).sum()
+    };
+    for col in 0..step.ncols() {
+        let column = &mut fused[col * fused_rows..(col + 1) * fused_rows];
+        for (row, entry) in column[..mechanical].iter_mut().enumerate() {
+            *entry = step[(row, col)];
+        }
+        for (j, form) in forms.iter().enumerate() {
+            column[mechanical + j] = times_step(&form.terms, col);
+            column[mechanical + row_events + j] = times_step(&form.slope, col);
+        }
+    }
+    let forcing_step = (mechanical..step.nrows())
+        .flat_map(|row| (mechanical..step.ncols()).map(move |col| (row, col)))
+        .map(|(row, col)| (row, col, step[(row, col)]))
+        .filter(|&(_, _, value)| value != 0.0)
+        .collect();
+    ModeSystem {
+        a_columns,
+        fused,
+        fused_rows,
+        row_slot,
+        row_events,
+        forcing_step,
+        events,
     }
 }
 
