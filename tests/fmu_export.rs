@@ -86,34 +86,40 @@ fn the_export_holds_description_binary_rig_and_docs_and_is_reproducible() {
     for name in rig::column_names(&rig).iter().skip(1) {
         assert!(xml.contains(&format!(r#"name="{name}""#)), "{name}");
     }
-    let preset = dir.path().join("preset.fmu");
-    let plain = dir.path().join("plain.fmu");
-    for (args, path) in [
-        (["--preset", "basmaji-1983"], &preset),
-        (["--rig", common::rig_file("basmaji-1983").as_str()], &plain),
-    ] {
-        let out = testrig(
-            &[
-                &["fmu"],
-                &args[..],
-                &["--out", path.to_str().expect("path")],
-            ]
-            .concat(),
-        );
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
+    for name in ["basmaji-1983", "basmaji-1983-calibrated"] {
+        let preset = dir.path().join(format!("{name}-preset.fmu"));
+        let plain = dir.path().join(format!("{name}-plain.fmu"));
+        for (args, path) in [
+            (["--preset", name], &preset),
+            (["--rig", common::rig_file(name).as_str()], &plain),
+        ] {
+            let out = testrig(
+                &[
+                    &["fmu"],
+                    &args[..],
+                    &["--out", path.to_str().expect("path")],
+                ]
+                .concat(),
+            );
+            assert!(
+                out.status.success(),
+                "{}",
+                String::from_utf8_lossy(&out.stderr)
+            );
+        }
+        assert_eq!(
+            std::fs::read(&preset).expect("fmu"),
+            std::fs::read(&plain).expect("fmu"),
+            "--preset {name} is its rig file"
         );
     }
-    assert_eq!(
-        std::fs::read(&preset).expect("fmu"),
-        std::fs::read(&plain).expect("fmu"),
-        "--preset basmaji-1983 is the 1983 rig file"
-    );
-    let other = testrig(&["fmu", "--preset", "basmaji-1983-rig", "--out", "x.fmu"]);
+    let other = testrig(&["fmu", "--preset", "basmaji-1983-rgi", "--out", "x.fmu"]);
     assert!(!other.status.success());
-    assert!(String::from_utf8_lossy(&other.stderr).contains("five-inertia plant"));
+    assert!(
+        String::from_utf8_lossy(&other.stderr).contains("did you mean `basmaji-1983-rig`"),
+        "{}",
+        String::from_utf8_lossy(&other.stderr)
+    );
     let bad = testrig(&[
         "fmu",
         "--rig",

@@ -94,7 +94,6 @@ fn product_rows(m: &[f64], u: &[f64], out: &mut [f64], forcing: usize) {
     }
 }
 
-
 /// out[..rows] = M u for M of `rows` rows (a multiple of 4) stored by columns, one column
 /// per state of `u`, columns whose weight is 0 passed over.
 pub fn rows(m: &[f64], rows: usize, u: &[f64], out: &mut [f64]) {

@@ -79,7 +79,12 @@ impl NetworkPlant {
         if self.fused_out.len() < system.fused_rows {
             self.fused_out.resize(system.fused_rows, 0.0);
         }
-        products::rows(&system.fused, system.fused_rows, &self.u, &mut self.fused_out);
+        products::rows(
+            &system.fused,
+            system.fused_rows,
+            &self.u,
+            &mut self.fused_out,
+        );
         self.next[..mechanical].copy_from_slice(&self.fused_out[..mechanical]);
         system.advance_forcing(mechanical, &self.u, &mut self.next);
         self.next_edge.clear();

@@ -113,7 +113,8 @@ impl SystemCache {
         let step = exp_step(model, &a, self.step_s, self.rho);
         let events = event_forms(model, mode, &a, self.rates.harmonic_rad_s);
         let a_columns = padded_columns(&a, padded);
-        self.built.push(fused_system(model, a_columns, &step, events));
+        self.built
+            .push(fused_system(model, a_columns, &step, events));
         self.systems.insert(*mode, self.built.len() - 1);
         self.built.len() - 1
     }
