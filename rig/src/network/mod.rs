@@ -12,7 +12,7 @@
 //! e^{A h} and the events, built on first use and cached. `equilibrium.rs` the steady
 //! state at a set speed and load (and at rest, a loop's locked torque carried).
 //! `block.rs` the samples and impacts a run gives, `columns.rs` them as named columns,
-//! `outputs.rs` what a sample reports in each mode as rows of a matrix over the state.
+//! `outputs.rs` what a sample reports in each mode as linear forms of the state.
 //! `plant.rs` the plant, `segment.rs` its set points over time, `stepping.rs` its exact
 //! steps and switches, `products.rs` the matrix–state products they take.
 

@@ -262,6 +262,15 @@ impl NetworkModel {
         k * overlap + c * rate
     }
 
+    /// The elastic torque (N m) a shaft carries from its first body to its second,
+    /// k(θa − θb) + T0 (what strain gauges on it read).
+    pub fn shaft_torque_nm(&self, shaft: usize, u: &[f64]) -> f64 {
+        let s = &self.shafts[shaft];
+        let l = &self.layout;
+        let [a, b] = s.between;
+        s.stiffness_nm_per_rad * (u[l.angle(a)] - u[l.angle(b)]) + s.preload_nm
+    }
+
     /// The PI loop's command before any limit (N m).
     pub fn controller_nm(&self, u: &[f64]) -> f64 {
         let l = &self.layout;

@@ -1,74 +1,47 @@
-//! What a sample reports, as rows of one matrix per mode over the state: each body's angle
-//! and speed (in its own sense of rotation), each shaft's torque, each mesh's force along
-//! its line of action and the motor's torque (the last two depend on the mode). A sample
-//! is then one product.
+//! What a sample reports that depends on the mode, as linear forms of the state: each
+//! mesh's force along its line of action and the motor's torque (built with each mode's
+//! system, so that a sample is a few sparse products).
 
 use crate::mode::MotorMode;
 
 use super::mode::NetMode;
 use super::model::NetworkModel;
 
-/// The outputs of a sample in one mode.
+/// A linear form of the state: (index, coefficient).
+pub type Form = Vec<(usize, f64)>;
+
+/// The mode-dependent outputs of a sample.
 #[derive(Clone, Debug, Default, PartialEq)]
-pub struct OutputRows {
-    /// Rows of each column (a multiple of 4): angles, speeds, shaft torques, mesh forces,
-    /// motor torque, then zeros.
-    pub rows: usize,
-    /// The matrix, column-major, one column per state of the padded state.
-    pub columns: Vec<f64>,
+pub struct OutputForms {
+    /// Each mesh's force (N): its spring-damper on the flank that pushes; empty apart or
+    /// clipped.
+    pub mesh_force_n: Vec<Form>,
+    /// The motor's torque (N m): the speed loop's command or the limit it is held at;
+    /// empty without a motor.
+    pub motor_torque_nm: Form,
 }
 
-impl OutputRows {
+impl OutputForms {
     /// The outputs of `mode`, the meshes' harmonic pairs turning with the set speed
     /// `speed_rad_s`.
     pub fn of(model: &NetworkModel, mode: &NetMode, speed_rad_s: f64) -> Self {
-        let forms = output_forms(model, mode, speed_rad_s);
-        let rows = forms.len().div_ceil(4) * 4;
-        let mut columns = vec![0.0; rows * model.layout.padded()];
-        for (row, form) in forms.iter().enumerate() {
-            for &(state, c) in form {
-                columns[state * rows + row] += c;
-            }
+        let mesh_force_n = (0..model.meshes.len())
+            .map(|i| {
+                let state = mode.meshes[i];
+                state.pushing_flank().map_or_else(Vec::new, |flank| {
+                    model.force_terms(i, state, flank, speed_rad_s)
+                })
+            })
+            .collect();
+        Self {
+            mesh_force_n,
+            motor_torque_nm: motor_form(model, mode.motor),
         }
-        Self { rows, columns }
     }
 }
 
-/// Each output as a linear form of the state, in the order of [`OutputRows`].
-fn output_forms(model: &NetworkModel, mode: &NetMode, speed_rad_s: f64) -> Vec<Vec<(usize, f64)>> {
-    let l = &model.layout;
-    let mut forms = Vec::new();
-    for i in 0..l.bodies {
-        let sense = model.sense[i];
-        forms.push(vec![
-            (l.angle(i), sense),
-            (l.phase(), sense * model.speed_ratio[i]),
-        ]);
-    }
-    for i in 0..l.bodies {
-        forms.push(vec![(l.speed(i), model.sense[i])]);
-    }
-    for s in &model.shafts {
-        let [a, b] = s.between;
-        let sense = model.sense[a];
-        forms.push(vec![
-            (l.angle(a), sense * s.stiffness_nm_per_rad),
-            (l.angle(b), -sense * s.stiffness_nm_per_rad),
-            (l.unit(), sense * s.preload_nm),
-        ]);
-    }
-    for i in 0..model.meshes.len() {
-        let state = mode.meshes[i];
-        forms.push(state.pushing_flank().map_or_else(Vec::new, |flank| {
-            model.force_terms(i, state, flank, speed_rad_s)
-        }));
-    }
-    forms.push(motor_form(model, mode.motor));
-    forms
-}
-
-/// The motor's torque as a form in `motor` mode (none without a motor).
-fn motor_form(model: &NetworkModel, motor: MotorMode) -> Vec<(usize, f64)> {
+/// The motor's torque as a form in `motor` mode.
+fn motor_form(model: &NetworkModel, motor: MotorMode) -> Form {
     let Some(m) = &model.motor else {
         return Vec::new();
     };
@@ -83,4 +56,10 @@ fn motor_form(model: &NetworkModel, motor: MotorMode) -> Vec<(usize, f64)> {
         MotorMode::LimitHigh => vec![(l.unit(), limit)],
         MotorMode::LimitLow => vec![(l.unit(), -limit)],
     }
+}
+
+/// The value of `form` at `u`.
+#[inline]
+pub fn value(form: &[(usize, f64)], u: &[f64]) -> f64 {
+    form.iter().map(|&(i, c)| c * u[i]).sum()
 }

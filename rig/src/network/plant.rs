@@ -13,8 +13,7 @@ use super::block::{NetworkBlock, NetworkImpact};
 use super::equilibrium::equilibrium;
 use super::mode::{Contact, MeshState, NetMode};
 use super::model::NetworkModel;
-use super::outputs::OutputRows;
-use super::products;
+use super::outputs::{OutputForms, value};
 use super::system::{SystemCache, fastest_rate};
 
 /// Where a run starts.
@@ -78,8 +77,6 @@ pub struct NetworkPlant {
     /// Scratch: the step's end state, the fused step's rows and the Taylor vectors.
     pub(super) next: Vec<f64>,
     pub(super) fused_out: Vec<f64>,
-    /// Scratch: a sample's outputs.
-    pub(super) output: Vec<f64>,
     pub(super) taylor: Vec<Vec<f64>>,
 }
 
@@ -157,7 +154,6 @@ impl NetworkPlant {
             next_edge: Vec::new(),
             next: vec![0.0; len],
             fused_out: Vec::new(),
-            output: Vec::new(),
             taylor: vec![vec![0.0; len]; TAYLOR_ORDER + 1],
         };
         plant.start(start)?;
@@ -395,26 +391,38 @@ impl NetworkPlant {
         })
     }
 
-    /// Appends the current sample to `block`: the mode's outputs `outputs` at the state.
-    fn write_sample(&mut self, outputs: &OutputRows, block: &mut NetworkBlock) {
-        if self.output.len() < outputs.rows {
-            self.output.resize(outputs.rows, 0.0);
-        }
-        products::rows(&outputs.columns, outputs.rows, &self.u, &mut self.output);
+    /// Appends the current sample to `block`, the mode's outputs `outputs`.
+    fn write_sample(&self, outputs: &OutputForms, block: &mut NetworkBlock) {
+        let l = &self.model.layout;
+        let u = &self.u;
+        let phase = u[l.phase()];
         block.time_s.push(self.time_s());
-        let columns = block
+        for (i, (angles, speeds)) in block
             .angle_rad
             .iter_mut()
-            .chain(&mut block.speed_rad_s)
-            .chain(&mut block.shaft_torque_nm)
-            .chain(&mut block.mesh_force_n)
-            .chain(std::iter::once(&mut block.motor_torque_nm));
-        for (column, &value) in columns.zip(&self.output) {
-            column.push(value);
+            .zip(&mut block.speed_rad_s)
+            .enumerate()
+        {
+            let (ratio, sense) = (self.model.speed_ratio[i], self.model.sense[i]);
+            angles.push(sense * (u[l.angle(i)] + ratio * phase));
+            speeds.push(sense * u[l.speed(i)]);
         }
-        for (contacts, state) in block.contact.iter_mut().zip(&self.mode.meshes) {
+        for (i, column) in block.shaft_torque_nm.iter_mut().enumerate() {
+            let body = self.model.shafts[i].between[0];
+            column.push(self.model.sense[body] * self.model.shaft_torque_nm(i, u));
+        }
+        for ((forces, contacts), (form, state)) in block
+            .mesh_force_n
+            .iter_mut()
+            .zip(&mut block.contact)
+            .zip(outputs.mesh_force_n.iter().zip(&self.mode.meshes))
+        {
+            forces.push(value(form, u));
             contacts.push(state.contact.sign());
         }
+        block
+            .motor_torque_nm
+            .push(value(&outputs.motor_torque_nm, u));
     }
 
     /// Time of the current sample (s).

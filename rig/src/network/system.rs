@@ -10,7 +10,7 @@ use crate::matrix_exp::{exp_powers_balanced, forcing_scales, spectral_radius};
 use super::events::{EventForm, event_forms};
 use super::mode::NetMode;
 use super::model::{NetworkModel, SegmentRates};
-use super::outputs::OutputRows;
+use super::outputs::OutputForms;
 
 /// One mode's linear system.
 #[derive(Clone, Debug)]
@@ -35,7 +35,7 @@ pub struct ModeSystem {
     /// The switching functions.
     pub events: Vec<EventForm>,
     /// What a sample reports in this mode.
-    pub outputs: OutputRows,
+    pub outputs: OutputForms,
 }
 
 impl ModeSystem {
@@ -117,7 +117,7 @@ impl SystemCache {
         let events = event_forms(model, mode, &a, self.rates.harmonic_rad_s);
         let a_columns = padded_columns(&a, padded);
         let mut system = fused_system(model, a_columns, &step, events);
-        system.outputs = OutputRows::of(model, mode, self.rates.harmonic_rad_s);
+        system.outputs = OutputForms::of(model, mode, self.rates.harmonic_rad_s);
         self.built.push(system);
         self.systems.insert(*mode, self.built.len() - 1);
         self.built.len() - 1
@@ -172,7 +172,7 @@ fn fused_system(
         row_events,
         forcing_step,
         events,
-        outputs: OutputRows::default(),
+        outputs: OutputForms::default(),
     }
 }
 
