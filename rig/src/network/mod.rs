@@ -11,8 +11,7 @@
 //! included). `events.rs` the switching functions of a mode. `system.rs` per mode
 //! e^{A h} and the events, built on first use and cached. `equilibrium.rs` the steady
 //! state at a set speed and load (and at rest, a loop's locked torque carried).
-//! `block.rs` the samples and impacts a run gives, `columns.rs` them as named columns,
-//! `outputs.rs` what a sample reports in each mode as linear forms of the state.
+//! `block.rs` the samples and impacts a run gives, `columns.rs` them as named columns.
 //! `plant.rs` the plant, `segment.rs` its set points over time, `stepping.rs` its exact
 //! steps and switches, `products.rs` the matrix–state products they take.
 
@@ -24,7 +23,6 @@ mod layout;
 mod mesh_model;
 mod mode;
 mod model;
-mod outputs;
 mod plant;
 mod products;
 mod segment;

@@ -115,8 +115,6 @@ pub struct NetworkModel {
     pub drag_nms_per_rad: Vec<f64>,
     /// Each body's speed per unit speed of the motor's body (signed).
     pub speed_ratio: Vec<f64>,
-    /// Each body's sense of rotation: +1 where it turns the motor's way, −1 against.
-    pub sense: Vec<f64>,
     /// The shafts.
     pub shafts: Vec<ShaftModel>,
     /// The meshes.
@@ -183,7 +181,6 @@ impl NetworkModel {
             layout: NetLayout::new(rig),
             inertia_kgm2,
             drag_nms_per_rad: rig.bodies.iter().map(|b| b.drag_nms_per_rad).collect(),
-            sense: speed_ratio.iter().map(|s| s.signum()).collect(),
             speed_ratio,
             shafts,
             meshes,
@@ -269,6 +266,19 @@ impl NetworkModel {
         let l = &self.layout;
         let [a, b] = s.between;
         s.stiffness_nm_per_rad * (u[l.angle(a)] - u[l.angle(b)]) + s.preload_nm
+    }
+
+    /// The motor's torque (N m) in `motor` mode at `u`; 0 without a motor.
+    pub fn motor_torque_nm(&self, motor: MotorMode, u: &[f64]) -> f64 {
+        let Some(m) = &self.motor else {
+            return 0.0;
+        };
+        let limit = m.limit_nm.unwrap_or(f64::INFINITY);
+        match motor {
+            MotorMode::Linear => self.controller_nm(u),
+            MotorMode::LimitHigh => limit,
+            MotorMode::LimitLow => -limit,
+        }
     }
 
     /// The PI loop's command before any limit (N m).

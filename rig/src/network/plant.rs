@@ -13,7 +13,6 @@ use super::block::{NetworkBlock, NetworkImpact};
 use super::equilibrium::equilibrium;
 use super::mode::{Contact, MeshState, NetMode};
 use super::model::NetworkModel;
-use super::outputs::{OutputForms, value};
 use super::system::{SystemCache, fastest_rate};
 
 /// Where a run starts.
@@ -352,11 +351,7 @@ impl NetworkPlant {
         if self.segment_end.is_some_and(|end| self.sample >= end) {
             self.begin_segment();
         }
-        let Some(mut cache) = self.cache.take() else {
-            return;
-        };
-        self.write_sample(&cache.get(&self.model, &self.mode).outputs, block);
-        self.cache = Some(cache);
+        self.write_sample(block);
     }
 
     /// [`Self::run`] without the final check of bounds.
@@ -391,38 +386,29 @@ impl NetworkPlant {
         })
     }
 
-    /// Appends the current sample to `block`, the mode's outputs `outputs`.
-    fn write_sample(&self, outputs: &OutputForms, block: &mut NetworkBlock) {
+    /// Appends the current sample to `block`.
+    fn write_sample(&self, block: &mut NetworkBlock) {
         let l = &self.model.layout;
         let u = &self.u;
-        let phase = u[l.phase()];
+        let sense = |body: usize| self.model.speed_ratio[body].signum();
         block.time_s.push(self.time_s());
-        for (i, (angles, speeds)) in block
-            .angle_rad
-            .iter_mut()
-            .zip(&mut block.speed_rad_s)
-            .enumerate()
-        {
-            let (ratio, sense) = (self.model.speed_ratio[i], self.model.sense[i]);
-            angles.push(sense * (u[l.angle(i)] + ratio * phase));
-            speeds.push(sense * u[l.speed(i)]);
+        for i in 0..l.bodies {
+            block.angle_rad[i].push(sense(i) * self.model.absolute_angle_rad(i, u));
+            block.speed_rad_s[i].push(sense(i) * u[l.speed(i)]);
         }
         for (i, column) in block.shaft_torque_nm.iter_mut().enumerate() {
             let body = self.model.shafts[i].between[0];
-            column.push(self.model.sense[body] * self.model.shaft_torque_nm(i, u));
+            column.push(sense(body) * self.model.shaft_torque_nm(i, u));
         }
-        for ((forces, contacts), (form, state)) in block
-            .mesh_force_n
-            .iter_mut()
-            .zip(&mut block.contact)
-            .zip(outputs.mesh_force_n.iter().zip(&self.mode.meshes))
-        {
-            forces.push(value(form, u));
-            contacts.push(state.contact.sign());
+        for i in 0..self.model.meshes.len() {
+            let state = self.mode.meshes[i];
+            let speed = self.harmonic_speed_rad_s;
+            block.mesh_force_n[i].push(self.model.mesh_force_n(i, state, u, speed));
+            block.contact[i].push(state.contact.sign());
         }
         block
             .motor_torque_nm
-            .push(value(&outputs.motor_torque_nm, u));
+            .push(self.model.motor_torque_nm(self.mode.motor, u));
     }
 
     /// Time of the current sample (s).

@@ -10,7 +10,6 @@ use crate::matrix_exp::{exp_powers_balanced, forcing_scales, spectral_radius};
 use super::events::{EventForm, event_forms};
 use super::mode::NetMode;
 use super::model::{NetworkModel, SegmentRates};
-use super::outputs::OutputForms;
 
 /// One mode's linear system.
 #[derive(Clone, Debug)]
@@ -34,8 +33,6 @@ pub struct ModeSystem {
     pub forcing_step: Vec<(usize, usize, f64)>,
     /// The switching functions.
     pub events: Vec<EventForm>,
-    /// What a sample reports in this mode.
-    pub outputs: OutputForms,
 }
 
 impl ModeSystem {
@@ -116,9 +113,8 @@ impl SystemCache {
         let step = exp_step(model, &a, self.step_s, self.rho);
         let events = event_forms(model, mode, &a, self.rates.harmonic_rad_s);
         let a_columns = padded_columns(&a, padded);
-        let mut system = fused_system(model, a_columns, &step, events);
-        system.outputs = OutputForms::of(model, mode, self.rates.harmonic_rad_s);
-        self.built.push(system);
+        self.built
+            .push(fused_system(model, a_columns, &step, events));
         self.systems.insert(*mode, self.built.len() - 1);
         self.built.len() - 1
     }
@@ -172,7 +168,6 @@ fn fused_system(
         row_events,
         forcing_step,
         events,
-        outputs: OutputForms::default(),
     }
 }
 
