@@ -1,7 +1,7 @@
 //! The plant's modules form layers: no file imports, directly or through others, a file
 //! that imports it. Checked from the source: every `crate::…` and `super::…` path outside
-//! comments is an edge, at two levels (the crate's modules, with `plant/` as one; and the
-//! files inside `plant/`).
+//! comments is an edge, at two levels (the crate's modules, each folder as one; and the
+//! files inside each folder: `plant/`, `network/`, `judge/`).
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
@@ -82,7 +82,11 @@ fn cycle(graph: &Graph) -> Option<Vec<String>> {
         .find_map(|n| visit(n, graph, &mut done, &mut Vec::new()))
 }
 
-fn graphs() -> (Graph, Graph) {
+/// The sub-folders of the crate's source, each a module of files.
+const FOLDERS: [&str; 3] = ["judge", "network", "plant"];
+
+/// The crate-level graph (each folder one node) and each folder's graph of its files.
+fn graphs() -> (Graph, BTreeMap<&'static str, Graph>) {
     let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
     let mut crate_level = Graph::new();
     for (name, code) in files(&src) {
@@ -91,25 +95,29 @@ fn graphs() -> (Graph, Graph) {
             crate_level.entry(name).or_default().extend(edges);
         }
     }
-    let mut plant_level = Graph::new();
-    for (name, code) in files(&src.join("plant")) {
-        let mut outward = referenced(&code, "crate::");
-        outward.remove("plant");
-        crate_level
-            .entry("plant".into())
-            .or_default()
-            .extend(outward);
-        if name != "mod" {
-            plant_level.insert(name, referenced(&code, "super::"));
+    let mut folders = BTreeMap::new();
+    for folder in FOLDERS {
+        let mut inside = Graph::new();
+        for (name, code) in files(&src.join(folder)) {
+            let mut outward = referenced(&code, "crate::");
+            outward.remove(folder);
+            crate_level
+                .entry(folder.into())
+                .or_default()
+                .extend(outward);
+            if name != "mod" {
+                inside.insert(name, referenced(&code, "super::"));
+            }
         }
+        for (name, edges) in inside.iter_mut() {
+            edges.remove(name);
+        }
+        folders.insert(folder, inside);
     }
     for (name, edges) in crate_level.iter_mut() {
         edges.remove(name);
     }
-    for (name, edges) in plant_level.iter_mut() {
-        edges.remove(name);
-    }
-    (crate_level, plant_level)
+    (crate_level, folders)
 }
 
 #[test]
@@ -126,15 +134,21 @@ fn the_reference_finder_sees_each_form_of_path() {
 
 #[test]
 fn the_plant_has_no_import_cycles() {
-    let (crate_level, plant_level) = graphs();
+    let (crate_level, folders) = graphs();
     assert!(
         crate_level["propagator"].contains("stride"),
         "graph read: {crate_level:?}"
     );
     assert!(
-        plant_level["output"].contains("state"),
-        "graph read: {plant_level:?}"
+        folders["plant"]["output"].contains("state"),
+        "graph read: {folders:?}"
+    );
+    assert!(
+        folders["network"]["stepping"].contains("plant"),
+        "graph read: {folders:?}"
     );
     assert_eq!(cycle(&crate_level), None, "modules of rig");
-    assert_eq!(cycle(&plant_level), None, "files of rig/src/plant");
+    for (folder, graph) in &folders {
+        assert_eq!(cycle(graph), None, "files of rig/src/{folder}");
+    }
 }

@@ -14,6 +14,7 @@ use nalgebra::{DMatrix, DVector};
 
 use crate::error::RigError;
 use crate::mode::PairZone;
+use crate::topology::RigTopology;
 use crate::topology_modes::add_coupling;
 
 use super::mode::{Contact, MeshState};
@@ -159,6 +160,17 @@ fn solve(
         meshes: meshes.to_vec(),
         motor_torque_nm,
     })
+}
+
+/// The constants of a checked topology, assembled: a loop's twisted shaft carries its
+/// locked torque at rest ([`assembly_preload_nm`]).
+pub fn assembled(rig: &RigTopology) -> Result<NetworkModel, RigError> {
+    let mut model = NetworkModel::of(rig);
+    if let Some(locked) = &rig.locked_torque {
+        model.shafts[locked.shaft].preload_nm =
+            assembly_preload_nm(&model, locked.shaft, locked.torque_nm)?;
+    }
+    Ok(model)
 }
 
 /// The untwisted torque T0 of a loop's shaft `shaft` that leaves it carrying

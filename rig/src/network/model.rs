@@ -20,7 +20,6 @@
 
 use nalgebra::DMatrix;
 
-use crate::error::RigError;
 use crate::mode::MotorMode;
 use crate::topology::RigTopology;
 
@@ -126,8 +125,9 @@ pub struct NetworkModel {
 }
 
 impl NetworkModel {
-    /// The constants of a checked topology.
-    pub fn of(rig: &RigTopology) -> Result<Self, RigError> {
+    /// The constants of a checked topology, a loop's shaft untwisted (its preload, which
+    /// makes it carry the locked torque at rest, is `equilibrium::assembled`'s business).
+    pub fn of(rig: &RigTopology) -> Self {
         let reference = rig.motor.unwrap_or(0);
         let speeds = rig.relative_speeds();
         let base = speeds[reference].unwrap_or(1.0);
@@ -177,7 +177,7 @@ impl NetworkModel {
             critical_rad_s: d.brake_critical_speed_rpm * std::f64::consts::PI / 30.0,
             speed_share: speed_ratio[body].abs(),
         });
-        let mut model = Self {
+        Self {
             layout: NetLayout::new(rig),
             inertia_kgm2,
             drag_nms_per_rad: rig.bodies.iter().map(|b| b.drag_nms_per_rad).collect(),
@@ -186,12 +186,7 @@ impl NetworkModel {
             meshes,
             motor,
             brake,
-        };
-        if let Some(locked) = &rig.locked_torque {
-            model.shafts[locked.shaft].preload_nm =
-                super::equilibrium::assembly_preload_nm(&model, locked.shaft, locked.torque_nm)?;
         }
-        Ok(model)
     }
 
     /// The fastest harmonic pair (rad/s) at a set speed of `speed_rad_s`.

@@ -10,7 +10,7 @@ use crate::taylor::{MAX_RHO_H, TAYLOR_ORDER};
 use crate::topology::RigTopology;
 
 use super::block::{NetworkBlock, NetworkImpact};
-use super::equilibrium::equilibrium;
+use super::equilibrium::{assembled, equilibrium};
 use super::mode::{Contact, MeshState, NetMode};
 use super::model::NetworkModel;
 use super::system::{SystemCache, fastest_rate};
@@ -110,7 +110,7 @@ impl NetworkPlant {
                 allowed: "a rate of at least 100 Hz",
             });
         }
-        let model = NetworkModel::of(rig)?;
+        let model = assembled(rig)?;
         let output_step_s = 1.0 / output_rate_hz;
         let top_rpm = speed_ceiling_rpm.max(schedule.speed_rpm.range().1.abs());
         let top_rad_s = top_rpm * PI / 30.0;
