@@ -19,7 +19,7 @@ use serde::Serialize;
 
 use crate::chain::{GearCondition, GearConditionReport};
 use crate::vocabulary::{InputNames, check_times};
-use crate::vocabulary::{check_load_nm, check_speed_rpm};
+use crate::vocabulary::{check_load_nm, check_load_within, check_speed_rpm, rig_max_load_nm};
 
 /// What to run.
 #[derive(Clone, Debug)]
@@ -237,17 +237,18 @@ pub fn run_rig_point(
 
 /// The plant of `spec` brought to its point by its approach and run through its lead-in
 /// and `settle_s`, its impacts and revolutions so far dropped: the measuring window starts
-/// at its next sample. A load on a rig without a brake is refused (named by `names`).
+/// at its next sample. A load the rig cannot hold (the one load check of every rig), or
+/// any load on a rig without a brake, is refused (named by `names`).
 pub fn settled_rig_plant(spec: &RigPointSpec, names: InputNames) -> anyhow::Result<NetworkPlant> {
     let rig = spec.rig;
-    if rig.brake.is_none() && spec.load_nm != 0.0 {
-        anyhow::bail!(
-            "{} {}: rig `{}` has no [brake] to load; give 0",
-            names.load,
-            spec.load_nm,
-            rig.name
-        );
-    }
+    let name = format!("rig `{}`", rig.name);
+    check_load_within(
+        spec.load_nm,
+        rig_max_load_nm(rig),
+        &name,
+        rig.brake.is_some(),
+    )
+    .map_err(|e| anyhow::anyhow!("{} {}: {e}", names.load, spec.load_nm))?;
     let schedule = spec.approach.schedule(spec.rpm, spec.load_nm);
     let start = spec.approach.network_start();
     let mut plant = NetworkPlant::new(rig, schedule, spec.rate_hz, start)

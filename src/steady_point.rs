@@ -12,8 +12,8 @@ use rig::{Approach, Plant, PlantConfig, RegimeCriteria, SignalBlock, SteadySumma
 
 use crate::scenario::preset_with_overrides;
 use crate::vocabulary::{
-    InputNames, check_load_nm, check_load_within_motor, check_simulated_s, check_speed_rpm,
-    check_times,
+    InputNames, check_load_nm, check_load_within, check_simulated_s, check_speed_rpm, check_times,
+    max_load_nm,
 };
 
 /// What to run.
@@ -65,7 +65,8 @@ pub fn run_point(
 ) -> anyhow::Result<PointRun> {
     check_point(spec, names)?;
     let params = preset_with_overrides(spec.preset, spec.overrides)?;
-    check_load_within_motor(spec.load_nm, &params)
+    let rig = format!("preset `{}`", spec.preset);
+    check_load_within(spec.load_nm, max_load_nm(&params), &rig, true)
         .map_err(|e| anyhow::anyhow!("{} {:?}: {e}", names.load, spec.load_nm))?;
     let config = PlantConfig {
         output_rate_hz: spec.rate_hz,

@@ -332,6 +332,29 @@ fn a_load_and_drag_beyond_the_motor_are_refused_naming_the_drag() {
         "{}",
         String::from_utf8_lossy(&runs.stderr)
     );
+    // The rig file of the same preset: the same check, the same words.
+    let file = common::rig_file("basmaji-1983-rig");
+    let file_args = |drag: &'static str| {
+        let mut args: Vec<&str> = args("").to_vec();
+        args[1] = "--rig";
+        args[2] = file.as_str();
+        args[4] = drag;
+        args
+    };
+    let refused = testrig(&file_args("brake.drag_nm=3.0"));
+    let said = String::from_utf8_lossy(&refused.stderr);
+    assert!(
+        !refused.status.success()
+            && said.contains("drag_nm")
+            && said.contains("more than the motor can hold"),
+        "{said}"
+    );
+    let runs = testrig(&file_args("brake.drag_nm=0.6"));
+    assert!(
+        runs.status.success(),
+        "{}",
+        String::from_utf8_lossy(&runs.stderr)
+    );
 }
 
 #[test]

@@ -13,10 +13,10 @@ use super::scenario_plant::{PointWindow, ScenarioPlant};
 use crate::rig_point::motor_of;
 use crate::rig_point::{RigWindow, regime_of};
 use crate::rig_roles::RoleColumns;
-use crate::scenario::plan_rig::check_rig_file_load;
 use crate::vocabulary::GearIndicators;
 use crate::vocabulary::frame::{Frame, FrameImpacts};
 use crate::vocabulary::limits::LimitError;
+use crate::vocabulary::limits::{check_load_within, rig_max_load_nm};
 
 /// A rig file's plant in a run, with what it needs to frame and judge its blocks.
 pub struct RigFilePlant {
@@ -77,7 +77,9 @@ impl ScenarioPlant for RigFilePlant {
     }
 
     fn check_load(&self, load_nm: f64) -> Result<(), LimitError> {
-        check_rig_file_load(&self.rig, load_nm)
+        let rig = &self.rig;
+        let name = format!("rig `{}`", rig.name);
+        check_load_within(load_nm, rig_max_load_nm(rig), &name, rig.brake.is_some())
     }
 
     fn hold(&mut self, set: SetPoints) -> Result<(), RigError> {

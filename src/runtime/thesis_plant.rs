@@ -9,7 +9,7 @@ use super::scenario_plant::{PointWindow, ScenarioPlant};
 use crate::chain::GearCondition;
 use crate::vocabulary::GearIndicators;
 use crate::vocabulary::frame::Frame;
-use crate::vocabulary::limits::{LimitError, check_load_within_motor};
+use crate::vocabulary::limits::{LimitError, check_load_within, max_load_nm};
 
 /// One block of the thesis's plant.
 #[derive(Default)]
@@ -36,7 +36,7 @@ impl ScenarioPlant for Plant {
     }
 
     fn check_load(&self, load_nm: f64) -> Result<(), LimitError> {
-        check_load_within_motor(load_nm, self.params())
+        check_load_within(load_nm, max_load_nm(self.params()), "the 1983 rig", true)
     }
 
     fn hold(&mut self, set: SetPoints) -> Result<(), RigError> {

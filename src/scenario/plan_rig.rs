@@ -7,7 +7,7 @@ use rig::{NetworkBlock, NetworkPlant, NetworkStart, RigError, RigParams, RigTopo
 use crate::rig_point::judged_shaft;
 use crate::rig_roles::RIG_SIGNALS;
 use crate::vocabulary::frame::SignalNames;
-use crate::vocabulary::limits::{LimitError, check_load_within_motor};
+use crate::vocabulary::limits::{LimitError, check_load_within, rig_max_load_nm};
 
 /// The rig a scenario runs.
 #[derive(Clone, Debug)]
@@ -39,7 +39,7 @@ impl PlanRig {
     pub fn max_load_nm(&self) -> f64 {
         match self {
             Self::Preset { params, .. } => crate::vocabulary::max_load_nm(params),
-            Self::File(rig) => file_max_load_nm(rig),
+            Self::File(rig) => rig_max_load_nm(rig),
         }
     }
 
@@ -55,10 +55,11 @@ impl PlanRig {
     /// Whether the motor holds a brake load of `load_nm` (N m), as [`Self::max_load_nm`]
     /// says.
     pub fn check_load(&self, load_nm: f64) -> Result<(), LimitError> {
-        match self {
-            Self::Preset { params, .. } => check_load_within_motor(load_nm, params),
-            Self::File(rig) => check_rig_file_load(rig, load_nm),
-        }
+        let (name, has_brake) = match self {
+            Self::Preset { name, .. } => (format!("preset `{name}`"), true),
+            Self::File(rig) => (format!("rig `{}`", rig.name), rig.brake.is_some()),
+        };
+        check_load_within(load_nm, self.max_load_nm(), &name, has_brake)
     }
 
     /// The gauged shaft's torque (N m) in the steady state at `rpm` (rev/min) and
@@ -74,40 +75,5 @@ impl PlanRig {
         let mut block = NetworkBlock::new(rig.bodies.len(), rig.shafts.len(), rig.meshes.len());
         plant.sample_now(&mut block);
         Ok(block.shaft_torque_nm[judged_shaft(rig)][0])
-    }
-}
-
-/// Whether the motor of a rig file's `rig` holds a brake load of `load_nm` (N m), as
-/// [`PlanRig::max_load_nm`] says.
-pub fn check_rig_file_load(rig: &RigTopology, load_nm: f64) -> Result<(), LimitError> {
-    let max_nm = file_max_load_nm(rig);
-    if load_nm <= max_nm {
-        Ok(())
-    } else if rig.brake.is_none() {
-        Err(LimitError::NoBrake {
-            load_nm,
-            rig: rig.name.clone(),
-        })
-    } else {
-        Err(LimitError::LoadAboveRigMotor {
-            load_nm,
-            max_nm,
-            rig: rig.name.clone(),
-        })
-    }
-}
-
-/// [`PlanRig::max_load_nm`] of a rig file's rig.
-fn file_max_load_nm(rig: &RigTopology) -> f64 {
-    let (Some(motor), Some(brake)) = (rig.motor, rig.brake) else {
-        return 0.0;
-    };
-    let Some(limit_nm) = rig.drive.limit_nm() else {
-        return f64::INFINITY;
-    };
-    let speeds = rig.relative_speeds();
-    match (speeds[motor], speeds[brake]) {
-        (Some(m), Some(b)) if b != 0.0 => limit_nm * (m / b).abs() - rig.drive.brake_drag_nm,
-        _ => f64::INFINITY,
     }
 }

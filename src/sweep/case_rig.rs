@@ -5,7 +5,7 @@ use rig::{RigChains, RigParams, RigTopology};
 
 use crate::scenario::read_rig_file::set_rig_value;
 use crate::scenario::values::param_value;
-use crate::vocabulary::limits::check_load_within_motor;
+use crate::vocabulary::limits::{check_load_within, max_load_nm, rig_max_load_nm};
 
 /// A case's rig.
 #[derive(Clone, Debug)]
@@ -73,19 +73,19 @@ impl CaseRig {
         }
     }
 
-    /// Whether the rig can hold `load_nm`: the motor's limit over the load for a preset,
-    /// a brake for a rig file's rig; the refusal says why.
+    /// Whether the rig can hold `load_nm` (the one load check of every rig); the refusal
+    /// says why.
     pub fn check_load(&self, load_nm: f64) -> Result<(), String> {
-        match self {
+        let checked = match self {
             Self::Preset(params) => {
-                check_load_within_motor(load_nm, params).map_err(|e| e.to_string())
+                check_load_within(load_nm, max_load_nm(params), "the 1983 rig", true)
             }
-            Self::File(rig) if rig.brake.is_none() && load_nm != 0.0 => Err(format!(
-                "{load_nm} N m: rig `{}` has no [brake] to load; give 0",
-                rig.name
-            )),
-            Self::File(_) => Ok(()),
-        }
+            Self::File(rig) => {
+                let name = format!("rig `{}`", rig.name);
+                check_load_within(load_nm, rig_max_load_nm(rig), &name, rig.brake.is_some())
+            }
+        };
+        checked.map_err(|e| e.to_string())
     }
 
     /// The whole rig's undamped natural frequencies (Hz), rigid-body mode left out.

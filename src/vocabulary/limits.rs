@@ -39,19 +39,30 @@ pub fn check_load_nm(value: f64) -> Result<f64, LimitError> {
     }
 }
 
-/// A brake load (N m) the rig of `params` can run against: with the rig's residual drag
-/// (`brake_drag_nm`, added to every load) at most the motor's torque limit. Beyond it the
-/// 2 hp motor cannot hold any speed, and the model's constant-torque brake would then
+/// The one load check of every rig: a brake load (N m) `rig` (as a message names it:
+/// rig `NAME`) can run against, at most
+/// `max_nm` ([`max_load_nm`], [`rig_max_load_nm`]), and none where it has no brake. Beyond
+/// it the motor cannot hold any speed, and the model's constant-torque brake would then
 /// drive the rig backwards, which an eddy-current brake cannot (its torque falls to zero
 /// with the speed).
-pub fn check_load_within_motor(load_nm: f64, params: &rig::RigParams) -> Result<(), LimitError> {
-    if load_nm <= max_load_nm(params) {
+pub fn check_load_within(
+    load_nm: f64,
+    max_nm: f64,
+    rig: &str,
+    has_brake: bool,
+) -> Result<(), LimitError> {
+    if !has_brake && load_nm != 0.0 {
+        Err(LimitError::NoBrake {
+            load_nm,
+            rig: rig.to_string(),
+        })
+    } else if load_nm <= max_nm || !has_brake {
         Ok(())
     } else {
         Err(LimitError::LoadAboveMotor {
             load_nm,
-            drag_nm: params.brake_drag_nm,
-            limit_nm: params.motor_torque_limit_nm(),
+            max_nm,
+            rig: rig.to_string(),
         })
     }
 }
@@ -60,6 +71,23 @@ pub fn check_load_within_motor(load_nm: f64, params: &rig::RigParams) -> Result<
 /// rig's residual drag.
 pub fn max_load_nm(params: &rig::RigParams) -> f64 {
     params.motor_torque_limit_nm() - params.brake_drag_nm
+}
+
+/// The largest brake load (N m) the motor of a rig file's `rig` holds at its brake: its
+/// torque limit over the brake's speed per unit motor speed, less the brake's residual
+/// drag (infinite where the file gives no limit, 0 without a motor or brake).
+pub fn rig_max_load_nm(rig: &rig::RigTopology) -> f64 {
+    let (Some(motor), Some(brake)) = (rig.motor, rig.brake) else {
+        return 0.0;
+    };
+    let Some(limit_nm) = rig.drive.limit_nm() else {
+        return f64::INFINITY;
+    };
+    let speeds = rig.relative_speeds();
+    match (speeds[motor], speeds[brake]) {
+        (Some(m), Some(b)) if b != 0.0 => limit_nm * (m / b).abs() - rig.drive.brake_drag_nm,
+        _ => f64::INFINITY,
+    }
 }
 
 /// A motor speed set point (rev/min) as an input accepts it: finite, in [0, 10 000].
@@ -125,36 +153,24 @@ pub enum LimitError {
         /// The load given (N m).
         value: f64,
     },
-    /// A brake load beyond the motor's torque limit.
+    /// A brake load beyond what the motor holds at the brake.
     #[error(
-        "{load_nm} N m with the rig's residual drag of {drag_nm} N m (brake_drag_nm) is more than the motor can hold (its torque limit {limit_nm:.3} N m: drive_current_limit_pct of the full-load torque): the rig would stop, and an eddy-current brake cannot drive it backwards"
+        "{load_nm} N m is more than the motor can hold at the brake of {rig} ({max_nm:.3} N m: its torque limit through its gears less the brake's residual drag, a preset's brake_drag_nm or a rig file's [brake] drag_nm): the rig would stop, and an eddy-current brake cannot drive it backwards"
     )]
     LoadAboveMotor {
         /// The load given (N m).
         load_nm: f64,
-        /// The rig's residual drag, added to the load (N m).
-        drag_nm: f64,
-        /// The motor's torque limit (N m).
-        limit_nm: f64,
-    },
-    /// A brake load beyond what a rig file's motor holds through its gears.
-    #[error(
-        "{load_nm} N m is more than rig `{rig}` can hold at its brake ({max_nm:.3} N m: its motor's torque_limit_nm through its gears)"
-    )]
-    LoadAboveRigMotor {
-        /// The load given (N m).
-        load_nm: f64,
         /// The most the rig holds (N m).
         max_nm: f64,
-        /// The rig's name.
+        /// The rig, as the message names it (rig `NAME`).
         rig: String,
     },
     /// A brake load on a rig file's rig without a brake.
-    #[error("{load_nm} N m: rig `{rig}` has no [brake] to load; give 0")]
+    #[error("{load_nm} N m: {rig} has no [brake] to load; give 0")]
     NoBrake {
         /// The load given (N m).
         load_nm: f64,
-        /// The rig's name.
+        /// The rig, as the message names it (rig `NAME`).
         rig: String,
     },
     /// A speed set point out of range.
