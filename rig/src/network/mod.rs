@@ -5,12 +5,16 @@
 //!
 //! `layout.rs` the state: absolute angles and speeds, the speed loop, then forcing states
 //! (unit, set speed and its ramp rate, brake load and its rate, the oscillating load's
-//! pair). `mode.rs` the discrete state (each mesh apart / drive / back with one or two
-//! pairs, the motor linear or at a limit). `model.rs` the constants of a topology and A of
-//! u' = A u per mode, `mesh_model.rs` a mesh's constants (its faulted teeth's factors
-//! included). `events.rs` the switching functions of a mode. `system.rs` per mode
-//! e^{A h} and the events, built on first use and cached. `equilibrium.rs` the steady
-//! state at a set speed and load (and at rest, a loop's locked torque carried).
+//! pair, the set rotation, the meshes' harmonic pairs and spacing errors). `mode.rs` the
+//! discrete state (each mesh apart / drive / back, clipped under the no-pull law, its
+//! pairs one, two or a step of a smoothed change; the motor linear or at a limit).
+//! `model.rs` the constants of a topology (the brake's drag and characteristic, the gear
+//! errors) and A of u' = A u per mode, `mesh_model.rs` a mesh's constants (its pair zones,
+//! its faulted teeth's factors). `events.rs` the switching functions of a mode.
+//! `system.rs` per mode the fused step (e^{A h}'s mechanical rows with the fixed-target
+//! functions' values and rates) and the events, built on first use and cached.
+//! `equilibrium.rs` the steady state at a set speed and load (and at rest, a loop's
+//! locked torque carried), and the model assembled with a loop's preload.
 //! `block.rs` the samples and impacts a run gives, `columns.rs` them as named columns.
 //! `plant.rs` the plant, `segment.rs` its set points over time, `stepping.rs` its exact
 //! steps and switches, `products.rs` the matrix–state products they take.
