@@ -17,11 +17,7 @@ fn the_1983_rig_file_runs_as_the_thesis_plant_does() {
     // 0.68 s, 2 ns at 0.73 s), so that point is compared over its first 0.6 s.
     let rig = shipped("basmaji-1983");
     let params = rig::preset("basmaji-1983").expect("preset");
-    let rattle = Schedule {
-        oscillating_load_nm: Track::hold(3.0),
-        oscillating_load_hz: Track::hold(25.0),
-        ..Schedule::constant(600.0, 0.5)
-    };
+    let rattle = rattle();
     let cases = [
         (Schedule::constant(600.0, 2.712), 3.0, 400),
         (Schedule::constant(1300.0, 2.712), 0.6, 100),
@@ -69,11 +65,7 @@ fn spacing_errors_against_the_thesis(shifting: bool) {
     params.tooth_spacing_error_um = 10.0;
     params.tooth_spacing_seed = 1983;
     params.tooth_shifting = shifting;
-    let rattle = Schedule {
-        oscillating_load_nm: Track::hold(3.0),
-        oscillating_load_hz: Track::hold(25.0),
-        ..Schedule::constant(600.0, 0.5)
-    };
+    let rattle = rattle();
     for (schedule, seconds) in [(Schedule::constant(600.0, 2.712), 2.0), (rattle, 0.3)] {
         let (worst, scale, impacts, reference) = both_plants(&rig, &params, schedule, seconds);
         assert!(
@@ -241,11 +233,7 @@ fn the_thesis_plants_drive_brake_and_gear_errors_run_on_the_rig_file() {
 /// under the thesis's law differ from them by more than 1 % of the torque's range.
 #[test]
 fn the_no_pull_law_runs_on_the_rig_file_as_on_the_thesis_plant() {
-    let rattle = Schedule {
-        oscillating_load_nm: Track::hold(3.0),
-        oscillating_load_hz: Track::hold(25.0),
-        ..Schedule::constant(600.0, 0.5)
-    };
+    let rattle = rattle();
     for shifting in [true, false] {
         let mut rig = shipped("basmaji-1983");
         rig.meshes[0].contact_law = rig::ContactLaw::NoPull;
@@ -286,11 +274,7 @@ fn the_no_pull_law_runs_on_the_rig_file_as_on_the_thesis_plant() {
 /// from ours: its steady start deflects the mesh for one pair where two are in mesh.
 #[test]
 fn smoothed_mesh_stiffness_runs_on_the_rig_file_as_on_the_thesis_plant() {
-    let rattle = Schedule {
-        oscillating_load_nm: Track::hold(3.0),
-        oscillating_load_hz: Track::hold(25.0),
-        ..Schedule::constant(600.0, 0.5)
-    };
+    let rattle = rattle();
     for shifting in [true, false] {
         let mut rig = shipped("basmaji-1983");
         rig.meshes[0].pairs = rig::MeshPairs::Alternating;
@@ -372,5 +356,15 @@ fn every_preset_is_a_rig_file_that_runs_as_the_preset() {
                 assert!((a - b).abs() < 1e-8, "{name}: {a} s against {b} s");
             }
         }
+    }
+}
+
+/// 600 rev/min under 0.5 N m with 3 N m oscillating at 25 Hz on the brake: the teeth part
+/// and strike.
+fn rattle() -> Schedule {
+    Schedule {
+        oscillating_load_nm: Track::hold(3.0),
+        oscillating_load_hz: Track::hold(25.0),
+        ..Schedule::constant(600.0, 0.5)
     }
 }

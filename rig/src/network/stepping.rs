@@ -260,12 +260,11 @@ impl NetworkPlant {
 
     /// The Taylor vectors v_k = (A τ)^k u / k! of a span τ = `span_s`.
     fn expand(&mut self, system: &ModeSystem, span_s: f64) {
-        let forcing = self.model.layout.mechanical();
         self.taylor[0].copy_from_slice(&self.u);
         for k in 1..=TAYLOR_ORDER {
             let (done, rest) = self.taylor.split_at_mut(k);
             let out = &mut rest[0];
-            products::square(&system.a_columns, &done[k - 1], out, forcing);
+            products::rows(&system.a_columns, out.len(), &done[k - 1], out);
             let scale = span_s / k as f64;
             for x in out.iter_mut() {
                 *x *= scale;
