@@ -7,6 +7,7 @@ rig file's plant (`testrig fmu`, docs/fmu.md); FMPy is the importer.
     target/release/testrig fmu --rig scenarios/rigs/basmaji-1983.toml --out out/rig.fmu
     python3 -m pip install fmpy matplotlib
     python3 examples/python/fmu_cosim.py out/rig.fmu      # writes out/fmu-cosim.png, beside the FMU
+    python3 examples/python/fmu_cosim.py out/rig.fmu out/short.png 8   # the first 8 s only
 """
 
 import sys
@@ -21,6 +22,7 @@ from fmpy import simulate_fmu  # noqa: E402
 
 fmu = sys.argv[1] if len(sys.argv) > 1 else "rig.fmu"
 out = sys.argv[2] if len(sys.argv) > 2 else str(Path(fmu).with_name("fmu-cosim.png"))
+stop_s = float(sys.argv[3]) if len(sys.argv) > 3 else 40.0   # simulated seconds
 
 # The master's input signal: FMPy holds each row's values until the next row's time.
 times = np.arange(0.0, 40.0, 0.1)
@@ -30,7 +32,7 @@ signal = np.array(list(zip(times, ramp, np.full_like(times, 2.712), zero, zero))
                   dtype=[("time", np.float64), ("set_speed_rpm", np.float64),
                          ("load_nm", np.float64), ("oscillating_load_nm", np.float64),
                          ("oscillating_load_hz", np.float64)])
-result = simulate_fmu(fmu, stop_time=40.0, output_interval=0.001, input=signal,
+result = simulate_fmu(fmu, stop_time=stop_s, output_interval=0.001, input=signal,
                       output=["speed_motor_rpm", "torque_intermediate_nm", "impacts_gears"])
 
 t = result["time"]
