@@ -1,4 +1,5 @@
-//! Errors of the plant: bad parameters, bad schedules, and a run that went wrong.
+//! Errors of the plant: bad parameters, bad schedules, a rig's faults at their place, and a
+//! run that went wrong.
 
 /// Everything the plant can refuse or report.
 #[derive(Debug, thiserror::Error)]
@@ -56,7 +57,7 @@ pub enum RigError {
     },
     /// A rig (from a rig file) the plant cannot run.
     #[error("rig: {0}")]
-    Topology(#[from] crate::topology_check::TopologyError),
+    Topology(#[from] TopologyError),
     /// Contact switches without end inside one step (a Zeno sequence).
     #[error("contact chatter at t = {t_s:.9} s: more than {limit} switches within one step")]
     Chatter {
@@ -65,4 +66,26 @@ pub enum RigError {
         /// The switch limit per step.
         limit: usize,
     },
+}
+
+/// Where in a rig a fault lies: a table of the rig file (`body`, `shaft`, `mesh`,
+/// `motor`, `brake`, `locked_torque`), the item's index in it, and the field.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct TopologyPlace {
+    /// The table.
+    pub table: &'static str,
+    /// The item's index in its table (0 for a single table).
+    pub index: usize,
+    /// The field.
+    pub field: &'static str,
+}
+
+/// A fault of a rig, at its place.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("{message}")]
+pub struct TopologyError {
+    /// Where.
+    pub place: TopologyPlace,
+    /// What is wrong and what is allowed.
+    pub message: String,
 }

@@ -72,8 +72,8 @@
 //!
 //! `network/` the plant of any rig a rig file describes (`RigTopology`): any number of
 //! bodies, shafts and up to four meshes, loops with a locked-in torque, the same exact
-//! stepping (per mode e^{A h}, switches on the Taylor expansion); `topology*.rs` the rig
-//! itself, its checks, its numbers by path (`topology_fields.rs`) and natural modes.
+//! stepping (per mode e^{A h}, switches on the Taylor expansion); `topology/` the rig
+//! itself as data, its checks, its numbers by path and natural modes.
 //!
 //! `fma.rs` the fused multiply-add path chosen at run time: the inner loops
 //! (`column_product.rs`, `propagator.rs`, `jump_response.rs`) run compiled for AVX2 and FMA
@@ -135,15 +135,13 @@ mod system_cache;
 mod taylor;
 pub mod tooth_fault;
 pub mod topology;
-mod topology_check;
-mod topology_fields;
-mod topology_modes;
 
 #[cfg(test)]
 mod jump_response_tests;
 
 pub use approach::Approach;
 pub use error::RigError;
+pub use error::{TopologyError, TopologyPlace};
 pub use geometry::GearGeometry;
 pub use judge::{JudgeInput, Judgement, Motion, judge};
 pub use modal::{Chain, NaturalMode, RigChains};
@@ -165,9 +163,8 @@ pub use schedule::{LiveCeiling, MAX_SPEED_RPM, Schedule, SetPoints, Track};
 pub use signals::{COLUMN_NAMES, COLUMN_UNITS, DRIVEN_GEAR, INTERMEDIATE_SHAFT, SignalBlock};
 pub use steady::{SteadySummary, SteadyWindow, run_steady};
 pub use tooth_fault::{FaultKind, FaultedGear, ToothFault};
+pub use topology::TopologyField;
 pub use topology::{
     Body, DriveRatings, DriveSettings, Gauge, LockedTorque, MAX_BODIES, MAX_MESHES, Mesh,
     RigTopology, Shaft,
 };
-pub use topology_check::{TopologyError, TopologyPlace};
-pub use topology_fields::TopologyField;

@@ -1,7 +1,7 @@
 //! The plant's modules form layers: no file imports, directly or through others, a file
 //! that imports it. Checked from the source: every `crate::…` and `super::…` path outside
 //! comments is an edge, at two levels (the crate's modules, each folder as one; and the
-//! files inside each folder: `plant/`, `network/`, `judge/`).
+//! files inside each folder: `topology/`, `network/`, `plant/`, `judge/`).
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
@@ -83,7 +83,7 @@ fn cycle(graph: &Graph) -> Option<Vec<String>> {
 }
 
 /// The sub-folders of the crate's source, each a module of files.
-const FOLDERS: [&str; 3] = ["judge", "network", "plant"];
+const FOLDERS: [&str; 4] = ["judge", "network", "plant", "topology"];
 
 /// The crate-level graph (each folder one node) and each folder's graph of its files.
 fn graphs() -> (Graph, BTreeMap<&'static str, Graph>) {

@@ -15,7 +15,7 @@ use nalgebra::{DMatrix, DVector};
 use crate::error::RigError;
 use crate::mode::PairZone;
 use crate::topology::RigTopology;
-use crate::topology_modes::add_coupling;
+use crate::topology::add_coupling;
 
 use super::mode::{Contact, MeshState};
 use super::model::NetworkModel;

@@ -3,29 +3,8 @@
 //! close, and the limits on size. Each fault names the item and field, and what is
 //! allowed.
 
-use crate::topology::{MAX_BODIES, MAX_MESHES, RigTopology};
-
-/// Where in a rig a fault lies: a table of the rig file (`body`, `shaft`, `mesh`,
-/// `motor`, `brake`, `locked_torque`), the item's index in it, and the field.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct TopologyPlace {
-    /// The table.
-    pub table: &'static str,
-    /// The item's index in its table (0 for a single table).
-    pub index: usize,
-    /// The field.
-    pub field: &'static str,
-}
-
-/// A fault of a rig, at its place.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-#[error("{message}")]
-pub struct TopologyError {
-    /// Where.
-    pub place: TopologyPlace,
-    /// What is wrong and what is allowed.
-    pub message: String,
-}
+use super::rig_topology::{MAX_BODIES, MAX_MESHES, RigTopology};
+use crate::error::{TopologyError, TopologyPlace};
 
 fn fault(table: &'static str, index: usize, field: &'static str, message: String) -> TopologyError {
     TopologyError {

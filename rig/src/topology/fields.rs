@@ -3,10 +3,10 @@
 //! `locked_torque.torque_nm` …), with unit and meaning: what `testrig params --rig` lists
 //! and what `--set`, sweeps and calibration change.
 
+use super::rig_topology::RigTopology;
 use crate::error::RigError;
 use crate::nearest::did_you_mean;
 use crate::tooth_fault::FaultKind;
-use crate::topology::RigTopology;
 
 /// One number of a rig.
 #[derive(Clone, Debug, PartialEq)]

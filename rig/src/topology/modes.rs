@@ -6,8 +6,8 @@
 
 use nalgebra::DMatrix;
 
+use super::rig_topology::RigTopology;
 use crate::modal::{NaturalMode, free_modes};
-use crate::topology::RigTopology;
 
 impl RigTopology {
     /// The stiffness matrix in the bodies' absolute angles, meshes in contact (N m/rad).

@@ -2,8 +2,8 @@
 //! between two bodies, and external spur meshes with backlash between two gears' base
 //! circles; a motor body, a brake body, and for a back-to-back loop the torque locked
 //! into one shaft. SI inside, units in the names. Built from a rig file by the
-//! application; checked by [`RigTopology::check`] (`topology_check.rs`); its natural
-//! frequencies by [`RigTopology::natural_frequencies_hz`] (`topology_modes.rs`).
+//! application; checked by [`RigTopology::check`] (`check.rs`); its natural frequencies
+//! by [`RigTopology::natural_frequencies_hz`] (`modes.rs`).
 
 use serde::{Deserialize, Serialize};
 

@@ -1,0 +1,17 @@
+//! The rig as data, the first stage of the pipeline (the rig → its assembled model and
+//! plant in `network/` → the judge): `rig_topology.rs` a rig of any topology as a rig file
+//! describes it (bodies, shafts, meshes, motor, brake, drive); `check.rs` what makes it one
+//! the plant can run, each fault at its item and field; `fields.rs` every number by its
+//! path, with unit and meaning; `modes.rs` its undamped natural modes.
+
+mod check;
+mod fields;
+mod modes;
+mod rig_topology;
+
+pub use fields::TopologyField;
+pub(crate) use modes::add_coupling;
+pub use rig_topology::{
+    Body, DriveRatings, DriveSettings, Gauge, LockedTorque, MAX_BODIES, MAX_MESHES, Mesh,
+    RigTopology, Shaft,
+};
