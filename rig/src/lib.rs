@@ -15,6 +15,8 @@
 //! stiffness) are parameters, 0 in `basmaji-1983`.
 //!
 //! `geometry.rs` pitch radius, backlash from the centre-distance shift, contact ratio.
+//! `eddy_current.rs` the brake's characteristic and its slope at a set point, for both
+//! plants.
 //!
 //! `layout.rs` the augmented state: X1..X5, V1..V5 relative to the set rotation φ(t), the
 //! controller's filtered speed Vf and integral z, then forcing states: unit, load, (cos φ,
@@ -100,6 +102,7 @@
 pub mod approach;
 mod column_product;
 mod derivative;
+mod eddy_current;
 pub mod energy;
 pub mod error;
 mod events;

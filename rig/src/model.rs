@@ -3,6 +3,7 @@
 
 use nalgebra::DMatrix;
 
+use crate::eddy_current::characteristic_slope_nms_per_rad;
 use crate::geometry::GearGeometry;
 use crate::layout::{LOAD, Layout, REV, UNIT, V0, VF, X0, Z};
 use crate::mode::{Engagement, Mode, MotorMode, PairZone};
@@ -105,17 +106,10 @@ impl ModelConstants {
         self.spacing_rad.get(tooth as usize).copied().unwrap_or(0.0)
     }
 
-    /// Slope (N m s/rad) of the eddy-current brake's torque with its speed at the set
-    /// speed `speed_rad_s`, braking `torque_nm` there: T(ω) = T_set g(ω)/g(Ω) with
-    /// g(ω) = 2x/(1 + x²), x = ω/ω_c (Wouterse 1991), linearised about Ω:
-    /// dT/dω = T_set (1 − x²)/((1 + x²) Ω). Positive below the critical speed (the brake
-    /// damps), negative above it. 0 when the characteristic is off or the rig stands.
+    /// Slope (N m s/rad) of the eddy-current brake's characteristic at the set speed
+    /// `speed_rad_s`, braking `torque_nm` there (`crate::eddy_current`).
     pub fn brake_characteristic_slope(&self, speed_rad_s: f64, torque_nm: f64) -> f64 {
-        if self.brake_critical_rad_s <= 0.0 || speed_rad_s <= 0.0 {
-            return 0.0;
-        }
-        let x2 = (speed_rad_s / self.brake_critical_rad_s).powi(2);
-        torque_nm * (1.0 - x2) / ((1.0 + x2) * speed_rad_s)
+        characteristic_slope_nms_per_rad(torque_nm, speed_rad_s, self.brake_critical_rad_s)
     }
 
     /// Drag torque (N m) of bearings and windage on each body at the set speed (at rest relative to it).

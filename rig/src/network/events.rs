@@ -6,7 +6,7 @@ use nalgebra::DMatrix;
 
 use crate::mode::MotorMode;
 
-use super::mode::{Contact, MeshState, NetMode};
+use super::mode::{Contact, NetMode};
 use super::model::NetworkModel;
 
 /// What a crossing means.
@@ -144,10 +144,7 @@ pub fn event_forms(
             // The push f·F of the flank in contact (its spring as if it pushed): clipped,
             // it pushes again when this rises through 0; else it is clipped when it falls.
             let flank = f64::from(state.contact.sign());
-            let pushing = MeshState {
-                clipped: false,
-                ..state
-            };
+            let pushing = state.unclipped();
             let sign = if state.clipped { flank } else { -flank };
             let force = model
                 .force_terms(i, pushing, flank, speed_rad_s)

@@ -62,6 +62,14 @@ impl MeshState {
         f64::from_bits(self.factor_bits)
     }
 
+    /// The same state with its force not clipped (the spring as if it pushed).
+    pub fn unclipped(self) -> Self {
+        Self {
+            clipped: false,
+            ..self
+        }
+    }
+
     /// The flank whose spring pushes (+1 drive, −1 back), if any: none apart or clipped.
     pub fn pushing_flank(self) -> Option<f64> {
         match self.contact {

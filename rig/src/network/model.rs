@@ -23,6 +23,7 @@ use nalgebra::DMatrix;
 use crate::mode::MotorMode;
 use crate::topology::RigTopology;
 
+use super::drive_model::{BrakeModel, MotorModel};
 use super::layout::NetLayout;
 use super::mesh_model::MeshModel;
 use super::mode::{MeshState, NetMode};
@@ -39,55 +40,6 @@ pub struct ShaftModel {
     /// Torque it carries untwisted (N m): for a loop's twisted shaft, what makes it
     /// carry the locked-in torque at rest once the rest of the loop has yielded; else 0.
     pub preload_nm: f64,
-}
-
-/// The motor's speed loop.
-#[derive(Clone, Debug, PartialEq)]
-pub struct MotorModel {
-    /// The body it drives.
-    pub body: usize,
-    /// Proportional gain (N m s/rad).
-    pub kp_nms_per_rad: f64,
-    /// Integral gain (N m/rad).
-    pub ki_nm_per_rad: f64,
-    /// Speed filter corner (rad/s).
-    pub filter_rad_s: f64,
-    /// Torque limit (N m), if any.
-    pub limit_nm: Option<f64>,
-}
-
-/// The brake.
-#[derive(Clone, Debug, PartialEq)]
-pub struct BrakeModel {
-    /// The body it loads.
-    pub body: usize,
-    /// +1 where the brake body turns the motor's way, −1 where it turns against it.
-    pub direction: f64,
-    /// Rise of its torque with speed (N m s/rad).
-    pub slope_nms_per_rad: f64,
-    /// Residual drag added to the set load (N m).
-    pub drag_nm: f64,
-    /// The eddy-current characteristic's critical speed (rad/s of the brake body); 0 off.
-    pub critical_rad_s: f64,
-    /// The brake body's speed per unit speed of the motor's body (|s|).
-    pub speed_share: f64,
-}
-
-impl BrakeModel {
-    /// Slope (N m s/rad) of the eddy-current brake's torque with its speed at the motor's
-    /// set speed `speed_rad_s`, braking `load_nm` and its drag there: T(ω) = T_set
-    /// g(ω)/g(Ω_b) with g(ω) = 2x/(1 + x²), x = ω/ω_c (Wouterse 1991), linearised about
-    /// the brake's set speed Ω_b: dT/dω = T_set (1 − x²)/((1 + x²) Ω_b). Positive below
-    /// the critical speed (the brake damps), negative above it; 0 when the characteristic
-    /// is off or the rig stands.
-    pub fn characteristic_slope(&self, speed_rad_s: f64, load_nm: f64) -> f64 {
-        let brake_rad_s = self.speed_share * speed_rad_s;
-        if self.critical_rad_s <= 0.0 || brake_rad_s <= 0.0 {
-            return 0.0;
-        }
-        let x2 = (brake_rad_s / self.critical_rad_s).powi(2);
-        (load_nm + self.drag_nm) * (1.0 - x2) / ((1.0 + x2) * brake_rad_s)
-    }
 }
 
 /// What of a stretch of set points enters A: the rates the harmonic pairs and the
@@ -351,15 +303,11 @@ impl NetworkModel {
         let Some(flank) = state.pushing_flank() else {
             return;
         };
-        let force = self.overlap_terms(mesh, flank, speed_rad_s);
+        let force = self.force_terms(mesh, state, flank, speed_rad_s);
         let m = &self.meshes[mesh];
-        let (k, c) = m.spring(state);
         let [ga, gb] = m.gears;
         for (body, r) in [(ga, m.radii_m[0]), (gb, m.radii_m[1])] {
-            let terms: Vec<(usize, f64)> = force
-                .iter()
-                .map(|&(col, stiff, damp)| (col, -r * (k * stiff + c * damp)))
-                .collect();
+            let terms: Vec<(usize, f64)> = force.iter().map(|&(col, f)| (col, -r * f)).collect();
             self.add_torque(a, body, &terms);
         }
     }

@@ -300,13 +300,11 @@ impl NetworkPlant {
         if !self.model.meshes[i].no_pull || state.contact == Contact::Apart {
             return;
         }
-        let pushing = MeshState {
-            clipped: false,
-            ..state
-        };
         let flank = f64::from(state.contact.sign());
         let speed = self.harmonic_speed_rad_s;
-        let force = self.model.mesh_force_n(i, pushing, &self.u, speed);
+        let force = self
+            .model
+            .mesh_force_n(i, state.unclipped(), &self.u, speed);
         self.mode.meshes[i].clipped = flank * force <= 0.0;
     }
 

@@ -1,9 +1,9 @@
 //! The matrix–state product of the plant of any rig: a matrix stored by columns, each
 //! padded to a multiple of 4 rows, times the state (a mode's A for the Taylor expansion,
 //! square; the fused step's rows: the mechanical rows of e^{A h} and the switching
-//! functions' values and rates after it). Fused multiply-adds (one rounding each, the same bytes on every CPU,
-//! `crate::fma`): compiled for AVX2 and FMA where the CPU has them, else for baseline
-//! x86-64.
+//! functions' values and rates after it). Fused multiply-adds (one rounding each, the
+//! same bytes on every CPU, `crate::fma`): compiled for AVX2 and FMA where the CPU has
+//! them, else for baseline x86-64.
 
 /// out[..rows] = M u for M of `rows` rows (a multiple of 4) stored by columns, one column
 /// per state of `u`, columns whose weight is 0 passed over.
