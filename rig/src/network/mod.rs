@@ -15,7 +15,8 @@
 //! functions' values and rates) and the events, built on first use and cached.
 //! `equilibrium.rs` the steady state at a set speed and load (and at rest, a loop's
 //! locked torque carried), and the model assembled with a loop's preload.
-//! `block.rs` the samples and impacts a run gives, `columns.rs` them as named columns.
+//! `block.rs` the samples and impacts a run gives, `output.rs` the samples held by
+//! state and turned into signals a chunk at a time, `columns.rs` them as named columns.
 //! `plant.rs` the plant, `segment.rs` its set points over time, `stepping.rs` its exact
 //! steps and switches, `products.rs` the matrix–state products they take.
 
@@ -28,6 +29,7 @@ mod layout;
 mod mesh_model;
 mod mode;
 mod model;
+mod output;
 mod plant;
 mod products;
 mod segment;

@@ -206,25 +206,23 @@ impl NetworkModel {
         k * overlap + c * rate
     }
 
-    /// The elastic torque (N m) a shaft carries from its first body to its second,
-    /// k(θa − θb) + T0 (what strain gauges on it read).
-    pub fn shaft_torque_nm(&self, shaft: usize, u: &[f64]) -> f64 {
-        let s = &self.shafts[shaft];
-        let l = &self.layout;
-        let [a, b] = s.between;
-        s.stiffness_nm_per_rad * (u[l.angle(a)] - u[l.angle(b)]) + s.preload_nm
-    }
-
-    /// The motor's torque (N m) in `motor` mode at `u`; 0 without a motor.
-    pub fn motor_torque_nm(&self, motor: MotorMode, u: &[f64]) -> f64 {
+    /// The motor's torque (N m) in `motor` mode as a linear form of the state (index,
+    /// coefficient): the loop's command kp(Ω − ω_f) + ki∫, or the limit it is held at;
+    /// none without a motor.
+    pub fn motor_torque_terms(&self, motor: MotorMode) -> Vec<(usize, f64)> {
         let Some(m) = &self.motor else {
-            return 0.0;
+            return Vec::new();
         };
+        let l = &self.layout;
         let limit = m.limit_nm.unwrap_or(f64::INFINITY);
         match motor {
-            MotorMode::Linear => self.controller_nm(u),
-            MotorMode::LimitHigh => limit,
-            MotorMode::LimitLow => -limit,
+            MotorMode::Linear => vec![
+                (l.set_speed(), m.kp_nms_per_rad),
+                (l.filtered(), -m.kp_nms_per_rad),
+                (l.integral(), m.ki_nm_per_rad),
+            ],
+            MotorMode::LimitHigh => vec![(l.unit(), limit)],
+            MotorMode::LimitLow => vec![(l.unit(), -limit)],
         }
     }
 

@@ -13,6 +13,7 @@ use super::block::{NetworkBlock, NetworkImpact};
 use super::equilibrium::{assembled, equilibrium};
 use super::mode::{Contact, MeshState, NetMode};
 use super::model::NetworkModel;
+use super::output::SampleChunk;
 use super::system::{SystemCache, fastest_rate};
 
 /// Where a run starts.
@@ -73,10 +74,14 @@ pub struct NetworkPlant {
     pub(super) edge: Vec<(f64, f64)>,
     /// The same at the step's end.
     pub(super) next_edge: Vec<(f64, f64)>,
-    /// Scratch: the step's end state, the fused step's rows and the Taylor vectors.
+    /// Scratch: the step's end state, the fused step's rows, the forcing states' rows and
+    /// the Taylor vectors.
     pub(super) next: Vec<f64>,
     pub(super) fused_out: Vec<f64>,
+    pub(super) forcing_out: Vec<f64>,
     pub(super) taylor: Vec<Vec<f64>>,
+    /// The samples stored and not yet written to a block.
+    pub(super) chunk: SampleChunk,
 }
 
 impl NetworkPlant {
@@ -153,7 +158,9 @@ impl NetworkPlant {
             next_edge: Vec::new(),
             next: vec![0.0; len],
             fused_out: Vec::new(),
+            forcing_out: Vec::new(),
             taylor: vec![vec![0.0; len]; TAYLOR_ORDER + 1],
+            chunk: SampleChunk::new(len),
         };
         plant.start(start)?;
         Ok(plant)
@@ -337,25 +344,25 @@ impl NetworkPlant {
     }
 
     /// Runs `samples` output samples, appending them to `block`: sample n holds the state
-    /// at t = n / rate, then the plant advances to the next.
+    /// at t = n / rate, then the plant advances to the next. On an error the samples
+    /// before it are in `block`.
     pub fn run(&mut self, samples: usize, block: &mut NetworkBlock) -> Result<(), RigError> {
         let result = self.run_samples(samples, block);
+        self.flush_samples(block);
         result.and_then(|()| self.check_bounds())
     }
 
     /// Appends the state at the current time to `block`: the sample [`Self::run`] writes
     /// first (its set points taken up if they change now).
     pub fn sample_now(&mut self, block: &mut NetworkBlock) {
-        if self.segment_end.is_some_and(|end| self.sample >= end) {
-            self.begin_segment();
-        }
-        self.write_sample(block);
+        self.store_sample(block);
+        self.flush_samples(block);
     }
 
-    /// [`Self::run`] without the final check of bounds.
+    /// [`Self::run`] without the final check of bounds, its last samples maybe still held.
     fn run_samples(&mut self, samples: usize, block: &mut NetworkBlock) -> Result<(), RigError> {
         for _ in 0..samples {
-            self.sample_now(block);
+            self.store_sample(block);
             for k in 0..self.substeps {
                 self.step_start_s = self.time_s() + f64::from(k) * self.step_s;
                 self.step()?;
@@ -366,6 +373,31 @@ impl NetworkPlant {
             }
         }
         Ok(())
+    }
+
+    /// Holds the current sample (its set points taken up if they change now), writing
+    /// out the samples held before it where it cannot join them.
+    fn store_sample(&mut self, block: &mut NetworkBlock) {
+        if self.segment_end.is_some_and(|end| self.sample >= end) {
+            self.flush_samples(block);
+            self.begin_segment();
+        }
+        if !self.chunk.takes(self.sample, &self.mode) {
+            self.flush_samples(block);
+        }
+        self.chunk.store(self.sample, &self.mode, &self.u);
+    }
+
+    /// Appends the samples held to `block`.
+    fn flush_samples(&mut self, block: &mut NetworkBlock) {
+        if self.chunk.is_empty() {
+            return;
+        }
+        let Some(cache) = self.cache.as_mut() else {
+            return;
+        };
+        let system = cache.get(&self.model, self.chunk.mode());
+        self.chunk.flush(&system.outputs, self.output_step_s, block);
     }
 
     /// Refuses a state that is not finite or turns impossibly fast.
@@ -382,31 +414,6 @@ impl NetworkPlant {
             reason: "a body's speed left the finite range or exceeded 1e5 rad/s".into(),
             state: self.u[..l.mechanical()].to_vec(),
         })
-    }
-
-    /// Appends the current sample to `block`.
-    fn write_sample(&self, block: &mut NetworkBlock) {
-        let l = &self.model.layout;
-        let u = &self.u;
-        let sense = |body: usize| self.model.speed_ratio[body].signum();
-        block.time_s.push(self.time_s());
-        for i in 0..l.bodies {
-            block.angle_rad[i].push(sense(i) * self.model.absolute_angle_rad(i, u));
-            block.speed_rad_s[i].push(sense(i) * u[l.speed(i)]);
-        }
-        for (i, column) in block.shaft_torque_nm.iter_mut().enumerate() {
-            let body = self.model.shafts[i].between[0];
-            column.push(sense(body) * self.model.shaft_torque_nm(i, u));
-        }
-        for i in 0..self.model.meshes.len() {
-            let state = self.mode.meshes[i];
-            let speed = self.harmonic_speed_rad_s;
-            block.mesh_force_n[i].push(self.model.mesh_force_n(i, state, u, speed));
-            block.contact[i].push(state.contact.sign());
-        }
-        block
-            .motor_torque_nm
-            .push(self.model.motor_torque_nm(self.mode.motor, u));
     }
 
     /// Time of the current sample (s).

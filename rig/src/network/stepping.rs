@@ -86,7 +86,10 @@ impl NetworkPlant {
             &mut self.fused_out,
         );
         self.next[..mechanical].copy_from_slice(&self.fused_out[..mechanical]);
-        system.advance_forcing(mechanical, &self.u, &mut self.next);
+        if self.forcing_out.len() < system.forcing_rows {
+            self.forcing_out.resize(system.forcing_rows, 0.0);
+        }
+        system.advance_forcing(mechanical, &self.u, &mut self.next, &mut self.forcing_out);
         self.next_edge.clear();
         let (values, rates) = (mechanical, mechanical + system.row_events);
         for (form, slot) in system.events.iter().zip(&system.row_slot) {

@@ -10,6 +10,8 @@ use crate::matrix_exp::{exp_powers_balanced, forcing_scales, spectral_radius};
 use super::events::{EventForm, event_forms};
 use super::mode::NetMode;
 use super::model::{NetworkModel, SegmentRates};
+use super::output::OutputForms;
+use super::products;
 
 /// One mode's linear system.
 #[derive(Clone, Debug)]
@@ -28,27 +30,27 @@ pub struct ModeSystem {
     pub row_slot: Vec<Option<usize>>,
     /// Number of row events.
     pub row_events: usize,
-    /// The forcing block of e^{A h}, its entries that are not zero: (row, column, value).
-    /// The forcing states evolve by themselves, the same in every mode.
-    pub forcing_step: Vec<(usize, usize, f64)>,
+    /// The forcing block of e^{A h} (rows and columns of the forcing states), column-major
+    /// with `forcing_rows` rows a column. The forcing states evolve by themselves, the
+    /// same in every mode.
+    pub forcing_step: Vec<f64>,
+    /// Rows of each column of `forcing_step` (the forcing states, rounded up to a
+    /// multiple of 4).
+    pub forcing_rows: usize,
     /// The switching functions.
     pub events: Vec<EventForm>,
+    /// The signals a sample writes, as linear forms of the state.
+    pub outputs: OutputForms,
 }
 
 impl ModeSystem {
-    /// The forcing states at the step's end, from `u` at its start, into `next` (each
-    /// row summed apart: `forcing_step` runs row by row).
+    /// The forcing states at the step's end, from `u` at its start, into `next` (`out`
+    /// a scratch of at least `forcing_rows`).
     #[inline]
-    pub fn advance_forcing(&self, mechanical: usize, u: &[f64], next: &mut [f64]) {
-        next[mechanical..].fill(0.0);
-        let mut entries = self.forcing_step.iter().peekable();
-        while let Some(&(row, col, value)) = entries.next() {
-            let mut sum = value * u[col];
-            while let Some(&(_, col, value)) = entries.next_if(|e| e.0 == row) {
-                sum += value * u[col];
-            }
-            next[row] = sum;
-        }
+    pub fn advance_forcing(&self, mechanical: usize, u: &[f64], next: &mut [f64], out: &mut [f64]) {
+        let forcing = next.len().min(mechanical + self.forcing_rows) - mechanical;
+        products::rows(&self.forcing_step, self.forcing_rows, &u[mechanical..], out);
+        next[mechanical..mechanical + forcing].copy_from_slice(&out[..forcing]);
     }
 }
 
@@ -113,20 +115,22 @@ impl SystemCache {
         let step = exp_step(model, &a, self.step_s, self.rho);
         let events = event_forms(model, mode, &a, self.rates.harmonic_rad_s);
         let a_columns = padded_columns(&a, padded);
+        let outputs = OutputForms::of(model, mode, self.rates.harmonic_rad_s);
         self.built
-            .push(fused_system(model, a_columns, &step, events));
+            .push(fused_system(model, a_columns, &step, events, outputs));
         self.systems.insert(*mode, self.built.len() - 1);
         self.built.len() - 1
     }
 }
 
-/// The system of a mode from its A (`a_columns`), e^{A h} (`step`) and switching
-/// functions.
+/// The system of a mode from its A (`a_columns`), e^{A h} (`step`), switching functions
+/// and signals.
 fn fused_system(
     model: &NetworkModel,
     a_columns: Vec<f64>,
     step: &DMatrix<f64>,
     events: Vec<EventForm>,
+    outputs: OutputForms,
 ) -> ModeSystem {
     let l = &model.layout;
     let mechanical = l.mechanical();
@@ -155,11 +159,14 @@ fn fused_system(
             column[mechanical + row_events + j] = times_step(&form.slope, col);
         }
     }
-    let forcing_step = (mechanical..step.nrows())
-        .flat_map(|row| (mechanical..step.ncols()).map(move |col| (row, col)))
-        .map(|(row, col)| (row, col, step[(row, col)]))
-        .filter(|&(_, _, value)| value != 0.0)
-        .collect();
+    let forcing = step.nrows() - mechanical;
+    let forcing_rows = forcing.div_ceil(4) * 4;
+    let mut forcing_step = vec![0.0; forcing_rows * forcing];
+    for col in 0..forcing {
+        for row in 0..forcing {
+            forcing_step[col * forcing_rows + row] = step[(mechanical + row, mechanical + col)];
+        }
+    }
     ModeSystem {
         a_columns,
         fused,
@@ -167,7 +174,9 @@ fn fused_system(
         row_slot,
         row_events,
         forcing_step,
+        forcing_rows,
         events,
+        outputs,
     }
 }
 
