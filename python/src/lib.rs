@@ -3,6 +3,7 @@
 //! command of the same name.
 
 mod analyse;
+mod argument_names;
 mod errors;
 mod interrupt;
 mod live;

@@ -8,18 +8,9 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use rig::{COLUMN_NAMES, Flank, SignalBlock};
 use testrig::steady_point::{PointRun, PointSpec, approach_named, run_point};
-use testrig::vocabulary::InputNames;
 
+use crate::argument_names::ARGUMENT_NAMES;
 use crate::interrupt::Interrupt;
-
-/// The Python arguments' names, for messages.
-pub(crate) const ARGUMENT_NAMES: InputNames = InputNames {
-    rpm: "rpm",
-    load: "load_nm",
-    settle: "settle_s",
-    duration: "duration_s",
-    rate: "rate_hz",
-};
 
 /// Every true signal of the window, column by column in [`COLUMN_NAMES`]' order.
 #[derive(Default)]

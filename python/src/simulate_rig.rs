@@ -9,9 +9,9 @@ use rig::{column_names, columns};
 use testrig::rig_point::{RigPointRun, RigPointSpec, run_rig_point};
 use testrig::scenario::{ScenarioSource, source_rig_with_overrides};
 
+use crate::argument_names::ARGUMENT_NAMES;
 use crate::errors::TestrigError;
 use crate::interrupt::Interrupt;
-use crate::simulate::ARGUMENT_NAMES;
 
 /// The rig a Python caller names: a path (str or os.PathLike) to a rig file, or a dict
 /// of its tables; `overrides` as `PATH=VALUE`.

@@ -3,38 +3,13 @@
 //! comments is an edge, at two levels (the crate's modules, each folder as one; and the
 //! files inside each folder: `topology/`, `network/`, `plant/`, `judge/`).
 
-use std::collections::{BTreeMap, BTreeSet};
+use std::collections::BTreeMap;
 use std::path::Path;
 
-type Graph = BTreeMap<String, BTreeSet<String>>;
+#[path = "support/import_graph.rs"]
+mod import_graph;
 
-/// Module names a piece of code refers to after `prefix` (`crate::` or `super::`).
-fn referenced(code: &str, prefix: &str) -> BTreeSet<String> {
-    let mut names = BTreeSet::new();
-    for line in code.lines() {
-        let line = line.split("//").next().unwrap_or("");
-        let mut rest = line;
-        while let Some(at) = rest.find(prefix) {
-            rest = &rest[at + prefix.len()..];
-            let groups: Vec<&str> = if let Some(inner) = rest.strip_prefix('{') {
-                inner.split('}').next().unwrap_or("").split(',').collect()
-            } else {
-                vec![rest]
-            };
-            for g in groups {
-                let name: String = g
-                    .trim()
-                    .chars()
-                    .take_while(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || *c == '_')
-                    .collect();
-                if !name.is_empty() && g.trim()[name.len()..].starts_with("::") {
-                    names.insert(name);
-                }
-            }
-        }
-    }
-    names
-}
+use import_graph::{Graph, cycle, referenced};
 
 fn files(dir: &Path) -> Vec<(String, String)> {
     let mut out: Vec<(String, String)> = std::fs::read_dir(dir)
@@ -50,38 +25,6 @@ fn files(dir: &Path) -> Vec<(String, String)> {
     out
 }
 
-/// A cycle of `graph`, if there is one, as the names along it.
-fn cycle(graph: &Graph) -> Option<Vec<String>> {
-    fn visit(
-        node: &str,
-        graph: &Graph,
-        done: &mut BTreeSet<String>,
-        path: &mut Vec<String>,
-    ) -> Option<Vec<String>> {
-        if let Some(at) = path.iter().position(|n| n == node) {
-            let mut found = path[at..].to_vec();
-            found.push(node.to_string());
-            return Some(found);
-        }
-        if done.contains(node) {
-            return None;
-        }
-        path.push(node.to_string());
-        for next in graph.get(node).into_iter().flatten() {
-            if let Some(found) = visit(next, graph, done, path) {
-                return Some(found);
-            }
-        }
-        path.pop();
-        done.insert(node.to_string());
-        None
-    }
-    let mut done = BTreeSet::new();
-    graph
-        .keys()
-        .find_map(|n| visit(n, graph, &mut done, &mut Vec::new()))
-}
-
 /// The sub-folders of the crate's source, each a module of files.
 const FOLDERS: [&str; 4] = ["judge", "network", "plant", "topology"];
 
@@ -91,7 +34,7 @@ fn graphs() -> (Graph, BTreeMap<&'static str, Graph>) {
     let mut crate_level = Graph::new();
     for (name, code) in files(&src) {
         if name != "lib" {
-            let edges = referenced(&code, "crate::");
+            let edges = referenced(&code, &["crate::"]);
             crate_level.entry(name).or_default().extend(edges);
         }
     }
@@ -99,14 +42,14 @@ fn graphs() -> (Graph, BTreeMap<&'static str, Graph>) {
     for folder in FOLDERS {
         let mut inside = Graph::new();
         for (name, code) in files(&src.join(folder)) {
-            let mut outward = referenced(&code, "crate::");
+            let mut outward = referenced(&code, &["crate::"]);
             outward.remove(folder);
             crate_level
                 .entry(folder.into())
                 .or_default()
                 .extend(outward);
             if name != "mod" {
-                inside.insert(name, referenced(&code, "super::"));
+                inside.insert(name, referenced(&code, &["super::"]));
             }
         }
         for (name, edges) in inside.iter_mut() {
@@ -124,7 +67,7 @@ fn graphs() -> (Graph, BTreeMap<&'static str, Graph>) {
 fn the_reference_finder_sees_each_form_of_path() {
     let code =
         "use crate::a::B;\nuse crate::{b::C, c::d};\nlet x = crate::e::f(); // crate::g::h\n";
-    let found: Vec<String> = referenced(code, "crate::").into_iter().collect();
+    let found: Vec<String> = referenced(code, &["crate::"]).into_iter().collect();
     assert_eq!(found, ["a", "b", "c", "e"]);
     let mut looped = Graph::new();
     looped.insert("x".into(), ["y".into()].into());

@@ -8,6 +8,7 @@ pub(crate) mod modes;
 pub(crate) mod panel;
 pub(crate) mod params;
 pub(crate) mod run;
+pub(crate) mod signal_writer;
 pub(crate) mod simulate;
 pub(crate) mod simulate_rig;
 pub(crate) mod sweep;

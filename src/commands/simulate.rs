@@ -1,17 +1,15 @@
 //! `testrig simulate`: the plant alone, unpaced, at a set speed and load.
 
-use std::fs::File;
-use std::io::BufWriter;
 use std::path::{Path, PathBuf};
 
-use anyhow::Context;
-use rig::{COLUMN_NAMES, Flank, Impact, SignalBlock, SteadySummary};
+use rig::{COLUMN_NAMES, Flank, Impact, SteadySummary};
 use serde::Serialize;
 
+use super::signal_writer::SignalWriter;
 use crate::cli::SimulateArgs;
 use testrig::plots::{RasterImpact, write_impact_raster};
-use testrig::recording::{ImpactLog, PartialFile, start_journal};
-use testrig::runtime::{clear_previous_run, write_command_manifest};
+use testrig::recording::{ImpactLog, PartialFile};
+use testrig::runtime::write_command_manifest;
 use testrig::steady_point::{PointRun, PointSpec, run_point};
 use testrig::vocabulary::FLAG_NAMES;
 
@@ -179,50 +177,6 @@ fn print_text(r: &Report) {
             n("crest_factor"),
             n("kurtosis")
         );
-    }
-}
-
-/// Streams the true signals to `signals.csv`, under a temporary name until finished.
-pub(super) struct SignalWriter {
-    csv: csv::Writer<BufWriter<File>>,
-    file: PartialFile,
-}
-
-impl SignalWriter {
-    /// Prepares `dir` as simulate's output folder (an earlier simulate's files removed;
-    /// another run's refused unless `replace`; a journal of finished files started) and
-    /// opens `signals.csv` in it.
-    pub(super) fn create<S: AsRef<[u8]>>(
-        dir: &Path,
-        replace: bool,
-        header: impl IntoIterator<Item = S>,
-    ) -> anyhow::Result<Self> {
-        std::fs::create_dir_all(dir)
-            .with_context(|| format!("--out {}: cannot create the folder", dir.display()))?;
-        clear_previous_run(dir, "simulate", replace)?;
-        start_journal(dir, "simulate")?;
-        let file = PartialFile::new(&dir.join("signals.csv"));
-        let mut csv = csv::Writer::from_writer(file.create()?);
-        csv.write_record(header)?;
-        Ok(Self { csv, file })
-    }
-
-    fn write(&mut self, block: &SignalBlock) -> anyhow::Result<()> {
-        for i in 0..block.len() {
-            self.write_row(&block.row(i))?;
-        }
-        Ok(())
-    }
-
-    /// Writes one row of numbers.
-    pub(super) fn write_row(&mut self, row: &[f64]) -> anyhow::Result<()> {
-        self.csv.serialize(row).context("writing signals.csv")
-    }
-
-    pub(super) fn finish(mut self) -> anyhow::Result<PathBuf> {
-        self.csv.flush().context("writing signals.csv")?;
-        drop(self.csv);
-        self.file.commit()
     }
 }
 

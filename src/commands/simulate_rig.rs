@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 use rig::{NetworkImpact, column_names, columns};
 use serde::Serialize;
 
-use super::simulate::SignalWriter;
+use super::signal_writer::SignalWriter;
 use crate::cli::SimulateArgs;
 use testrig::plots::{AveragePlot, write_synchronous_average};
 use testrig::recording::{ImpactLog, PartialFile};

@@ -11,11 +11,10 @@ use rig::{
 use serde::{Deserialize, Serialize};
 
 use super::case_recording::CaseRecording;
-use super::case_rig::{CaseRig, FaultLabel};
+use super::case_rig::FaultLabel;
 use super::grid::{Case, SweepPlan};
 use super::lines::{OrderLine, order_line, peaks};
 use super::measured_condition::MeasuredCondition;
-use super::rig_case::run_rig_case;
 use super::sequence::Direction;
 use crate::chain::{
     AdcChoice, AnalyserWords, ChainStages, GearCondition, InlineChain, MICROSTRAIN_PER_STRAIN,
@@ -137,20 +136,6 @@ pub fn measured_samples(plan: &SweepPlan) -> usize {
 
 /// Longest run-up from rest a case waits for before it settles (s).
 const MAX_RUN_UP_S: f64 = 600.0;
-
-/// Runs `case` of `plan` on a plant of its own, recording into `sweep_dir` where the
-/// sweep records.
-pub fn run_case(
-    plan: &SweepPlan,
-    case: &Case,
-    sweep_dir: Option<&Path>,
-) -> anyhow::Result<CaseResult> {
-    if let CaseRig::File(rig) = &case.rig {
-        return run_rig_case(plan, case, rig, sweep_dir);
-    }
-    let mut plant = settled_plant(plan, case)?;
-    measure_case(plan, case, &mut plant, sweep_dir)
-}
 
 /// The plant of `case`, brought to its point by its approach and settled, standing
 /// [`chain_lead_s`] before the case's window. From rest it settles for `settle_s` once

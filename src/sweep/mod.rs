@@ -6,13 +6,14 @@
 //! `rig::Approach`), `case_rig.rs` (a case's rig: a preset's, or a rig file's with its
 //! faults),
 //! `sequence.rs` (`Sequence`: each point on its own, or up and down;
-//! `Direction`), `case.rs` (one case: plant settled, the chain inline into ADC and
+//! `Direction`), `run_case.rs` (a case on a plant of its own, by its
+//! rig), `case.rs` (one case: plant settled, the chain inline into ADC and
 //! analyser, regime and the judge's motion), `rig_case.rs` (a rig file's case: the plant of
 //! any rig through the same chain), `measured_condition.rs` (the indicators of the
 //! signal as the chain measures it), `case_recording.rs` (a case's WAV/CSV/UFF58 in
 //! `recordings/`), `series.rs` (the lab's run: one plant per load
-//! stepping the speeds up and back down; a series is one unit of work), `knock.rs` (a
-//! point and its knocked repeats on one plant), `held_motions.rs` (the motions each point
+//! stepping the speeds up and back down; a series is one unit of work), `knock.rs` (the
+//! seeded knock), `knocked.rs` (a point and its knocked repeats on one plant), `held_motions.rs` (the motions each point
 //! held, by approach), `lines.rs` (order
 //! lines over their local floor), `table.rs` (a JSON per case, `cases.csv`), `labels.rs`
 //! (`labels.csv`: each case's recordings, fault, point, motion and indicators), `meta.rs`
@@ -29,6 +30,7 @@ pub(crate) mod facts;
 pub(crate) mod grid;
 pub(crate) mod held_motions;
 pub(crate) mod knock;
+pub(crate) mod knocked;
 pub(crate) mod labels;
 pub(crate) mod lines;
 pub(crate) mod measured_condition;
@@ -36,6 +38,7 @@ pub(crate) mod meta;
 pub(crate) mod report;
 pub(crate) mod rig_case;
 pub(crate) mod rig_report;
+pub(crate) mod run_case;
 pub(crate) mod runner;
 pub(crate) mod sequence;
 pub(crate) mod series;
@@ -44,10 +47,11 @@ pub(crate) mod sweep_toml;
 pub(crate) mod table;
 pub(crate) mod thesis;
 
-pub use case::{CaseResult, run_case};
+pub use case::CaseResult;
 pub use case_rig::{CaseRig, FaultLabel};
 pub use grid::{Case, SweepPlan, build_sweep};
 pub use meta::{SweepMeta, fingerprint, read_meta, sweep_meta};
+pub use run_case::run_case;
 pub use runner::{Assembled, SweepOptions, SweepOutcome, assemble, missing_cases, run_sweep};
 pub use sequence::{Direction, Sequence};
 pub use shard::Shard;

@@ -1,0 +1,27 @@
+//! The lab's doubtful repeat: a point started on its own (from rest, or from the static
+//! load), measured, then its driven gear knocked by a seeded kick (`knock.rs`), settled
+//! again and measured again, as many times as the sweep's `case.repeats`. Where the point
+//! can hold more than one motion, a knock may move the rig from one to another.
+
+use std::path::Path;
+
+use super::case::{CaseResult, chain_lead_s, measure_case, settled_plant};
+use super::grid::{Case, SweepPlan};
+use super::series::on_one_plant;
+
+/// Runs a point and its knocked repeats, in order, on one plant; a failure ends the
+/// series (the repeats after it are reported failed with it).
+pub fn run_knocked(
+    plan: &SweepPlan,
+    series: &[&Case],
+    sweep_dir: Option<&Path>,
+) -> Vec<(usize, anyhow::Result<CaseResult>)> {
+    let settle = ((plan.settle_s - chain_lead_s(plan)) * plan.rate_hz).round() as usize;
+    on_one_plant(series, settled_plant(plan, series[0]), |i, case, plant| {
+        if i > 0 {
+            plant.kick_driven_gear(case.kick_rad_s);
+            plant.skip(settle)?;
+        }
+        measure_case(plan, case, plant, sweep_dir)
+    })
+}
