@@ -253,8 +253,15 @@ pub fn settled_rig_plant(spec: &RigPointSpec, names: InputNames) -> anyhow::Resu
     let start = spec.approach.network_start();
     let mut plant = NetworkPlant::new(rig, schedule, spec.rate_hz, start)
         .with_context(|| format!("rig `{}` at {} {}", rig.name, names.rpm, spec.rpm))?;
-    let mut block = NetworkBlock::new(rig.bodies.len(), rig.shafts.len(), rig.meshes.len());
-    let mut left = ((spec.approach.lead_in_s() + spec.settle_s) * spec.rate_hz).round() as usize;
+    let settle = ((spec.approach.lead_in_s() + spec.settle_s) * spec.rate_hz).round() as usize;
+    skip_rig_samples(&mut plant, settle)?;
+    Ok(plant)
+}
+
+/// Runs `plant` on by `samples` samples, its signals, impacts and revolutions dropped.
+pub fn skip_rig_samples(plant: &mut NetworkPlant, samples: usize) -> Result<(), rig::RigError> {
+    let mut block = plant.block();
+    let mut left = samples;
     while left > 0 {
         let n = left.min(BLOCK);
         block.clear();
@@ -263,7 +270,7 @@ pub fn settled_rig_plant(spec: &RigPointSpec, names: InputNames) -> anyhow::Resu
     }
     plant.take_impacts();
     plant.take_revolutions();
-    Ok(plant)
+    Ok(())
 }
 
 /// The shaft the judge and the strain column watch: the gauged one, else the last.

@@ -129,7 +129,7 @@ pub fn build_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<Swe
     }
     let repeats = repeats(src, &file.case)?;
     if matches!(base, CaseRig::File(_)) {
-        check_rig_file_sweep(src, file, repeats)?;
+        check_rig_file_sweep(src, file)?;
     }
     check_case_count(src, grid, file.case.sequence, repeats)?;
     let mut swept = Vec::new();
@@ -275,21 +275,9 @@ fn repeats(src: &ScenarioSource, case: &CaseFile) -> anyhow::Result<u32> {
     Ok(n)
 }
 
-/// A sweep on a rig file, checked: each point on a plant of its own from the static load
-/// (the lab's run up and down and the knocked repeats run on the thesis's plant), the
-/// backlash by its mesh's path, and a gauged shaft for the chain's strain.
-fn check_rig_file_sweep(
-    src: &ScenarioSource,
-    file: &SweepFile,
-    repeats: u32,
-) -> anyhow::Result<()> {
-    if file.case.sequence != Sequence::Static || repeats > 0 {
-        return Err(src.error(
-            0..0,
-            "case.sequence",
-            "a rig file's sweep runs each point from the static load: leave out sequence and repeats",
-        ));
-    }
+/// A sweep on a rig file, checked: the backlash by its mesh's path, and a gauged shaft
+/// for the chain's strain.
+fn check_rig_file_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<()> {
     if !file.grid.backlash_mm.is_empty() {
         return Err(src.error(
             0..0,

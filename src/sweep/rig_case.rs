@@ -7,7 +7,7 @@
 
 use std::path::Path;
 
-use rig::{NetworkBlock, RigTopology};
+use rig::{NetworkPlant, RigTopology};
 
 use super::case::{
     CaseInstruments, CaseResult, KEPT_REVOLUTIONS, case_instruments, case_result, chain_lead_s,
@@ -41,17 +41,40 @@ pub fn run_rig_case(
     rig: &RigTopology,
     sweep_dir: Option<&Path>,
 ) -> anyhow::Result<CaseResult> {
-    let lead_s = chain_lead_s(plan);
+    let mut plant = rig_case_plant(plan, case, rig)?;
+    measure_rig_case(plan, case, rig, &mut plant, sweep_dir)
+}
+
+/// A plant of its own for `case` on `rig`, brought to its point by its approach and
+/// settled, standing [`chain_lead_s`] before the case's window.
+pub fn rig_case_plant(
+    plan: &SweepPlan,
+    case: &Case,
+    rig: &RigTopology,
+) -> anyhow::Result<NetworkPlant> {
     let spec = RigPointSpec {
         rig,
         rpm: case.rpm,
         load_nm: case.load_nm,
-        settle_s: plan.settle_s - lead_s,
+        settle_s: plan.settle_s - chain_lead_s(plan),
         duration_s: plan.measure_s,
         rate_hz: plan.rate_hz,
         approach: case.approach,
     };
-    let mut plant = settled_rig_plant(&spec, NAMES)?;
+    settled_rig_plant(&spec, NAMES)
+}
+
+/// Measures `case` of `plan` on `plant` (its rig `rig`), standing [`chain_lead_s`]
+/// before the case's window: the chain's lead run, then the window measured, judged and
+/// recorded into `sweep_dir` where the sweep records.
+pub fn measure_rig_case(
+    plan: &SweepPlan,
+    case: &Case,
+    rig: &RigTopology,
+    plant: &mut NetworkPlant,
+    sweep_dir: Option<&Path>,
+) -> anyhow::Result<CaseResult> {
+    let lead_s = chain_lead_s(plan);
     let mut names = SignalNames::of(&RIG_SIGNALS);
     let stages = gauged_stages(&plan.chain.stages, rig)?;
     let CaseInstruments {
@@ -65,7 +88,7 @@ pub fn run_rig_case(
     let mut measured = MeasuredCondition::new(plan, gauge_of(rig)?.microstrain_per_nm());
     let lead = (lead_s * plan.rate_hz).round() as usize;
     let total = lead + (plan.measure_s * plan.rate_hz).round() as usize;
-    let mut block = NetworkBlock::new(rig.bodies.len(), rig.shafts.len(), rig.meshes.len());
+    let mut block = plant.block();
     let mut done = 0;
     while done < total {
         let n = BLOCK.min(if done < lead { lead } else { total } - done);

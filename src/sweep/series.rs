@@ -5,10 +5,14 @@
 
 use std::path::Path;
 
-use rig::{Plant, Schedule, Track};
+use anyhow::Context;
+use rig::{NetworkPlant, NetworkStart, Plant, RigTopology, Schedule, Track};
 
 use super::case::{CaseResult, chain_lead_s, measure_case, measured_samples, plant_config};
+use super::case_rig::CaseRig;
 use super::grid::{Case, SweepPlan};
+use super::rig_case::measure_rig_case;
+use crate::rig_point::skip_rig_samples;
 
 /// Time over which the speed knob is turned from one point to the next (s): the
 /// operator's few seconds; the speed loop (0.5 Hz) follows within about as long.
@@ -37,38 +41,61 @@ pub fn run_series(
     series: &[&Case],
     sweep_dir: Option<&Path>,
 ) -> Vec<(usize, anyhow::Result<CaseResult>)> {
+    let schedule = series_schedule(plan, series);
+    let hold_s = plan.settle_s + plan.measure_s;
+    // Samples before case i's chain lead, and how far the plant has run.
+    let lead_from = |i: usize| {
+        let window_from_s = i as f64 * (STEP_RAMP_S + hold_s) + plan.settle_s;
+        ((window_from_s - chain_lead_s(plan)) * plan.rate_hz).round() as usize
+    };
+    let mut position = 0usize;
+    let mut advance = |i: usize| {
+        let skip = lead_from(i).saturating_sub(position);
+        position = lead_from(i).max(position) + measured_samples(plan);
+        skip
+    };
+    if let CaseRig::File(rig) = &series[0].rig {
+        let plant = series_rig_plant(plan, series, rig, schedule);
+        return on_one_plant(series, plant, |i, case, plant| {
+            skip_rig_samples(plant, advance(i))?;
+            measure_rig_case(plan, case, rig, plant, sweep_dir)
+        });
+    }
     let plant = series[0]
         .rig
         .preset("the lab's run up and down")
         .and_then(|params| {
-            Plant::new(
-                params.clone(),
-                series_schedule(plan, series),
-                plant_config(plan),
-            )
-            .map_err(anyhow::Error::from)
+            Plant::new(params.clone(), schedule, plant_config(plan)).map_err(anyhow::Error::from)
         });
-    let hold_s = plan.settle_s + plan.measure_s;
-    let mut position = 0usize;
     on_one_plant(series, plant, |i, case, plant| {
-        let window_from_s = i as f64 * (STEP_RAMP_S + hold_s) + plan.settle_s;
-        let lead_from = ((window_from_s - chain_lead_s(plan)) * plan.rate_hz).round() as usize;
-        let result = plant
-            .skip(lead_from.saturating_sub(position))
-            .map_err(anyhow::Error::from)
-            .and_then(|()| measure_case(plan, case, plant, sweep_dir));
-        position = lead_from.max(position) + measured_samples(plan);
-        result
+        plant.skip(advance(i))?;
+        measure_case(plan, case, plant, sweep_dir)
     })
+}
+
+/// The plant of a rig file's series, steady at its first point under `schedule`, its
+/// load checked as every rig's.
+fn series_rig_plant(
+    plan: &SweepPlan,
+    series: &[&Case],
+    rig: &RigTopology,
+    schedule: Schedule,
+) -> anyhow::Result<NetworkPlant> {
+    series[0]
+        .rig
+        .check_load(series[0].load_nm)
+        .map_err(|e| anyhow::anyhow!("grid.load_nm {}: {e}", series[0].load_nm))?;
+    NetworkPlant::new(rig, schedule, plan.rate_hz, NetworkStart::Steady)
+        .with_context(|| format!("rig `{}`: the lab's run up and down", rig.name))
 }
 
 /// Runs `measure(i, case, plant)` for each case of `series` in order on `plant`; a plant
 /// that could not be made fails every case, and a failed case ends the series (the cases
 /// after it are reported failed with it).
-pub fn on_one_plant(
+pub fn on_one_plant<P>(
     series: &[&Case],
-    plant: anyhow::Result<Plant>,
-    mut measure: impl FnMut(usize, &Case, &mut Plant) -> anyhow::Result<CaseResult>,
+    plant: anyhow::Result<P>,
+    mut measure: impl FnMut(usize, &Case, &mut P) -> anyhow::Result<CaseResult>,
 ) -> Vec<(usize, anyhow::Result<CaseResult>)> {
     let mut plant = match plant {
         Ok(plant) => plant,

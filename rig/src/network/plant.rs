@@ -416,6 +416,15 @@ impl NetworkPlant {
         })
     }
 
+    /// An empty block shaped for this plant's rig.
+    pub fn block(&self) -> NetworkBlock {
+        NetworkBlock::new(
+            self.model.layout.bodies,
+            self.model.shafts.len(),
+            self.model.meshes.len(),
+        )
+    }
+
     /// Time of the current sample (s).
     pub fn time_s(&self) -> f64 {
         self.sample as f64 * self.output_step_s
