@@ -384,7 +384,8 @@ fn the_fault_dataset_labels_every_case_and_its_indicators_follow_the_fault() {
 /// motion does not depend on its history to rounding: 700 and 800 rev/min are chaotic
 /// going up and down); the same motion from rest and knocked at every point; and at 600
 /// rev/min the coexisting motions the preset's lab run finds (`lab_run.rs`): coming down
-/// the rig keeps a motion more than twice as large as going up.
+/// the rig keeps a motion more than twice as large as going up, and the report's
+/// hysteresis line names the point, as a preset's report does.
 #[test]
 fn the_lab_sequence_and_knocked_repeats_run_a_rig_file_as_its_preset() {
     let dir = folder("sweep-rig-lab");
@@ -399,10 +400,11 @@ fn the_lab_sequence_and_knocked_repeats_run_a_rig_file_as_its_preset() {
         let sweep = sweep_file(&sub, &body(rig));
         let out = sub.join("out");
         testrig_ok(&["sweep", &sweep, "--out", out.to_str().expect("utf-8")]);
-        csv_rows(&out.join("cases.csv"))
+        let report = std::fs::read_to_string(out.join("report.md")).expect("report.md");
+        (csv_rows(&out.join("cases.csv")), report)
     };
-    let preset = run("preset", "preset = \"basmaji-1983\"");
-    let file = run("file", &format!("file = \"{}\"", rig_file("basmaji-1983")));
+    let (preset, _) = run("preset", "preset = \"basmaji-1983\"");
+    let (file, report) = run("file", &format!("file = \"{}\"", rig_file("basmaji-1983")));
     let walk = |rows: &[std::collections::HashMap<String, String>]| -> Vec<(String, String)> {
         rows.iter()
             .map(|r| (r["rpm"].clone(), r["direction"].clone()))
@@ -432,5 +434,15 @@ fn the_lab_sequence_and_knocked_repeats_run_a_rig_file_as_its_preset() {
         down > 2.0 * up,
         "600 rev/min: {up} N m going up, {down} N m coming down"
     );
+    // The rig file's report names it, as a preset's does.
+    let hysteresis = report
+        .lines()
+        .find(|l| l.starts_with("- Hysteresis"))
+        .expect("a hysteresis line");
+    assert!(
+        hysteresis.contains("600 rev/min, 2.712 N m: period-1"),
+        "{hysteresis}"
+    );
+    assert!(report.contains("- The motor holds the set speed (mean within 1 %): at every point."));
     std::fs::remove_dir_all(&dir).ok();
 }

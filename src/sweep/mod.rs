@@ -14,7 +14,7 @@
 //! `recordings/`), `series.rs` (the lab's run: one plant per load
 //! stepping the speeds up and back down; a series is one unit of work), `knock.rs` (the
 //! seeded knock), `knocked.rs` (a point and its knocked repeats on one plant), `held_motions.rs` (the motions each point
-//! held, by approach), `lines.rs` (order
+//! held, by approach), `motion_lines.rs` (them in words for any rig's report), `lines.rs` (order
 //! lines over their local floor), `table.rs` (a JSON per case, `cases.csv`), `labels.rs`
 //! (`labels.csv`: each case's recordings, fault, point, motion and indicators), `meta.rs`
 //! (`sweep.json`), `shard.rs` (`--shard`, SLURM arrays), `runner.rs` (rayon pool, resume,
@@ -35,6 +35,7 @@ pub(crate) mod labels;
 pub(crate) mod lines;
 pub(crate) mod measured_condition;
 pub(crate) mod meta;
+pub(crate) mod motion_lines;
 pub(crate) mod report;
 pub(crate) mod rig_case;
 pub(crate) mod rig_report;

@@ -7,8 +7,8 @@ use std::path::{Path, PathBuf};
 
 use super::case::CaseResult;
 use super::facts::facts;
-use super::held_motions::held_motions;
 use super::meta::SweepMeta;
+use super::motion_lines::motion_lines;
 use super::sequence::Direction;
 use super::thesis::{
     HALF_ORDER_FROM_RPM, HEAVY_LOAD_NM, MEASURED_FUNDAMENTAL_HZ, MEASURED_RESONANCE_RPM,
@@ -106,9 +106,7 @@ fn physics(md: &mut String, cases: &[CaseResult]) {
                 .join(", ")
         );
     }
-    hysteresis(md, cases);
-    coexisting(md, cases);
-    motor_holding(md, cases);
+    motion_lines(md, cases);
     let _ = writeln!(
         md,
         "\nEach cell: the judged motion, the half-order height over the floor (dB; \"≥ {MAX:.0} dB\" where the floor is rounding noise, the judge's cap), the 0-1 test's K; ✓ where it is the thesis's motion, ✗ where not, blank where the thesis decides nothing.\n",
@@ -126,112 +124,6 @@ fn decided_share((hits, total): (usize, usize)) -> String {
     };
     format!("{hits} of {total} decided points ({share:.0} %)")
 }
-
-/// Speeds where the run-up and the run-down settle to different motions.
-fn hysteresis(md: &mut String, cases: &[CaseResult]) {
-    let mut lines = Vec::new();
-    for up in cases.iter().filter(|c| c.direction == Direction::Up) {
-        let down = cases.iter().find(|d| {
-            d.direction == Direction::Down
-                && d.rpm == up.rpm
-                && d.load_nm == up.load_nm
-                && d.values == up.values
-        });
-        if let Some(down) = down.filter(|d| coexist(up, d)) {
-            lines.push(format!(
-                "{} rev/min, {} N m: {} ({:.2} N m AC RMS) going up, {} ({:.2} N m) coming down",
-                up.rpm,
-                up.load_nm,
-                up.motion.motion,
-                up.motion.ac_rms_nm,
-                down.motion.motion,
-                down.motion.ac_rms_nm
-            ));
-        }
-    }
-    if cases.iter().any(|c| c.direction == Direction::Up) {
-        let _ = writeln!(
-            md,
-            "- Hysteresis (the run-up and the run-down settle to different motions): {}.",
-            if lines.is_empty() {
-                "none".to_string()
-            } else {
-                lines.join("; ")
-            }
-        );
-    }
-}
-
-/// Points reached by more than one approach where the approaches settle to different
-/// motions: each motion with the approaches that reached it.
-fn coexisting(md: &mut String, cases: &[CaseResult]) {
-    let points = held_motions(cases);
-    let reached_twice = points
-        .iter()
-        .any(|h| h.motions.iter().map(|(_, by)| by.len()).sum::<usize>() > 1);
-    if !reached_twice {
-        return;
-    }
-    let lines: Vec<String> = points
-        .iter()
-        .filter(|h| h.coexist())
-        .map(|h| {
-            format!(
-                "{} rev/min, {} N m: {}",
-                h.point.rpm,
-                h.point.load_nm,
-                h.describe()
-            )
-        })
-        .collect();
-    let _ = writeln!(
-        md,
-        "- Coexisting motions (the approaches settle to different motions): {}.",
-        if lines.is_empty() {
-            "none".to_string()
-        } else {
-            lines.join("; ")
-        }
-    );
-}
-
-/// Points where the motor does not hold the set speed: its mean speed over the window
-/// more than [`SPEED_HELD_FRACTION`] of the set speed off it (its torque limit reached).
-fn motor_holding(md: &mut String, cases: &[CaseResult]) {
-    let lost: Vec<String> = cases
-        .iter()
-        .filter(|c| c.speed_offset_rpm.abs() > SPEED_HELD_FRACTION * c.rpm)
-        .map(|c| {
-            format!(
-                "{} rev/min, {} N m, {}: {:+.0} rev/min",
-                c.rpm, c.load_nm, c.direction, c.speed_offset_rpm
-            )
-        })
-        .collect();
-    let _ = writeln!(
-        md,
-        "- The motor holds the set speed (mean within {:.0} %): {}.",
-        100.0 * SPEED_HELD_FRACTION,
-        if lost.is_empty() {
-            "at every point".to_string()
-        } else {
-            format!("not at {} points — {}", lost.len(), lost.join("; "))
-        }
-    );
-}
-
-/// Share of the set speed the window's mean speed may be off it with the speed held.
-const SPEED_HELD_FRACTION: f64 = 0.01;
-
-/// Whether two cases at one point settled to different motions: another kind, or the
-/// same kind with AC RMS torques more than [`COEXIST_RMS_RATIO`] apart.
-fn coexist(a: &CaseResult, b: &CaseResult) -> bool {
-    let (x, y) = (a.motion.ac_rms_nm, b.motion.ac_rms_nm);
-    a.motion.motion != b.motion.motion || x.max(y) > COEXIST_RMS_RATIO * x.min(y)
-}
-
-/// Ratio of AC RMS torques that tells two motions of one kind apart.
-const COEXIST_RMS_RATIO: f64 = 1.2;
 
 fn motion_table(md: &mut String, cases: &[CaseResult]) {
     let mut columns: Vec<(Direction, f64)> =

@@ -1,11 +1,14 @@
-//! `report.md` of a sweep on a rig file's rig: no thesis to hold it against, so each
-//! case's motion, its faults and the watched gear's indicators, with the plots.
+//! `report.md` of a sweep on a rig file's rig: no thesis to hold it against, so what the
+//! points held (hysteresis, coexisting motions, the motor's holding: as a preset's
+//! report), each case's motion, its faults and the watched gear's indicators, with the
+//! plots.
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 use super::case::CaseResult;
 use super::meta::SweepMeta;
+use super::motion_lines::motion_lines;
 use super::report::plots_section;
 use crate::recording::PartialFile;
 
@@ -25,6 +28,9 @@ pub fn write_rig_report(
         cases.len(),
         meta.cases
     );
+    let _ = writeln!(md, "## What the points held\n");
+    motion_lines(&mut md, cases);
+    let _ = writeln!(md, "\n## Each case\n");
     let mut header = vec!["case", "rev/min", "N m"];
     header.extend(meta.swept.iter().map(String::as_str));
     header.extend([
