@@ -17,8 +17,9 @@
 //! locked torque carried), and the model assembled with a loop's preload.
 //! `block.rs` the samples and impacts a run gives, `output.rs` the samples held by
 //! state and turned into signals a chunk at a time, `columns.rs` them as named columns.
-//! `plant.rs` the plant, `segment.rs` its set points over time, `stepping.rs` its exact
-//! steps and switches, `products.rs` the matrix–state products they take.
+//! `plant.rs` the plant, `teeth.rs` its pair zones and tooth passes, `segment.rs` its set
+//! points over time, `stepping.rs` its exact steps and switches, `products.rs` the
+//! matrix–state products they take.
 
 mod block;
 mod columns;
@@ -35,6 +36,7 @@ mod products;
 mod segment;
 mod stepping;
 mod system;
+mod teeth;
 
 pub use block::{NetworkBlock, NetworkImpact};
 pub use columns::{Column, column_names, column_specs, columns};
