@@ -286,3 +286,40 @@ fn impacts_fall_within_1_us_of_a_20_ns_rk4_on_both_example_rigs() {
         }
     }
 }
+
+/// The two-stage rig rattling (20 N m with 40 N m oscillating at 30 Hz), run for 0.3 s in
+/// blocks of `block_samples`: its samples and impacts.
+fn rattling_in_blocks(block_samples: usize) -> (rig::NetworkBlock, Vec<NetworkImpact>) {
+    let rig = shipped("two-stage");
+    let schedule = Schedule {
+        oscillating_load_nm: rig::Track::hold(40.0),
+        oscillating_load_hz: rig::Track::hold(30.0),
+        ..Schedule::constant(1500.0, 20.0)
+    };
+    let mut p = plant(&rig, schedule, NetworkStart::Steady);
+    let mut block = p.block();
+    let total = (0.3 * rig_support::RATE_HZ) as usize;
+    let mut taken = 0;
+    while taken < total {
+        let n = block_samples.min(total - taken);
+        p.run(n, &mut block).expect("runs");
+        taken += n;
+    }
+    (block, p.take_impacts())
+}
+
+#[test]
+fn a_rattling_rig_runs_to_the_same_bytes_a_sample_at_a_time_as_in_long_blocks() {
+    let (one, one_impacts) = rattling_in_blocks(1);
+    let (long, long_impacts) = rattling_in_blocks(10_000);
+    assert!(
+        long_impacts.len() > 100,
+        "the rig rattles: {} impacts in 0.3 s",
+        long_impacts.len()
+    );
+    assert_eq!(
+        one_impacts, long_impacts,
+        "the same impacts at the same instants"
+    );
+    assert!(one == long, "the same samples, bit for bit");
+}

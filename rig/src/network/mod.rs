@@ -18,7 +18,8 @@
 //! `block.rs` the samples and impacts a run gives, `output.rs` the samples held by
 //! state and turned into signals a chunk at a time, `columns.rs` them as named columns.
 //! `plant.rs` the plant, `teeth.rs` its pair zones and tooth passes, `segment.rs` its set
-//! points over time, `stepping.rs` its exact steps and switches, `products.rs` the
+//! points over time, `fast.rs` its runs of samples in one mode,
+//! `stepping.rs` its exact steps and switches, `products.rs` the
 //! matrix–state products they take.
 
 mod block;
@@ -26,6 +27,7 @@ mod columns;
 mod drive_model;
 mod equilibrium;
 mod events;
+mod fast;
 mod layout;
 mod mesh_model;
 mod mode;

@@ -114,6 +114,11 @@ impl SampleChunk {
                 && self.first_sample + self.count as u64 == sample)
     }
 
+    /// How many samples it holds.
+    pub fn len(&self) -> usize {
+        self.count
+    }
+
     /// Whether it holds no sample.
     pub fn is_empty(&self) -> bool {
         self.count == 0

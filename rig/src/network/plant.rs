@@ -33,7 +33,7 @@ pub enum NetworkStart {
 pub(super) const OSCILLATING_HOLD_S: f64 = 0.01;
 
 /// Samples between checks of the state's bounds (and at the end of every run).
-const CHECK_EVERY: u64 = 64;
+pub(super) const CHECK_EVERY: u64 = 64;
 
 /// Most internal steps per output sample.
 const MAX_SUBSTEPS: u32 = 4096;
@@ -80,6 +80,8 @@ pub struct NetworkPlant {
     pub(super) fused_out: Vec<f64>,
     pub(super) forcing_out: Vec<f64>,
     pub(super) taylor: Vec<Vec<f64>>,
+    /// Each switching function's target, taken at a fast run's start.
+    pub(super) targets: Vec<f64>,
     /// The samples stored and not yet written to a block.
     pub(super) chunk: SampleChunk,
 }
@@ -160,6 +162,7 @@ impl NetworkPlant {
             fused_out: Vec::new(),
             forcing_out: Vec::new(),
             taylor: vec![vec![0.0; len]; TAYLOR_ORDER + 1],
+            targets: Vec::new(),
             chunk: SampleChunk::new(len),
         };
         plant.start(start)?;
@@ -247,13 +250,9 @@ impl NetworkPlant {
 
     /// [`Self::run`] without the final check of bounds, its last samples maybe still held.
     fn run_samples(&mut self, samples: usize, block: &mut NetworkBlock) -> Result<(), RigError> {
-        for _ in 0..samples {
-            self.store_sample(block);
-            for k in 0..self.substeps {
-                self.step_start_s = self.time_s() + f64::from(k) * self.step_s;
-                self.step()?;
-            }
-            self.sample += 1;
+        let mut left = samples as u64;
+        while left > 0 {
+            left -= self.run_some(left, block)?;
             if self.sample.is_multiple_of(CHECK_EVERY) {
                 self.check_bounds()?;
             }
@@ -263,7 +262,7 @@ impl NetworkPlant {
 
     /// Holds the current sample (its set points taken up if they change now), writing
     /// out the samples held before it where it cannot join them.
-    fn store_sample(&mut self, block: &mut NetworkBlock) {
+    pub(super) fn store_sample(&mut self, block: &mut NetworkBlock) {
         if self.segment_end.is_some_and(|end| self.sample >= end) {
             self.flush_samples(block);
             self.begin_segment();
@@ -287,7 +286,7 @@ impl NetworkPlant {
     }
 
     /// Refuses a state that is not finite or turns impossibly fast.
-    fn check_bounds(&self) -> Result<(), RigError> {
+    pub(super) fn check_bounds(&self) -> Result<(), RigError> {
         let l = &self.model.layout;
         let speeds = &self.u[l.speed(0)..l.speed(0) + l.bodies];
         if self.u.iter().all(|x| x.is_finite())

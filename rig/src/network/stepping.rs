@@ -74,7 +74,7 @@ impl NetworkPlant {
 
     /// A whole step in one product: `self.next` the state at its end (the forcing states
     /// advanced apart), `self.next_edge` each switching function's value and rate there.
-    fn fused_step(&mut self, system: &ModeSystem) {
+    pub(super) fn fused_step(&mut self, system: &ModeSystem) {
         let mechanical = self.model.layout.mechanical();
         if self.fused_out.len() < system.fused_rows {
             self.fused_out.resize(system.fused_rows, 0.0);
@@ -139,7 +139,7 @@ impl NetworkPlant {
     }
 
     /// The value a form's target takes now.
-    fn target(&self, form: &EventForm) -> f64 {
+    pub(super) fn target(&self, form: &EventForm) -> f64 {
         match form.target {
             Target::Fixed => 0.0,
             Target::ZoneEnd(i) => self.zone_bounds(i, self.zones[i]).1,

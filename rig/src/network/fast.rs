@@ -1,0 +1,139 @@
+//! The fast path: runs of output samples in one mode, each step one fused product, the
+//! switch checks against targets taken once for the run, the samples stored without
+//! asking again which mode they are in. A step where a function may cross is taken on
+//! the exact path (`stepping.rs`), the rest of its output period too, and the run ends
+//! there. Both paths take the same products in the same order: the same bytes.
+
+use crate::error::RigError;
+use crate::roots::may_cross;
+
+use super::block::NetworkBlock;
+use super::output::CHUNK;
+use super::plant::NetworkPlant;
+use super::system::{ModeSystem, SystemCache};
+
+/// How a fast run ended.
+enum RunEnd {
+    /// Every sample asked for is taken, or the next begins a stretch of set points or
+    /// must be checked for bounds.
+    Done,
+    /// A function may cross within step `substep` of the current sample's output period
+    /// (the sample stored, the steps before that one taken).
+    MaySwitch { substep: u32 },
+}
+
+impl NetworkPlant {
+    /// Takes up to `limit` samples, as many as it can on the fast path and the one where
+    /// a switch may fall on the exact path; returns how many it took (at least one when
+    /// `limit` > 0).
+    pub(super) fn run_some(
+        &mut self,
+        limit: u64,
+        block: &mut NetworkBlock,
+    ) -> Result<u64, RigError> {
+        let first = self.sample;
+        if self.segment_end.is_some_and(|end| self.sample >= end)
+            || !self.chunk.takes(self.sample, &self.mode)
+        {
+            self.store_sample(block);
+            self.finish_period(0)?;
+            return Ok(1);
+        }
+        let Some(mut cache) = self.cache.take() else {
+            return Err(RigError::Schedule(
+                "a run began inside a step (the plant's cache was out)".into(),
+            ));
+        };
+        let end = self.fast_run(&mut cache, limit, block);
+        self.cache = Some(cache);
+        if let RunEnd::MaySwitch { substep } = end {
+            self.finish_period(substep)?;
+        }
+        Ok(self.sample - first)
+    }
+
+    /// The steps of the current sample's output period from `substep` on, on the exact
+    /// path, then the sample counted.
+    fn finish_period(&mut self, substep: u32) -> Result<(), RigError> {
+        for k in substep..self.substeps {
+            self.step_start_s = self.time_s() + f64::from(k) * self.step_s;
+            self.step()?;
+        }
+        self.sample += 1;
+        Ok(())
+    }
+
+    /// Samples on the fast path in the current mode, up to `limit`, stopping before a
+    /// sample that begins a stretch of set points and after one due for a check of
+    /// bounds.
+    fn fast_run(
+        &mut self,
+        cache: &mut SystemCache,
+        limit: u64,
+        block: &mut NetworkBlock,
+    ) -> RunEnd {
+        let system = cache.get(&self.model, &self.mode);
+        self.fill_targets(system);
+        if self.edge.len() != system.events.len() {
+            self.edge.clear();
+            self.edge.extend(
+                system
+                    .events
+                    .iter()
+                    .map(|form| (form.value(&self.u), form.rate(&self.u))),
+            );
+        }
+        let stop = self.fast_stop(limit);
+        while self.sample < stop {
+            if self.chunk.len() == CHUNK {
+                self.chunk.flush(&system.outputs, self.output_step_s, block);
+            }
+            self.chunk.store(self.sample, &self.mode, &self.u);
+            for substep in 0..self.substeps {
+                self.fused_step(system);
+                if self.may_switch(system) {
+                    return RunEnd::MaySwitch { substep };
+                }
+                std::mem::swap(&mut self.u, &mut self.next);
+                std::mem::swap(&mut self.edge, &mut self.next_edge);
+            }
+            self.sample += 1;
+        }
+        RunEnd::Done
+    }
+
+    /// The first sample the fast run may not take: `limit` on, the next stretch of set
+    /// points or the next check of bounds, whichever comes first (past the current one).
+    fn fast_stop(&self, limit: u64) -> u64 {
+        let check = super::plant::CHECK_EVERY;
+        let mut stop = (self.sample + limit).min((self.sample / check + 1) * check);
+        if let Some(end) = self.segment_end {
+            stop = stop.min(end);
+        }
+        stop
+    }
+
+    /// Each switching function's target now, into `self.targets` (they move only at
+    /// switches, so they hold for a fast run).
+    fn fill_targets(&mut self, system: &ModeSystem) {
+        let mut targets = std::mem::take(&mut self.targets);
+        targets.clear();
+        targets.extend(system.events.iter().map(|form| self.target(form)));
+        self.targets = targets;
+    }
+
+    /// Whether any function may cross over the step from `self.u` to `self.next` (values
+    /// and rates at its ends in `self.edge` and `self.next_edge`), as the exact path's
+    /// check decides it.
+    fn may_switch(&self, system: &ModeSystem) -> bool {
+        let span_s = self.step_s;
+        system.events.iter().enumerate().any(|(k, _)| {
+            let target = self.targets[k];
+            let (value_0, rate_0) = self.edge[k];
+            let end = self.next_edge[k];
+            let g0 = (value_0 - target).min(0.0);
+            let g1 = end.0 - target;
+            may_cross(g0, rate_0 * span_s, g1, end.1 * span_s)
+        })
+    }
+}
