@@ -8,7 +8,6 @@ use crate::error::RigError;
 use crate::roots::may_cross;
 
 use super::block::NetworkBlock;
-use super::output::CHUNK;
 use super::plant::NetworkPlant;
 use super::system::{ModeSystem, SystemCache};
 
@@ -85,7 +84,7 @@ impl NetworkPlant {
         }
         let stop = self.fast_stop(limit);
         while self.sample < stop {
-            if self.chunk.len() == CHUNK {
+            if self.chunk.is_full() {
                 self.chunk.flush(&system.outputs, self.output_step_s, block);
             }
             self.chunk.store(self.sample, &self.mode, &self.u);

@@ -114,9 +114,9 @@ impl SampleChunk {
                 && self.first_sample + self.count as u64 == sample)
     }
 
-    /// How many samples it holds.
-    pub fn len(&self) -> usize {
-        self.count
+    /// Whether it holds [`CHUNK`] samples, as many as it can.
+    pub fn is_full(&self) -> bool {
+        self.count == CHUNK
     }
 
     /// Whether it holds no sample.
