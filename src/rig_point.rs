@@ -260,14 +260,7 @@ pub fn settled_rig_plant(spec: &RigPointSpec, names: InputNames) -> anyhow::Resu
 
 /// Runs `plant` on by `samples` samples, its signals, impacts and revolutions dropped.
 pub fn skip_rig_samples(plant: &mut NetworkPlant, samples: usize) -> Result<(), rig::RigError> {
-    let mut block = plant.block();
-    let mut left = samples;
-    while left > 0 {
-        let n = left.min(BLOCK);
-        block.clear();
-        plant.run(n, &mut block)?;
-        left -= n;
-    }
+    plant.skip(samples)?;
     plant.take_impacts();
     plant.take_revolutions();
     Ok(())

@@ -23,27 +23,29 @@ enum RunEnd {
 
 impl NetworkPlant {
     /// Takes up to `limit` samples, as many as it can on the fast path and the one where
-    /// a switch may fall on the exact path; returns how many it took (at least one when
-    /// `limit` > 0).
-    pub(super) fn run_some(
+    /// a switch may fall on the exact path, storing them only if `RECORD`; returns how
+    /// many it took (at least one when `limit` > 0).
+    pub(super) fn run_some<const RECORD: bool>(
         &mut self,
         limit: u64,
         block: &mut NetworkBlock,
     ) -> Result<u64, RigError> {
         let first = self.sample;
-        if self.segment_end.is_some_and(|end| self.sample >= end)
-            || !self.chunk.takes(self.sample, &self.mode)
-        {
+        let segment_begins = self.segment_end.is_some_and(|end| self.sample >= end);
+        if RECORD && (segment_begins || !self.chunk.takes(self.sample, &self.mode)) {
             self.store_sample(block);
             self.finish_period(0)?;
             return Ok(1);
+        }
+        if !RECORD && segment_begins {
+            self.begin_segment();
         }
         let Some(mut cache) = self.cache.take() else {
             return Err(RigError::Schedule(
                 "a run began inside a step (the plant's cache was out)".into(),
             ));
         };
-        let end = self.fast_run(&mut cache, limit, block);
+        let end = self.fast_run::<RECORD>(&mut cache, limit, block);
         self.cache = Some(cache);
         if let RunEnd::MaySwitch { substep } = end {
             self.finish_period(substep)?;
@@ -62,10 +64,10 @@ impl NetworkPlant {
         Ok(())
     }
 
-    /// Samples on the fast path in the current mode, up to `limit`, stopping before a
+    /// Samples on the fast path in the current mode (stored if `RECORD`), up to `limit`, stopping before a
     /// sample that begins a stretch of set points and after one due for a check of
     /// bounds.
-    fn fast_run(
+    fn fast_run<const RECORD: bool>(
         &mut self,
         cache: &mut SystemCache,
         limit: u64,
@@ -84,10 +86,12 @@ impl NetworkPlant {
         }
         let stop = self.fast_stop(limit);
         while self.sample < stop {
-            if self.chunk.is_full() {
-                self.chunk.flush(&system.outputs, self.output_step_s, block);
+            if RECORD {
+                if self.chunk.is_full() {
+                    self.chunk.flush(&system.outputs, self.output_step_s, block);
+                }
+                self.chunk.store(self.sample, &self.mode, &self.u);
             }
-            self.chunk.store(self.sample, &self.mode, &self.u);
             for substep in 0..self.substeps {
                 self.fused_step(system);
                 if self.may_switch(system) {

@@ -236,9 +236,17 @@ impl NetworkPlant {
     /// at t = n / rate, then the plant advances to the next. On an error the samples
     /// before it are in `block`.
     pub fn run(&mut self, samples: usize, block: &mut NetworkBlock) -> Result<(), RigError> {
-        let result = self.run_samples(samples, block);
+        let result = self.run_samples::<true>(samples, block);
         self.flush_samples(block);
         result.and_then(|()| self.check_bounds())
+    }
+
+    /// Advances `samples` output samples without writing them (a settling run): the same
+    /// steps, to the same bytes, as [`Self::run`]; the impacts and revolutions are kept.
+    pub fn skip(&mut self, samples: usize) -> Result<(), RigError> {
+        let mut unwritten = self.block();
+        self.run_samples::<false>(samples, &mut unwritten)?;
+        self.check_bounds()
     }
 
     /// Appends the state at the current time to `block`: the sample [`Self::run`] writes
@@ -248,11 +256,16 @@ impl NetworkPlant {
         self.flush_samples(block);
     }
 
-    /// [`Self::run`] without the final check of bounds, its last samples maybe still held.
-    fn run_samples(&mut self, samples: usize, block: &mut NetworkBlock) -> Result<(), RigError> {
+    /// [`Self::run`] without the final check of bounds, its last samples maybe still held;
+    /// without samples at all unless `RECORD`.
+    fn run_samples<const RECORD: bool>(
+        &mut self,
+        samples: usize,
+        block: &mut NetworkBlock,
+    ) -> Result<(), RigError> {
         let mut left = samples as u64;
         while left > 0 {
-            left -= self.run_some(left, block)?;
+            left -= self.run_some::<RECORD>(left, block)?;
             if self.sample.is_multiple_of(CHECK_EVERY) {
                 self.check_bounds()?;
             }
