@@ -90,8 +90,8 @@ fn the_two_stage_scenario_rattles_under_a_reversing_load_and_holds_contact_beyon
 /// The back-to-back rig run as a scenario at 1450 rev/min: the loop holds its locked-in
 /// torque (302 N m, within 1 %) on the gauged loop shaft, with the motor supplying only
 /// the losses; the judged point over 2–6 s equals `simulate --rig` settled 2 s and
-/// measured 4 s, torque and indicators to 1e-9 (the same plant from the same steady
-/// start, the same window).
+/// measured 4 s: the torque to 1e-9 (the same plant from the same steady start, the same
+/// window), no vibration in either, the indicators over the same revolutions.
 #[test]
 fn a_loops_run_holds_its_locked_torque_as_simulate_finds_over_the_same_window() {
     let dir = folder("run-rig-loop");
@@ -140,17 +140,29 @@ fn a_loops_run_holds_its_locked_torque_as_simulate_finds_over_the_same_window() 
         "the motor supplies {} N m",
         sim["motor_torque_mean_nm"]
     );
-    for key in ["fm0", "fm4", "na4", "kurtosis", "revolutions_averaged"] {
-        let want = sim["condition"][key].as_f64().expect(key);
-        let got = number(&reading, key);
-        assert!(
-            (got - want).abs() <= 1e-9 * want.abs(),
-            "{key}: run {got}, simulate {want}"
-        );
-    }
+    // The locked loop does not vibrate: its gear indicators are ratios of a residual of
+    // rounding (about 1e-13 N m), which simulate's settling (strides of steps, no samples
+    // written) and run's recorded steps round differently. Both doors say so, over the
+    // same revolutions.
     assert_eq!(
         reading["motion"],
         sim["motion"]["motion"].as_str().expect("motion")
+    );
+    assert_eq!(reading["motion"], "no-vibration");
+    for residual_nm in [
+        number(&reading, "residual_rms_nm"),
+        sim["condition"]["residual_rms_nm"].as_f64().expect("residual"),
+    ] {
+        assert!(
+            residual_nm < 1e-9 * 302.0,
+            "the residual is of rounding: {residual_nm} N m"
+        );
+    }
+    assert_eq!(
+        number(&reading, "revolutions_averaged"),
+        sim["condition"]["revolutions_averaged"]
+            .as_f64()
+            .expect("revolutions")
     );
 }
 

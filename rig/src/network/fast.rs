@@ -2,7 +2,10 @@
 //! switch checks against targets taken once for the run, the samples stored without
 //! asking again which mode they are in. A step where a function may cross is taken on
 //! the exact path (`stepping.rs`), the rest of its output period too, and the run ends
-//! there. Both paths take the same products in the same order: the same bytes.
+//! there. Both paths take the same products in the same order: the same bytes. A run
+//! that writes no samples (settling) takes strides of several steps in one product where
+//! the mode allows (`system.rs`), checked for switches over the whole stride; where one
+//! may fall, that stretch is taken in single steps.
 
 use crate::error::RigError;
 use crate::roots::may_cross;
@@ -85,6 +88,14 @@ impl NetworkPlant {
             );
         }
         let stop = self.fast_stop(limit);
+        // Strides only where no sample is written inside them, in whole output periods.
+        let substeps = self.substeps;
+        let stride = system
+            .stride
+            .as_ref()
+            .filter(|s| !RECORD && s.steps.is_multiple_of(substeps));
+        // After a stride that may switch, single steps up to this sample.
+        let mut singles_until = 0;
         while self.sample < stop {
             if RECORD {
                 if self.chunk.is_full() {
@@ -92,9 +103,22 @@ impl NetworkPlant {
                 }
                 self.chunk.store(self.sample, &self.mode, &self.u);
             }
-            for substep in 0..self.substeps {
+            if let Some(stride) = stride {
+                let samples = u64::from(stride.steps / substeps);
+                if self.sample >= singles_until && self.sample + samples <= stop {
+                    self.span_end(system, &stride.matrix);
+                    if !self.may_switch(system, f64::from(stride.steps) * self.step_s) {
+                        std::mem::swap(&mut self.u, &mut self.next);
+                        std::mem::swap(&mut self.edge, &mut self.next_edge);
+                        self.sample += samples;
+                        continue;
+                    }
+                    singles_until = self.sample + samples;
+                }
+            }
+            for substep in 0..substeps {
                 self.fused_step(system);
-                if self.may_switch(system) {
+                if self.may_switch(system, self.step_s) {
                     return RunEnd::MaySwitch { substep };
                 }
                 std::mem::swap(&mut self.u, &mut self.next);
@@ -125,11 +149,10 @@ impl NetworkPlant {
         self.targets = targets;
     }
 
-    /// Whether any function may cross over the step from `self.u` to `self.next` (values
-    /// and rates at its ends in `self.edge` and `self.next_edge`), as the exact path's
-    /// check decides it.
-    fn may_switch(&self, system: &ModeSystem) -> bool {
-        let span_s = self.step_s;
+    /// Whether any function may cross over the span of `span_s` from `self.u` to
+    /// `self.next` (values and rates at its ends in `self.edge` and `self.next_edge`), as
+    /// the exact path's check decides it.
+    fn may_switch(&self, system: &ModeSystem, span_s: f64) -> bool {
         system.events.iter().enumerate().any(|(k, _)| {
             let target = self.targets[k];
             let (value_0, rate_0) = self.edge[k];

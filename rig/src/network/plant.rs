@@ -241,8 +241,9 @@ impl NetworkPlant {
         result.and_then(|()| self.check_bounds())
     }
 
-    /// Advances `samples` output samples without writing them (a settling run): the same
-    /// steps, to the same bytes, as [`Self::run`]; the impacts and revolutions are kept.
+    /// Advances `samples` output samples without writing them (a settling run), the
+    /// impacts and revolutions kept: the motion of [`Self::run`], to rounding, where every
+    /// mesh is apart taken in strides of several steps (`network/fast.rs`).
     pub fn skip(&mut self, samples: usize) -> Result<(), RigError> {
         let mut unwritten = self.block();
         self.run_samples::<false>(samples, &mut unwritten)?;

@@ -18,7 +18,7 @@ use super::events::{EventForm, NetEvent, Target};
 use super::mode::{Contact, MeshState};
 use super::plant::NetworkPlant;
 use super::products;
-use super::system::{ModeSystem, SystemCache};
+use super::system::{ModeSystem, SpanMatrix, SystemCache};
 
 impl NetworkPlant {
     /// Advances one internal step, switching wherever a function crosses.
@@ -75,12 +75,18 @@ impl NetworkPlant {
     /// A whole step in one product: `self.next` the state at its end (the forcing states
     /// advanced apart), `self.next_edge` each switching function's value and rate there.
     pub(super) fn fused_step(&mut self, system: &ModeSystem) {
+        self.span_end(system, &system.step);
+    }
+
+    /// The end of the span of `matrix` (a step or a stride) from `self.u`, as
+    /// [`Self::fused_step`].
+    pub(super) fn span_end(&mut self, system: &ModeSystem, matrix: &SpanMatrix) {
         let mechanical = self.model.layout.mechanical();
         if self.fused_out.len() < system.fused_rows {
             self.fused_out.resize(system.fused_rows, 0.0);
         }
         products::rows(
-            &system.fused,
+            &matrix.fused,
             system.fused_rows,
             &self.u,
             &mut self.fused_out,
@@ -89,7 +95,13 @@ impl NetworkPlant {
         if self.forcing_out.len() < system.forcing_rows {
             self.forcing_out.resize(system.forcing_rows, 0.0);
         }
-        system.advance_forcing(mechanical, &self.u, &mut self.next, &mut self.forcing_out);
+        system.advance_forcing(
+            matrix,
+            mechanical,
+            &self.u,
+            &mut self.next,
+            &mut self.forcing_out,
+        );
         self.next_edge.clear();
         let (values, rates) = (mechanical, mechanical + system.row_events);
         for (form, slot) in system.events.iter().zip(&system.row_slot) {

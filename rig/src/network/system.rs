@@ -6,6 +6,7 @@ use std::collections::HashMap;
 use nalgebra::DMatrix;
 
 use crate::matrix_exp::{exp_powers_balanced, forcing_scales, spectral_radius};
+use crate::stride::stride_steps;
 
 use super::events::{EventForm, event_forms};
 use super::mode::NetMode;
@@ -13,16 +14,40 @@ use super::model::{NetworkModel, SegmentRates};
 use super::output::OutputForms;
 use super::products;
 
+/// e^{A τ} of one mode over one span τ (a step, or a stride of steps), as its products
+/// take it.
+#[derive(Clone, Debug)]
+pub struct SpanMatrix {
+    /// Column-major with `fused_rows` rows a column (see [`ModeSystem::fused_rows`]): the
+    /// mechanical rows of e^{A τ}, then the value and then the rate of each row event (a
+    /// switching function of fixed target) at the span's end.
+    pub fused: Vec<f64>,
+    /// The forcing block of e^{A τ} (rows and columns of the forcing states),
+    /// column-major with `forcing_rows` rows a column. The forcing states evolve by
+    /// themselves, the same in every mode.
+    pub forcing: Vec<f64>,
+}
+
+/// A stride: several internal steps taken as one where the mode's fastest motion is slow
+/// against the step (every mesh apart), by a settling run that writes no samples.
+#[derive(Clone, Debug)]
+pub struct Stride {
+    /// Internal steps it takes (a power of two, at least 2).
+    pub steps: u32,
+    /// e^{A m h} for m = `steps`.
+    pub matrix: SpanMatrix,
+}
+
 /// One mode's linear system.
 #[derive(Clone, Debug)]
 pub struct ModeSystem {
     /// A of u' = A u, column-major, each column padded to the layout's padded length.
     pub a_columns: Vec<f64>,
-    /// The fused step, column-major with `fused_rows` rows a column: the mechanical rows
-    /// of e^{A h}, then the value and then the rate of each row event (a switching
-    /// function of fixed target) after the step.
-    pub fused: Vec<f64>,
-    /// Rows of each column of `fused` (a multiple of 4).
+    /// e^{A h}, the internal step.
+    pub step: SpanMatrix,
+    /// The stride of this mode, if its fastest motion is slow enough for one.
+    pub stride: Option<Stride>,
+    /// Rows of each column of a span's `fused` (a multiple of 4).
     pub fused_rows: usize,
     /// Per switching function, its slot among the row events (its value at row
     /// mechanical + slot of the fused step, its rate `row_events` rows further), or
@@ -30,11 +55,7 @@ pub struct ModeSystem {
     pub row_slot: Vec<Option<usize>>,
     /// Number of row events.
     pub row_events: usize,
-    /// The forcing block of e^{A h} (rows and columns of the forcing states), column-major
-    /// with `forcing_rows` rows a column. The forcing states evolve by themselves, the
-    /// same in every mode.
-    pub forcing_step: Vec<f64>,
-    /// Rows of each column of `forcing_step` (the forcing states, rounded up to a
+    /// Rows of each column of a span's `forcing` (the forcing states, rounded up to a
     /// multiple of 4).
     pub forcing_rows: usize,
     /// The switching functions.
@@ -44,12 +65,19 @@ pub struct ModeSystem {
 }
 
 impl ModeSystem {
-    /// The forcing states at the step's end, from `u` at its start, into `next` (`out`
-    /// a scratch of at least `forcing_rows`).
+    /// The forcing states at the end of the span of `matrix`, from `u` at its start, into
+    /// `next` (`out` a scratch of at least `forcing_rows`).
     #[inline]
-    pub fn advance_forcing(&self, mechanical: usize, u: &[f64], next: &mut [f64], out: &mut [f64]) {
+    pub fn advance_forcing(
+        &self,
+        matrix: &SpanMatrix,
+        mechanical: usize,
+        u: &[f64],
+        next: &mut [f64],
+        out: &mut [f64],
+    ) {
         let forcing = next.len().min(mechanical + self.forcing_rows) - mechanical;
-        products::rows(&self.forcing_step, self.forcing_rows, &u[mechanical..], out);
+        products::rows(&matrix.forcing, self.forcing_rows, &u[mechanical..], out);
         next[mechanical..mechanical + forcing].copy_from_slice(&out[..forcing]);
     }
 }
@@ -112,28 +140,28 @@ impl SystemCache {
         }
         let a = model.system_matrix(mode, &self.rates);
         let padded = model.layout.padded();
-        let step = exp_step(model, &a, self.step_s, self.rho);
+        let steps = stride_steps(spectral_radius(&a), self.step_s);
+        let spans = exp_spans(model, &a, self.step_s, self.rho, steps);
         let events = event_forms(model, mode, &a, self.rates.harmonic_rad_s);
         let a_columns = padded_columns(&a, padded);
         let outputs = OutputForms::of(model, mode, self.rates.harmonic_rad_s);
         self.built
-            .push(fused_system(model, a_columns, &step, events, outputs));
+            .push(mode_system(model, a_columns, &spans, events, outputs));
         self.systems.insert(*mode, self.built.len() - 1);
         self.built.len() - 1
     }
 }
 
-/// The system of a mode from its A (`a_columns`), e^{A h} (`step`), switching functions
-/// and signals.
-fn fused_system(
+/// The system of a mode from its A (`a_columns`), e^{A h} and, where it strides,
+/// e^{A m h} (`spans`), its switching functions and its signals.
+fn mode_system(
     model: &NetworkModel,
     a_columns: Vec<f64>,
-    step: &DMatrix<f64>,
+    spans: &[(u32, DMatrix<f64>)],
     events: Vec<EventForm>,
     outputs: OutputForms,
 ) -> ModeSystem {
     let l = &model.layout;
-    let mechanical = l.mechanical();
     let mut row_slot = Vec::with_capacity(events.len());
     let mut forms: Vec<&EventForm> = Vec::new();
     for form in &events {
@@ -144,39 +172,63 @@ fn fused_system(
         }
     }
     let row_events = forms.len();
-    let fused_rows = (mechanical + 2 * row_events).div_ceil(4) * 4;
-    let mut fused = vec![0.0; fused_rows * l.padded()];
-    let times_step = |terms: &[(usize, f64)], col: usize| -> f64 {
-        terms.iter().map(|&(i, c)| c * step[(i, col)]).sum()
-    };
-    for col in 0..step.ncols() {
-        let column = &mut fused[col * fused_rows..(col + 1) * fused_rows];
-        for (row, entry) in column[..mechanical].iter_mut().enumerate() {
-            *entry = step[(row, col)];
-        }
-        for (j, form) in forms.iter().enumerate() {
-            column[mechanical + j] = times_step(&form.terms, col);
-            column[mechanical + row_events + j] = times_step(&form.slope, col);
-        }
-    }
-    let forcing = step.nrows() - mechanical;
-    let forcing_rows = forcing.div_ceil(4) * 4;
-    let mut forcing_step = vec![0.0; forcing_rows * forcing];
-    for col in 0..forcing {
-        for row in 0..forcing {
-            forcing_step[col * forcing_rows + row] = step[(mechanical + row, mechanical + col)];
-        }
-    }
+    let fused_rows = (l.mechanical() + 2 * row_events).div_ceil(4) * 4;
+    let forcing_rows = (l.len() - l.mechanical()).div_ceil(4) * 4;
+    let matrix = |span: &DMatrix<f64>| span_matrix(model, span, &forms, fused_rows, forcing_rows);
+    let step = matrix(&spans[0].1);
+    let stride = spans.get(1).map(|(steps, span)| Stride {
+        steps: *steps,
+        matrix: matrix(span),
+    });
     ModeSystem {
         a_columns,
-        fused,
+        step,
+        stride,
         fused_rows,
         row_slot,
         row_events,
-        forcing_step,
         forcing_rows,
         events,
         outputs,
+    }
+}
+
+/// The products' form of e^{A τ} = `span`: its fused rows (mechanical rows, then the row
+/// events' values and rates by `forms`) and its forcing block.
+fn span_matrix(
+    model: &NetworkModel,
+    span: &DMatrix<f64>,
+    forms: &[&EventForm],
+    fused_rows: usize,
+    forcing_rows: usize,
+) -> SpanMatrix {
+    let l = &model.layout;
+    let mechanical = l.mechanical();
+    let row_events = forms.len();
+    let mut fused = vec![0.0; fused_rows * l.padded()];
+    let times_span = |terms: &[(usize, f64)], col: usize| -> f64 {
+        terms.iter().map(|&(i, c)| c * span[(i, col)]).sum()
+    };
+    for col in 0..span.ncols() {
+        let column = &mut fused[col * fused_rows..(col + 1) * fused_rows];
+        for (row, entry) in column[..mechanical].iter_mut().enumerate() {
+            *entry = span[(row, col)];
+        }
+        for (j, form) in forms.iter().enumerate() {
+            column[mechanical + j] = times_span(&form.terms, col);
+            column[mechanical + row_events + j] = times_span(&form.slope, col);
+        }
+    }
+    let forcing = span.nrows() - mechanical;
+    let mut forcing_block = vec![0.0; forcing_rows * forcing];
+    for col in 0..forcing {
+        for row in 0..forcing {
+            forcing_block[col * forcing_rows + row] = span[(mechanical + row, mechanical + col)];
+        }
+    }
+    SpanMatrix {
+        fused,
+        forcing: forcing_block,
     }
 }
 
@@ -189,10 +241,16 @@ fn padded_columns(m: &DMatrix<f64>, padded: usize) -> Vec<f64> {
     out
 }
 
-/// e^{A h}, balanced as the 1983 plant's: angles and the integral at 1,
-/// speeds and the filtered speed at ρ, forcing states scaled to ρ, the two states of
-/// each harmonic pair alike.
-fn exp_step(model: &NetworkModel, a: &DMatrix<f64>, step_s: f64, rho: f64) -> DMatrix<f64> {
+/// e^{A h} (1 step) and, where `steps` > 1, e^{A m h} (m = `steps`), balanced as the 1983
+/// plant's: angles and the integral at 1, speeds and the filtered speed at ρ, forcing
+/// states scaled to ρ, the two states of each harmonic pair alike.
+fn exp_spans(
+    model: &NetworkModel,
+    a: &DMatrix<f64>,
+    step_s: f64,
+    rho: f64,
+    steps: usize,
+) -> Vec<(u32, DMatrix<f64>)> {
     let l = &model.layout;
     let rho = rho.max(1.0);
     let mechanical: Vec<f64> = (0..l.mechanical())
@@ -214,7 +272,11 @@ fn exp_step(model: &NetworkModel, a: &DMatrix<f64>, step_s: f64, rho: f64) -> DM
         scale[pair] = shared;
         scale[pair + 1] = shared;
     }
-    exp_powers_balanced(a, step_s, &scale, 1).remove(0)
+    let mut powers = exp_powers_balanced(a, step_s, &scale, steps);
+    let stride = (steps > 1).then(|| powers.pop()).flatten();
+    let mut spans = vec![(1, powers.swap_remove(0))];
+    spans.extend(stride.map(|span| (steps as u32, span)));
+    spans
 }
 
 /// The fastest rate (rad/s) of `model`: A's spectral radius with every mesh on its drive
