@@ -71,6 +71,34 @@ pub struct BodySummary {
     pub speed_mean_rpm: f64,
 }
 
+/// What a rig's window shows in the keys of the 1983 plant's summary
+/// (`rig::SteadySummary`), so that `simulate --json` reads alike for a preset and a rig
+/// file: the judged shaft's torque, the first mesh's impacts (on its driving gear, per
+/// revolution of the motor's body) and time apart, the regime, the motor's speed offset.
+#[derive(Clone, Debug, Serialize)]
+pub struct JudgedSummary {
+    /// Contact starts in the window, every mesh.
+    pub impacts: usize,
+    /// Contact starts per revolution of the motor's body.
+    pub impacts_per_rev: f64,
+    /// The first mesh's contact starts in the window on each tooth of its driving gear.
+    pub impacts_per_tooth: Vec<u64>,
+    /// Period-k from the judge, aperiodic otherwise.
+    pub regime: Regime,
+    /// Whether any mesh's teeth lose contact in the window.
+    pub separates: bool,
+    /// Share of the window with the first mesh's teeth apart.
+    pub apart_fraction: f64,
+    /// Mean torque of the judged shaft (N m).
+    pub torque_mean_nm: f64,
+    /// RMS of the judged shaft's torque, mean included (N m).
+    pub torque_rms_nm: f64,
+    /// RMS of the judged shaft's torque about its mean (N m).
+    pub torque_ac_rms_nm: f64,
+    /// Mean speed of the motor's body over the window less the set speed (rev/min).
+    pub speed_offset_rpm: f64,
+}
+
 /// The measuring window of a rig's point.
 #[derive(Clone, Debug, Serialize)]
 pub struct RigPointSummary {
@@ -90,6 +118,9 @@ pub struct RigPointSummary {
     pub judged_shaft: String,
     /// The motion of its torque.
     pub motion: Judgement,
+    /// The window in the 1983 plant's keys.
+    #[serde(flatten)]
+    pub judged: JudgedSummary,
     /// The watched gear's condition: the judged shaft's torque averaged synchronously
     /// over its revolutions (`null` without a mesh or under two revolutions).
     pub condition: Option<serde_json::Value>,
@@ -97,34 +128,55 @@ pub struct RigPointSummary {
 
 impl RigPointSummary {
     /// This window as the thesis's plant sums its own up (a sweep's case, a scenario's
-    /// point): the judged shaft's torque and motion, impacts on the first mesh's driving
-    /// gear per revolution of the motor's body, the first mesh's time apart, the motor's
-    /// speed offset from `rpm` (rev/min) on body `motor`; `impacts` those of the window.
-    pub fn steady(
-        &self,
-        rig: &RigTopology,
-        motor: usize,
-        rpm: f64,
-        impacts: &[NetworkImpact],
-    ) -> SteadySummary {
-        let judged = &self.shafts[judged_shaft(rig)];
-        let teeth = rig.meshes.first().map_or(0, |m| m.teeth[0]);
-        let first_mesh = impacts.iter().filter(|i| i.mesh == 0);
+    /// point).
+    pub fn steady(&self) -> SteadySummary {
+        let j = &self.judged;
         SteadySummary {
             measured_s: self.measured_s,
-            impacts: impacts.len(),
-            torque_rms_nm: judged.torque_ac_rms_nm.hypot(judged.torque_mean_nm),
-            regime: regime_of(self.motion.motion),
-            motion: self.motion.clone(),
+            impacts: j.impacts,
+            impacts_per_rev: j.impacts_per_rev,
+            impacts_per_tooth: j.impacts_per_tooth.clone(),
+            regime: j.regime,
+            separates: j.separates,
+            apart_fraction: j.apart_fraction,
+            torque_mean_nm: j.torque_mean_nm,
+            torque_rms_nm: j.torque_rms_nm,
+            torque_ac_rms_nm: j.torque_ac_rms_nm,
             revolutions: self.revolutions,
-            impacts_per_rev: impacts.len() as f64 / self.revolutions.max(1) as f64,
-            impacts_per_tooth: impacts_per_tooth(teeth, first_mesh.map(|i| i.teeth[0])),
-            separates: self.meshes.iter().any(|m| m.apart_fraction > 0.0),
-            apart_fraction: self.meshes.first().map_or(0.0, |m| m.apart_fraction),
-            torque_mean_nm: judged.torque_mean_nm,
-            torque_ac_rms_nm: judged.torque_ac_rms_nm,
-            speed_offset_rpm: self.bodies[motor].speed_mean_rpm - rpm,
+            speed_offset_rpm: j.speed_offset_rpm,
+            motion: self.motion.clone(),
         }
+    }
+}
+
+/// The keys of the 1983 plant's summary for a rig's window: its `bodies`, `shafts` and
+/// `meshes` as summed, its `motion` and whole `revolutions` of the motor's body, the shaft
+/// judged `judged`, the motor's body set to `rpm` (rev/min), `impacts` the window's.
+fn judged_summary(
+    rig: &RigTopology,
+    (bodies, shafts, meshes): (&[BodySummary], &[ShaftSummary], &[MeshSummary]),
+    motion: &Judgement,
+    revolutions: usize,
+    judged: usize,
+    rpm: f64,
+    impacts: &[NetworkImpact],
+) -> JudgedSummary {
+    let shaft = shafts.get(judged);
+    let (mean, ac) = shaft.map_or((0.0, 0.0), |s| (s.torque_mean_nm, s.torque_ac_rms_nm));
+    let teeth = rig.meshes.first().map_or(0, |m| m.teeth[0]);
+    let first_mesh = impacts.iter().filter(|i| i.mesh == 0);
+    let motor_rpm = rig.motor.map_or(rpm, |m| bodies[m].speed_mean_rpm);
+    JudgedSummary {
+        impacts: impacts.len(),
+        impacts_per_rev: impacts.len() as f64 / revolutions.max(1) as f64,
+        impacts_per_tooth: impacts_per_tooth(teeth, first_mesh.map(|i| i.teeth[0])),
+        regime: regime_of(motion.motion),
+        separates: meshes.iter().any(|m| m.apart_fraction > 0.0),
+        apart_fraction: meshes.first().map_or(0.0, |m| m.apart_fraction),
+        torque_mean_nm: mean,
+        torque_rms_nm: ac.hypot(mean),
+        torque_ac_rms_nm: ac,
+        speed_offset_rpm: motor_rpm - rpm,
     }
 }
 
@@ -370,47 +422,54 @@ impl RigWindow {
             running_hz: rpm / 60.0,
             revolution_torque_nm: &revolution_torque_nm,
         });
+        let bodies: Vec<BodySummary> = rig
+            .bodies
+            .iter()
+            .zip(&self.speed_sum)
+            .map(|(b, sum)| BodySummary {
+                name: b.name.clone(),
+                speed_mean_rpm: sum / n * 30.0 / PI,
+            })
+            .collect();
+        let shafts: Vec<ShaftSummary> = rig
+            .shafts
+            .iter()
+            .zip(&self.torque)
+            .map(|(s, (sum, squares))| {
+                let mean = sum / n;
+                ShaftSummary {
+                    name: s.name.clone(),
+                    torque_mean_nm: mean,
+                    torque_ac_rms_nm: (squares / n - mean * mean).max(0.0).sqrt(),
+                }
+            })
+            .collect();
+        let meshes: Vec<MeshSummary> = rig
+            .meshes
+            .iter()
+            .enumerate()
+            .map(|(i, m)| MeshSummary {
+                name: m.name.clone(),
+                impacts: impacts.iter().filter(|x| x.mesh == i).count(),
+                apart_fraction: self.apart[i] as f64 / n,
+            })
+            .collect();
+        let revolutions = revolutions_s.len();
+        let lists = (&bodies[..], &shafts[..], &meshes[..]);
+        let judged = judged_summary(rig, lists, &motion, revolutions, self.judged, rpm, impacts);
         RigPointSummary {
             measured_s: self.samples as f64 / self.rate_hz,
-            revolutions: revolutions_s.len(),
+            revolutions,
             motor_torque_mean_nm: self.motor_sum / n,
-            bodies: rig
-                .bodies
-                .iter()
-                .zip(&self.speed_sum)
-                .map(|(b, sum)| BodySummary {
-                    name: b.name.clone(),
-                    speed_mean_rpm: sum / n * 30.0 / PI,
-                })
-                .collect(),
-            shafts: rig
-                .shafts
-                .iter()
-                .zip(&self.torque)
-                .map(|(s, (sum, squares))| {
-                    let mean = sum / n;
-                    ShaftSummary {
-                        name: s.name.clone(),
-                        torque_mean_nm: mean,
-                        torque_ac_rms_nm: (squares / n - mean * mean).max(0.0).sqrt(),
-                    }
-                })
-                .collect(),
-            meshes: rig
-                .meshes
-                .iter()
-                .enumerate()
-                .map(|(i, m)| MeshSummary {
-                    name: m.name.clone(),
-                    impacts: impacts.iter().filter(|x| x.mesh == i).count(),
-                    apart_fraction: self.apart[i] as f64 / n,
-                })
-                .collect(),
             judged_shaft: rig
                 .shafts
                 .get(self.judged)
                 .map_or(String::new(), |s| s.name.clone()),
+            bodies,
+            shafts,
+            meshes,
             motion,
+            judged,
             condition: None,
         }
     }

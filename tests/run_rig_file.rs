@@ -151,7 +151,9 @@ fn a_loops_run_holds_its_locked_torque_as_simulate_finds_over_the_same_window() 
     assert_eq!(reading["motion"], "no-vibration");
     for residual_nm in [
         number(&reading, "residual_rms_nm"),
-        sim["condition"]["residual_rms_nm"].as_f64().expect("residual"),
+        sim["condition"]["residual_rms_nm"]
+            .as_f64()
+            .expect("residual"),
     ] {
         assert!(
             residual_nm < 1e-9 * 302.0,

@@ -23,7 +23,6 @@ pub struct RigFilePlant {
     plant: NetworkPlant,
     rig: Arc<RigTopology>,
     roles: RoleColumns,
-    motor: usize,
     rate_hz: f64,
 }
 
@@ -37,7 +36,7 @@ impl RigFilePlant {
         rate_hz: f64,
         speed_ceiling_rpm: Option<f64>,
     ) -> anyhow::Result<Self> {
-        let motor = motor_of(rig)?;
+        motor_of(rig)?;
         let start = NetworkStart::Steady;
         let plant = match speed_ceiling_rpm {
             Some(ceiling) => NetworkPlant::live(rig, schedule, rate_hz, start, ceiling)?,
@@ -47,7 +46,6 @@ impl RigFilePlant {
             plant,
             rig: Arc::new(rig.clone()),
             roles: RoleColumns::of(rig),
-            motor,
             rate_hz,
         })
     }
@@ -123,7 +121,6 @@ impl ScenarioPlant for RigFilePlant {
                 window.without_condition()
             },
             rig: Arc::clone(&self.rig),
-            motor: self.motor,
             rpm: None,
             impacts: Vec::new(),
             revolutions_s: Vec::new(),
@@ -136,7 +133,6 @@ impl ScenarioPlant for RigFilePlant {
 pub struct RigFileWindow {
     window: RigWindow,
     rig: Arc<RigTopology>,
-    motor: usize,
     /// The set speed the window was opened under (rev/min).
     rpm: Option<f64>,
     impacts: Vec<NetworkImpact>,
@@ -150,7 +146,7 @@ impl RigFileWindow {
         let summary = self
             .window
             .summary(&self.rig, rpm, &self.impacts, &self.revolutions_s);
-        summary.steady(&self.rig, self.motor, rpm, &self.impacts)
+        summary.steady()
     }
 }
 

@@ -15,7 +15,6 @@ use super::case::{
 use super::case_recording::CaseRecording;
 use super::grid::{Case, SweepPlan};
 use super::measured_condition::MeasuredCondition;
-use crate::rig_point::motor_of;
 use crate::rig_point::{RigPointSpec, RigWindow, settled_rig_plant};
 use crate::rig_roles::{RIG_SIGNALS, RoleColumns, gauge_of, gauged_stages};
 use crate::vocabulary::GearIndicators;
@@ -114,7 +113,7 @@ pub fn measure_rig_case(
     let impacts = plant.take_impacts();
     let revolutions_s = plant.take_revolutions();
     let summary = window.summary(rig, case.rpm, &impacts, &revolutions_s);
-    let steady = summary.steady(rig, motor_of(rig)?, case.rpm, &impacts);
+    let steady = summary.steady();
     let display = measurement.setup.analyser.display();
     let mut result = case_result(plan, case, &steady, &display, measurement.average_count());
     let all_revolutions = window.revolution_torque_nm(&revolutions_s);
