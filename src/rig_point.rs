@@ -71,41 +71,16 @@ pub struct BodySummary {
     pub speed_mean_rpm: f64,
 }
 
-/// What a rig's window shows in the keys of the 1983 plant's summary
+/// The measuring window of a rig's point: the keys of the 1983 plant's summary
 /// (`rig::SteadySummary`), so that `simulate --json` reads alike for a preset and a rig
-/// file: the judged shaft's torque, the first mesh's impacts (on its driving gear, per
-/// revolution of the motor's body) and time apart, the regime, the motor's speed offset.
-#[derive(Clone, Debug, Serialize)]
-pub struct JudgedSummary {
-    /// Contact starts in the window, every mesh.
-    pub impacts: usize,
-    /// Contact starts per revolution of the motor's body.
-    pub impacts_per_rev: f64,
-    /// The first mesh's contact starts in the window on each tooth of its driving gear.
-    pub impacts_per_tooth: Vec<u64>,
-    /// Period-k from the judge, aperiodic otherwise.
-    pub regime: Regime,
-    /// Whether any mesh's teeth lose contact in the window.
-    pub separates: bool,
-    /// Share of the window with the first mesh's teeth apart.
-    pub apart_fraction: f64,
-    /// Mean torque of the judged shaft (N m).
-    pub torque_mean_nm: f64,
-    /// RMS of the judged shaft's torque, mean included (N m).
-    pub torque_rms_nm: f64,
-    /// RMS of the judged shaft's torque about its mean (N m).
-    pub torque_ac_rms_nm: f64,
-    /// Mean speed of the motor's body over the window less the set speed (rev/min).
-    pub speed_offset_rpm: f64,
-}
-
-/// The measuring window of a rig's point.
+/// file (the judged shaft's torque, the first mesh's impacts on its driving gear and time
+/// apart, impacts per revolution of the motor's body, the regime, the motor's speed
+/// offset), then the rig's own: every body, shaft and mesh.
 #[derive(Clone, Debug, Serialize)]
 pub struct RigPointSummary {
-    /// Window length (s).
-    pub measured_s: f64,
-    /// Whole revolutions of the motor's body in it.
-    pub revolutions: usize,
+    /// The window in the 1983 plant's keys.
+    #[serde(flatten)]
+    pub steady: SteadySummary,
     /// The motor's mean torque (N m).
     pub motor_torque_mean_nm: f64,
     /// Each body.
@@ -116,57 +91,30 @@ pub struct RigPointSummary {
     pub meshes: Vec<MeshSummary>,
     /// The shaft judged (the gauged one, else the last).
     pub judged_shaft: String,
-    /// The motion of its torque.
-    pub motion: Judgement,
-    /// The window in the 1983 plant's keys.
-    #[serde(flatten)]
-    pub judged: JudgedSummary,
     /// The watched gear's condition: the judged shaft's torque averaged synchronously
     /// over its revolutions (`null` without a mesh or under two revolutions).
     pub condition: Option<serde_json::Value>,
 }
 
-impl RigPointSummary {
-    /// This window as the thesis's plant sums its own up (a sweep's case, a scenario's
-    /// point).
-    pub fn steady(&self) -> SteadySummary {
-        let j = &self.judged;
-        SteadySummary {
-            measured_s: self.measured_s,
-            impacts: j.impacts,
-            impacts_per_rev: j.impacts_per_rev,
-            impacts_per_tooth: j.impacts_per_tooth.clone(),
-            regime: j.regime,
-            separates: j.separates,
-            apart_fraction: j.apart_fraction,
-            torque_mean_nm: j.torque_mean_nm,
-            torque_rms_nm: j.torque_rms_nm,
-            torque_ac_rms_nm: j.torque_ac_rms_nm,
-            revolutions: self.revolutions,
-            speed_offset_rpm: j.speed_offset_rpm,
-            motion: self.motion.clone(),
-        }
-    }
-}
-
-/// The keys of the 1983 plant's summary for a rig's window: its `bodies`, `shafts` and
-/// `meshes` as summed, its `motion` and whole `revolutions` of the motor's body, the shaft
-/// judged `judged`, the motor's body set to `rpm` (rev/min), `impacts` the window's.
-fn judged_summary(
+/// A rig's window in the 1983 plant's keys: its `bodies`, `shafts` and `meshes` as
+/// summed, its `motion` over `measured_s` and whole `revolutions` of the motor's body,
+/// the shaft judged `judged`, the motor's body set to `rpm` (rev/min), `impacts` the
+/// window's.
+fn steady_summary(
     rig: &RigTopology,
     (bodies, shafts, meshes): (&[BodySummary], &[ShaftSummary], &[MeshSummary]),
-    motion: &Judgement,
-    revolutions: usize,
+    (motion, measured_s, revolutions): (Judgement, f64, usize),
     judged: usize,
     rpm: f64,
     impacts: &[NetworkImpact],
-) -> JudgedSummary {
+) -> SteadySummary {
     let shaft = shafts.get(judged);
     let (mean, ac) = shaft.map_or((0.0, 0.0), |s| (s.torque_mean_nm, s.torque_ac_rms_nm));
     let teeth = rig.meshes.first().map_or(0, |m| m.teeth[0]);
     let first_mesh = impacts.iter().filter(|i| i.mesh == 0);
     let motor_rpm = rig.motor.map_or(rpm, |m| bodies[m].speed_mean_rpm);
-    JudgedSummary {
+    SteadySummary {
+        measured_s,
         impacts: impacts.len(),
         impacts_per_rev: impacts.len() as f64 / revolutions.max(1) as f64,
         impacts_per_tooth: impacts_per_tooth(teeth, first_mesh.map(|i| i.teeth[0])),
@@ -176,7 +124,9 @@ fn judged_summary(
         torque_mean_nm: mean,
         torque_rms_nm: ac.hypot(mean),
         torque_ac_rms_nm: ac,
+        revolutions,
         speed_offset_rpm: motor_rpm - rpm,
+        motion,
     }
 }
 
@@ -454,12 +404,12 @@ impl RigWindow {
                 apart_fraction: self.apart[i] as f64 / n,
             })
             .collect();
-        let revolutions = revolutions_s.len();
         let lists = (&bodies[..], &shafts[..], &meshes[..]);
-        let judged = judged_summary(rig, lists, &motion, revolutions, self.judged, rpm, impacts);
+        let measured_s = self.samples as f64 / self.rate_hz;
+        let window = (motion, measured_s, revolutions_s.len());
+        let steady = steady_summary(rig, lists, window, self.judged, rpm, impacts);
         RigPointSummary {
-            measured_s: self.samples as f64 / self.rate_hz,
-            revolutions,
+            steady,
             motor_torque_mean_nm: self.motor_sum / n,
             judged_shaft: rig
                 .shafts
@@ -468,8 +418,6 @@ impl RigWindow {
             bodies,
             shafts,
             meshes,
-            motion,
-            judged,
             condition: None,
         }
     }

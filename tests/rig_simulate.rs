@@ -198,8 +198,9 @@ fn simulate_approach_rest_starts_the_rig_at_rest_with_the_motor_at_its_limit() {
 /// calls the motion aperiodic after 3 s; a rig file's is the judge's period):
 /// the rig file's summary holds every key of the preset's, and they agree: the same
 /// impacts, regime and motion, the whole revolutions within one, the time apart, the
-/// judged shaft's torque and the motor's speed offset within 1e-6 of each other. (`impacts_per_tooth` is compared as a
-/// pattern: the two plants number the driving gear's teeth from neighbouring teeth.)
+/// judged shaft's torque and the motor's speed offset within 1e-6 of each other.
+/// (`impacts_per_tooth` is compared as a pattern: the two plants number the driving
+/// gear's teeth from neighbouring teeth.)
 #[test]
 fn a_rig_files_summary_holds_a_presets_keys_with_the_presets_values() {
     let point = [

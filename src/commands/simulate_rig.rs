@@ -119,9 +119,12 @@ fn print_text(r: &Report) {
     );
     println!(
         "measured {:.1} s after {:.1} s settling, {} revolutions of the motor's body; motor {:.4} N m",
-        s.measured_s, r.settle_s, s.revolutions, s.motor_torque_mean_nm
+        s.steady.measured_s, r.settle_s, s.steady.revolutions, s.motor_torque_mean_nm
     );
-    println!("motion of shaft {}: {}", s.judged_shaft, s.motion.motion);
+    println!(
+        "motion of shaft {}: {}",
+        s.judged_shaft, s.steady.motion.motion
+    );
     for b in &s.bodies {
         println!("  body {:<20} {:>10.2} rev/min", b.name, b.speed_mean_rpm);
     }
@@ -139,7 +142,7 @@ fn print_text(r: &Report) {
             100.0 * m.apart_fraction
         );
     }
-    if s.motion.motion == rig::judge::Motion::NoVibration {
+    if s.steady.motion.motion == rig::judge::Motion::NoVibration {
         println!(
             "gear condition   not shown: shaft {}'s torque does not vibrate (the indicators' ratios would be of rounding; --json keeps them)",
             s.judged_shaft

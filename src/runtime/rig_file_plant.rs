@@ -146,7 +146,7 @@ impl RigFileWindow {
         let summary = self
             .window
             .summary(&self.rig, rpm, &self.impacts, &self.revolutions_s);
-        summary.steady()
+        summary.steady
     }
 }
 

@@ -113,7 +113,7 @@ pub fn measure_rig_case(
     let impacts = plant.take_impacts();
     let revolutions_s = plant.take_revolutions();
     let summary = window.summary(rig, case.rpm, &impacts, &revolutions_s);
-    let steady = summary.steady();
+    let steady = summary.steady;
     let display = measurement.setup.analyser.display();
     let mut result = case_result(plan, case, &steady, &display, measurement.average_count());
     let all_revolutions = window.revolution_torque_nm(&revolutions_s);

@@ -11,6 +11,7 @@ use crate::error::RigError;
 use crate::roots::may_cross;
 
 use super::block::NetworkBlock;
+use super::events::edge_values;
 use super::plant::NetworkPlant;
 use super::system::{ModeSystem, SystemCache};
 
@@ -79,13 +80,7 @@ impl NetworkPlant {
         let system = cache.get(&self.model, &self.mode);
         self.fill_targets(system);
         if self.edge.len() != system.events.len() {
-            self.edge.clear();
-            self.edge.extend(
-                system
-                    .events
-                    .iter()
-                    .map(|form| (form.value(&self.u), form.rate(&self.u))),
-            );
+            edge_values(&system.events, &self.u, &mut self.edge);
         }
         let stop = self.fast_stop(limit);
         // Strides only where no sample is written inside them, in whole output periods.

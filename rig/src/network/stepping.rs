@@ -14,7 +14,7 @@ use crate::roots::{first_crossing, may_cross};
 use crate::taylor::TAYLOR_ORDER;
 
 use super::block::NetworkImpact;
-use super::events::{EventForm, NetEvent, Target};
+use super::events::{EventForm, NetEvent, Target, edge_values};
 use super::mode::{Contact, MeshState};
 use super::plant::NetworkPlant;
 use super::products;
@@ -44,13 +44,7 @@ impl NetworkPlant {
             } else {
                 self.expand(system, span_s);
                 evaluate(&self.taylor, 1.0, &mut self.next);
-                self.next_edge.clear();
-                self.next_edge.extend(
-                    system
-                        .events
-                        .iter()
-                        .map(|form| (form.value(&self.next), form.rate(&self.next))),
-                );
+                edge_values(&system.events, &self.next, &mut self.next_edge);
             }
             let Some((s, event)) = self.first_switch(system, span_s, left == 1.0) else {
                 std::mem::swap(&mut self.u, &mut self.next);
