@@ -364,7 +364,7 @@ impl RigWindow {
         impacts: &[NetworkImpact],
         revolutions_s: &[f64],
     ) -> RigPointSummary {
-        let n = self.samples.max(1) as f64;
+        let n = self.sample_count();
         let revolution_torque_nm = self.revolution_torque_nm(revolutions_s);
         let motion = judge(&JudgeInput {
             torque_nm: &self.judged_torque,
@@ -372,38 +372,11 @@ impl RigWindow {
             running_hz: rpm / 60.0,
             revolution_torque_nm: &revolution_torque_nm,
         });
-        let bodies: Vec<BodySummary> = rig
-            .bodies
-            .iter()
-            .zip(&self.speed_sum)
-            .map(|(b, sum)| BodySummary {
-                name: b.name.clone(),
-                speed_mean_rpm: sum / n * 30.0 / PI,
-            })
-            .collect();
-        let shafts: Vec<ShaftSummary> = rig
-            .shafts
-            .iter()
-            .zip(&self.torque)
-            .map(|(s, (sum, squares))| {
-                let mean = sum / n;
-                ShaftSummary {
-                    name: s.name.clone(),
-                    torque_mean_nm: mean,
-                    torque_ac_rms_nm: (squares / n - mean * mean).max(0.0).sqrt(),
-                }
-            })
-            .collect();
-        let meshes: Vec<MeshSummary> = rig
-            .meshes
-            .iter()
-            .enumerate()
-            .map(|(i, m)| MeshSummary {
-                name: m.name.clone(),
-                impacts: impacts.iter().filter(|x| x.mesh == i).count(),
-                apart_fraction: self.apart[i] as f64 / n,
-            })
-            .collect();
+        let (bodies, shafts, meshes) = (
+            self.bodies(rig),
+            self.shafts(rig),
+            self.meshes(rig, impacts),
+        );
         let lists = (&bodies[..], &shafts[..], &meshes[..]);
         let measured_s = self.samples as f64 / self.rate_hz;
         let window = (motion, measured_s, revolutions_s.len());
@@ -420,6 +393,52 @@ impl RigWindow {
             meshes,
             condition: None,
         }
+    }
+
+    /// The window's samples, as the divisor of its means (at least 1).
+    fn sample_count(&self) -> f64 {
+        self.samples.max(1) as f64
+    }
+
+    /// Each body's mean speed over the window.
+    fn bodies(&self, rig: &RigTopology) -> Vec<BodySummary> {
+        let n = self.sample_count();
+        let speeds = rig.bodies.iter().zip(&self.speed_sum);
+        speeds
+            .map(|(b, sum)| BodySummary {
+                name: b.name.clone(),
+                speed_mean_rpm: sum / n * 30.0 / PI,
+            })
+            .collect()
+    }
+
+    /// Each shaft's mean torque and its RMS about the mean over the window.
+    fn shafts(&self, rig: &RigTopology) -> Vec<ShaftSummary> {
+        let n = self.sample_count();
+        let torques = rig.shafts.iter().zip(&self.torque);
+        torques
+            .map(|(s, (sum, squares))| {
+                let mean = sum / n;
+                ShaftSummary {
+                    name: s.name.clone(),
+                    torque_mean_nm: mean,
+                    torque_ac_rms_nm: (squares / n - mean * mean).max(0.0).sqrt(),
+                }
+            })
+            .collect()
+    }
+
+    /// Each mesh's impacts (of `impacts`, the window's) and share of the window apart.
+    fn meshes(&self, rig: &RigTopology, impacts: &[NetworkImpact]) -> Vec<MeshSummary> {
+        let n = self.sample_count();
+        let meshes = rig.meshes.iter().enumerate();
+        meshes
+            .map(|(i, m)| MeshSummary {
+                name: m.name.clone(),
+                impacts: impacts.iter().filter(|x| x.mesh == i).count(),
+                apart_fraction: self.apart[i] as f64 / n,
+            })
+            .collect()
     }
 
     /// The watched gear's synchronous average and its indicators, if taken.

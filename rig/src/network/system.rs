@@ -29,7 +29,8 @@ pub struct SpanMatrix {
 }
 
 /// A stride: several internal steps taken as one where the mode's fastest motion is slow
-/// against the step (every mesh apart), by a settling run that writes no samples.
+/// against the step (ρ·m·h ≤ 1: mostly with every mesh apart, but a soft mesh in contact
+/// may qualify), by a settling run that writes no samples.
 #[derive(Clone, Debug)]
 pub struct Stride {
     /// Internal steps it takes (a power of two, at least 2).
