@@ -8,6 +8,7 @@ use rig::Motion;
 use rig::judge::{SUBHARMONIC_CLEAR_DB, SUBHARMONIC_VISIBLE_SHARE};
 
 use super::case::CaseResult;
+use super::motion_lines::listed;
 use super::thesis::HEAVY_LOAD_NM;
 
 /// Impacts per revolution if the teeth struck every fourth tooth (30 / 4): the thesis's
@@ -139,10 +140,6 @@ fn heavy_load_fading(md: &mut String, cases: &[CaseResult]) {
     let _ = writeln!(
         md,
         "- With 5.424 N m the half-order line weakens at 1700 rev/min and is gone at 1900: half-order heights over the floor {}.",
-        if rows.is_empty() {
-            "not covered by this grid".to_string()
-        } else {
-            rows.join("; ")
-        }
+        listed(&rows, "not covered by this grid")
     );
 }

@@ -42,11 +42,7 @@ fn hysteresis(md: &mut String, cases: &[CaseResult]) {
         let _ = writeln!(
             md,
             "- Hysteresis (the run-up and the run-down settle to different motions): {}.",
-            if lines.is_empty() {
-                "none".to_string()
-            } else {
-                lines.join("; ")
-            }
+            listed(&lines, "none")
         );
     }
 }
@@ -76,11 +72,7 @@ fn coexisting(md: &mut String, cases: &[CaseResult]) {
     let _ = writeln!(
         md,
         "- Coexisting motions (the approaches settle to different motions): {}.",
-        if lines.is_empty() {
-            "none".to_string()
-        } else {
-            lines.join("; ")
-        }
+        listed(&lines, "none")
     );
 }
 
@@ -107,6 +99,15 @@ fn motor_holding(md: &mut String, cases: &[CaseResult]) {
             format!("not at {} points — {}", lost.len(), lost.join("; "))
         }
     );
+}
+
+/// A report's list: `lines` joined by semicolons, or `empty` where there are none.
+pub(super) fn listed(lines: &[String], empty: &str) -> String {
+    if lines.is_empty() {
+        empty.to_string()
+    } else {
+        lines.join("; ")
+    }
 }
 
 /// Share of the set speed the window's mean speed may be off it with the speed held.
