@@ -13,6 +13,7 @@ use crate::roots::may_cross;
 use super::block::NetworkBlock;
 use super::events::edge_values;
 use super::plant::NetworkPlant;
+use super::products;
 use super::system::{ModeSystem, SystemCache};
 
 /// How a fast run ended.
@@ -49,7 +50,7 @@ impl NetworkPlant {
                 "a run began inside a step (the plant's cache was out)".into(),
             ));
         };
-        let end = self.fast_run::<RECORD>(&mut cache, limit, block);
+        let end = self.fast_run_dispatch::<RECORD>(&mut cache, limit, block);
         self.cache = Some(cache);
         if let RunEnd::MaySwitch { substep } = end {
             self.finish_period(substep)?;
@@ -68,9 +69,38 @@ impl NetworkPlant {
         Ok(())
     }
 
+    /// [`Self::fast_run`] compiled for AVX2 and FMA where the CPU has them (its products
+    /// [`products::Inlined`]), else for baseline x86-64.
+    fn fast_run_dispatch<const RECORD: bool>(
+        &mut self,
+        cache: &mut SystemCache,
+        limit: u64,
+        block: &mut NetworkBlock,
+    ) -> RunEnd {
+        #[cfg(target_arch = "x86_64")]
+        if crate::fma::available() {
+            // SAFETY: the CPU has AVX2 and FMA, checked at run time.
+            return unsafe { self.fast_run_v3::<RECORD>(cache, limit, block) };
+        }
+        self.fast_run::<RECORD>(cache, limit, block)
+    }
+
+    /// [`Self::fast_run`] compiled for AVX2 and FMA.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,fma")]
+    fn fast_run_v3<const RECORD: bool>(
+        &mut self,
+        cache: &mut SystemCache,
+        limit: u64,
+        block: &mut NetworkBlock,
+    ) -> RunEnd {
+        self.fast_run::<RECORD>(cache, limit, block)
+    }
+
     /// Samples on the fast path in the current mode (stored if `RECORD`), up to `limit`, stopping before a
     /// sample that begins a stretch of set points and after one due for a check of
     /// bounds.
+    #[inline(always)]
     fn fast_run<const RECORD: bool>(
         &mut self,
         cache: &mut SystemCache,
@@ -101,7 +131,7 @@ impl NetworkPlant {
             if let Some(stride) = stride {
                 let samples = u64::from(stride.steps / substeps);
                 if self.sample >= singles_until && self.sample + samples <= stop {
-                    self.span_end(system, &stride.matrix);
+                    self.span_end(system, &stride.matrix, products::Inlined);
                     if !self.may_switch(system, f64::from(stride.steps) * self.step_s) {
                         std::mem::swap(&mut self.u, &mut self.next);
                         std::mem::swap(&mut self.edge, &mut self.next_edge);
@@ -112,7 +142,7 @@ impl NetworkPlant {
                 }
             }
             for substep in 0..substeps {
-                self.fused_step(system);
+                self.span_end(system, &system.step, products::Inlined);
                 if self.may_switch(system, self.step_s) {
                     return RunEnd::MaySwitch { substep };
                 }
@@ -147,6 +177,7 @@ impl NetworkPlant {
     /// Whether any function may cross over the span of `span_s` from `self.u` to
     /// `self.next` (values and rates at its ends in `self.edge` and `self.next_edge`), as
     /// the exact path's check decides it.
+    #[inline(always)]
     fn may_switch(&self, system: &ModeSystem, span_s: f64) -> bool {
         system.events.iter().enumerate().any(|(k, _)| {
             let target = self.targets[k];

@@ -137,8 +137,9 @@ impl SampleChunk {
             self.mode = *mode;
         }
         let k = self.count;
-        for (i, &x) in u[..self.len].iter().enumerate() {
-            self.states[i * CHUNK + k] = x;
+        assert!(k < CHUNK, "a sample stored in a full chunk");
+        for (column, &x) in self.states.chunks_exact_mut(CHUNK).zip(&u[..self.len]) {
+            column[k] = x;
         }
         self.count += 1;
     }

@@ -69,17 +69,23 @@ impl NetworkPlant {
     /// A whole step in one product: `self.next` the state at its end (the forcing states
     /// advanced apart), `self.next_edge` each switching function's value and rate there.
     pub(super) fn fused_step(&mut self, system: &ModeSystem) {
-        self.span_end(system, &system.step);
+        self.span_end(system, &system.step, products::Dispatched);
     }
 
     /// The end of the span of `matrix` (a step or a stride) from `self.u`, as
     /// [`Self::fused_step`].
-    pub(super) fn span_end(&mut self, system: &ModeSystem, matrix: &SpanMatrix) {
+    #[inline(always)]
+    pub(super) fn span_end<P: products::Product>(
+        &mut self,
+        system: &ModeSystem,
+        matrix: &SpanMatrix,
+        product: P,
+    ) {
         let mechanical = self.model.layout.mechanical();
         if self.fused_out.len() < system.fused_rows {
             self.fused_out.resize(system.fused_rows, 0.0);
         }
-        products::rows(
+        P::rows(
             &matrix.fused,
             system.fused_rows,
             &self.u,
@@ -95,6 +101,7 @@ impl NetworkPlant {
             &self.u,
             &mut self.next,
             &mut self.forcing_out,
+            product,
         );
         self.next_edge.clear();
         let (values, rates) = (mechanical, mechanical + system.row_events);

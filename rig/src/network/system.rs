@@ -68,17 +68,18 @@ pub struct ModeSystem {
 impl ModeSystem {
     /// The forcing states at the end of the span of `matrix`, from `u` at its start, into
     /// `next` (`out` a scratch of at least `forcing_rows`).
-    #[inline]
-    pub fn advance_forcing(
+    #[inline(always)]
+    pub fn advance_forcing<P: products::Product>(
         &self,
         matrix: &SpanMatrix,
         mechanical: usize,
         u: &[f64],
         next: &mut [f64],
         out: &mut [f64],
+        _product: P,
     ) {
         let forcing = next.len().min(mechanical + self.forcing_rows) - mechanical;
-        products::rows(&matrix.forcing, self.forcing_rows, &u[mechanical..], out);
+        P::rows(&matrix.forcing, self.forcing_rows, &u[mechanical..], out);
         next[mechanical..mechanical + forcing].copy_from_slice(&out[..forcing]);
     }
 }
