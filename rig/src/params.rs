@@ -172,18 +172,13 @@ impl RigParams {
         if spare_nm <= 0.0 {
             return None;
         }
-        let inertia = self.total_inertia_kgm2();
         let drag = 5.0 * self.bearing_drag_nms_per_rad;
-        if drag == 0.0 {
-            return Some(inertia * omega / spare_nm);
-        }
-        let share = omega * drag / spare_nm;
-        let decays = if share < 0.99 {
-            -(1.0 - share).ln()
-        } else {
-            100f64.ln()
-        };
-        Some(inertia / drag * decays)
+        Some(crate::network::run_up_time_s(
+            self.total_inertia_kgm2(),
+            drag,
+            spare_nm,
+            omega,
+        ))
     }
 
     pub fn validate(&self) -> Result<(), RigError> {

@@ -135,7 +135,7 @@ pub fn measured_samples(plan: &SweepPlan) -> usize {
 }
 
 /// Longest run-up from rest a case waits for before it settles (s).
-const MAX_RUN_UP_S: f64 = 600.0;
+pub(super) const MAX_RUN_UP_S: f64 = 600.0;
 
 /// The plant of `case`, brought to its point by its approach and settled, standing
 /// [`chain_lead_s`] before the case's window. From rest it settles for `settle_s` once

@@ -10,16 +10,18 @@ use std::path::Path;
 use rig::{NetworkPlant, RigTopology};
 
 use super::case::{
-    CaseInstruments, CaseResult, KEPT_REVOLUTIONS, case_instruments, case_result, chain_lead_s,
+    CaseInstruments, CaseResult, KEPT_REVOLUTIONS, MAX_RUN_UP_S, case_instruments, case_result,
+    chain_lead_s,
 };
 use super::case_recording::CaseRecording;
 use super::grid::{Case, SweepPlan};
 use super::measured_condition::MeasuredCondition;
-use crate::rig_point::{RigPointSpec, RigWindow, settled_rig_plant};
+use crate::rig_point::{RigPointSpec, RigWindow, settled_rig_plant, skip_rig_samples};
 use crate::rig_roles::{RIG_SIGNALS, RoleColumns, gauge_of, gauged_stages};
 use crate::vocabulary::GearIndicators;
 use crate::vocabulary::InputNames;
 use crate::vocabulary::frame::SignalNames;
+use rig::Approach;
 
 /// Samples per block.
 const BLOCK: usize = 4096;
@@ -45,7 +47,9 @@ pub fn run_rig_case(
 }
 
 /// A plant of its own for `case` on `rig`, brought to its point by its approach and
-/// settled, standing [`chain_lead_s`] before the case's window.
+/// settled, standing [`chain_lead_s`] before the case's window. From rest it settles for
+/// `settle_s` once the drive has run it up, as a preset's case does (the run-up at the
+/// torque limit, at most [`MAX_RUN_UP_S`]).
 pub fn rig_case_plant(
     plan: &SweepPlan,
     case: &Case,
@@ -60,7 +64,14 @@ pub fn rig_case_plant(
         rate_hz: plan.rate_hz,
         approach: case.approach,
     };
-    settled_rig_plant(&spec, NAMES)
+    let mut plant = settled_rig_plant(&spec, NAMES)?;
+    if case.approach == Approach::Rest {
+        let run_up_s = plant
+            .run_up_from_rest_s(case.rpm, case.load_nm)
+            .map_or(0.0, |s| s.min(MAX_RUN_UP_S));
+        skip_rig_samples(&mut plant, (run_up_s * plan.rate_hz).round() as usize)?;
+    }
+    Ok(plant)
 }
 
 /// Measures `case` of `plan` on `plant` (its rig `rig`), standing [`chain_lead_s`]

@@ -17,6 +17,7 @@
 //! locked torque carried), and the model assembled with a loop's preload.
 //! `block.rs` the samples and impacts a run gives, `output.rs` the samples held by
 //! state and turned into signals a chunk at a time, `columns.rs` them as named columns.
+//! `run_up.rs` how long the drive takes to run the rig up from rest.
 //! `plant.rs` the plant, `teeth.rs` its pair zones and tooth passes, `segment.rs` its set
 //! points over time, `fast.rs` its runs of samples in one mode,
 //! `stepping.rs` its exact steps and switches, `products.rs` the
@@ -35,6 +36,7 @@ mod model;
 mod output;
 mod plant;
 mod products;
+mod run_up;
 mod segment;
 mod stepping;
 mod system;
@@ -44,3 +46,4 @@ pub use block::{NetworkBlock, NetworkImpact};
 pub use columns::{Column, column_names, column_specs, columns};
 pub use mode::Contact;
 pub use plant::{NetworkPlant, NetworkStart};
+pub(crate) use run_up::run_up_time_s;
