@@ -382,7 +382,12 @@ fn the_fault_dataset_labels_every_case_and_its_indicators_follow_the_fault() {
 /// rest and knocked once: the same walk of cases; the period-1 cases' torque (up, rest,
 /// knocked at 600 rev/min) the preset's to 1e-4 (the two plants agree to 1e-6 where the
 /// motion does not depend on its history to rounding: 700 and 800 rev/min are chaotic
-/// going up and down); the same motion from rest and knocked at every point; and at 600
+/// going up and down); from rest and knocked, the same motion at every point (its AC
+/// RMS to 1e-3) and the same judged motion at 600 and 800 rev/min. At 700 rev/min from
+/// rest (settled 30 s after a 14 s run-up) the rig lies at the edge of period-6 locking:
+/// its six-revolution spread (3.1 % on the preset, 5.9 % on the file, measured) lies
+/// about the judge's 5 %, and the two plants, 2e-5 apart in AC RMS, fall on either side
+/// (period 6 and quasi-periodic; knocked, both period 6). And at 600
 /// rev/min the coexisting motions the preset's lab run finds (`lab_run.rs`): coming down
 /// the rig keeps a motion more than twice as large as going up, and the report's
 /// hysteresis line names the point, as a preset's report does.
@@ -415,7 +420,12 @@ fn the_lab_sequence_and_knocked_repeats_run_a_rig_file_as_its_preset() {
     for (f, p) in file.iter().zip(&preset) {
         let own_start = ["rest", "repeat"].contains(&f["direction"].as_str());
         if own_start {
-            assert_eq!(f["motion"], p["motion"], "{f:?}\n{p:?}");
+            let (a, b) = (number(f, "torque_ac_rms_nm"), number(p, "torque_ac_rms_nm"));
+            assert!((a - b).abs() <= 1e-3 * b, "{f:?}\n{p:?}");
+            let locking_edge = f["rpm"] == "700" && f["direction"] == "rest";
+            if !locking_edge {
+                assert_eq!(f["motion"], p["motion"], "{f:?}\n{p:?}");
+            }
         }
         if f["motion"] == "period-1" && p["motion"] == "period-1" {
             let (a, b) = (number(f, "torque_ac_rms_nm"), number(p, "torque_ac_rms_nm"));

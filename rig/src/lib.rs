@@ -32,7 +32,8 @@
 //!
 //! `events.rs` the switching functions of each mode (gap, contact force, pair-zone and
 //! tooth-pass angles, motor limit, revolution marker); `roots.rs` where a polynomial first
-//! crosses zero on a step, and whether a Hermite cubic between steps may cross.
+//! crosses zero on a step, and whether a Hermite cubic between steps may cross;
+//! `run_up_time.rs` how long a drive at its limit takes to run a rig up from rest.
 //!
 //! `propagator.rs` per mode: e^{A h} for whole steps, the Taylor expansion of e^{A τ} for
 //! any τ inside a step; `derivative.rs` A·u for the expansion; `jump_response.rs` e^{A s h}
@@ -129,6 +130,7 @@ mod propagator;
 pub mod records;
 pub mod regime;
 mod roots;
+mod run_up_time;
 pub mod schedule;
 pub mod signals;
 pub mod spacing;

@@ -173,7 +173,7 @@ impl RigParams {
             return None;
         }
         let drag = 5.0 * self.bearing_drag_nms_per_rad;
-        Some(crate::network::run_up_time_s(
+        Some(crate::run_up_time::run_up_time_s(
             self.total_inertia_kgm2(),
             drag,
             spare_nm,

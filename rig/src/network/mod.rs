@@ -46,4 +46,3 @@ pub use block::{NetworkBlock, NetworkImpact};
 pub use columns::{Column, column_names, column_specs, columns};
 pub use mode::Contact;
 pub use plant::{NetworkPlant, NetworkStart};
-pub(crate) use run_up::run_up_time_s;

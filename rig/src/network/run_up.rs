@@ -2,6 +2,8 @@
 //! the time a point from rest waits before it settles (a sweep's cases from rest), as the
 //! 1983 plant's `RigParams::run_up_from_rest_s` for its five bodies.
 
+use crate::run_up_time::run_up_time_s;
+
 use super::model::NetworkModel;
 use super::plant::NetworkPlant;
 
@@ -33,28 +35,6 @@ impl NetworkModel {
         let omega = rpm.abs() * std::f64::consts::PI / 30.0;
         Some(run_up_time_s(inertia, drag, spare_nm, omega))
     }
-}
-
-/// Time (s) a torque of `spare_nm` takes to bring an inertia of `inertia_kgm2` under a
-/// drag of `drag_nms_per_rad` from rest to `omega_rad_s`: J dω/dt = spare − c ω rises
-/// towards ω∞ = spare / c with time constant J / c; where ω∞ lies at or below the set
-/// speed, the time of 99 % of the way to ω∞.
-pub(crate) fn run_up_time_s(
-    inertia_kgm2: f64,
-    drag_nms_per_rad: f64,
-    spare_nm: f64,
-    omega_rad_s: f64,
-) -> f64 {
-    if drag_nms_per_rad == 0.0 {
-        return inertia_kgm2 * omega_rad_s / spare_nm;
-    }
-    let share = omega_rad_s * drag_nms_per_rad / spare_nm;
-    let decays = if share < 0.99 {
-        -(1.0 - share).ln()
-    } else {
-        100f64.ln()
-    };
-    inertia_kgm2 / drag_nms_per_rad * decays
 }
 
 impl NetworkPlant {
