@@ -206,6 +206,16 @@ fn bad_rig_files_are_refused_at_their_line_naming_the_field_and_what_is_allowed(
             ],
         ),
         (
+            "reproduces-an-unknown-rig",
+            "name = \"two-stage\"",
+            "reproduces = \"lin-parker-1999\"\nname = \"two-stage\"",
+            vec![
+                "reproduces",
+                "`lin-parker-1999` is no published rig",
+                "allowed: basmaji-1983",
+            ],
+        ),
+        (
             "duplicate-name",
             "name = \"coupling\"",
             "name = \"motor\"",

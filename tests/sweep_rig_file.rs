@@ -328,6 +328,26 @@ fn the_fault_dataset_labels_every_case_and_its_indicators_follow_the_fault() {
             .iter()
             .all(|r| r["mesh.gears.fault1.severity"] == "0.0")
     );
+    // The 1983 rig file reproduces the thesis's rig: its healthy cases are held against
+    // the thesis (period 1 below 1000 rev/min), the faulted ones not (it saw no faults);
+    // the report opens with the thesis's scores and lists every case.
+    let cases = csv_rows(&out.join("cases.csv"));
+    for label in &labels {
+        let case = cases
+            .iter()
+            .find(|c| c["index"] == label["index"])
+            .expect("the labelled case");
+        let expected = if label["fault_kind"] == "healthy" {
+            "period-1"
+        } else {
+            ""
+        };
+        assert_eq!(case["thesis_motion"], expected, "{label:?}");
+    }
+    let report = std::fs::read_to_string(out.join("report.md")).expect("report.md");
+    assert!(report.contains("the thesis's findings, point by point"));
+    assert!(report.contains("12 points, held against F. Basmaji"));
+    assert!(report.contains("## Each case"));
     for kind in ["crack", "pit", "broken"] {
         for (rpm, load) in [
             ("300", "2.712"),
@@ -408,8 +428,24 @@ fn the_lab_sequence_and_knocked_repeats_run_a_rig_file_as_its_preset() {
         let report = std::fs::read_to_string(out.join("report.md")).expect("report.md");
         (csv_rows(&out.join("cases.csv")), report)
     };
-    let (preset, _) = run("preset", "preset = \"basmaji-1983\"");
+    let (preset, preset_report) = run("preset", "preset = \"basmaji-1983\"");
     let (file, report) = run("file", &format!("file = \"{}\"", rig_file("basmaji-1983")));
+    // The file reproduces the 1983 rig: held against the thesis as its preset is, the
+    // same thesis's motion at every case and the same scores of the run up and down.
+    for (f, p) in file.iter().zip(&preset) {
+        assert_eq!(f["thesis_motion"], p["thesis_motion"], "{f:?}");
+        assert!(!f["thesis_motion"].is_empty(), "{f:?}");
+    }
+    let score = |report: &str, approach: &str| -> String {
+        report
+            .lines()
+            .find(|l| l.starts_with(&format!("- {approach}: ")))
+            .unwrap_or_else(|| panic!("no {approach} score in {report}"))
+            .to_string()
+    };
+    for approach in ["up", "down"] {
+        assert_eq!(score(&report, approach), score(&preset_report, approach));
+    }
     let walk = |rows: &[std::collections::HashMap<String, String>]| -> Vec<(String, String)> {
         rows.iter()
             .map(|r| (r["rpm"].clone(), r["direction"].clone()))

@@ -202,6 +202,7 @@ fn build(src: &ScenarioSource, file: &RigFileToml) -> anyhow::Result<RigTopology
     Ok(RigTopology {
         name: file.name.get_ref().clone(),
         description: file.description.clone().unwrap_or_default(),
+        reproduces: reproduces(src, file)?,
         bodies: file
             .bodies
             .iter()
@@ -312,6 +313,25 @@ fn ratings(src: &ScenarioSource, m: &MotorToml) -> anyhow::Result<Option<DriveRa
         full_load_current_a: m.full_load_current_a.as_ref().map(|c| *c.get_ref()),
         current_limit_pct: or(&m.current_limit_pct, 100.0),
     }))
+}
+
+/// The published rig the file says it is, one of [`RigTopology::REPRODUCIBLE`].
+fn reproduces(src: &ScenarioSource, file: &RigFileToml) -> anyhow::Result<Option<String>> {
+    let Some(named) = &file.reproduces else {
+        return Ok(None);
+    };
+    if !RigTopology::REPRODUCIBLE.contains(&named.get_ref().as_str()) {
+        return Err(src.error(
+            named.span(),
+            "reproduces",
+            format!(
+                "`{}` is no published rig testrig holds sweeps against; allowed: {}",
+                named.get_ref(),
+                RigTopology::REPRODUCIBLE.join(", ")
+            ),
+        ));
+    }
+    Ok(Some(named.get_ref().clone()))
 }
 
 /// Each name of a `table`'s items to its index; a repeated name is refused at its place.

@@ -15,6 +15,10 @@ pub struct RigFileToml {
     /// What it is.
     #[serde(default)]
     pub description: Option<String>,
+    /// The published rig it is (`"basmaji-1983"`): its healthy sweeps are then held
+    /// against that publication's findings, as a preset's are.
+    #[serde(default)]
+    pub reproduces: Option<Spanned<String>>,
     /// `[[body]]` tables.
     #[serde(default, rename = "body")]
     pub bodies: Vec<BodyToml>,

@@ -115,6 +115,13 @@ pub struct CaseResult {
     pub peaks: Vec<(f64, f64)>,
 }
 
+impl CaseResult {
+    /// Whether no tooth fault of the case has a severity above 0 (the rig the thesis saw).
+    pub fn is_healthy(&self) -> bool {
+        self.faults.iter().all(|f| f.severity <= 0.0)
+    }
+}
+
 /// The plant configuration of every case of `plan`.
 pub fn plant_config(plan: &SweepPlan) -> PlantConfig {
     PlantConfig {

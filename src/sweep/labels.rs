@@ -58,7 +58,7 @@ pub fn write_labels(dir: &Path, swept: &[String], cases: &[CaseResult]) -> anyho
 /// the others empty where no fault has a severity above 0; several faults joined by `+`.
 fn fault_columns(c: &CaseResult) -> [String; 5] {
     let faults: Vec<_> = c.faults.iter().filter(|f| f.severity > 0.0).collect();
-    if faults.is_empty() {
+    if c.is_healthy() {
         return [
             "healthy".into(),
             "0".into(),

@@ -6,6 +6,7 @@ use std::path::Path;
 use anyhow::Context;
 use serde::{Deserialize, Serialize};
 
+use rig::RigTopology;
 use sha2::{Digest, Sha256};
 
 use super::case_rig::CaseRig;
@@ -31,10 +32,21 @@ pub struct SweepMeta {
     /// are held against the thesis.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub rig_file: Option<String>,
+    /// The published rig the rig file says it is (`rig::RigTopology::reproduces`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub reproduces: Option<String>,
     /// SHA-256 of everything that decides the cases' results ([`fingerprint`]): shards
     /// and resumed runs of one sweep share it; `merge` and `--resume` refuse others.
     #[serde(default)]
     pub fingerprint: String,
+}
+
+impl SweepMeta {
+    /// Whether its healthy cases are held against the thesis (Basmaji 1983, ch. IV): a
+    /// preset's sweep, or a rig file's that reproduces the 1983 rig.
+    pub fn held_against_thesis(&self) -> bool {
+        self.rig_file.is_none() || self.reproduces.as_deref() == Some(RigTopology::BASMAJI_1983)
+    }
 }
 
 /// The metadata of the sweep `plan` read from `source`: its name, what it sweeps, the
@@ -54,6 +66,10 @@ pub fn sweep_meta(source: &ScenarioSource, plan: &SweepPlan) -> SweepMeta {
         cases: plan.cases.len(),
         rig_file: match plan.cases.first().map(|c| &c.rig) {
             Some(CaseRig::File(rig)) => Some(rig.name.clone()),
+            _ => None,
+        },
+        reproduces: match plan.cases.first().map(|c| &c.rig) {
+            Some(CaseRig::File(rig)) => rig.reproduces.clone(),
             _ => None,
         },
         fingerprint: fingerprint(&source.text, plan),

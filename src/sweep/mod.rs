@@ -20,12 +20,15 @@
 //! (`sweep.json`), `shard.rs` (`--shard`, SLURM arrays), `runner.rs` (rayon pool, resume,
 //! assembly of table and plots, also for `merge`), `thesis.rs` (what the thesis saw at each
 //! point and how a case is held against it), `facts.rs` (the thesis's facts against the
-//! judged motion), `report.rs` (`report.md`: the scores, hysteresis, where the motor cannot
-//! hold the set speed), `rig_report.rs` (a rig file's sweep's `report.md`, case by case)
+//! judged motion), `report.rs` (`report.md`: the 1983 rig's healthy cases held against the
+//! thesis, a preset's or a rig file's that `reproduces` it; hysteresis, where the motor
+//! cannot hold the set speed), `case_table.rs` (what a rig file's sweep adds: its case by
+//! case table, and the summary where no thesis holds it)
 
 pub(crate) mod case;
 pub(crate) mod case_recording;
 pub(crate) mod case_rig;
+pub(crate) mod case_table;
 pub(crate) mod facts;
 pub(crate) mod grid;
 pub(crate) mod held_motions;
@@ -38,7 +41,6 @@ pub(crate) mod meta;
 pub(crate) mod motion_lines;
 pub(crate) mod report;
 pub(crate) mod rig_case;
-pub(crate) mod rig_report;
 pub(crate) mod run_case;
 pub(crate) mod runner;
 pub(crate) mod sequence;

@@ -1,11 +1,15 @@
-//! `report.md`: the sweep held against the thesis's findings (Basmaji 1983, ch. IV), point
-//! by point and scored, with the plots. A finding the grid has no points for is reported
-//! as not covered, never as reproduced or not.
+//! `report.md`: a sweep of the 1983 rig (a preset, or a rig file that reproduces it) held
+//! against the thesis's findings (Basmaji 1983, ch. IV), point by point and scored, its
+//! healthy cases only (the thesis saw no faults); another rig's, what its points held. A
+//! rig file's sweep then lists each case (`case_table.rs`), and every report ends with
+//! the plots. A finding the grid has no points for is reported as not covered, never as
+//! reproduced or not.
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 use super::case::CaseResult;
+use super::case_table::{each_case, rig_summary};
 use super::facts::facts;
 use super::meta::SweepMeta;
 use super::motion_lines::motion_lines;
@@ -31,6 +35,24 @@ pub fn write_report(
     plots: &[PathBuf],
 ) -> anyhow::Result<PathBuf> {
     let mut md = String::new();
+    let healthy: Vec<CaseResult> = cases.iter().filter(|c| c.is_healthy()).cloned().collect();
+    match &meta.rig_file {
+        Some(rig) if !meta.held_against_thesis() || healthy.is_empty() => {
+            rig_summary(&mut md, meta, rig, cases);
+        }
+        _ => held_against_thesis(&mut md, meta, &healthy),
+    }
+    if meta.rig_file.is_some() {
+        each_case(&mut md, meta, cases);
+    }
+    plots_section(&mut md, plots);
+    PartialFile::write_whole(&dir.join("report.md"), md)
+}
+
+/// The sweep's healthy `cases` held against the thesis: its line-test score, the
+/// physics judge's scores and table, the thesis's facts, the spectral findings, the
+/// table of lines.
+fn held_against_thesis(md: &mut String, meta: &SweepMeta, cases: &[CaseResult]) {
     let (hits, total) = score(cases);
     let _ = writeln!(
         md,
@@ -49,12 +71,10 @@ pub fn write_report(
         md,
         "{total} points, held against {THESIS}, ch. IV (Figs 4.34–4.72). A half-order line counts as present when it stands 10 dB above the lines around it in the averaged spectrum of the output-shaft strain (the thesis's chain: gauges, bridge, carrier amplifier, slip rings, anti-alias filter, 5451C). Score of the points against the thesis (half order present from {HALF_ORDER_FROM_RPM} rev/min up at every load, absent below, absent with {HEAVY_LOAD_NM} N m from {VANISHES_FROM_RPM} rev/min): {score}.\n"
     );
-    physics(&mut md, cases);
-    facts(&mut md, cases);
-    findings(&mut md, meta, cases);
-    table(&mut md, cases);
-    plots_section(&mut md, plots);
-    PartialFile::write_whole(&dir.join("report.md"), md)
+    physics(md, cases);
+    facts(md, cases);
+    findings(md, meta, cases);
+    table(md, cases);
 }
 
 /// The report's last section: each PNG of `plots`, shown.

@@ -18,7 +18,6 @@ use super::knocked::run_knocked;
 use super::labels::write_labels;
 use super::meta::{SweepMeta, read_meta, write_meta};
 use super::report::write_report;
-use super::rig_report::write_rig_report;
 use super::run_case::run_case;
 use super::sequence::Direction;
 use super::series::run_series;
@@ -275,7 +274,7 @@ pub fn assemble(dirs: &[PathBuf], out: &Path) -> anyhow::Result<Assembled> {
         out,
         &meta.swept,
         &cases,
-        meta.rig_file.is_none(),
+        meta.held_against_thesis(),
     )?];
     if cases
         .iter()
@@ -284,10 +283,7 @@ pub fn assemble(dirs: &[PathBuf], out: &Path) -> anyhow::Result<Assembled> {
         files.push(write_labels(out, &meta.swept, &cases)?);
     }
     files.extend(plots(out, &meta, &cases)?);
-    let report = match &meta.rig_file {
-        None => write_report(out, &meta, &cases, &files)?,
-        Some(rig) => write_rig_report(out, &meta, rig, &cases, &files)?,
-    };
+    let report = write_report(out, &meta, &cases, &files)?;
     files.push(report);
     Ok(Assembled { files, missing })
 }

@@ -60,7 +60,8 @@ pub fn read_cases(dirs: &[PathBuf]) -> anyhow::Result<Vec<CaseResult>> {
 }
 
 /// Writes `dir/cases.csv`: index, rpm, load_nm, the swept parameters, then the results.
-/// The thesis's motion and the match are left empty unless `thesis` (a preset's sweep).
+/// The thesis's motion and the match are left empty unless `thesis` (a sweep held
+/// against the thesis, `SweepMeta::held_against_thesis`) and the case healthy.
 pub fn write_table(
     dir: &Path,
     swept: &[String],
@@ -195,7 +196,7 @@ fn judge_columns(c: &CaseResult, thesis: bool) -> Vec<String> {
         number(m.third_order_db, 2),
         number(m.chaos_k, 4),
     ]);
-    let expected = thesis_motion(c.rpm, c.load_nm).filter(|_| thesis);
+    let expected = thesis_motion(c.rpm, c.load_nm).filter(|_| thesis && c.is_healthy());
     row.push(expected.map_or(String::new(), |e| e.to_string()));
     row.push(expected.map_or(String::new(), |_| physics_match(c).to_string()));
     row

@@ -303,6 +303,10 @@ pub struct RigTopology {
     pub name: String,
     /// What it is (free text).
     pub description: String,
+    /// The published rig it is, whose findings its sweeps are held against
+    /// ([`RigTopology::REPRODUCIBLE`]); `None` for a rig of its own.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub reproduces: Option<String>,
     /// Its bodies.
     pub bodies: Vec<Body>,
     /// Its shafts.
@@ -327,4 +331,13 @@ pub struct RigTopology {
     /// fault's gear, else the first mesh's driven gear.
     #[serde(default)]
     pub keyphasor: Option<usize>,
+}
+
+impl RigTopology {
+    /// F. Basmaji's rig (PhD thesis, The City University, London, 1983), whose ch. IV
+    /// findings its sweeps are held against.
+    pub const BASMAJI_1983: &'static str = "basmaji-1983";
+
+    /// The published rigs a rig file may say it reproduces.
+    pub const REPRODUCIBLE: &'static [&'static str] = &[Self::BASMAJI_1983];
 }

@@ -1,26 +1,16 @@
-//! `report.md` of a sweep on a rig file's rig: no thesis to hold it against, so what the
-//! points held (hysteresis, coexisting motions, the motor's holding: as a preset's
-//! report), each case's motion, its faults and the watched gear's indicators, with the
-//! plots.
+//! The parts of `report.md` a rig file's sweep adds: where no thesis holds it (a rig of
+//! its own, or every case faulted), what the points held (hysteresis, coexisting motions,
+//! the motor's holding: as the thesis's report says it); and each case's motion, its
+//! faults and the watched gear's indicators.
 
 use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
 
 use super::case::CaseResult;
 use super::meta::SweepMeta;
 use super::motion_lines::motion_lines;
-use super::report::plots_section;
-use crate::recording::PartialFile;
 
-/// Writes `dir/report.md` for the cases of a sweep on rig `rig` and returns its path.
-pub fn write_rig_report(
-    dir: &Path,
-    meta: &SweepMeta,
-    rig: &str,
-    cases: &[CaseResult],
-    plots: &[PathBuf],
-) -> anyhow::Result<PathBuf> {
-    let mut md = String::new();
+/// The report's opening for rig `rig`, whose sweep no thesis holds: what the points held.
+pub(super) fn rig_summary(md: &mut String, meta: &SweepMeta, rig: &str, cases: &[CaseResult]) {
     let _ = writeln!(md, "# {}: rig `{rig}`, case by case\n", meta.name);
     let _ = writeln!(
         md,
@@ -29,7 +19,12 @@ pub fn write_rig_report(
         meta.cases
     );
     let _ = writeln!(md, "## What the points held\n");
-    motion_lines(&mut md, cases);
+    motion_lines(md, cases);
+}
+
+/// Each case of the sweep, a row: its point, swept values, faults, motion, half-order
+/// height and the watched gear's FM4 and residual.
+pub(super) fn each_case(md: &mut String, meta: &SweepMeta, cases: &[CaseResult]) {
     let _ = writeln!(md, "\n## Each case\n");
     let mut header = vec!["case", "rev/min", "N m"];
     header.extend(meta.swept.iter().map(String::as_str));
@@ -75,6 +70,4 @@ pub fn write_rig_report(
         ]);
         let _ = writeln!(md, "| {} |", row.join(" | "));
     }
-    plots_section(&mut md, plots);
-    PartialFile::write_whole(&dir.join("report.md"), md)
 }
