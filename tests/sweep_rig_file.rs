@@ -396,6 +396,27 @@ fn the_fault_dataset_labels_every_case_and_its_indicators_follow_the_fault() {
     assert!(within >= 10, "healthy measured FM4 {fm4:?}");
 }
 
+/// The lab's every-approach sequence on `rig` (a `[rig]` table's lines) over the speeds
+/// `rpm` (a TOML list) at `load_nm`, 30 s settled and 10 s measured, each point from rest
+/// knocked `repeats` times, run in `dir`: its `cases.csv` rows and `report.md`.
+fn lab_sweep(
+    dir: &Path,
+    rig: &str,
+    rpm: &str,
+    load_nm: f64,
+    repeats: u32,
+) -> (Vec<std::collections::HashMap<String, String>>, String) {
+    std::fs::create_dir_all(dir).expect("folder");
+    let body = format!(
+        "[rig]\n{rig}\n[grid]\nrpm = {rpm}\nload_nm = [{load_nm}]\n[case]\nsettle_s = 30\nmeasure_s = 10\nsequence = \"every-approach\"\nrepeats = {repeats}\n"
+    );
+    let sweep = sweep_file(dir, &body);
+    let out = dir.join("out");
+    testrig_ok(&["sweep", &sweep, "--out", out.to_str().expect("utf-8")]);
+    let report = std::fs::read_to_string(out.join("report.md")).expect("report.md");
+    (csv_rows(&out.join("cases.csv")), report)
+}
+
 /// Issue 45: the lab's every-approach sequence (up, down, from rest) and its knocked
 /// repeats take a rig file as they take a preset. The 1983 rig as a file and as its
 /// preset, stepped 600 → 700 → 800 rev/min and back at 2.712 N m, each point also from
@@ -414,20 +435,7 @@ fn the_fault_dataset_labels_every_case_and_its_indicators_follow_the_fault() {
 #[test]
 fn the_lab_sequence_and_knocked_repeats_run_a_rig_file_as_its_preset() {
     let dir = folder("sweep-rig-lab");
-    let body = |rig: &str| {
-        format!(
-            "[rig]\n{rig}\n[grid]\nrpm = [600, 700, 800]\nload_nm = [2.712]\n[case]\nsettle_s = 30\nmeasure_s = 10\nsequence = \"every-approach\"\nrepeats = 1\n"
-        )
-    };
-    let run = |name: &str, rig: &str| {
-        let sub = dir.join(name);
-        std::fs::create_dir_all(&sub).expect("folder");
-        let sweep = sweep_file(&sub, &body(rig));
-        let out = sub.join("out");
-        testrig_ok(&["sweep", &sweep, "--out", out.to_str().expect("utf-8")]);
-        let report = std::fs::read_to_string(out.join("report.md")).expect("report.md");
-        (csv_rows(&out.join("cases.csv")), report)
-    };
+    let run = |name: &str, rig: &str| lab_sweep(&dir.join(name), rig, "[600, 700, 800]", 2.712, 1);
     let (preset, preset_report) = run("preset", "preset = \"basmaji-1983\"");
     let (file, report) = run("file", &format!("file = \"{}\"", rig_file("basmaji-1983")));
     // The file reproduces the 1983 rig: held against the thesis as its preset is, the
@@ -502,19 +510,7 @@ fn the_lab_sequence_and_knocked_repeats_run_a_rig_file_as_its_preset() {
 #[test]
 fn a_rig_files_case_from_rest_waits_for_its_run_up_as_a_presets_does() {
     let dir = folder("sweep-rig-run-up");
-    let body = |rig: &str| {
-        format!(
-            "[rig]\n{rig}\n[grid]\nrpm = [1600, 2000]\nload_nm = [5.424]\n[case]\nsettle_s = 30\nmeasure_s = 10\nsequence = \"every-approach\"\nrepeats = 0\n"
-        )
-    };
-    let run = |name: &str, rig: &str| {
-        let sub = dir.join(name);
-        std::fs::create_dir_all(&sub).expect("folder");
-        let sweep = sweep_file(&sub, &body(rig));
-        let out = sub.join("out");
-        testrig_ok(&["sweep", &sweep, "--out", out.to_str().expect("utf-8")]);
-        csv_rows(&out.join("cases.csv"))
-    };
+    let run = |name: &str, rig: &str| lab_sweep(&dir.join(name), rig, "[1600, 2000]", 5.424, 0).0;
     let preset = run(
         "preset",
         "preset = \"basmaji-1983-drive\"\nbacklash_mm = 0.73",
