@@ -142,7 +142,14 @@ pub fn measured_samples(plan: &SweepPlan) -> usize {
 }
 
 /// Longest run-up from rest a case waits for before it settles (s).
-pub(super) const MAX_RUN_UP_S: f64 = 600.0;
+const MAX_RUN_UP_S: f64 = 600.0;
+
+/// How long a case from rest waits for the drive to run the rig up before it settles (s):
+/// the run-up's time, `run_up_s` (`None` where the drive has no limit or no torque to
+/// spare: no wait), at most [`MAX_RUN_UP_S`]. The same for a preset's plant and any rig's.
+pub(super) fn run_up_wait_s(run_up_s: Option<f64>) -> f64 {
+    run_up_s.map_or(0.0, |s| s.min(MAX_RUN_UP_S))
+}
 
 /// The plant of `case`, brought to its point by its approach and settled, standing
 /// [`chain_lead_s`] before the case's window. From rest it settles for `settle_s` once
@@ -153,9 +160,7 @@ pub fn settled_plant(plan: &SweepPlan, case: &Case) -> anyhow::Result<Plant> {
         case.approach
             .plant(params.clone(), case.rpm, case.load_nm, plant_config(plan))?;
     let lead_in_s = match case.approach {
-        Approach::Rest => params
-            .run_up_from_rest_s(case.rpm, case.load_nm)
-            .map_or(0.0, |s| s.min(MAX_RUN_UP_S)),
+        Approach::Rest => run_up_wait_s(params.run_up_from_rest_s(case.rpm, case.load_nm)),
         other => other.lead_in_s(),
     };
     let settle_s = lead_in_s + plan.settle_s - chain_lead_s(plan);

@@ -7,11 +7,11 @@
 
 use std::path::Path;
 
-use rig::{NetworkPlant, RigTopology};
+use rig::{Approach, NetworkPlant, RigTopology};
 
 use super::case::{
-    CaseInstruments, CaseResult, KEPT_REVOLUTIONS, MAX_RUN_UP_S, case_instruments, case_result,
-    chain_lead_s,
+    CaseInstruments, CaseResult, KEPT_REVOLUTIONS, case_instruments, case_result, chain_lead_s,
+    run_up_wait_s,
 };
 use super::case_recording::CaseRecording;
 use super::grid::{Case, SweepPlan};
@@ -21,7 +21,6 @@ use crate::rig_roles::{RIG_SIGNALS, RoleColumns, gauge_of, gauged_stages};
 use crate::vocabulary::GearIndicators;
 use crate::vocabulary::InputNames;
 use crate::vocabulary::frame::SignalNames;
-use rig::Approach;
 
 /// Samples per block.
 const BLOCK: usize = 4096;
@@ -49,7 +48,7 @@ pub fn run_rig_case(
 /// A plant of its own for `case` on `rig`, brought to its point by its approach and
 /// settled, standing [`chain_lead_s`] before the case's window. From rest it settles for
 /// `settle_s` once the drive has run it up, as a preset's case does (the run-up at the
-/// torque limit, at most [`MAX_RUN_UP_S`]).
+/// torque limit, [`run_up_wait_s`]).
 pub fn rig_case_plant(
     plan: &SweepPlan,
     case: &Case,
@@ -66,9 +65,7 @@ pub fn rig_case_plant(
     };
     let mut plant = settled_rig_plant(&spec, NAMES)?;
     if case.approach == Approach::Rest {
-        let run_up_s = plant
-            .run_up_from_rest_s(case.rpm, case.load_nm)
-            .map_or(0.0, |s| s.min(MAX_RUN_UP_S));
+        let run_up_s = run_up_wait_s(plant.run_up_from_rest_s(case.rpm, case.load_nm));
         skip_rig_samples(&mut plant, (run_up_s * plan.rate_hz).round() as usize)?;
     }
     Ok(plant)
