@@ -11,7 +11,7 @@ use crate::jump_response::JumpResponse;
 use crate::layout::Layout;
 use crate::matrix_exp::{exp_powers, spectral_radius};
 use crate::stride::{Stride, stride_steps};
-use crate::taylor::{RECIPROCALS, TAYLOR_ORDER, TaylorVectors};
+use crate::taylor::{TaylorVectors, taylor_order};
 
 /// Everything needed to advance the plant while it stays in one [`Mode`].
 pub struct ModeSystem {
@@ -87,15 +87,7 @@ impl ModeSystem {
     /// Taylor order whose remainder (ρδ)^(K+1)/(K+1)! is below 1e-16 (the rounding of the
     /// state itself) for a step of `delta_s`.
     pub fn taylor_order(&self, delta_s: f64) -> usize {
-        let x = self.spectral_radius * delta_s;
-        let mut term = x;
-        (1..TAYLOR_ORDER)
-            .find(|&k| {
-                term *= x * RECIPROCALS[k + 1];
-                term < 1e-16
-            })
-            .map_or(TAYLOR_ORDER, |k| k + 1)
-            .max(4)
+        taylor_order(self.spectral_radius * delta_s)
     }
 
     /// Fills `vectors` with v_k = (A δ)^k u₀ / k! for k = 0..=order and returns the order

@@ -125,7 +125,7 @@ fn refine(coeffs: &[f64], (mut a, value_a): (f64, f64), (mut b, value_b): (f64, 
 ///
 /// Used before any expensive search: true on a sign change or when the Hermite cubic's
 /// interior maximum lies within a safety margin of zero.
-#[inline]
+#[inline(always)]
 pub fn may_cross(g0: f64, d0: f64, g1: f64, d1: f64) -> bool {
     if g1 > 0.0 {
         return true;

@@ -20,6 +20,21 @@ pub(crate) const RECIPROCALS: [f64; TAYLOR_ORDER + 1] = {
     r
 };
 
+/// Taylor order K whose remainder (ρτ)^(K+1)/(K+1)! is below 1e-16 (the rounding of the
+/// state itself) for a span τ of a mode of spectral radius ρ, `rho_span` = ρτ (rad); at
+/// least 4, at most [`TAYLOR_ORDER`].
+pub fn taylor_order(rho_span: f64) -> usize {
+    let x = rho_span;
+    let mut term = x;
+    (1..TAYLOR_ORDER)
+        .find(|&k| {
+            term *= x * RECIPROCALS[k + 1];
+            term < 1e-16
+        })
+        .map_or(TAYLOR_ORDER, |k| k + 1)
+        .max(4)
+}
+
 /// Taylor vectors v_k = (A δ)^k u₀ / k!, so that u(s δ) = Σ_k v_k s^k for s ∈ [0, 1]
 /// (only those up to the order of the last expansion are valid).
 pub type TaylorVectors = [[f64; Layout::MAX_LEN]; TAYLOR_ORDER + 1];

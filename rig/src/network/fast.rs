@@ -133,8 +133,7 @@ impl NetworkPlant {
                 if self.sample >= singles_until && self.sample + samples <= stop {
                     self.span_end(system, &stride.matrix, products::Inlined);
                     if !self.may_switch(system, f64::from(stride.steps) * self.step_s) {
-                        std::mem::swap(&mut self.u, &mut self.next);
-                        std::mem::swap(&mut self.edge, &mut self.next_edge);
+                        self.take_span_end();
                         self.sample += samples;
                         continue;
                     }
@@ -146,8 +145,7 @@ impl NetworkPlant {
                 if self.may_switch(system, self.step_s) {
                     return RunEnd::MaySwitch { substep };
                 }
-                std::mem::swap(&mut self.u, &mut self.next);
-                std::mem::swap(&mut self.edge, &mut self.next_edge);
+                self.take_span_end();
             }
             self.sample += 1;
         }

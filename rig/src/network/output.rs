@@ -155,11 +155,7 @@ impl SampleChunk {
         block
             .time_s
             .extend((0..n as u64).map(|k| (first + k) as f64 * output_step_s));
-        let mut out = [0.0; CHUNK];
-        let mut append = |terms: &[(usize, f64)], column: &mut Vec<f64>| {
-            self.sum(terms, &mut out[..n]);
-            column.extend_from_slice(&out[..n]);
-        };
+        let append = |terms: &[(usize, f64)], column: &mut Vec<f64>| self.sum(terms, n, column);
         for (terms, column) in forms.angle.iter().zip(&mut block.angle_rad) {
             append(terms, column);
         }
@@ -179,14 +175,21 @@ impl SampleChunk {
         self.count = 0;
     }
 
-    /// out[k] = Σ c · state i of sample k over the terms (i, c).
+    /// Appends to `column`, for each of the first `n` samples k, Σ c · state i of sample
+    /// k over the terms (i, c): the first term's products appended, the others added in
+    /// place.
     #[inline]
-    fn sum(&self, terms: &[(usize, f64)], out: &mut [f64]) {
-        out.fill(0.0);
-        let n = out.len();
-        for &(i, c) in terms {
-            let column = &self.states[i * CHUNK..i * CHUNK + n];
-            for (o, &x) in out.iter_mut().zip(column) {
+    fn sum(&self, terms: &[(usize, f64)], n: usize, column: &mut Vec<f64>) {
+        let state = |i: usize| &self.states[i * CHUNK..i * CHUNK + n];
+        let start = column.len();
+        let Some((&(i, c), rest)) = terms.split_first() else {
+            column.resize(start + n, 0.0);
+            return;
+        };
+        column.extend(state(i).iter().map(|&x| c * x));
+        let out = &mut column[start..];
+        for &(i, c) in rest {
+            for (o, &x) in out.iter_mut().zip(state(i)) {
                 *o += c * x;
             }
         }

@@ -80,6 +80,8 @@ pub struct NetworkPlant {
     pub(super) fused_out: Vec<f64>,
     pub(super) forcing_out: Vec<f64>,
     pub(super) taylor: Vec<Vec<f64>>,
+    /// The order of the last expansion: the Taylor vectors up to it are valid.
+    pub(super) taylor_order: usize,
     /// Each switching function's target, taken at a fast run's start.
     pub(super) targets: Vec<f64>,
     /// The samples stored and not yet written to a block.
@@ -162,6 +164,7 @@ impl NetworkPlant {
             fused_out: Vec::new(),
             forcing_out: Vec::new(),
             taylor: vec![vec![0.0; len]; TAYLOR_ORDER + 1],
+            taylor_order: TAYLOR_ORDER,
             targets: Vec::new(),
             chunk: SampleChunk::new(len),
         };

@@ -9,12 +9,13 @@
 //! step are one loop: 12 % faster on the 1983 rig, measured.
 
 /// How a span's products are taken.
-pub trait Product {
+pub trait Product: Copy {
     /// out[..rows] = M u, as [`rows`].
     fn rows(m: &[f64], rows: usize, u: &[f64], out: &mut [f64]);
 }
 
 /// [`rows`], the CPU asked each call: for callers compiled for baseline x86-64.
+#[derive(Clone, Copy)]
 pub struct Dispatched;
 
 impl Product for Dispatched {
@@ -27,6 +28,7 @@ impl Product for Dispatched {
 /// [`rows`] compiled with its caller's features, inlined: for callers compiled for the
 /// CPU (reached from one compiled for baseline x86-64, each multiply-add would be a
 /// library call, ten times slower).
+#[derive(Clone, Copy)]
 pub struct Inlined;
 
 impl Product for Inlined {

@@ -44,6 +44,9 @@ pub struct Stride {
 pub struct ModeSystem {
     /// A of u' = A u, column-major, each column padded to the layout's padded length.
     pub a_columns: Vec<f64>,
+    /// A's spectral radius (rad/s): the fastest motion of the mode, which sets the order of
+    /// its Taylor expansions.
+    pub rho_rad_s: f64,
     /// e^{A h}, the internal step.
     pub step: SpanMatrix,
     /// The stride of this mode, if its fastest motion is slow enough for one.
@@ -142,23 +145,26 @@ impl SystemCache {
         }
         let a = model.system_matrix(mode, &self.rates);
         let padded = model.layout.padded();
-        let steps = stride_steps(spectral_radius(&a), self.step_s);
+        let rho_rad_s = spectral_radius(&a);
+        let steps = stride_steps(rho_rad_s, self.step_s);
         let spans = exp_spans(model, &a, self.step_s, self.rho, steps);
         let events = event_forms(model, mode, &a, self.rates.harmonic_rad_s);
         let a_columns = padded_columns(&a, padded);
         let outputs = OutputForms::of(model, mode, self.rates.harmonic_rad_s);
-        self.built
-            .push(mode_system(model, a_columns, &spans, events, outputs));
+        self.built.push(mode_system(
+            model, a_columns, rho_rad_s, &spans, events, outputs,
+        ));
         self.systems.insert(*mode, self.built.len() - 1);
         self.built.len() - 1
     }
 }
 
-/// The system of a mode from its A (`a_columns`), e^{A h} and, where it strides,
+/// The system of a mode from its A (`a_columns`, spectral radius `rho_rad_s`), e^{A h} and, where it strides,
 /// e^{A m h} (`spans`), its switching functions and its signals.
 fn mode_system(
     model: &NetworkModel,
     a_columns: Vec<f64>,
+    rho_rad_s: f64,
     spans: &[(u32, DMatrix<f64>)],
     events: Vec<EventForm>,
     outputs: OutputForms,
@@ -184,6 +190,7 @@ fn mode_system(
     });
     ModeSystem {
         a_columns,
+        rho_rad_s,
         step,
         stride,
         fused_rows,
