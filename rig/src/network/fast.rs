@@ -14,7 +14,9 @@ use super::block::NetworkBlock;
 use super::events::edge_values;
 use super::plant::NetworkPlant;
 use super::products;
-use super::system::{ModeSystem, SystemCache};
+use super::run_spans::RunSpans;
+use super::system::{ModeSystem, SpanMatrix};
+use super::system_cache::SystemCache;
 
 /// How a fast run ended.
 enum RunEnd {
@@ -37,12 +39,13 @@ impl NetworkPlant {
     ) -> Result<u64, RigError> {
         let first = self.sample;
         let segment_begins = self.segment_end.is_some_and(|end| self.sample >= end);
+        // Samples held that this one cannot join (of another mode, or of the stretch of set
+        // points before it) are written out here, so that the fast path takes it as it
+        // does at a block's start: the same bytes whatever the blocks.
         if RECORD && (segment_begins || !self.chunk.takes(self.sample, &self.mode)) {
-            self.store_sample(block);
-            self.finish_period(0)?;
-            return Ok(1);
+            self.flush_samples(block);
         }
-        if !RECORD && segment_begins {
+        if segment_begins {
             self.begin_segment();
         }
         let Some(mut cache) = self.cache.take() else {
@@ -70,7 +73,7 @@ impl NetworkPlant {
     }
 
     /// [`Self::fast_run`] compiled for AVX2 and FMA where the CPU has them (its products
-    /// [`products::Inlined`]), else for baseline x86-64.
+    /// [`products::gathered`] inlined), else for baseline x86-64.
     fn fast_run_dispatch<const RECORD: bool>(
         &mut self,
         cache: &mut SystemCache,
@@ -107,18 +110,20 @@ impl NetworkPlant {
         limit: u64,
         block: &mut NetworkBlock,
     ) -> RunEnd {
-        let system = cache.get(&self.model, &self.mode);
+        let (system, run) = cache.get_run(&self.model, &self.mode, &self.u);
         self.fill_targets(system);
         if self.edge.len() != system.events.len() {
             edge_values(&system.events, &self.u, &mut self.edge);
         }
+        self.prepare_run(system, run);
         let stop = self.fast_stop(limit);
         // Strides only where no sample is written inside them, in whole output periods.
         let substeps = self.substeps;
         let stride = system
             .stride
             .as_ref()
-            .filter(|s| !RECORD && s.steps.is_multiple_of(substeps));
+            .zip(run.stride.as_ref())
+            .filter(|(s, _)| !RECORD && s.steps.is_multiple_of(substeps));
         // After a stride that may switch, single steps up to this sample.
         let mut singles_until = 0;
         while self.sample < stop {
@@ -128,10 +133,10 @@ impl NetworkPlant {
                 }
                 self.chunk.store(self.sample, &self.mode, &self.u);
             }
-            if let Some(stride) = stride {
+            if let Some((stride, matrix)) = stride {
                 let samples = u64::from(stride.steps / substeps);
                 if self.sample >= singles_until && self.sample + samples <= stop {
-                    self.span_end(system, &stride.matrix, products::Inlined);
+                    self.run_end(system, run, matrix);
                     if !self.may_switch(system, f64::from(stride.steps) * self.step_s) {
                         self.take_span_end();
                         self.sample += samples;
@@ -141,7 +146,7 @@ impl NetworkPlant {
                 }
             }
             for substep in 0..substeps {
-                self.span_end(system, &system.step, products::Inlined);
+                self.run_end(system, run, &run.step);
                 if self.may_switch(system, self.step_s) {
                     return RunEnd::MaySwitch { substep };
                 }
@@ -150,6 +155,49 @@ impl NetworkPlant {
             self.sample += 1;
         }
         RunEnd::Done
+    }
+
+    /// Readies the scratch for a fast run's products: room for their rows, and the forcing
+    /// states the run holds copied into `self.next` (its products leave them be).
+    fn prepare_run(&mut self, system: &ModeSystem, run: &RunSpans) {
+        if self.fused_out.len() < system.fused_rows {
+            self.fused_out.resize(system.fused_rows, 0.0);
+        }
+        if self.forcing_out.len() < run.moving_rows {
+            self.forcing_out.resize(run.moving_rows, 0.0);
+        }
+        let mechanical = self.model.layout.mechanical();
+        self.next[mechanical..].copy_from_slice(&self.u[mechanical..]);
+    }
+
+    /// The end of the span of `matrix` (a step or a stride of `run`) from `self.u`:
+    /// `self.next` the state there, `self.next_edge` each switching function's value and
+    /// rate.
+    #[inline(always)]
+    fn run_end(&mut self, system: &ModeSystem, run: &RunSpans, matrix: &SpanMatrix) {
+        let mechanical = self.model.layout.mechanical();
+        products::gathered(
+            &matrix.fused,
+            system.fused_rows,
+            &run.columns,
+            &self.u,
+            &mut self.fused_out,
+        );
+        self.next[..mechanical].copy_from_slice(&self.fused_out[..mechanical]);
+        // None move with the set speed at zero and nothing ramping.
+        if !run.moving.is_empty() {
+            products::gathered(
+                &matrix.forcing,
+                run.moving_rows,
+                &run.forcing_columns,
+                &self.u,
+                &mut self.forcing_out,
+            );
+            for (&i, &x) in run.moving.iter().zip(&self.forcing_out) {
+                self.next[i] = x;
+            }
+        }
+        self.fill_next_edge(system);
     }
 
     /// The first sample the fast run may not take: `limit` on, the next stretch of set
@@ -177,13 +225,19 @@ impl NetworkPlant {
     /// the exact path's check decides it.
     #[inline(always)]
     fn may_switch(&self, system: &ModeSystem, span_s: f64) -> bool {
-        system.events.iter().enumerate().any(|(k, _)| {
-            let target = self.targets[k];
-            let (value_0, rate_0) = self.edge[k];
-            let end = self.next_edge[k];
+        // A plain loop: written with `any`, the check was a call out of the loop.
+        let events = system.events.len();
+        for ((&target, &(value_0, rate_0)), &end) in self.targets[..events]
+            .iter()
+            .zip(&self.edge[..events])
+            .zip(&self.next_edge[..events])
+        {
             let g0 = (value_0 - target).min(0.0);
             let g1 = end.0 - target;
-            may_cross(g0, rate_0 * span_s, g1, end.1 * span_s)
-        })
+            if may_cross(g0, rate_0 * span_s, g1, end.1 * span_s) {
+                return true;
+            }
+        }
+        false
     }
 }

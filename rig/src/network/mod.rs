@@ -12,7 +12,9 @@
 //! per mode, `drive_model.rs` the motor's and the brake's (drag, characteristic), `mesh_model.rs` a mesh's constants (its pair zones,
 //! its faulted teeth's factors). `events.rs` the switching functions of a mode.
 //! `system.rs` per mode the fused step (e^{A h}'s mechanical rows with the fixed-target
-//! functions' values and rates) and the events, built on first use and cached.
+//! functions' values and rates) and the events, `system_cache.rs` them built on first
+//! use and kept; `run_spans.rs` them folded for a fast run, the forcing states that hold
+//! still in one column.
 //! `equilibrium.rs` the steady state at a set speed and load (and at rest, a loop's
 //! locked torque carried), and the model assembled with a loop's preload.
 //! `block.rs` the samples and impacts a run gives, `output.rs` the samples held by
@@ -36,10 +38,12 @@ mod model;
 mod output;
 mod plant;
 mod products;
+mod run_spans;
 mod run_up;
 mod segment;
 mod stepping;
 mod system;
+mod system_cache;
 mod teeth;
 
 pub use block::{NetworkBlock, NetworkImpact};

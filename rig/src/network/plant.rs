@@ -14,7 +14,8 @@ use super::equilibrium::{assembled, equilibrium};
 use super::mode::{Contact, MeshState, NetMode};
 use super::model::NetworkModel;
 use super::output::SampleChunk;
-use super::system::{SystemCache, fastest_rate};
+use super::system::fastest_rate;
+use super::system_cache::SystemCache;
 
 /// Where a run starts.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -291,7 +292,7 @@ impl NetworkPlant {
     }
 
     /// Appends the samples held to `block`.
-    fn flush_samples(&mut self, block: &mut NetworkBlock) {
+    pub(super) fn flush_samples(&mut self, block: &mut NetworkBlock) {
         if self.chunk.is_empty() {
             return;
         }

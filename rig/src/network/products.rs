@@ -3,39 +3,19 @@
 //! square; the fused step's rows: the mechanical rows of e^{A h} and the switching
 //! functions' values and rates after it). Fused multiply-adds (one rounding each, the
 //! same bytes on every CPU, `crate::fma`): compiled for AVX2 and FMA where the CPU has
-//! them, else for baseline x86-64. Two ways in ([`Product`]): [`Dispatched`] asks the CPU
-//! each call, out of line; [`Inlined`] is inlined into a caller already compiled for the
-//! CPU, the fast run's loop (`fast.rs`), with which the products, copies and checks of a
-//! step are one loop: 12 % faster on the 1983 rig, measured.
+//! them, else for baseline x86-64. Two ways in: [`rows`] asks the CPU each call, out of
+//! line; [`gathered`] is inlined into the fast run's loop (`fast.rs`), compiled for the
+//! CPU, with which the products, copies and checks of a step are one loop (12 % faster
+//! on the 1983 rig, measured, than products called out of line).
 
-/// How a span's products are taken.
-pub trait Product: Copy {
-    /// out[..rows] = M u, as [`rows`].
-    fn rows(m: &[f64], rows: usize, u: &[f64], out: &mut [f64]);
-}
-
-/// [`rows`], the CPU asked each call: for callers compiled for baseline x86-64.
-#[derive(Clone, Copy)]
-pub struct Dispatched;
-
-impl Product for Dispatched {
-    #[inline(always)]
-    fn rows(m: &[f64], rows: usize, u: &[f64], out: &mut [f64]) {
-        self::rows(m, rows, u, out);
-    }
-}
-
-/// [`rows`] compiled with its caller's features, inlined: for callers compiled for the
-/// CPU (reached from one compiled for baseline x86-64, each multiply-add would be a
-/// library call, ten times slower).
-#[derive(Clone, Copy)]
-pub struct Inlined;
-
-impl Product for Inlined {
-    #[inline(always)]
-    fn rows(m: &[f64], rows: usize, u: &[f64], out: &mut [f64]) {
-        rows_any(m, rows, u, out);
-    }
+/// out[..rows] = Σ_k M[:, k] u[columns[k]]: M's columns stand for the states `columns`
+/// picks (a fast run's folded spans, `run_spans.rs`). Inlined, compiled with its
+/// caller's features: for the fast run's loop, compiled for the CPU (reached from code
+/// compiled for baseline x86-64, each multiply-add would be a library call, ten times
+/// slower).
+#[inline(always)]
+pub fn gathered(m: &[f64], rows: usize, columns: &[usize], u: &[f64], out: &mut [f64]) {
+    rows_any(m, rows, columns.iter().map(|&i| u[i]), out);
 }
 
 /// out[..rows] = M u for M of `rows` rows (a multiple of 4) stored by columns, one column
@@ -46,19 +26,21 @@ pub fn rows(m: &[f64], rows: usize, u: &[f64], out: &mut [f64]) {
         // SAFETY: the CPU has AVX2 and FMA, checked at run time.
         return unsafe { rows_v3(m, rows, u, out) };
     }
-    rows_any(m, rows, u, out);
+    rows_any(m, rows, u.iter().copied(), out);
 }
 
 /// [`rows_any`] compiled for AVX2 and FMA.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
 fn rows_v3(m: &[f64], rows: usize, u: &[f64], out: &mut [f64]) {
-    rows_any(m, rows, u, out);
+    rows_any(m, rows, u.iter().copied(), out);
 }
 
+/// out[..rows] = M x, M stored by columns, x the states each column stands for.
 #[inline(always)]
-fn rows_any(m: &[f64], rows: usize, u: &[f64], out: &mut [f64]) {
+fn rows_any(m: &[f64], rows: usize, u: impl Iterator<Item = f64>, out: &mut [f64]) {
     match rows {
+        4 => rows_of::<4>(m, u, out),
         8 => rows_of::<8>(m, u, out),
         12 => rows_of::<12>(m, u, out),
         16 => rows_of::<16>(m, u, out),
@@ -77,14 +59,14 @@ fn rows_any(m: &[f64], rows: usize, u: &[f64], out: &mut [f64]) {
 /// [`rows_any`] for `R` rows: the result summed in registers over the columns (a fixed
 /// shape the compiler unrolls), in two chains taken alternately.
 #[inline(always)]
-fn rows_of<const R: usize>(m: &[f64], u: &[f64], out: &mut [f64]) {
+fn rows_of<const R: usize>(m: &[f64], u: impl Iterator<Item = f64>, out: &mut [f64]) {
     let (mut even, mut odd) = ([0.0; R], [0.0; R]);
-    let mut columns = m.chunks_exact(R).zip(u).filter(|&(_, &x)| x != 0.0);
-    while let Some((c0, &x0)) = columns.next() {
+    let mut columns = m.chunks_exact(R).zip(u).filter(|&(_, x)| x != 0.0);
+    while let Some((c0, x0)) = columns.next() {
         for (s, &a) in even.iter_mut().zip(c0) {
             *s = a.mul_add(x0, *s);
         }
-        let Some((c1, &x1)) = columns.next() else {
+        let Some((c1, x1)) = columns.next() else {
             break;
         };
         for (s, &a) in odd.iter_mut().zip(c1) {
@@ -98,9 +80,9 @@ fn rows_of<const R: usize>(m: &[f64], u: &[f64], out: &mut [f64]) {
 
 /// [`rows_any`] for any number of rows.
 #[inline(always)]
-fn rows_dynamic(m: &[f64], rows: usize, u: &[f64], out: &mut [f64]) {
+fn rows_dynamic(m: &[f64], rows: usize, u: impl Iterator<Item = f64>, out: &mut [f64]) {
     out[..rows].fill(0.0);
-    for (column, &x) in m.chunks_exact(rows).zip(u) {
+    for (column, x) in m.chunks_exact(rows).zip(u) {
         if x == 0.0 {
             continue;
         }

@@ -1,7 +1,7 @@
 //! One internal step of the exact plant: e^{A h} u in the current mode, then every
 //! switching function checked. Where one may have crossed (a sign change, or a Hermite
 //! cubic through both ends coming near zero), the step's Taylor expansion
-//! u(s h) = Σ (A h)^k u / k! s^k (ρh ≤ 0.5: order 16 is exact to rounding) gives each
+//! u(s h) = Σ (A h)^k u / k! s^k (to the order ρh needs to be exact to rounding) gives each
 //! function as a polynomial; the first crossing of any is the switch, the state there is
 //! the expansion's, and the rest of the step runs on in the new mode.
 
@@ -18,7 +18,8 @@ use super::events::{EventForm, NetEvent, Target, edge_values};
 use super::mode::{Contact, MeshState};
 use super::plant::NetworkPlant;
 use super::products;
-use super::system::{ModeSystem, SpanMatrix, SystemCache};
+use super::system::ModeSystem;
+use super::system_cache::SystemCache;
 
 impl NetworkPlant {
     /// Advances one internal step, switching wherever a function crosses.
@@ -68,24 +69,12 @@ impl NetworkPlant {
     /// A whole step in one product: `self.next` the state at its end (the forcing states
     /// advanced apart), `self.next_edge` each switching function's value and rate there.
     pub(super) fn fused_step(&mut self, system: &ModeSystem) {
-        self.span_end(system, &system.step, products::Dispatched);
-    }
-
-    /// The end of the span of `matrix` (a step or a stride) from `self.u`, as
-    /// [`Self::fused_step`].
-    #[inline(always)]
-    pub(super) fn span_end<P: products::Product>(
-        &mut self,
-        system: &ModeSystem,
-        matrix: &SpanMatrix,
-        product: P,
-    ) {
         let mechanical = self.model.layout.mechanical();
         if self.fused_out.len() < system.fused_rows {
             self.fused_out.resize(system.fused_rows, 0.0);
         }
-        P::rows(
-            &matrix.fused,
+        products::rows(
+            &system.step.fused,
             system.fused_rows,
             &self.u,
             &mut self.fused_out,
@@ -94,14 +83,23 @@ impl NetworkPlant {
         if self.forcing_out.len() < system.forcing_rows {
             self.forcing_out.resize(system.forcing_rows, 0.0);
         }
-        system.advance_forcing(
-            matrix,
-            mechanical,
-            &self.u,
-            &mut self.next,
+        let forcing = self.next.len().min(mechanical + system.forcing_rows) - mechanical;
+        products::rows(
+            &system.step.forcing,
+            system.forcing_rows,
+            &self.u[mechanical..],
             &mut self.forcing_out,
-            product,
         );
+        self.next[mechanical..mechanical + forcing].copy_from_slice(&self.forcing_out[..forcing]);
+        self.fill_next_edge(system);
+    }
+
+    /// Each switching function's value and rate at `self.next` into `self.next_edge`: a
+    /// row event's from the fused rows just taken into `self.fused_out`, the others from
+    /// the state.
+    #[inline(always)]
+    pub(super) fn fill_next_edge(&mut self, system: &ModeSystem) {
+        let mechanical = self.model.layout.mechanical();
         self.next_edge.clear();
         let (values, rates) = (mechanical, mechanical + system.row_events);
         for (form, slot) in system.events.iter().zip(&system.row_slot) {

@@ -1,7 +1,5 @@
-//! Per mode: A, e^{A h} and the switching functions, built when the mode is first met
-//! and kept until the set points' rates (`SegmentRates`) change.
-
-use std::collections::HashMap;
+//! Per mode: A, e^{A h} and the switching functions (kept by `system_cache.rs` from the
+//! mode's first use until the set points' rates change).
 
 use nalgebra::DMatrix;
 
@@ -12,7 +10,6 @@ use super::events::{EventForm, event_forms};
 use super::mode::NetMode;
 use super::model::{NetworkModel, SegmentRates};
 use super::output::OutputForms;
-use super::products;
 
 /// e^{A τ} of one mode over one span τ (a step, or a stride of steps), as its products
 /// take it.
@@ -69,93 +66,24 @@ pub struct ModeSystem {
 }
 
 impl ModeSystem {
-    /// The forcing states at the end of the span of `matrix`, from `u` at its start, into
-    /// `next` (`out` a scratch of at least `forcing_rows`).
-    #[inline(always)]
-    pub fn advance_forcing<P: products::Product>(
-        &self,
-        matrix: &SpanMatrix,
-        mechanical: usize,
-        u: &[f64],
-        next: &mut [f64],
-        out: &mut [f64],
-        _product: P,
-    ) {
-        let forcing = next.len().min(mechanical + self.forcing_rows) - mechanical;
-        P::rows(&matrix.forcing, self.forcing_rows, &u[mechanical..], out);
-        next[mechanical..mechanical + forcing].copy_from_slice(&out[..forcing]);
-    }
-}
-
-/// The modes met so far.
-#[derive(Clone, Debug)]
-pub struct SystemCache {
-    /// Where each mode's system sits in `built`.
-    systems: HashMap<NetMode, usize>,
-    built: Vec<ModeSystem>,
-    /// The mode asked for last and where its system sits (most steps stay in one mode).
-    last: Option<(NetMode, usize)>,
-    step_s: f64,
-    rho: f64,
-    /// The rates of the set points the systems were built for.
-    rates: SegmentRates,
-}
-
-impl SystemCache {
-    /// An empty cache for steps of `step_s`, ρ the fastest rate of any mode (rad/s).
-    pub fn new(step_s: f64, rho: f64) -> Self {
-        Self {
-            systems: HashMap::new(),
-            built: Vec::new(),
-            last: None,
-            step_s,
-            rho,
-            rates: SegmentRates::default(),
-        }
-    }
-
-    /// Sets the rates of the set points the systems are built for; a change empties the
-    /// cache.
-    pub fn set_rates(&mut self, rates: SegmentRates) {
-        if rates != self.rates {
-            self.systems.clear();
-            self.built.clear();
-            self.last = None;
-            self.rates = rates;
-        }
-    }
-
-    /// The system of `mode`, built if new.
-    pub fn get(&mut self, model: &NetworkModel, mode: &NetMode) -> &ModeSystem {
-        let index = match self.last {
-            Some((last, index)) if last == *mode => index,
-            _ => {
-                let index = self.index_of(model, mode);
-                self.last = Some((*mode, index));
-                index
-            }
-        };
-        &self.built[index]
-    }
-
-    /// Where the system of `mode` sits, built if new.
-    fn index_of(&mut self, model: &NetworkModel, mode: &NetMode) -> usize {
-        if let Some(&index) = self.systems.get(mode) {
-            return index;
-        }
-        let a = model.system_matrix(mode, &self.rates);
+    /// The system of `mode` of `model` for set points of `rates`, stepped by `step_s`,
+    /// its matrices balanced for ρ = `rho` (rad/s, the fastest rate of any mode).
+    pub fn build(
+        model: &NetworkModel,
+        mode: &NetMode,
+        rates: &SegmentRates,
+        step_s: f64,
+        rho: f64,
+    ) -> Self {
+        let a = model.system_matrix(mode, rates);
         let padded = model.layout.padded();
         let rho_rad_s = spectral_radius(&a);
-        let steps = stride_steps(rho_rad_s, self.step_s);
-        let spans = exp_spans(model, &a, self.step_s, self.rho, steps);
-        let events = event_forms(model, mode, &a, self.rates.harmonic_rad_s);
+        let steps = stride_steps(rho_rad_s, step_s);
+        let spans = exp_spans(model, &a, step_s, rho, steps);
+        let events = event_forms(model, mode, &a, rates.harmonic_rad_s);
         let a_columns = padded_columns(&a, padded);
-        let outputs = OutputForms::of(model, mode, self.rates.harmonic_rad_s);
-        self.built.push(mode_system(
-            model, a_columns, rho_rad_s, &spans, events, outputs,
-        ));
-        self.systems.insert(*mode, self.built.len() - 1);
-        self.built.len() - 1
+        let outputs = OutputForms::of(model, mode, rates.harmonic_rad_s);
+        mode_system(model, a_columns, rho_rad_s, &spans, events, outputs)
     }
 }
 
