@@ -2,7 +2,9 @@
 //! switch checks against targets taken once for the run, the samples stored without
 //! asking again which mode they are in. A step where a function may cross is taken on
 //! the exact path (`stepping.rs`), the rest of its output period too, and the run ends
-//! there. Both paths take the same products in the same order: the same bytes. A run
+//! there. The fast path's products are folded for the run (`run_spans.rs`), so the two
+//! paths part at rounding; which path takes a step depends on the motion alone, never
+//! on the blocks a run is asked for in, so a run gives the same bytes whatever they are. A run
 //! that writes no samples (settling) takes strides of several steps in one product where
 //! the mode allows (`system.rs`), checked for switches over the whole stride; where one
 //! may fall, that stretch is taken in single steps.

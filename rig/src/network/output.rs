@@ -186,7 +186,8 @@ impl SampleChunk {
             column.resize(start + n, 0.0);
             return;
         };
-        column.extend(state(i).iter().map(|&x| c * x));
+        // + 0.0: a zero signal is +0, as a sum from zero gives it.
+        column.extend(state(i).iter().map(|&x| c * x + 0.0));
         let out = &mut column[start..];
         for &(i, c) in rest {
             for (o, &x) in out.iter_mut().zip(state(i)) {

@@ -1,9 +1,11 @@
 //! A fast run's products: a mode's step (and stride) with the forcing states that hold
-//! still over the run (the unit state, a set speed and a load that do not ramp, a spacing
-//! error) folded into one column, the unit state's, and those that stay zero (the rates
-//! of set points that hold, an oscillating load that is off) left out. On the 1983 rig,
-//! 15 of the state's 22 columns remain in the fused product, and the forcing block
-//! shrinks to the states that move (the set rotation and the harmonic pair).
+//! still over the run (the unit state, a set speed and a load that do not ramp) folded
+//! into one column, the unit state's, and those that stay zero (the rates of set points
+//! that hold, an oscillating load that is off) left out. On the 1983 rig, 15 of the
+//! state's 22 columns remain in the fused product, and the forcing block shrinks to the
+//! states that move (the set rotation and the harmonic pair). A spacing error holds still
+//! too, but changes at every tooth zone: it keeps a column of its own, so that the fold
+//! outlives it.
 //!
 //! Which forcing states hold still follows from A's forcing rows (they read only forcing
 //! states, the same in every mode) and the state: a state stays zero if it is zero and
@@ -20,8 +22,8 @@ use super::system::{ModeSystem, SpanMatrix};
 #[derive(Clone, Debug)]
 pub struct RunSpans {
     /// The states the fused products read, in the order of their columns: the mechanical
-    /// states, the forcing states that move and feed them, then the unit state (its column
-    /// carrying the still states' part).
+    /// states, the forcing states that move and the spacing errors where they feed them,
+    /// then the unit state (its column carrying the still states' part).
     pub columns: Vec<usize>,
     /// The forcing states that move (the rows of each span's `forcing`).
     pub moving: Vec<usize>,
@@ -45,18 +47,22 @@ impl RunSpans {
         let forcing = layout.mechanical()..layout.len();
         let a = |row: usize, col: usize| system.a_columns[col * padded + row];
         let (zero, still) = holding_states(&a, forcing.clone(), u);
+        // Spacing errors hold still within a run but change at every tooth zone: read as
+        // columns of their own, not folded, so that a fold outlives them.
+        let read: Vec<usize> = layout.spacing.iter().flatten().copied().collect();
         let moving: Vec<usize> = forcing
             .clone()
             .filter(|&j| !zero[j - forcing.start] && !still[j - forcing.start])
+            .filter(|j| !read.contains(j))
             .collect();
         let held = forcing
             .clone()
-            .filter(|j| !moving.contains(j))
+            .filter(|j| !moving.contains(j) && !read.contains(j))
             .map(|j| (j, u[j].to_bits()))
             .collect();
         let still: Vec<usize> = forcing
             .clone()
-            .filter(|&j| still[j - forcing.start])
+            .filter(|&j| still[j - forcing.start] && !read.contains(&j))
             .collect();
         let unit = layout.unit();
         let fed = |j: &usize| {
@@ -72,7 +78,7 @@ impl RunSpans {
                 .any(|&x| x != 0.0)
         };
         let mut columns: Vec<usize> = (0..layout.mechanical()).collect();
-        columns.extend(moving.iter().copied().filter(fed));
+        columns.extend(moving.iter().chain(&read).copied().filter(fed));
         columns.push(unit);
         let mut forcing_columns = moving.clone();
         forcing_columns.push(unit);

@@ -17,7 +17,8 @@ use super::output::OutputForms;
 pub struct SpanMatrix {
     /// Column-major with `fused_rows` rows a column (see [`ModeSystem::fused_rows`]): the
     /// mechanical rows of e^{A τ}, then the value and then the rate of each row event (a
-    /// switching function of fixed target) at the span's end.
+    /// switching function of fixed target) at the span's end; one column per state, or,
+    /// folded for a fast run, per state its `RunSpans` reads.
     pub fused: Vec<f64>,
     /// The forcing block of e^{A τ} (rows and columns of the forcing states),
     /// column-major with `forcing_rows` rows a column. The forcing states evolve by
