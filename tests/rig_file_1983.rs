@@ -368,3 +368,46 @@ fn rattle() -> Schedule {
         ..Schedule::constant(600.0, 0.5)
     }
 }
+
+/// Every preset's shipped file is the rig its parameters describe (`rig::preset_rig`,
+/// the one conversion `--preset` with the thesis's names uses): every number alike to
+/// 1e-12 of its size, every choice and name the same.
+#[test]
+fn every_shipped_preset_file_is_its_presets_rig() {
+    for name in rig::PRESET_NAMES {
+        let file = shipped(name);
+        let params = rig::preset(name).expect("preset");
+        let converted = rig::preset_rig(name, &file.description, &params);
+        let (a, b) = (
+            serde_json::to_value(&file).expect("json"),
+            serde_json::to_value(&converted).expect("json"),
+        );
+        if let Some(place) = first_difference(&a, &b, String::new()) {
+            panic!("{name}: the file and the preset differ at {place}: {a} against {b}");
+        }
+    }
+}
+
+/// Where two JSON values first differ (numbers relatively by more than 1e-12), if they do.
+fn first_difference(a: &serde_json::Value, b: &serde_json::Value, at: String) -> Option<String> {
+    use serde_json::Value;
+    match (a, b) {
+        (Value::Number(x), Value::Number(y)) => {
+            let (x, y) = (x.as_f64()?, y.as_f64()?);
+            ((x - y).abs() > 1e-12 * x.abs().max(y.abs())).then(|| format!("{at} ({x} against {y})"))
+        }
+        (Value::Object(x), Value::Object(y)) => {
+            let keys: std::collections::BTreeSet<_> = x.keys().chain(y.keys()).collect();
+            keys.into_iter().find_map(|k| match (x.get(k), y.get(k)) {
+                (Some(p), Some(q)) => first_difference(p, q, format!("{at}.{k}")),
+                _ => Some(format!("{at}.{k} (in one only)")),
+            })
+        }
+        (Value::Array(x), Value::Array(y)) if x.len() == y.len() => x
+            .iter()
+            .zip(y)
+            .enumerate()
+            .find_map(|(i, (p, q))| first_difference(p, q, format!("{at}[{i}]"))),
+        _ => (a != b).then(|| at.to_string()),
+    }
+}

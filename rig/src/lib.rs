@@ -125,6 +125,7 @@ mod pair_zones;
 pub mod param_table;
 pub mod params;
 mod plant;
+pub mod preset_rig;
 pub mod presets;
 mod propagator;
 pub mod records;
@@ -161,6 +162,7 @@ pub use param_table::{
 };
 pub use params::RigParams;
 pub use plant::{CHECK_EVERY, Plant, PlantConfig};
+pub use preset_rig::preset_rig;
 pub use presets::{DEFAULT_PRESET, PRESET_NAMES, preset};
 pub use records::{Flank, Impact, RevolutionSample};
 pub use regime::{Regime, RegimeCriteria, classify, classify_scaled, impacts_per_tooth};
