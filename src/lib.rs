@@ -30,7 +30,7 @@ pub mod chain;
 pub mod panel;
 pub mod plots;
 pub mod recording;
-pub mod rig_point;
+pub mod approach_name;
 pub mod rig_roles;
 pub mod runtime;
 pub mod scenario;

@@ -10,7 +10,7 @@ use instruments::ShaftStrain;
 use rig::{Gauge, NetworkBlock, RigTopology};
 
 use crate::chain::ChainStages;
-use crate::rig_point::{judged_shaft, watched_gear};
+use crate::steady_point::{judged_shaft, watched_gear};
 use crate::vocabulary::frame::Frame;
 use crate::vocabulary::signal_names::{
     KEYPHASOR_V, MOTOR_SPEED_RAD_S, SHAFT_TORQUE_NM, SLIP_RING_SPEED_RAD_S,

@@ -104,21 +104,28 @@ fn simulate_writes_signals_impacts_and_summary() {
     let signals = std::fs::read_to_string(dir.join("signals.csv")).expect("signals.csv");
     let mut lines = signals.lines();
     let header = lines.next().expect("header");
-    assert!(header.starts_with("time_s,angle1_rad"), "{header}");
+    // The preset's rig file names the columns after its bodies, shafts and mesh.
+    assert!(header.starts_with("time_s,speed_motor_rpm"), "{header}");
+    assert!(header.contains(",torque_intermediate_nm,"), "{header}");
     assert_eq!(lines.count(), 2048);
     assert!(dir.join("summary.json").exists());
-    // One header, then one row per impact: time, flank, tooth, closing speed.
+    // One header, then one row per impact: time, mesh, flank, closing speed, teeth.
     let impacts = std::fs::read_to_string(dir.join("impacts.csv")).expect("impacts.csv");
     let mut rows = impacts.lines();
-    assert_eq!(rows.next(), Some("time_s,flank,tooth,closing_speed_rad_s"));
+    assert_eq!(
+        rows.next(),
+        Some("time_s,mesh,flank,closing_speed_m_s,driver_tooth,driven_tooth")
+    );
     let rows: Vec<&str> = rows.collect();
     assert!(!rows.is_empty(), "1300 rev/min, 2.712 N m impacts");
     for row in rows {
         let fields: Vec<&str> = row.split(',').collect();
         assert!(
-            fields.len() == 4
+            fields.len() == 6
                 && fields[0].parse::<f64>().is_ok()
-                && ["drive", "back"].contains(&fields[1]),
+                && fields[1] == "gears"
+                && ["drive", "back"].contains(&fields[2])
+                && fields[4].parse::<u32>().is_ok_and(|t| (1..=30).contains(&t)),
             "{row}"
         );
     }

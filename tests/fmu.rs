@@ -12,7 +12,7 @@ mod fmu_support;
 use common::folder;
 use fmu_support::Fmu;
 use rig::{NetworkBlock, NetworkPlant, NetworkStart, RigTopology, Schedule, Track};
-use testrig::rig_point::{RigPointSpec, run_rig_point};
+use testrig::steady_point::{RigPointSpec, run_rig_point};
 use testrig::vocabulary::FLAG_NAMES;
 use testrig_fmu::ffi::{self, ERROR, OK};
 use testrig_fmu::{Causality, SAMPLE_RATE_HZ, variables};

@@ -14,14 +14,14 @@ use import_graph::{Graph, cycle, referenced};
 /// The layers, lowest first; a module may import those of lower layers only.
 const LAYERS: &[&[&str]] = &[
     &["vocabulary"],
+    &["approach_name"],
     &["recording", "wav_input"],
     &["plots"],
     &["chain"],
-    &["rig_point"],
+    &["steady_point"],
     &["rig_roles"],
     &["scenario"],
     &["runtime"],
-    &["steady_point"],
     &["panel", "sweep"],
     &["calibrate"],
 ];

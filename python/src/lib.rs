@@ -10,7 +10,6 @@ mod live;
 mod run;
 mod scenario_arg;
 mod simulate;
-mod simulate_rig;
 
 use pyo3::prelude::*;
 

@@ -1,64 +1,35 @@
-//! `testrig.simulate`: the plant alone at a steady point, its true signals as numpy
-//! arrays (one copy: each column is moved into its array), its impacts and summary.
+//! `testrig.simulate`: a rig alone at a steady point (a preset's, or a rig file's given
+//! as a path or as the same tables in a dict), its signals named after its bodies, shafts
+//! and meshes as numpy arrays, its impacts and summary: the CLI's `simulate`.
 
 use std::collections::HashMap;
 
 use numpy::IntoPyArray;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use rig::{COLUMN_NAMES, Flank, SignalBlock};
-use testrig::steady_point::{PointRun, PointSpec, approach_named, run_point};
+use rig::{column_names, columns};
+use testrig::steady_point::{RigPointRun, RigPointSpec, run_rig_point};
+use testrig::scenario::{ScenarioSource, preset_rig_with_overrides, source_rig_with_overrides};
+use testrig::approach_name::approach_named;
 
 use crate::argument_names::ARGUMENT_NAMES;
+use crate::errors::TestrigError;
 use crate::interrupt::Interrupt;
-
-/// Every true signal of the window, column by column in [`COLUMN_NAMES`]' order.
-#[derive(Default)]
-struct Columns {
-    numbers: Vec<Vec<f64>>,
-    contact: Vec<i8>,
-    tooth: Vec<u32>,
-}
-
-impl Columns {
-    /// Room for `samples` of every column.
-    fn with_capacity(samples: usize) -> Self {
-        Self {
-            numbers: (0..COLUMN_NAMES.len() - 2)
-                .map(|_| Vec::with_capacity(samples))
-                .collect(),
-            contact: Vec::with_capacity(samples),
-            tooth: Vec::with_capacity(samples),
-        }
-    }
-
-    /// Appends `block`.
-    fn extend(&mut self, b: &SignalBlock) {
-        let sources = std::iter::once(&b.time_s)
-            .chain(&b.angle_rad)
-            .chain(&b.speed_rad_s)
-            .chain(&b.shaft_torque_nm)
-            .chain([&b.mesh_torque_nm, &b.motor_torque_nm]);
-        for (column, source) in self.numbers.iter_mut().zip(sources) {
-            column.extend_from_slice(source);
-        }
-        self.contact.extend_from_slice(&b.contact);
-        self.tooth.extend_from_slice(&b.tooth);
-    }
-}
 
 /// Runs the plant at `rpm` rev/min and `load_nm` N m, reached by `approach` (`"static"`:
 /// in steady motion from the static load; `"rest"`: from standstill; `"up"`/`"down"`: the
 /// lab's slow ramp from 250 rev/min or from 2000 rev/min at `ramp_rate` rev/min per s, as
 /// `testrig simulate --approach`): `settle_s` s settling (from a ramp's end), then
 /// `duration_s` s measured at `rate_hz`. Returns a dict: `signals` (name → array,
-/// units in the names), `impacts` (time_s, flank +1 drive / −1 back, tooth,
-/// closing_speed_rad_s), `summary` (the CLI's `simulate --json`). `set` overrides
-/// parameters by name (`testrig params`). `signals=False` keeps no signal (`signals`
-/// is then empty): the impacts and the summary alone, as fast as the CLI. `rig` (a rig
-/// file's path, or a dict of its tables) runs that rig instead of the preset, as
-/// `testrig simulate --rig` does; `set` then takes paths
-/// (`mesh.stage1.backlash_mm`).
+/// named after the rig's bodies, shafts and meshes, units in the names), `impacts`
+/// (time_s, mesh, flank +1 drive / −1 back, closing_speed_m_s, driver_tooth,
+/// driven_tooth), `summary` (the CLI's `simulate --json`). `set` overrides
+/// the rig's numbers by path (`testrig params --rig`, `mesh.gears.backlash_mm`) or, on a
+/// preset, by the thesis's names too (`testrig params`). `signals=False` keeps no signal
+/// (`signals` is then empty): the impacts and the summary alone, as fast as the CLI.
+/// `rig` (a rig file's path, or a dict of its tables) runs that rig instead of the
+/// preset, as `testrig simulate --rig` does; a preset is the short name of its rig file,
+/// so either gives the same signals, impacts and summary for the same rig.
 #[pyfunction]
 #[pyo3(signature = (rpm, load_nm, preset=rig::DEFAULT_PRESET, settle_s=60.0, duration_s=10.0, rate_hz=51200.0, set=None, signals=true, rig=None, approach="static", ramp_rate=rig::approach::LAB_RAMP_RPM_PER_S))]
 #[allow(clippy::too_many_arguments)]
@@ -78,15 +49,14 @@ pub fn simulate<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     let overrides = overrides(set)?;
     let approach = approach_named(approach, rpm, ramp_rate).map_err(crate::errors::to_py)?;
-    if let Some(rig) = rig {
-        let times = (settle_s, duration_s, rate_hz);
-        return crate::simulate_rig::simulate_rig(
-            py, &rig, &overrides, rpm, load_nm, times, signals, approach,
-        );
-    }
-    let spec = PointSpec {
-        preset,
-        overrides: &overrides,
+    let topology_is_preset = rig.is_none();
+    let topology = match rig {
+        Some(rig) => read_rig(&rig, &overrides)?,
+        None => preset_rig_with_overrides(preset, &overrides)
+            .map_err(|e| TestrigError::new_err(format!("{e:#}")))?,
+    };
+    let spec = RigPointSpec {
+        rig: &topology,
         rpm,
         load_nm,
         settle_s,
@@ -94,30 +64,33 @@ pub fn simulate<'py>(
         rate_hz,
         approach,
     };
-    let samples = if signals {
-        (duration_s.max(0.0) * rate_hz.max(0.0)).min(1e9) as usize + 1
-    } else {
-        0
-    };
-    let (columns, run, interrupt) = py.detach(|| {
-        let mut columns = Columns::with_capacity(samples);
+    let names = column_names(&topology);
+    let (kept, run, interrupt) = py.detach(|| {
+        let mut kept: Vec<Vec<f64>> = vec![Vec::new(); names.len()];
         let interrupt = std::cell::RefCell::new(Interrupt::new());
-        let run = run_point(
-            &spec,
-            ARGUMENT_NAMES,
-            || interrupt.borrow_mut().check(),
-            |block| {
-                if signals {
-                    columns.extend(block);
+        let run = run_rig_point(&spec, ARGUMENT_NAMES, |block| {
+            if signals {
+                for (column, part) in kept.iter_mut().zip(columns(&topology, block)) {
+                    column.extend(part);
                 }
-                interrupt.borrow_mut().check()
-            },
-        );
-        let interrupt = interrupt.into_inner();
-        (columns, run, interrupt)
+            }
+            interrupt.borrow_mut().check()
+        });
+        (kept, run, interrupt.into_inner())
     });
-    let run = interrupt.result(run)?;
-    result_dict(py, &spec, columns, run)
+    let run: RigPointRun = interrupt.result(run)?;
+    let out = PyDict::new(py);
+    let signal_dict = PyDict::new(py);
+    if signals {
+        for (name, column) in names.iter().zip(kept) {
+            signal_dict.set_item(name, column.into_pyarray(py))?;
+        }
+    }
+    out.set_item("signals", signal_dict)?;
+    out.set_item("impacts", impacts_dict(py, &topology, &run)?)?;
+    let preset = topology_is_preset.then_some(preset);
+    out.set_item("summary", summary_dict(py, &spec, preset, &run)?)?;
+    Ok(out)
 }
 
 /// `set`'s items as `NAME=VALUE` overrides, each value as Python writes it.
@@ -130,43 +103,98 @@ fn overrides(set: Option<HashMap<String, Bound<'_, PyAny>>>) -> PyResult<Vec<Str
     Ok(items)
 }
 
-/// The dict `simulate` returns.
-fn result_dict<'py>(
-    py: Python<'py>,
-    spec: &PointSpec,
-    columns: Columns,
-    run: PointRun,
-) -> PyResult<Bound<'py, PyDict>> {
-    let signals = PyDict::new(py);
-    if columns.numbers.first().is_some_and(|c| !c.is_empty()) {
-        let numeric = COLUMN_NAMES.iter().take(columns.numbers.len());
-        for (name, column) in numeric.zip(columns.numbers) {
-            signals.set_item(*name, column.into_pyarray(py))?;
+/// The rig a Python caller names: a path (str or os.PathLike) to a rig file, or a dict
+/// of its tables; `overrides` as `PATH=VALUE`.
+fn read_rig(rig: &Bound<'_, PyAny>, overrides: &[String]) -> PyResult<rig::RigTopology> {
+    let source = if rig.is_instance_of::<PyDict>() {
+        let json: String = rig
+            .py()
+            .import("json")?
+            .call_method1("dumps", (rig,))?
+            .extract()?;
+        let value: serde_json::Value =
+            serde_json::from_str(&json).map_err(|e| TestrigError::new_err(e.to_string()))?;
+        let text =
+            toml::to_string(&value).map_err(|e| TestrigError::new_err(format!("rig dict: {e}")))?;
+        ScenarioSource {
+            path: "rig dict".into(),
+            text,
         }
-        signals.set_item("contact", columns.contact.into_pyarray(py))?;
-        signals.set_item("tooth", columns.tooth.into_pyarray(py))?;
-    }
+    } else {
+        let path: std::path::PathBuf = rig
+            .py()
+            .import("os")?
+            .call_method1("fspath", (rig,))?
+            .extract::<String>()?
+            .into();
+        ScenarioSource::read(&path).map_err(|e| TestrigError::new_err(format!("{e:#}")))?
+    };
+    source_rig_with_overrides(&source, overrides)
+        .map_err(|e| TestrigError::new_err(format!("{e:#}")))
+}
+
+/// The window's impacts, column by column: time, mesh, flank (+1 drive, −1 back), the
+/// closing speed along the line of action and the teeth struck.
+fn impacts_dict<'py>(
+    py: Python<'py>,
+    topology: &rig::RigTopology,
+    run: &RigPointRun,
+) -> PyResult<Bound<'py, PyDict>> {
     let impacts = PyDict::new(py);
-    let list = run.plant.impacts();
-    let times: Vec<f64> = list.iter().map(|i| i.time_s).collect();
-    let flanks: Vec<i8> = list
-        .iter()
-        .map(|i| match i.flank {
-            Flank::Drive => 1,
-            Flank::Back => -1,
-        })
-        .collect();
-    let teeth: Vec<u32> = list.iter().map(|i| i.tooth).collect();
-    let closing: Vec<f64> = list.iter().map(|i| i.closing_speed_rad_s).collect();
-    impacts.set_item("time_s", times.into_pyarray(py))?;
-    impacts.set_item("flank", flanks.into_pyarray(py))?;
-    impacts.set_item("tooth", teeth.into_pyarray(py))?;
-    impacts.set_item("closing_speed_rad_s", closing.into_pyarray(py))?;
-    let mut summary = serde_json::to_value(&run.summary)
-        .map_err(|e| crate::errors::TestrigError::new_err(e.to_string()))?;
+    let list = &run.impacts;
+    impacts.set_item(
+        "time_s",
+        list.iter()
+            .map(|i| i.time_s)
+            .collect::<Vec<_>>()
+            .into_pyarray(py),
+    )?;
+    impacts.set_item(
+        "mesh",
+        list.iter()
+            .map(|i| topology.meshes[i.mesh].name.clone())
+            .collect::<Vec<_>>(),
+    )?;
+    impacts.set_item(
+        "flank",
+        list.iter()
+            .map(|i| i.flank.sign())
+            .collect::<Vec<i8>>()
+            .into_pyarray(py),
+    )?;
+    impacts.set_item(
+        "closing_speed_m_s",
+        list.iter()
+            .map(|i| i.approach_m_s.abs())
+            .collect::<Vec<_>>()
+            .into_pyarray(py),
+    )?;
+    for (key, gear) in [("driver_tooth", 0), ("driven_tooth", 1)] {
+        impacts.set_item(
+            key,
+            list.iter()
+                .map(|i| i.teeth[gear])
+                .collect::<Vec<u32>>()
+                .into_pyarray(py),
+        )?;
+    }
+    Ok(impacts)
+}
+
+/// The summary as `simulate --json` gives it, as Python objects (`preset` null for a
+/// rig file's rig).
+fn summary_dict<'py>(
+    py: Python<'py>,
+    spec: &RigPointSpec,
+    preset: Option<&str>,
+    run: &RigPointRun,
+) -> PyResult<Bound<'py, PyAny>> {
+    let mut summary =
+        serde_json::to_value(&run.summary).map_err(|e| TestrigError::new_err(e.to_string()))?;
     if let Some(map) = summary.as_object_mut() {
         for (key, value) in [
-            ("preset", serde_json::json!(spec.preset)),
+            ("rig", serde_json::json!(spec.rig.name)),
+            ("preset", serde_json::json!(preset)),
             ("rpm", spec.rpm.into()),
             ("load_nm", spec.load_nm.into()),
             ("settle_s", spec.settle_s.into()),
@@ -177,20 +205,12 @@ fn result_dict<'py>(
                 "realtime_factor",
                 (run.simulated_s / run.wall_s.max(1e-9)).into(),
             ),
-            (
-                "condition",
-                run.condition
-                    .map_or(serde_json::Value::Null, |c| c.to_json()),
-            ),
         ] {
             map.insert(key.to_string(), value);
         }
     }
-    let json = py.import("json")?;
-    let summary = json.call_method1("loads", (summary.to_string(),))?;
-    let result = PyDict::new(py);
-    result.set_item("signals", signals)?;
-    result.set_item("impacts", impacts)?;
-    result.set_item("summary", summary)?;
-    Ok(result)
+    let summary = py
+        .import("json")?
+        .call_method1("loads", (summary.to_string(),))?;
+    Ok(summary)
 }

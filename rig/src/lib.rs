@@ -153,7 +153,7 @@ pub use judge::{JudgeInput, Judgement, Motion, judge};
 pub use modal::{Chain, NaturalMode, RigChains};
 pub use mode::{MeshMode, Mode, MotorMode, PairZone};
 pub use network::{
-    Column, Contact, NetworkBlock, NetworkImpact, NetworkPlant, NetworkStart, column_names,
+    Column, Contact, MAX_OUTPUT_RATE_HZ, NetworkBlock, NetworkImpact, NetworkPlant, NetworkStart, column_names,
     column_specs, columns,
 };
 pub use options::{ContactLaw, MeshPairs};

@@ -4,6 +4,10 @@ use nalgebra::DMatrix;
 
 use crate::layout::{N_MECH, V0, VF};
 
+/// The largest balancing scale of a forcing state: products of A's entries with it and
+/// its inverse stay far from overflow and underflow.
+pub const MAX_FORCING_SCALE: f64 = 1e100;
+
 /// e^{A k h} for k = 1..=`count`, computed on the balanced matrix D⁻¹AD, whose entries
 /// are all of order ρ or less: D = 1 for angles and the controller integral, ρ for speeds,
 /// and for each forcing state (unit, load, harmonics) the scale that brings its column's
@@ -26,7 +30,8 @@ pub fn exp_powers(a: &DMatrix<f64>, step_s: f64, rho: f64, count: usize) -> Vec<
 
 /// The balancing scale of every state: `mechanical` for the first states as given (ρ for
 /// speeds, 1 for angles), and for each later (forcing) state the scale that brings its
-/// column's largest entry in the mechanical rows to ρ.
+/// column's largest entry in the mechanical rows to ρ, at most [`MAX_FORCING_SCALE`] (a
+/// set speed of 1e-297 rev/min gave a column of 1e-298 and a scale that overflowed).
 pub fn forcing_scales(a: &DMatrix<f64>, mechanical: &[f64], rho: f64) -> Vec<f64> {
     let n_mech = mechanical.len();
     (0..a.ncols())
@@ -37,7 +42,11 @@ pub fn forcing_scales(a: &DMatrix<f64>, mechanical: &[f64], rho: f64) -> Vec<f64
             let largest = (0..n_mech)
                 .map(|r| a[(r, c)].abs() / mechanical[r])
                 .fold(0.0, f64::max);
-            if largest > 0.0 { rho / largest } else { 1.0 }
+            if largest > 0.0 {
+                (rho / largest).min(MAX_FORCING_SCALE)
+            } else {
+                1.0
+            }
         })
         .collect()
 }

@@ -101,6 +101,6 @@ impl Approach {
     /// The plant's approach to `rpm` (a ramp at `ramp_rpm_per_s`), checked.
     pub fn to_rig(self, rpm: f64, ramp_rpm_per_s: f64) -> anyhow::Result<rig::Approach> {
         let name = self.to_possible_value().map(|v| v.get_name().to_string());
-        testrig::steady_point::approach_named(&name.unwrap_or_default(), rpm, ramp_rpm_per_s)
+        testrig::approach_name::approach_named(&name.unwrap_or_default(), rpm, ramp_rpm_per_s)
     }
 }

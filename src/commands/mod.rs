@@ -10,7 +10,6 @@ pub(crate) mod params;
 pub(crate) mod run;
 pub(crate) mod signal_writer;
 pub(crate) mod simulate;
-pub(crate) mod simulate_rig;
 pub(crate) mod sweep;
 
 use std::process::ExitCode;

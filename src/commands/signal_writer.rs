@@ -5,7 +5,6 @@ use std::io::BufWriter;
 use std::path::{Path, PathBuf};
 
 use anyhow::Context;
-use rig::SignalBlock;
 
 use testrig::recording::{PartialFile, start_journal};
 use testrig::runtime::clear_previous_run;
@@ -33,14 +32,6 @@ impl SignalWriter {
         let mut csv = csv::Writer::from_writer(file.create()?);
         csv.write_record(header)?;
         Ok(Self { csv, file })
-    }
-
-    /// Writes every row of `block`.
-    pub(crate) fn write(&mut self, block: &SignalBlock) -> anyhow::Result<()> {
-        for i in 0..block.len() {
-            self.write_row(&block.row(i))?;
-        }
-        Ok(())
     }
 
     /// Writes one row of numbers.

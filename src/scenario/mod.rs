@@ -23,6 +23,7 @@ pub(crate) mod coverage;
 pub(crate) mod overrides;
 pub(crate) mod plan_rig;
 pub(crate) mod preset_file;
+pub(crate) mod preset_rig;
 pub(crate) mod read_instrument;
 pub(crate) mod read_rig;
 pub(crate) mod read_rig_file;
@@ -40,6 +41,7 @@ pub use builtin_rigs::preset_rig_source;
 pub use coverage::measurement_warnings;
 pub use overrides::apply_override;
 pub use preset_file::preset_with_overrides;
+pub use preset_rig::preset_rig_with_overrides;
 pub use read_rig_file::{
     read_rig_file, rig_topology, rig_with_overrides, source_rig_with_overrides,
 };

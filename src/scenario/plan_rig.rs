@@ -4,7 +4,7 @@
 
 use rig::{NetworkBlock, NetworkPlant, NetworkStart, RigError, RigParams, RigTopology, Schedule};
 
-use crate::rig_point::judged_shaft;
+use crate::steady_point::judged_shaft;
 use crate::rig_roles::RIG_SIGNALS;
 use crate::vocabulary::frame::SignalNames;
 use crate::vocabulary::limits::{LimitError, check_load_within, rig_max_load_nm};

@@ -4,7 +4,7 @@
 
 use super::run_plan::ChainPlan;
 use super::source::ScenarioSource;
-use crate::rig_point::motor_of;
+use crate::steady_point::motor_of;
 use crate::rig_roles::gauged_shaft_strain;
 
 /// `chain` on `rig`: its strain stage and static calibration on the gauged shaft. A rig

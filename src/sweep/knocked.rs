@@ -12,7 +12,7 @@ use super::case_rig::CaseRig;
 use super::grid::{Case, SweepPlan};
 use super::rig_case::{measure_rig_case, rig_case_plant};
 use super::series::on_one_plant;
-use crate::rig_point::skip_rig_samples;
+use crate::steady_point::skip_rig_samples;
 
 /// Runs a point and its knocked repeats, in order, on one plant; a failure ends the
 /// series (the repeats after it are reported failed with it).

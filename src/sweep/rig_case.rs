@@ -16,7 +16,7 @@ use super::case::{
 use super::case_recording::CaseRecording;
 use super::grid::{Case, SweepPlan};
 use super::measured_condition::MeasuredCondition;
-use crate::rig_point::{RigPointSpec, RigWindow, settled_rig_plant, skip_rig_samples};
+use crate::steady_point::{RigPointSpec, RigWindow, settled_rig_plant, skip_rig_samples};
 use crate::rig_roles::{RIG_SIGNALS, RoleColumns, gauge_of, gauged_stages};
 use crate::vocabulary::GearIndicators;
 use crate::vocabulary::InputNames;

@@ -12,7 +12,7 @@ use super::case::{CaseResult, chain_lead_s, measure_case, measured_samples, plan
 use super::case_rig::CaseRig;
 use super::grid::{Case, SweepPlan};
 use super::rig_case::measure_rig_case;
-use crate::rig_point::skip_rig_samples;
+use crate::steady_point::skip_rig_samples;
 
 /// Time over which the speed knob is turned from one point to the next (s): the
 /// operator's few seconds; the speed loop (0.5 Hz) follows within about as long.

@@ -38,8 +38,13 @@ pub fn check_times(
     rate_hz: f64,
     names: InputNames,
 ) -> anyhow::Result<()> {
-    if !(rate_hz.is_finite() && rate_hz > 0.0) {
-        bail!("{} {}: a sample rate > 0 Hz", names.rate, rate_hz);
+    if !(rate_hz.is_finite() && rate_hz > 0.0 && rate_hz <= rig::MAX_OUTPUT_RATE_HZ) {
+        bail!(
+            "{} {}: a sample rate > 0 Hz and at most {:e} Hz",
+            names.rate,
+            rate_hz,
+            rig::MAX_OUTPUT_RATE_HZ
+        );
     }
     check_simulated_s(duration_s, false)
         .map_err(|e| anyhow::anyhow!("{} {}: {e}", names.duration, duration_s))?;

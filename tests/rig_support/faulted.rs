@@ -45,8 +45,8 @@ pub fn rig_damped(dir: &std::path::Path, fault: &str, shaft_damping: Option<f64>
 
 /// `rig` at 600 rev/min and 5.424 N m from steady motion, settled 10 s, measured 10 s at
 /// 10.24 kHz, as `simulate --rig` runs it.
-pub fn loaded_600_rpm(rig: &RigTopology) -> testrig::rig_point::RigPointRun {
-    let spec = testrig::rig_point::RigPointSpec {
+pub fn loaded_600_rpm(rig: &RigTopology) -> testrig::steady_point::RigPointRun {
+    let spec = testrig::steady_point::RigPointSpec {
         rig,
         rpm: 600.0,
         load_nm: 5.424,
@@ -55,7 +55,7 @@ pub fn loaded_600_rpm(rig: &RigTopology) -> testrig::rig_point::RigPointRun {
         rate_hz: 10_240.0,
         approach: rig::Approach::Static,
     };
-    testrig::rig_point::run_rig_point(&spec, testrig::vocabulary::FLAG_NAMES, |_| Ok(()))
+    testrig::steady_point::run_rig_point(&spec, testrig::vocabulary::FLAG_NAMES, |_| Ok(()))
         .expect("run")
 }
 

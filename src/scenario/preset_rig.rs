@@ -1,0 +1,73 @@
+//! The rig `--preset NAME --set …` names: every preset is a rig file, so a preset's name
+//! is a short name for its built-in file (`builtin_rigs.rs`), and a preset file (a base
+//! and the values a calibration set, `preset_file.rs`) is the rig its parameters
+//! describe (`rig::preset_rig`). An override is a rig path (`testrig params --rig`) or
+//! one of the thesis's names (`testrig params`, also as `rig.set.NAME`): those are set on
+//! the preset's parameters and the rig converted from them, then the paths set on it.
+
+use anyhow::Context;
+use rig::RigTopology;
+
+use super::builtin_rigs::preset_rig_source;
+use super::preset_file::{is_preset_file, preset_with_overrides};
+use super::read_rig_file::{rig_topology, set_rig_value};
+
+/// The checked rig of preset `name` (a built-in name, or a preset file's path) with every
+/// `NAME=VALUE` or `PATH=VALUE` of `overrides` set, in order within each kind: the
+/// thesis's names first, then the rig paths.
+pub fn preset_rig_with_overrides(name: &str, overrides: &[String]) -> anyhow::Result<RigTopology> {
+    let (named, paths): (Vec<String>, Vec<String>) = overrides
+        .iter()
+        .cloned()
+        .partition(|item| is_thesis_name(item));
+    let mut rig = if is_preset_file(name) || !named.is_empty() {
+        let params = preset_with_overrides(name, &named)?;
+        let (title, description) = titled(name)?;
+        rig::preset_rig(&title, &description, &params)
+    } else {
+        rig_topology(&preset_rig_source(name)?)?
+    };
+    for item in &paths {
+        let Some((path, value)) = item.split_once('=') else {
+            anyhow::bail!(
+                "--set {item}: expected NAME=VALUE (`testrig params` lists the preset's names, `testrig params --rig` the paths)"
+            );
+        };
+        let value = value.trim();
+        let number = value
+            .parse::<f64>()
+            .map_or_else(|_| toml::Value::String(value.into()), toml::Value::Float);
+        set_rig_value(&mut rig, path.trim(), &number).with_context(|| {
+            format!("--set {item} (`testrig params` lists the preset's names, `testrig params --rig` the paths)")
+        })?;
+    }
+    if !overrides.is_empty() {
+        rig.check()
+            .with_context(|| format!("--preset {name} with --set {}", overrides.join(" --set ")))?;
+    }
+    Ok(rig)
+}
+
+/// Whether `item` (`KEY=VALUE`) sets one of the thesis's parameters by name (as `NAME`,
+/// `rig.set.NAME` or `rig.NAME`) rather than a rig path.
+fn is_thesis_name(item: &str) -> bool {
+    let key = item.split_once('=').map_or(item, |(key, _)| key).trim();
+    let key = key
+        .strip_prefix("rig.set.")
+        .or_else(|| key.strip_prefix("rig."))
+        .unwrap_or(key);
+    rig::param_table::param_spec(key).is_ok()
+}
+
+/// The name and description of the rig converted from preset `name`: a built-in preset's
+/// its file's; a preset file's its stem and path.
+fn titled(name: &str) -> anyhow::Result<(String, String)> {
+    if is_preset_file(name) {
+        let stem = std::path::Path::new(name)
+            .file_stem()
+            .map_or_else(|| name.to_string(), |s| s.to_string_lossy().into_owned());
+        return Ok((stem, format!("the preset file {name}")));
+    }
+    let file = rig_topology(&preset_rig_source(name)?)?;
+    Ok((file.name, file.description))
+}
