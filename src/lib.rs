@@ -25,12 +25,12 @@
 //! # Ok::<(), std::io::Error>(())
 //! ```
 
+pub mod approach_name;
 pub mod calibrate;
 pub mod chain;
 pub mod panel;
 pub mod plots;
 pub mod recording;
-pub mod approach_name;
 pub mod rig_roles;
 pub mod runtime;
 pub mod scenario;

@@ -195,10 +195,13 @@ pub fn motor_of(rig: &RigTopology) -> anyhow::Result<usize> {
 }
 
 /// Checks `spec` (each input refused under its name in `names`), runs it and hands `sink`
-/// every block of the measuring window.
+/// every block of the measuring window. `keep_going` is asked every
+/// [`rig::network::SKIP_STRETCH`] samples of settling (and `sink` after every block): an
+/// error from either stops the run (a Python caller's Ctrl-C).
 pub fn run_rig_point(
     spec: &RigPointSpec,
     names: InputNames,
+    mut keep_going: impl FnMut() -> anyhow::Result<()>,
     mut sink: impl FnMut(&NetworkBlock) -> anyhow::Result<()>,
 ) -> anyhow::Result<RigPointRun> {
     check_speed_rpm(spec.rpm).map_err(|e| anyhow::anyhow!("{} {:?}: {e}", names.rpm, spec.rpm))?;
@@ -208,7 +211,7 @@ pub fn run_rig_point(
     let rig = spec.rig;
     motor_of(rig)?;
     let started = Instant::now();
-    let mut plant = settled_rig_plant(spec, names)?;
+    let mut plant = settled_rig_plant(spec, names, &mut keep_going)?;
     let mut block = NetworkBlock::new(rig.bodies.len(), rig.shafts.len(), rig.meshes.len());
     let mut window = RigWindow::new(rig, spec.rate_hz);
     let mut left = (spec.duration_s * spec.rate_hz).round() as usize;
@@ -240,8 +243,13 @@ pub fn run_rig_point(
 /// The plant of `spec` brought to its point by its approach and run through its lead-in
 /// and `settle_s`, its impacts and revolutions so far dropped: the measuring window starts
 /// at its next sample. A load the rig cannot hold (the one load check of every rig), or
-/// any load on a rig without a brake, is refused (named by `names`).
-pub fn settled_rig_plant(spec: &RigPointSpec, names: InputNames) -> anyhow::Result<NetworkPlant> {
+/// any load on a rig without a brake, is refused (named by `names`). An error from
+/// `keep_going`, asked as the settling goes, stops it.
+pub fn settled_rig_plant(
+    spec: &RigPointSpec,
+    names: InputNames,
+    keep_going: &mut dyn FnMut() -> anyhow::Result<()>,
+) -> anyhow::Result<NetworkPlant> {
     let rig = spec.rig;
     let name = format!("rig `{}`", rig.name);
     check_load_within(
@@ -256,7 +264,19 @@ pub fn settled_rig_plant(spec: &RigPointSpec, names: InputNames) -> anyhow::Resu
     let mut plant = NetworkPlant::new(rig, schedule, spec.rate_hz, start)
         .with_context(|| format!("rig `{}` at {} {}", rig.name, names.rpm, spec.rpm))?;
     let settle = ((spec.approach.lead_in_s() + spec.settle_s) * spec.rate_hz).round() as usize;
-    skip_rig_samples(&mut plant, settle)?;
+    let mut stopped = None;
+    let settled = plant.skip_while(settle, || match keep_going() {
+        Ok(()) => true,
+        Err(e) => {
+            stopped = Some(e);
+            false
+        }
+    })?;
+    if let Some(e) = stopped.filter(|_| settled < settle) {
+        return Err(e);
+    }
+    plant.take_impacts();
+    plant.take_revolutions();
     Ok(plant)
 }
 

@@ -90,7 +90,10 @@ fn from_rest_the_1983_preset_and_its_rig_file_start_and_run_up_alike() {
     let file = rig_file("basmaji-1983");
     let rig = run(["--rig", &file], "rig");
     let bytes = |path: &std::path::Path| std::fs::read(path).expect("signals.csv");
-    assert!(bytes(&preset) == bytes(&rig), "the preset and its file differ");
+    assert!(
+        bytes(&preset) == bytes(&rig),
+        "the preset and its file differ"
+    );
     let rows = csv_rows(&preset);
     assert_eq!(rows.len(), 2000);
     for body in [

@@ -125,7 +125,9 @@ fn simulate_writes_signals_impacts_and_summary() {
                 && fields[0].parse::<f64>().is_ok()
                 && fields[1] == "gears"
                 && ["drive", "back"].contains(&fields[2])
-                && fields[4].parse::<u32>().is_ok_and(|t| (1..=30).contains(&t)),
+                && fields[4]
+                    .parse::<u32>()
+                    .is_ok_and(|t| (1..=30).contains(&t)),
             "{row}"
         );
     }

@@ -394,7 +394,8 @@ fn first_difference(a: &serde_json::Value, b: &serde_json::Value, at: String) ->
     match (a, b) {
         (Value::Number(x), Value::Number(y)) => {
             let (x, y) = (x.as_f64()?, y.as_f64()?);
-            ((x - y).abs() > 1e-12 * x.abs().max(y.abs())).then(|| format!("{at} ({x} against {y})"))
+            ((x - y).abs() > 1e-12 * x.abs().max(y.abs()))
+                .then(|| format!("{at} ({x} against {y})"))
         }
         (Value::Object(x), Value::Object(y)) => {
             let keys: std::collections::BTreeSet<_> = x.keys().chain(y.keys()).collect();

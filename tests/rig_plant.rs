@@ -448,3 +448,45 @@ fn a_drive_at_its_limit_runs_a_rig_up_from_rest_in_the_time_its_inertia_and_spar
         );
     }
 }
+
+/// A settling run asked between stretches whether to go on (`skip_while`, a Python
+/// caller's Ctrl-C) takes the steps of one `skip`, bit for bit: the 1983 rig rattling at
+/// 1300 rev/min, 2.712 N m, 3 s; told to stop at its second question, it stops after
+/// two stretches.
+#[test]
+fn a_settling_run_that_may_be_stopped_takes_the_steps_of_one_skip() {
+    let rig = shipped("basmaji-1983");
+    let settle = (3.0 * rig_support::RATE_HZ) as usize;
+    let fresh = || {
+        plant(
+            &rig,
+            Schedule::constant(1300.0, 2.712),
+            NetworkStart::Steady,
+        )
+    };
+    let mut whole = fresh();
+    whole.skip(settle).expect("settles");
+    let mut asked = fresh();
+    let mut questions = 0;
+    let done = asked
+        .skip_while(settle, || {
+            questions += 1;
+            true
+        })
+        .expect("settles");
+    assert_eq!(done, settle);
+    assert_eq!(questions, settle / rig::network::SKIP_STRETCH as usize);
+    let bits =
+        |p: &rig::NetworkPlant| -> Vec<u64> { p.state_rad().iter().map(|x| x.to_bits()).collect() };
+    assert_eq!(bits(&asked), bits(&whole), "the same state, bit for bit");
+    assert_eq!(asked.take_impacts(), whole.take_impacts());
+    let mut stopped = fresh();
+    let mut questions = 0;
+    let done = stopped
+        .skip_while(settle, || {
+            questions += 1;
+            questions < 2
+        })
+        .expect("stops");
+    assert_eq!(done, 2 * rig::network::SKIP_STRETCH as usize);
+}

@@ -22,7 +22,7 @@ import testrig  # noqa: E402
 RATE_HZ = 10240
 sim = testrig.simulate(1300, 2.712, settle_s=10, duration_s=40, rate_hz=RATE_HZ,
                        set={"te_mesh_frequency_um": 3})
-torque = sim["signals"]["torque_intermediate_shaft_nm"]
+torque = sim["signals"]["torque_intermediate_nm"]
 # The output shaft's strain as the gauges see it (µε per N m of the Ø20 mm shaft).
 strain = torque * 8 / (np.pi * 0.02 ** 3 * 82.7e9) * 1e6
 

@@ -8,9 +8,9 @@ use numpy::IntoPyArray;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use rig::{column_names, columns};
-use testrig::steady_point::{RigPointRun, RigPointSpec, run_rig_point};
-use testrig::scenario::{ScenarioSource, preset_rig_with_overrides, source_rig_with_overrides};
 use testrig::approach_name::approach_named;
+use testrig::scenario::{ScenarioSource, preset_rig_with_overrides, source_rig_with_overrides};
+use testrig::steady_point::{RigPointRun, RigPointSpec, run_rig_point};
 
 use crate::argument_names::ARGUMENT_NAMES;
 use crate::errors::TestrigError;
@@ -68,14 +68,19 @@ pub fn simulate<'py>(
     let (kept, run, interrupt) = py.detach(|| {
         let mut kept: Vec<Vec<f64>> = vec![Vec::new(); names.len()];
         let interrupt = std::cell::RefCell::new(Interrupt::new());
-        let run = run_rig_point(&spec, ARGUMENT_NAMES, |block| {
-            if signals {
-                for (column, part) in kept.iter_mut().zip(columns(&topology, block)) {
-                    column.extend(part);
+        let run = run_rig_point(
+            &spec,
+            ARGUMENT_NAMES,
+            || interrupt.borrow_mut().check(),
+            |block| {
+                if signals {
+                    for (column, part) in kept.iter_mut().zip(columns(&topology, block)) {
+                        column.extend(part);
+                    }
                 }
-            }
-            interrupt.borrow_mut().check()
-        });
+                interrupt.borrow_mut().check()
+            },
+        );
         (kept, run, interrupt.into_inner())
     });
     let run: RigPointRun = interrupt.result(run)?;

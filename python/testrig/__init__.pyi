@@ -14,23 +14,26 @@ class TestrigError(Exception):
 
 class Impacts(TypedDict):
     time_s: npt.NDArray[np.float64]
+    mesh: list[str]
     flank: npt.NDArray[np.int8]
     """+1 drive flank, -1 back flank."""
-    tooth: npt.NDArray[np.uint32]
-    closing_speed_rad_s: npt.NDArray[np.float64]
+    closing_speed_m_s: npt.NDArray[np.float64]
+    driver_tooth: npt.NDArray[np.uint32]
+    driven_tooth: npt.NDArray[np.uint32]
 
 class Simulation(TypedDict):
     signals: dict[str, npt.NDArray[Any]]
-    """time_s, angle1_rad..angle5_rad, speed1_rad_s..speed5_rad_s,
-    torque_input_shaft_nm, torque_intermediate_shaft_nm, torque_final_shaft_nm,
-    mesh_torque_nm, motor_torque_nm, contact (+1/0/-1), tooth."""
+    """Named after the rig (a preset's is its rig file's): time_s, speed_<body>_rpm,
+    angle_<body>_rad, torque_<shaft>_nm, contact_<mesh> (+1/0/-1), force_<mesh>_n,
+    motor_torque_nm, strain_<gauged shaft>_ue."""
     impacts: Impacts
     summary: dict[str, Any]
-    """As `testrig simulate --json`: regime, motion (the physics judge), impacts per
-    tooth, torque mean and RMS (N m), simulated_s, wall_s, realtime_factor, and
-    condition (the synchronous average's indicators: fm0, fm4, m6a, m8a, na4,
-    sideband_level, rms_nm, crest_factor, kurtosis, revolutions_averaged; None under
-    two revolutions)."""
+    """As `testrig simulate --json`: rig, preset (None for a rig file), regime, motion
+    (the physics judge), impacts per tooth, the judged shaft's torque mean and RMS
+    (N m), each body, shaft and mesh, simulated_s, wall_s, realtime_factor, and
+    condition: the gauged shaft's torque averaged over the revolutions of the watched
+    gear, with FM0, FM4, NA4, M6A, M8A, the sideband level and the residual RMS (None
+    under two revolutions)."""
 
 def simulate(
     rpm: float,
@@ -51,19 +54,14 @@ def simulate(
     or "down" (its run-down from 2000 rev/min), the ramps at `ramp_rate` rev/min per s;
     then `settle_s` s settling (from a ramp's end) and `duration_s` s measured at
     `rate_hz` Hz. Where motions coexist, each approach may reach another; the summary's
-    `approach` says how the point was reached. `set` overrides parameters by name
-    (`testrig params`); `signals=False` returns no signal arrays (impacts and summary
-    only). Releases the GIL; Ctrl-C stops it.
+    `approach` says how the point was reached. `set` overrides the rig's numbers by path
+    (`testrig params --rig`, `mesh.gears.backlash_mm`) or, on a preset, by the
+    thesis's names too (`testrig params`); `signals=False` returns no signal arrays
+    (impacts and summary only). Releases the GIL; Ctrl-C stops it.
 
     `rig`: a rig file (docs/rig-files.md) or a dict of its tables, run instead of the
-    preset, as `testrig simulate --rig`: `set` then takes paths
-    (`mesh.stage1.backlash_mm`), the signals are named after the rig
-    (`speed_<body>_rpm`, `angle_<body>_rad`, `torque_<shaft>_nm`, `contact_<mesh>`,
-    `force_<mesh>_n`, `motor_torque_nm`, `strain_<shaft>_ue`), the impacts give
-    time_s, mesh, flank, closing_speed_m_s, driver_tooth and driven_tooth, and the
-    summary each body, shaft and mesh, and `condition`: the gauged shaft's torque
-    averaged over the revolutions of the faulted gear (else the first mesh's driven
-    gear) with FM0, FM4, NA4, M6A, M8A, the sideband level and the residual RMS."""
+    preset, as `testrig simulate --rig`. A preset is the short name of its rig file
+    (`scenarios/rigs/NAME.toml`): the same signals, impacts and summary either way."""
 
 class Analysed(TypedDict):
     frequency_hz: npt.NDArray[np.float64]

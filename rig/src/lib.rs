@@ -153,8 +153,8 @@ pub use judge::{JudgeInput, Judgement, Motion, judge};
 pub use modal::{Chain, NaturalMode, RigChains};
 pub use mode::{MeshMode, Mode, MotorMode, PairZone};
 pub use network::{
-    Column, Contact, MAX_OUTPUT_RATE_HZ, NetworkBlock, NetworkImpact, NetworkPlant, NetworkStart, column_names,
-    column_specs, columns,
+    Column, Contact, MAX_OUTPUT_RATE_HZ, NetworkBlock, NetworkImpact, NetworkPlant, NetworkStart,
+    column_names, column_specs, columns,
 };
 pub use options::{ContactLaw, MeshPairs};
 pub use param_table::{

@@ -51,11 +51,12 @@ pub struct FmuArgs {
     /// The rig file (docs/rig-files.md) whose plant the FMU holds.
     #[arg(long = "rig", value_name = "FILE")]
     pub rig_file: Option<PathBuf>,
-    /// A preset whose plant is a rig file's (basmaji-1983), instead of --rig.
+    /// A preset (basmaji-1983), the short name of its rig file, instead of --rig.
     #[arg(long, value_name = "NAME")]
     pub preset: Option<String>,
-    /// Set a number of the rig by its path (`mesh.gears.backlash_mm=0.5`): the
-    /// parameter's start value in the FMU.
+    /// Set a number of the rig by its path (`mesh.gears.backlash_mm=0.5`; on a preset
+    /// also by the thesis's name, `testrig params`): the parameter's start value in the
+    /// FMU.
     #[arg(long = "set", value_name = "PATH=VALUE")]
     pub overrides: Vec<String>,
     /// The FMU to write (`.fmu`).
@@ -231,8 +232,10 @@ pub struct SimulateArgs {
     /// Parameters.
     #[command(flatten)]
     pub rig: RigArgs,
-    /// A rig file (docs/rig-files.md) instead of a preset: its rig, --rpm the motor's body, --load on the brake's, --set by path
-    /// (`mesh.stage1.backlash_mm=0.3`); signals named after its bodies, shafts and meshes.
+    /// A rig file (docs/rig-files.md) instead of a preset (a preset is the short name of
+    /// its rig file: the same run): --rpm the motor's body, --load on the brake's, --set
+    /// by path (`mesh.stage1.backlash_mm=0.3`, on a preset also the thesis's names);
+    /// signals named after its bodies, shafts and meshes.
     #[arg(long = "rig", value_name = "FILE", conflicts_with = "preset")]
     pub rig_file: Option<PathBuf>,
     /// How the point is reached: `static` starts there in steady motion from the static

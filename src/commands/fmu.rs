@@ -11,7 +11,7 @@ use std::path::PathBuf;
 use anyhow::Context;
 use rig::RigTopology;
 use testrig::recording::PartialFile;
-use testrig::scenario::{ScenarioSource, preset_rig_source, source_rig_with_overrides};
+use testrig::scenario::{preset_rig_with_overrides, rig_with_overrides};
 use testrig_fmu::{Causality, RIG_RESOURCE, model_description, model_identifier, variables};
 use zip::write::SimpleFileOptions;
 
@@ -24,12 +24,11 @@ pub fn run(args: &FmuArgs) -> anyhow::Result<()> {
     if !cfg!(all(target_os = "linux", target_arch = "x86_64")) {
         anyhow::bail!("testrig fmu packs an x86_64-linux binary: run it on x86_64 Linux");
     }
-    let source = match (&args.rig_file, &args.preset) {
-        (Some(path), _) => ScenarioSource::read(path)?,
-        (None, Some(name)) => preset_rig_source(name)?,
+    let rig = match (&args.rig_file, &args.preset) {
+        (Some(path), _) => rig_with_overrides(path, &args.overrides)?,
+        (None, Some(name)) => preset_rig_with_overrides(name, &args.overrides)?,
         (None, None) => anyhow::bail!("--rig FILE or --preset NAME"),
     };
-    let rig = source_rig_with_overrides(&source, &args.overrides)?;
     let library_path = library()?;
     let library = std::fs::read(&library_path)
         .with_context(|| format!("cannot read the FMU's library {}", library_path.display()))?;

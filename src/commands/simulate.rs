@@ -11,11 +11,11 @@ use super::signal_writer::SignalWriter;
 use crate::cli::SimulateArgs;
 use testrig::plots::{AveragePlot, RasterImpact, write_impact_raster, write_synchronous_average};
 use testrig::recording::{ImpactLog, PartialFile};
+use testrig::runtime::write_command_manifest;
+use testrig::scenario::{preset_rig_with_overrides, rig_with_overrides};
 use testrig::steady_point::{
     RigPointRun, RigPointSpec, RigPointSummary, judged_shaft, run_rig_point, watched_gear,
 };
-use testrig::runtime::write_command_manifest;
-use testrig::scenario::{preset_rig_with_overrides, rig_with_overrides};
 use testrig::vocabulary::FLAG_NAMES;
 
 /// The JSON summary of one run.
@@ -68,16 +68,21 @@ pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
         simulated_s,
         wall_s,
         average_nm,
-    } = run_rig_point(&spec, FLAG_NAMES, |block| match writer.as_mut() {
-        Some(w) => {
-            let columns = columns(&rig, block);
-            (0..block.len()).try_for_each(|i| {
-                let row: Vec<f64> = columns.iter().map(|c| c[i]).collect();
-                w.write_row(&row)
-            })
-        }
-        None => Ok(()),
-    })?;
+    } = run_rig_point(
+        &spec,
+        FLAG_NAMES,
+        || Ok(()),
+        |block| match writer.as_mut() {
+            Some(w) => {
+                let columns = columns(&rig, block);
+                (0..block.len()).try_for_each(|i| {
+                    let row: Vec<f64> = columns.iter().map(|c| c[i]).collect();
+                    w.write_row(&row)
+                })
+            }
+            None => Ok(()),
+        },
+    )?;
     let report = Report {
         rig: &rig.name,
         preset,
@@ -103,7 +108,13 @@ pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
         if let Some(average) = &average_nm {
             files.extend(write_average(dir, &rig, average)?);
         }
-        files.extend(write_raster(dir, &report, &rig, plant.speed_ratios(), &impacts)?);
+        files.extend(write_raster(
+            dir,
+            &report,
+            &rig,
+            plant.speed_ratios(),
+            &impacts,
+        )?);
         let details = serde_json::json!({
             "rig_file": report.rig_file, "preset": report.preset, "set": args.rig.overrides, "rpm": args.rpm,
             "load_nm": args.load, "approach": spec.approach, "settle_s": args.settle, "duration_s": args.duration,

@@ -10,9 +10,9 @@ use rig::{
 };
 
 use super::scenario_plant::{PointWindow, ScenarioPlant};
+use crate::rig_roles::RoleColumns;
 use crate::steady_point::motor_of;
 use crate::steady_point::{RigWindow, regime_of};
-use crate::rig_roles::RoleColumns;
 use crate::vocabulary::GearIndicators;
 use crate::vocabulary::frame::{Frame, FrameImpacts};
 use crate::vocabulary::limits::LimitError;

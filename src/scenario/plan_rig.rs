@@ -4,8 +4,8 @@
 
 use rig::{NetworkBlock, NetworkPlant, NetworkStart, RigError, RigParams, RigTopology, Schedule};
 
-use crate::steady_point::judged_shaft;
 use crate::rig_roles::RIG_SIGNALS;
+use crate::steady_point::judged_shaft;
 use crate::vocabulary::frame::SignalNames;
 use crate::vocabulary::limits::{LimitError, check_load_within, rig_max_load_nm};
 

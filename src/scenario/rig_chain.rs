@@ -4,8 +4,8 @@
 
 use super::run_plan::ChainPlan;
 use super::source::ScenarioSource;
-use crate::steady_point::motor_of;
 use crate::rig_roles::gauged_shaft_strain;
+use crate::steady_point::motor_of;
 
 /// `chain` on `rig`: its strain stage and static calibration on the gauged shaft. A rig
 /// without a motor or gauges is refused, named at the scenario's `rig.file`.

@@ -16,8 +16,8 @@ use super::case::{
 use super::case_recording::CaseRecording;
 use super::grid::{Case, SweepPlan};
 use super::measured_condition::MeasuredCondition;
-use crate::steady_point::{RigPointSpec, RigWindow, settled_rig_plant, skip_rig_samples};
 use crate::rig_roles::{RIG_SIGNALS, RoleColumns, gauge_of, gauged_stages};
+use crate::steady_point::{RigPointSpec, RigWindow, settled_rig_plant, skip_rig_samples};
 use crate::vocabulary::GearIndicators;
 use crate::vocabulary::InputNames;
 use crate::vocabulary::frame::SignalNames;
@@ -63,7 +63,7 @@ pub fn rig_case_plant(
         rate_hz: plan.rate_hz,
         approach: case.approach,
     };
-    let mut plant = settled_rig_plant(&spec, NAMES)?;
+    let mut plant = settled_rig_plant(&spec, NAMES, &mut || Ok(()))?;
     if case.approach == Approach::Rest {
         let run_up_s = run_up_wait_s(plant.run_up_from_rest_s(case.rpm, case.load_nm));
         skip_rig_samples(&mut plant, (run_up_s * plan.rate_hz).round() as usize)?;

@@ -55,8 +55,13 @@ pub fn loaded_600_rpm(rig: &RigTopology) -> testrig::steady_point::RigPointRun {
         rate_hz: 10_240.0,
         approach: rig::Approach::Static,
     };
-    testrig::steady_point::run_rig_point(&spec, testrig::vocabulary::FLAG_NAMES, |_| Ok(()))
-        .expect("run")
+    testrig::steady_point::run_rig_point(
+        &spec,
+        testrig::vocabulary::FLAG_NAMES,
+        || Ok(()),
+        |_| Ok(()),
+    )
+    .expect("run")
 }
 
 /// The mesh's deflection along the line of action, r_b (θ_driver − θ_driven) (m; each

@@ -36,6 +36,10 @@ pub(super) const OSCILLATING_HOLD_S: f64 = 0.01;
 /// Samples between checks of the state's bounds (and at the end of every run).
 pub(super) const CHECK_EVERY: u64 = 64;
 
+/// Samples between the questions of [`NetworkPlant::skip_while`]: a multiple of
+/// [`CHECK_EVERY`], 1.3 s at 51.2 kHz.
+pub const SKIP_STRETCH: u64 = CHECK_EVERY * 1024;
+
 /// Most internal steps per output sample.
 const MAX_SUBSTEPS: u32 = 4096;
 
@@ -257,6 +261,26 @@ impl NetworkPlant {
         let mut unwritten = self.block();
         self.run_samples::<false>(samples, &mut unwritten)?;
         self.check_bounds()
+    }
+
+    /// As [`Self::skip`], asking `keep_going` after every stretch of [`SKIP_STRETCH`]
+    /// samples and stopping where it says no; returns the samples advanced. The stretches
+    /// end where every run stops anyway (a check of bounds), so the steps are those of one
+    /// [`Self::skip`], bit for bit.
+    pub fn skip_while(
+        &mut self,
+        samples: usize,
+        mut keep_going: impl FnMut() -> bool,
+    ) -> Result<usize, RigError> {
+        let (first, end) = (self.sample, self.sample + samples as u64);
+        while self.sample < end {
+            let stretch_end = (self.sample / SKIP_STRETCH + 1) * SKIP_STRETCH;
+            self.skip((stretch_end.min(end) - self.sample) as usize)?;
+            if self.sample < end && !keep_going() {
+                break;
+            }
+        }
+        Ok((self.sample - first) as usize)
     }
 
     /// Appends the state at the current time to `block`: the sample [`Self::run`] writes
