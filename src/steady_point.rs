@@ -73,9 +73,10 @@ pub struct BodySummary {
 
 /// The measuring window of a rig's point: the keys of the 1983 plant's summary
 /// (`rig::SteadySummary`), so that `simulate --json` reads alike for a preset and a rig
-/// file (the judged shaft's torque, the first mesh's impacts on its driving gear and time
-/// apart, impacts per revolution of the motor's body, the regime, the motor's speed
-/// offset), then the rig's own: every body, shaft and mesh.
+/// file (the judged shaft's torque; the impacts of every mesh, in all and per revolution
+/// of the motor's body; the first mesh's impacts on each tooth of its driving gear, from
+/// tooth 1, and its time apart; the regime, the motor's speed offset), then the rig's
+/// own: every body, shaft and mesh.
 #[derive(Clone, Debug, Serialize)]
 pub struct RigPointSummary {
     /// The window in the 1983 plant's keys.
@@ -117,7 +118,8 @@ fn steady_summary(
         measured_s,
         impacts: impacts.len(),
         impacts_per_rev: impacts.len() as f64 / revolutions.max(1) as f64,
-        impacts_per_tooth: impacts_per_tooth(teeth, first_mesh.map(|i| i.teeth[0])),
+        // Teeth are numbered 1..=z, the counts from tooth 1 at index 0.
+        impacts_per_tooth: impacts_per_tooth(teeth, first_mesh.map(|i| i.teeth[0] - 1)),
         regime: regime_of(motion.motion),
         separates: meshes.iter().any(|m| m.apart_fraction > 0.0),
         apart_fraction: meshes.first().map_or(0.0, |m| m.apart_fraction),

@@ -110,11 +110,11 @@ fn from_rest_the_1983_preset_and_its_rig_file_start_and_run_up_alike() {
         assert!((torque - 2.712).abs() < 1e-9, "{shaft}: {torque} N m");
     }
     // The motor at its limit (2 hp at 2000 rev/min: 7.121 N m) against the load turns the
-    // whole rig (0.84445 kg m²) up at (7.121 − 2.712) / 0.84445 rad/s².
+    // whole rig (0.84495 kg m²) up at (7.121 − 2.712) / 0.84495 rad/s².
     let last = rows.last().expect("rows");
     let (t, speed) = (number(last, "time_s"), number(last, "speed_motor_rpm"));
     let limit_nm = 2.0 * 745.699_872 / (2000.0 * std::f64::consts::PI / 30.0);
-    let expected = (limit_nm - 2.712) / 0.84445 * t * 30.0 / std::f64::consts::PI;
+    let expected = (limit_nm - 2.712) / 0.84495 * t * 30.0 / std::f64::consts::PI;
     assert!(
         (speed - expected).abs() < 0.02 * expected,
         "after {t} s from rest the motor runs at {speed} rev/min, {expected} expected"

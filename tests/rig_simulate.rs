@@ -232,6 +232,19 @@ fn a_preset_runs_as_its_rig_file_and_takes_the_thesis_names_as_rig_paths() {
     assert_eq!(preset["motion"]["motion"], "period-2");
     let turns = preset["revolutions"].as_f64().expect("revolutions");
     assert!((turns - 1300.0 / 60.0 * 2.0).abs() < 1.0, "{turns}");
+    // One mesh: every impact falls on one of the driving gear's 30 teeth.
+    let per_tooth: Vec<u64> = preset["impacts_per_tooth"]
+        .as_array()
+        .expect("teeth")
+        .iter()
+        .map(|n| n.as_u64().expect("a count"))
+        .collect();
+    assert_eq!(per_tooth.len(), 30);
+    assert_eq!(
+        per_tooth.iter().sum::<u64>(),
+        preset["impacts"].as_u64().expect("impacts"),
+        "{per_tooth:?}"
+    );
     let named = run(&["--preset", "basmaji-1983", "--set", "brake_drag_nm=1.5"]);
     let by_path = run(&["--rig", &file, "--set", "brake.drag_nm=1.5"]);
     assert_eq!(named, by_path);

@@ -49,11 +49,16 @@ pub fn simulate<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     let overrides = overrides(set)?;
     let approach = approach_named(approach, rpm, ramp_rate).map_err(crate::errors::to_py)?;
-    let topology_is_preset = rig.is_none();
-    let topology = match rig {
-        Some(rig) => read_rig(&rig, &overrides)?,
-        None => preset_rig_with_overrides(preset, &overrides)
-            .map_err(|e| TestrigError::new_err(format!("{e:#}")))?,
+    let (topology, door) = match rig {
+        Some(rig) => {
+            let (topology, path) = read_rig(&rig, &overrides)?;
+            (topology, path.map(|p| ("rig_file", p)))
+        }
+        None => (
+            preset_rig_with_overrides(preset, &overrides)
+                .map_err(|e| TestrigError::new_err(format!("{e:#}")))?,
+            Some(("preset", preset.to_string())),
+        ),
     };
     let spec = RigPointSpec {
         rig: &topology,
@@ -93,8 +98,7 @@ pub fn simulate<'py>(
     }
     out.set_item("signals", signal_dict)?;
     out.set_item("impacts", impacts_dict(py, &topology, &run)?)?;
-    let preset = topology_is_preset.then_some(preset);
-    out.set_item("summary", summary_dict(py, &spec, preset, &run)?)?;
+    out.set_item("summary", summary_dict(py, &spec, door, &run)?)?;
     Ok(out)
 }
 
@@ -109,8 +113,11 @@ fn overrides(set: Option<HashMap<String, Bound<'_, PyAny>>>) -> PyResult<Vec<Str
 }
 
 /// The rig a Python caller names: a path (str or os.PathLike) to a rig file, or a dict
-/// of its tables; `overrides` as `PATH=VALUE`.
-fn read_rig(rig: &Bound<'_, PyAny>, overrides: &[String]) -> PyResult<rig::RigTopology> {
+/// of its tables; `overrides` as `PATH=VALUE`. With the file's path, if it was one.
+fn read_rig(
+    rig: &Bound<'_, PyAny>,
+    overrides: &[String],
+) -> PyResult<(rig::RigTopology, Option<String>)> {
     let source = if rig.is_instance_of::<PyDict>() {
         let json: String = rig
             .py()
@@ -134,8 +141,10 @@ fn read_rig(rig: &Bound<'_, PyAny>, overrides: &[String]) -> PyResult<rig::RigTo
             .into();
         ScenarioSource::read(&path).map_err(|e| TestrigError::new_err(format!("{e:#}")))?
     };
-    source_rig_with_overrides(&source, overrides)
-        .map_err(|e| TestrigError::new_err(format!("{e:#}")))
+    let path = (!rig.is_instance_of::<PyDict>()).then(|| source.path.display().to_string());
+    let topology = source_rig_with_overrides(&source, overrides)
+        .map_err(|e| TestrigError::new_err(format!("{e:#}")))?;
+    Ok((topology, path))
 }
 
 /// The window's impacts, column by column: time, mesh, flank (+1 drive, −1 back), the
@@ -186,12 +195,12 @@ fn impacts_dict<'py>(
     Ok(impacts)
 }
 
-/// The summary as `simulate --json` gives it, as Python objects (`preset` null for a
-/// rig file's rig).
+/// The summary as `simulate --json` gives it, as Python objects: `door` the CLI's key
+/// for how the rig was named (`preset`, or `rig_file` for a path; neither for a dict).
 fn summary_dict<'py>(
     py: Python<'py>,
     spec: &RigPointSpec,
-    preset: Option<&str>,
+    door: Option<(&str, String)>,
     run: &RigPointRun,
 ) -> PyResult<Bound<'py, PyAny>> {
     let mut summary =
@@ -199,7 +208,6 @@ fn summary_dict<'py>(
     if let Some(map) = summary.as_object_mut() {
         for (key, value) in [
             ("rig", serde_json::json!(spec.rig.name)),
-            ("preset", serde_json::json!(preset)),
             ("rpm", spec.rpm.into()),
             ("load_nm", spec.load_nm.into()),
             ("settle_s", spec.settle_s.into()),
@@ -212,6 +220,9 @@ fn summary_dict<'py>(
             ),
         ] {
             map.insert(key.to_string(), value);
+        }
+        if let Some((key, value)) = door {
+            map.insert(key.to_string(), value.into());
         }
     }
     let summary = py

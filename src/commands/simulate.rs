@@ -257,7 +257,7 @@ fn write_raster(
         .filter(|i| i.mesh == 0)
         .map(|i| RasterImpact {
             revolution: (i.time_s - start_s) * driver_hz,
-            tooth: i.teeth[0] - 1,
+            tooth: i.teeth[0],
             drive_flank: i.flank == rig::Contact::Drive,
         })
         .filter(|p| (0.0..RASTER_REVOLUTIONS).contains(&p.revolution))

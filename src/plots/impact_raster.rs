@@ -16,7 +16,8 @@ use super::canvas::{axes, draw_error, legend, legend_share, mesh, png_and_svg};
 pub struct RasterImpact {
     /// Revolution of the driving gear it falls in (from the window's start).
     pub revolution: f64,
-    /// Tooth of the driving gear in mesh, 0..teeth.
+    /// Tooth of the driving gear struck, 1..=teeth (tooth 1 in mesh at the start, as
+    /// `impacts.csv` numbers them).
     pub tooth: u32,
     /// Whether it struck the drive flank (else the back flank).
     pub drive_flank: bool,

@@ -6,15 +6,19 @@
 //! the preset's parameters and the rig converted from them, then the paths set on it.
 
 use anyhow::Context;
+
 use rig::RigTopology;
 
 use super::builtin_rigs::preset_rig_source;
 use super::preset_file::{is_preset_file, preset_with_overrides};
-use super::read_rig_file::{rig_topology, set_rig_value};
+use super::read_rig_file::{checked_at_path, rig_topology, set_rig_value};
 
 /// The checked rig of preset `name` (a built-in name, or a preset file's path) with every
 /// `NAME=VALUE` or `PATH=VALUE` of `overrides` set, in order within each kind: the
-/// thesis's names first, then the rig paths.
+/// thesis's names first, then the rig paths (where a name and a path change the same
+/// number, the path's value holds, whatever their order). A value the rig of any topology cannot take is refused
+/// at its path (the thesis's plant took a speed loop of 0 Hz as none, negative dampings
+/// and a backlash of 0; a rig file takes none of them).
 pub fn preset_rig_with_overrides(name: &str, overrides: &[String]) -> anyhow::Result<RigTopology> {
     let (named, paths): (Vec<String>, Vec<String>) = overrides
         .iter()
@@ -33,30 +37,32 @@ pub fn preset_rig_with_overrides(name: &str, overrides: &[String]) -> anyhow::Re
                 "--set {item}: expected NAME=VALUE (`testrig params` lists the preset's names, `testrig params --rig` the paths)"
             );
         };
-        let value = value.trim();
-        let number = value
-            .parse::<f64>()
-            .map_or_else(|_| toml::Value::String(value.into()), toml::Value::Float);
-        set_rig_value(&mut rig, path.trim(), &number).with_context(|| {
+        let number: f64 = value
+            .trim()
+            .parse()
+            .map_err(|_| anyhow::anyhow!("--set {item}: `{}` is not a number", value.trim()))?;
+        set_rig_value(&mut rig, path.trim(), &toml::Value::Float(number)).with_context(|| {
             format!("--set {item} (`testrig params` lists the preset's names, `testrig params --rig` the paths)")
         })?;
     }
     if !overrides.is_empty() {
-        rig.check()
+        checked_at_path(&rig)
             .with_context(|| format!("--preset {name} with --set {}", overrides.join(" --set ")))?;
     }
     Ok(rig)
 }
 
 /// Whether `item` (`KEY=VALUE`) sets one of the thesis's parameters by name (as `NAME`,
-/// `rig.set.NAME` or `rig.NAME`) rather than a rig path.
+/// `rig.set.NAME` or `rig.NAME`) rather than a rig path: a rig path has a dot
+/// (`mesh.gears.backlash_mm`), a name none, so a mistyped name is refused with the names
+/// near it.
 fn is_thesis_name(item: &str) -> bool {
     let key = item.split_once('=').map_or(item, |(key, _)| key).trim();
     let key = key
         .strip_prefix("rig.set.")
         .or_else(|| key.strip_prefix("rig."))
         .unwrap_or(key);
-    rig::param_table::param_spec(key).is_ok()
+    !key.contains('.')
 }
 
 /// The name and description of the rig converted from preset `name`: a built-in preset's

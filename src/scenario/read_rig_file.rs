@@ -53,7 +53,7 @@ pub fn source_rig_with_overrides(
             .with_context(|| format!("--set {item} (`testrig params --rig` lists the paths)"))?;
     }
     if !overrides.is_empty() {
-        rig.check().with_context(|| {
+        checked_at_path(&rig).with_context(|| {
             format!(
                 "{} with --set {}",
                 src.path.display(),
@@ -400,6 +400,25 @@ fn field_name(file: &RigFileToml, place: &TopologyPlace) -> String {
         Some(name) => format!("{} `{name}`.{}", place.table, place.field),
         None => format!("{}.{}", place.table, place.field),
     }
+}
+
+/// Checks `rig`, a fault named by its path (`motor.speed_loop_hz`,
+/// `mesh.gears.backlash_mm`), as `--set` names it.
+pub fn checked_at_path(rig: &RigTopology) -> anyhow::Result<()> {
+    rig.check().map_err(|e| {
+        let place = &e.place;
+        let item = match place.table {
+            "body" => rig.bodies.get(place.index).map(|b| b.name.as_str()),
+            "shaft" => rig.shafts.get(place.index).map(|s| s.name.as_str()),
+            "mesh" => rig.meshes.get(place.index).map(|m| m.name.as_str()),
+            _ => None,
+        };
+        let path = match item {
+            Some(name) => format!("{}.{name}.{}", place.table, place.field),
+            None => format!("{}.{}", place.table, place.field),
+        };
+        anyhow::anyhow!("{path} {e}")
+    })
 }
 
 /// Where in the file a check's fault lies (0..0, no line, where the file has no such value).

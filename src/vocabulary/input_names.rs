@@ -31,6 +31,9 @@ pub const FLAG_NAMES: InputNames = InputNames {
     rate: "--rate",
 };
 
+/// The lowest output rate a plant takes (Hz).
+const MIN_OUTPUT_RATE_HZ: f64 = 100.0;
+
 /// The settling time, the window and the output rate, each refused under its name.
 pub fn check_times(
     settle_s: f64,
@@ -38,11 +41,12 @@ pub fn check_times(
     rate_hz: f64,
     names: InputNames,
 ) -> anyhow::Result<()> {
-    if !(rate_hz.is_finite() && rate_hz > 0.0 && rate_hz <= rig::MAX_OUTPUT_RATE_HZ) {
+    if !(rate_hz.is_finite() && (MIN_OUTPUT_RATE_HZ..=rig::MAX_OUTPUT_RATE_HZ).contains(&rate_hz)) {
         bail!(
-            "{} {}: a sample rate > 0 Hz and at most {:e} Hz",
+            "{} {}: a sample rate from {} Hz to {:e} Hz",
             names.rate,
             rate_hz,
+            MIN_OUTPUT_RATE_HZ,
             rig::MAX_OUTPUT_RATE_HZ
         );
     }
