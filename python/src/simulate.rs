@@ -71,7 +71,16 @@ pub fn simulate<'py>(
     };
     let names = column_names(&topology);
     let (kept, run, interrupt) = py.detach(|| {
-        let mut kept: Vec<Vec<f64>> = vec![Vec::new(); names.len()];
+        // Room for the whole window at once: grown by doubling, the columns were copied
+        // over and over.
+        let samples = if signals {
+            (duration_s.max(0.0) * rate_hz.max(0.0)).min(1e9) as usize + 1
+        } else {
+            0
+        };
+        let mut kept: Vec<Vec<f64>> = (0..names.len())
+            .map(|_| Vec::with_capacity(samples))
+            .collect();
         let interrupt = std::cell::RefCell::new(Interrupt::new());
         let run = run_rig_point(
             &spec,

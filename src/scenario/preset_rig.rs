@@ -11,7 +11,7 @@ use rig::RigTopology;
 
 use super::builtin_rigs::preset_rig_source;
 use super::preset_file::{is_preset_file, preset_with_overrides};
-use super::read_rig_file::{checked_at_path, rig_topology, set_rig_value};
+use super::read_rig_file::{checked_at_path, rig_topology, set_paths};
 
 /// The checked rig of preset `name` (a built-in name, or a preset file's path) with every
 /// `NAME=VALUE` or `PATH=VALUE` of `overrides` set, in order within each kind: the
@@ -31,20 +31,7 @@ pub fn preset_rig_with_overrides(name: &str, overrides: &[String]) -> anyhow::Re
     } else {
         rig_topology(&preset_rig_source(name)?)?
     };
-    for item in &paths {
-        let Some((path, value)) = item.split_once('=') else {
-            anyhow::bail!(
-                "--set {item}: expected NAME=VALUE (`testrig params` lists the preset's names, `testrig params --rig` the paths)"
-            );
-        };
-        let number: f64 = value
-            .trim()
-            .parse()
-            .map_err(|_| anyhow::anyhow!("--set {item}: `{}` is not a number", value.trim()))?;
-        set_rig_value(&mut rig, path.trim(), &toml::Value::Float(number)).with_context(|| {
-            format!("--set {item} (`testrig params` lists the preset's names, `testrig params --rig` the paths)")
-        })?;
-    }
+    set_paths(&mut rig, &paths)?;
     if !overrides.is_empty() {
         checked_at_path(&rig)
             .with_context(|| format!("--preset {name} with --set {}", overrides.join(" --set ")))?;

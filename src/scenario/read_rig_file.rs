@@ -33,13 +33,10 @@ pub fn rig_with_overrides(path: &Path, overrides: &[String]) -> anyhow::Result<R
     source_rig_with_overrides(&ScenarioSource::read(path)?, overrides)
 }
 
-/// [`rig_with_overrides`] for a rig file's text (Python's dict of tables, as TOML).
-pub fn source_rig_with_overrides(
-    src: &ScenarioSource,
-    overrides: &[String],
-) -> anyhow::Result<RigTopology> {
-    let mut rig = rig_topology(src)?;
-    for item in overrides {
+/// Sets each `PATH=VALUE` of `items` on `rig` (`--set mesh.gears.backlash_mm=0.5`: a
+/// number by [`RigTopology::set_field`]), in order; the whole rig is checked after.
+pub fn set_paths(rig: &mut RigTopology, items: &[String]) -> anyhow::Result<()> {
+    for item in items {
         let Some((key, value)) = item.split_once('=') else {
             anyhow::bail!(
                 "--set {item}: expected PATH=VALUE (`testrig params --rig` lists the paths)"
@@ -52,6 +49,16 @@ pub fn source_rig_with_overrides(
         rig.set_field(key.trim(), number)
             .with_context(|| format!("--set {item} (`testrig params --rig` lists the paths)"))?;
     }
+    Ok(())
+}
+
+/// [`rig_with_overrides`] for a rig file's text (Python's dict of tables, as TOML).
+pub fn source_rig_with_overrides(
+    src: &ScenarioSource,
+    overrides: &[String],
+) -> anyhow::Result<RigTopology> {
+    let mut rig = rig_topology(src)?;
+    set_paths(&mut rig, overrides)?;
     if !overrides.is_empty() {
         checked_at_path(&rig).with_context(|| {
             format!(
