@@ -277,17 +277,21 @@ pub fn settled_rig_plant(
     if let Some(e) = stopped.filter(|_| settled < settle) {
         return Err(e);
     }
-    plant.take_impacts();
-    plant.take_revolutions();
+    drop_records(&mut plant);
     Ok(plant)
 }
 
 /// Runs `plant` on by `samples` samples, its signals, impacts and revolutions dropped.
 pub fn skip_rig_samples(plant: &mut NetworkPlant, samples: usize) -> Result<(), rig::RigError> {
     plant.skip(samples)?;
+    drop_records(plant);
+    Ok(())
+}
+
+/// Drops the impacts and revolutions `plant` has recorded so far.
+fn drop_records(plant: &mut NetworkPlant) {
     plant.take_impacts();
     plant.take_revolutions();
-    Ok(())
 }
 
 /// The shaft the judge and the strain column watch: the gauged one, else the last.

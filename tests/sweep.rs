@@ -214,7 +214,17 @@ fn campaign(out: &Path, items: &[&str]) {
         "{}/scenarios/thesis-campaign.toml",
         env!("CARGO_MANIFEST_DIR")
     );
-    let mut args = vec!["sweep", &file, "--out", out.to_str().expect("utf-8")];
+    sweep_file(Path::new(&file), out, items);
+}
+
+/// Runs the sweep `file` into `out` with `--set` for each of `items`; checks success.
+fn sweep_file(file: &Path, out: &Path, items: &[&str]) {
+    let mut args = vec![
+        "sweep",
+        file.to_str().expect("utf-8"),
+        "--out",
+        out.to_str().expect("utf-8"),
+    ];
     args.extend(sets(items, &[]));
     let output = testrig(&args);
     assert!(
@@ -346,21 +356,10 @@ fn simulate_with_its_defaults_classifies_as_the_campaign_does() {
     assert_ne!(on_file, text, "the campaign names its preset and backlash");
     let file = dir.join("campaign.toml");
     std::fs::write(&file, on_file).expect("sweep file");
-    let mut args = vec![
-        "sweep",
-        file.to_str().expect("utf-8"),
-        "--out",
-        out.to_str().expect("utf-8"),
-    ];
-    args.extend(sets(
+    sweep_file(
+        &file,
+        &out,
         &["grid.rpm=[450, 600]", "grid.load_nm=[2.712, 5.424]"],
-        &[],
-    ));
-    let ran = testrig(&args);
-    assert!(
-        ran.status.success(),
-        "{}",
-        String::from_utf8_lossy(&ran.stderr)
     );
     let mut regimes = Vec::new();
     for row in csv_rows(&out.join("cases.csv")) {

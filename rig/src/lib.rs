@@ -9,7 +9,9 @@
 //! access by name (`--set`), with unit and meaning; `presets.rs` named sets
 //! (`basmaji-1983`, the thesis's numbers; `basmaji-1983-calibrated`, the second search's
 //! best, and `basmaji-1983-hand`, the calibration before the searches; see
-//! `docs/calibration.md`); `options.rs` contact law, tooth pairs. The model options beyond
+//! `docs/calibration.md`); `preset_rig.rs` a preset's parameters as the rig of any
+//! topology they describe (each shipped preset file is its conversion); `output_rate.rs`
+//! the output rates a plant takes; `options.rs` contact law, tooth pairs. The model options beyond
 //! the thesis (bearing drag, the eddy-current brake's characteristic, the transmission
 //! error as a displacement once per revolution and at mesh frequency, smoothed mesh
 //! stiffness) are parameters, 0 in `basmaji-1983`.
@@ -121,6 +123,7 @@ mod model;
 pub mod nearest;
 pub mod network;
 pub mod options;
+pub mod output_rate;
 mod pair_zones;
 pub mod param_table;
 pub mod params;
@@ -153,15 +156,16 @@ pub use judge::{JudgeInput, Judgement, Motion, judge};
 pub use modal::{Chain, NaturalMode, RigChains};
 pub use mode::{MeshMode, Mode, MotorMode, PairZone};
 pub use network::{
-    Column, Contact, MAX_OUTPUT_RATE_HZ, NetworkBlock, NetworkImpact, NetworkPlant, NetworkStart,
-    column_names, column_specs, columns,
+    Column, Contact, NetworkBlock, NetworkImpact, NetworkPlant, NetworkStart, column_names,
+    column_specs, columns,
 };
 pub use options::{ContactLaw, MeshPairs};
+pub use output_rate::{MAX_OUTPUT_RATE_HZ, MIN_OUTPUT_RATE_HZ, takes_output_rate};
 pub use param_table::{
     DERIVED_SPECS, PARAM_SPECS, ParamSpec, ParamValue, param_spec, set_param, set_param_value,
 };
 pub use params::RigParams;
-pub use plant::{CHECK_EVERY, Plant, PlantConfig};
+pub use plant::{Plant, PlantConfig};
 pub use preset_rig::preset_rig;
 pub use presets::{DEFAULT_PRESET, PRESET_NAMES, preset};
 pub use records::{Flank, Impact, RevolutionSample};

@@ -82,22 +82,4 @@ impl SignalBlock {
             .chain(self.speed_rad_s.iter_mut())
             .chain(self.shaft_torque_nm.iter_mut())
     }
-
-    /// Sample `i` as numbers in the order of [`COLUMN_NAMES`].
-    pub fn row(&self, i: usize) -> [f64; 18] {
-        let mut row = [0.0; 18];
-        row[0] = self.time_s[i];
-        for k in 0..5 {
-            row[1 + k] = self.angle_rad[k][i];
-            row[6 + k] = self.speed_rad_s[k][i];
-        }
-        for k in 0..3 {
-            row[11 + k] = self.shaft_torque_nm[k][i];
-        }
-        row[14] = self.mesh_torque_nm[i];
-        row[15] = self.motor_torque_nm[i];
-        row[16] = f64::from(self.contact[i]);
-        row[17] = f64::from(self.tooth[i]);
-        row
-    }
 }

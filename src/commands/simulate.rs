@@ -68,21 +68,26 @@ pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
         simulated_s,
         wall_s,
         average_nm,
-    } = run_rig_point(
-        &spec,
-        FLAG_NAMES,
-        || Ok(()),
-        |block| match writer.as_mut() {
-            Some(w) => {
-                let columns = columns(&rig, block);
-                (0..block.len()).try_for_each(|i| {
-                    let row: Vec<f64> = columns.iter().map(|c| c[i]).collect();
-                    w.write_row(&row)
-                })
-            }
-            None => Ok(()),
-        },
-    )?;
+    } = {
+        // One row's buffer for the whole run, not one a sample.
+        let mut row = Vec::new();
+        run_rig_point(
+            &spec,
+            FLAG_NAMES,
+            || Ok(()),
+            |block| match writer.as_mut() {
+                Some(w) => {
+                    let columns = columns(&rig, block);
+                    (0..block.len()).try_for_each(|i| {
+                        row.clear();
+                        row.extend(columns.iter().map(|c| c[i]));
+                        w.write_row(&row)
+                    })
+                }
+                None => Ok(()),
+            },
+        )?
+    };
     let report = Report {
         rig: &rig.name,
         preset,

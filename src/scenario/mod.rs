@@ -11,7 +11,7 @@
 //! `read_instrument.rs` (a filter's or meter's settings from its table); `preset_file.rs`
 //! presets from files and `preset_with_overrides` (every command's `--preset` and `--set`);
 //! `builtin_rigs.rs` presets that are rig files, built in; `read_rig_file.rs` a rig file
-//! to a checked `rig::RigTopology`, `read_rig_mesh.rs` its meshes and their faults; `run_plan.rs` the result; `build.rs` it all together; `coverage.rs` whether each
+//! to a checked `rig::RigTopology`, `rig_overrides.rs` its values set by path, `read_rig_mesh.rs` its meshes and their faults; `run_plan.rs` the result; `build.rs` it all together; `coverage.rs` whether each
 //! measurement fits the run
 
 pub(crate) mod build;
@@ -31,6 +31,7 @@ pub(crate) mod read_rig_mesh;
 pub(crate) mod read_stages;
 pub(crate) mod rig_chain;
 pub(crate) mod rig_file_toml;
+pub(crate) mod rig_overrides;
 pub(crate) mod run_plan;
 pub(crate) mod scenario_toml;
 pub(crate) mod source;
@@ -42,9 +43,8 @@ pub use coverage::measurement_warnings;
 pub use overrides::apply_override;
 pub use preset_file::preset_with_overrides;
 pub use preset_rig::preset_rig_with_overrides;
-pub use read_rig_file::{
-    read_rig_file, rig_topology, rig_with_overrides, source_rig_with_overrides,
-};
+pub use read_rig_file::{read_rig_file, rig_topology};
+pub use rig_overrides::{rig_with_overrides, source_rig_with_overrides};
 pub use run_plan::{AnalyserPlan, ChainPlan, Measure, Plan, PlanRig, RecordPlan, ScopePlan};
 pub use scenario_toml::Overflow;
 pub use source::ScenarioSource;

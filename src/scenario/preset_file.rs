@@ -66,15 +66,20 @@ pub fn preset_params(name: &str, dir: &Path) -> anyhow::Result<RigParams> {
 pub fn preset_with_overrides(name: &str, overrides: &[String]) -> anyhow::Result<RigParams> {
     let mut params = preset_params(name, Path::new(".")).context("--preset")?;
     for item in overrides {
-        let Some((key, value)) = item.split_once('=') else {
+        let Some((_, value)) = item.split_once('=') else {
             bail!("--set {item}: expected NAME=VALUE (`testrig params` lists the names)");
         };
-        let key = key.trim();
-        let key = key
-            .strip_prefix("rig.set.")
-            .or_else(|| key.strip_prefix("rig."))
-            .unwrap_or(key);
-        rig::set_param(&mut params, key, value.trim()).with_context(|| format!("--set {item}"))?;
+        rig::set_param(&mut params, param_key(item), value.trim())
+            .with_context(|| format!("--set {item}"))?;
     }
     Ok(params)
+}
+
+/// The name an override `NAME=VALUE` sets (also written `rig.set.NAME` or `rig.NAME`, as
+/// a scenario's keys), trimmed.
+pub fn param_key(item: &str) -> &str {
+    let key = item.split_once('=').map_or(item, |(key, _)| key).trim();
+    key.strip_prefix("rig.set.")
+        .or_else(|| key.strip_prefix("rig."))
+        .unwrap_or(key)
 }

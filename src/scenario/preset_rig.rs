@@ -10,8 +10,10 @@ use anyhow::Context;
 use rig::RigTopology;
 
 use super::builtin_rigs::preset_rig_source;
-use super::preset_file::{is_preset_file, preset_with_overrides};
-use super::read_rig_file::{checked_at_path, rig_topology, set_paths};
+use super::preset_file::{is_preset_file, param_key, preset_with_overrides};
+use super::read_rig_file::rig_topology;
+use super::rig_file_toml::RigFileToml;
+use super::rig_overrides::{checked_at_path, set_paths};
 
 /// The checked rig of preset `name` (a built-in name, or a preset file's path) with every
 /// `NAME=VALUE` or `PATH=VALUE` of `overrides` set, in order within each kind: the
@@ -44,12 +46,7 @@ pub fn preset_rig_with_overrides(name: &str, overrides: &[String]) -> anyhow::Re
 /// (`mesh.gears.backlash_mm`), a name none, so a mistyped name is refused with the names
 /// near it.
 fn is_thesis_name(item: &str) -> bool {
-    let key = item.split_once('=').map_or(item, |(key, _)| key).trim();
-    let key = key
-        .strip_prefix("rig.set.")
-        .or_else(|| key.strip_prefix("rig."))
-        .unwrap_or(key);
-    !key.contains('.')
+    !param_key(item).contains('.')
 }
 
 /// The name and description of the rig converted from preset `name`: a built-in preset's
@@ -61,6 +58,7 @@ fn titled(name: &str) -> anyhow::Result<(String, String)> {
             .map_or_else(|| name.to_string(), |s| s.to_string_lossy().into_owned());
         return Ok((stem, format!("the preset file {name}")));
     }
-    let file = rig_topology(&preset_rig_source(name)?)?;
-    Ok((file.name, file.description))
+    // The file's text alone: the rig itself is built from the parameters.
+    let file: RigFileToml = preset_rig_source(name)?.parse_rig_file()?;
+    Ok((file.name.into_inner(), file.description.unwrap_or_default()))
 }

@@ -4,7 +4,7 @@ use rig::{DEFAULT_PRESET, ParamValue, RigParams, Schedule, Track};
 use toml::Spanned;
 
 use super::preset_file::preset_params;
-use super::read_rig_file::rig_of_file_table;
+use super::rig_overrides::rig_of_file_table;
 use super::run_plan::{Measure, PlanRig};
 use super::scenario_toml::{ChangeFile, RigFile, ScenarioFile, ScheduleFile, SurveyFile};
 use super::source::ScenarioSource;

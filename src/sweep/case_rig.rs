@@ -3,7 +3,7 @@
 
 use rig::{RigChains, RigParams, RigTopology};
 
-use crate::scenario::read_rig_file::set_rig_value;
+use crate::scenario::rig_overrides::set_rig_value;
 use crate::scenario::values::param_value;
 use crate::vocabulary::limits::{check_load_within, max_load_nm, rig_max_load_nm};
 

@@ -31,9 +31,6 @@ pub const FLAG_NAMES: InputNames = InputNames {
     rate: "--rate",
 };
 
-/// The lowest output rate a plant takes (Hz).
-const MIN_OUTPUT_RATE_HZ: f64 = 100.0;
-
 /// The settling time, the window and the output rate, each refused under its name.
 pub fn check_times(
     settle_s: f64,
@@ -41,12 +38,12 @@ pub fn check_times(
     rate_hz: f64,
     names: InputNames,
 ) -> anyhow::Result<()> {
-    if !(rate_hz.is_finite() && (MIN_OUTPUT_RATE_HZ..=rig::MAX_OUTPUT_RATE_HZ).contains(&rate_hz)) {
+    if !rig::takes_output_rate(rate_hz) {
         bail!(
             "{} {}: a sample rate from {} Hz to {:e} Hz",
             names.rate,
             rate_hz,
-            MIN_OUTPUT_RATE_HZ,
+            rig::MIN_OUTPUT_RATE_HZ,
             rig::MAX_OUTPUT_RATE_HZ
         );
     }

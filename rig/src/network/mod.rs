@@ -49,4 +49,4 @@ mod teeth;
 pub use block::{NetworkBlock, NetworkImpact};
 pub use columns::{Column, column_names, column_specs, columns};
 pub use mode::Contact;
-pub use plant::{MAX_OUTPUT_RATE_HZ, NetworkPlant, NetworkStart, SKIP_STRETCH};
+pub use plant::{NetworkPlant, NetworkStart, SKIP_STRETCH};

@@ -5,6 +5,7 @@ use std::f64::consts::PI;
 
 use crate::error::RigError;
 use crate::mode::PairZone;
+use crate::output_rate::takes_output_rate;
 use crate::schedule::Schedule;
 use crate::taylor::{MAX_RHO_H, TAYLOR_ORDER};
 use crate::topology::RigTopology;
@@ -45,11 +46,6 @@ const MAX_SUBSTEPS: u32 = 4096;
 
 /// Fastest any body may turn before the run is called blown up (rad/s).
 const SPEED_LIMIT_RAD_S: f64 = 1.0e5;
-
-/// The highest output rate a plant takes (Hz): 10 MHz, far above any analyser's band;
-/// above it a short window would hold more samples than memory (297 MHz for 0.05 s took
-/// 2.7 GB and 9 s).
-pub const MAX_OUTPUT_RATE_HZ: f64 = 10.0e6;
 
 /// A rig of any topology, advanced exactly. A clone is the whole state, its modes met
 /// so far included (an FMU's saved state).
@@ -122,7 +118,7 @@ impl NetworkPlant {
     ) -> Result<Self, RigError> {
         rig.check()?;
         schedule.validate()?;
-        if !(output_rate_hz.is_finite() && (100.0..=MAX_OUTPUT_RATE_HZ).contains(&output_rate_hz)) {
+        if !takes_output_rate(output_rate_hz) {
             return Err(RigError::InvalidOption {
                 name: "output_rate_hz",
                 value: output_rate_hz.to_string(),

@@ -20,6 +20,5 @@ mod switches;
 
 pub(crate) use switches::RELEASE_MARGIN_NM;
 
-pub use output::CHECK_EVERY;
 pub(crate) use state::SWITCH_LIMIT;
 pub use state::{Plant, PlantConfig};

@@ -11,33 +11,16 @@ use super::chunk::{CHUNK, SampleFrame};
 use super::mesh_position::{flank_overlap, tooth_at};
 use super::state::{Plant, SPEED_LIMIT_RAD_S, TWIST_LIMIT_RAD};
 
-/// Samples between two looks at [`Plant::skip_while`]'s question (about 0.2 s of
-/// simulated time at 51.2 kHz).
-pub const CHECK_EVERY: usize = 8192;
-
 impl Plant {
     /// Advances `samples` output samples, appending each (the state at t = n / rate, then one step) to `out`.
     /// On an error the block keeps every sample taken before it.
     pub fn run(&mut self, samples: usize, out: &mut SignalBlock) -> Result<(), RigError> {
-        self.advance_samples(samples, Some(out), &mut || true)
-            .map(|_| ())
+        self.advance_samples(samples, Some(out))
     }
 
     /// Advances `samples` output samples without recording them.
     pub fn skip(&mut self, samples: usize) -> Result<(), RigError> {
-        self.advance_samples(samples, None, &mut || true)
-            .map(|_| ())
-    }
-
-    /// As [`Plant::skip`], asking `keep_going` after about every [`CHECK_EVERY`] samples
-    /// and stopping where it says no; returns the samples advanced. The samples taken are
-    /// exactly those a [`Plant::skip`] takes (the same steps, bit for bit).
-    pub fn skip_while(
-        &mut self,
-        samples: usize,
-        mut keep_going: impl FnMut() -> bool,
-    ) -> Result<usize, RigError> {
-        self.advance_samples(samples, None, &mut keep_going)
+        self.advance_samples(samples, None)
     }
 
     /// Takes `samples` samples (appended to `out` if given), advancing one output period
@@ -47,17 +30,9 @@ impl Plant {
         &mut self,
         samples: usize,
         mut out: Option<&mut SignalBlock>,
-        keep_going: &mut dyn FnMut() -> bool,
-    ) -> Result<usize, RigError> {
+    ) -> Result<(), RigError> {
         let mut done = 0;
-        let mut next_check = CHECK_EVERY;
         while done < samples {
-            if done >= next_check {
-                if !keep_going() {
-                    return Ok(done);
-                }
-                next_check = done + CHECK_EVERY;
-            }
             let (first, mode) = (self.step_index, self.mode);
             let limit = CHUNK.min(samples - done);
             let (taken, switched) = match out.as_deref_mut() {
@@ -86,7 +61,7 @@ impl Plant {
             }
             done += 1;
         }
-        Ok(done)
+        Ok(())
     }
 
     /// What a sample needs besides the state, for `mode` and the current segment.

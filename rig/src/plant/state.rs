@@ -11,6 +11,7 @@ use crate::layout::{LOAD, Layout, N_MECH, UNIT, V0, VF, X0, Z};
 use crate::mode::{MeshMode, Mode, MotorMode, PairZone};
 use crate::model::ModelConstants;
 use crate::options::{ContactLaw, MeshPairs};
+use crate::output_rate::takes_output_rate;
 use crate::pair_zones::PairZones;
 use crate::params::RigParams;
 use crate::records::{Impact, RevolutionSample};
@@ -370,10 +371,7 @@ fn check_config(config: &PlantConfig) -> Result<(), RigError> {
             });
         }
     }
-    if !(config.output_rate_hz.is_finite()
-        && config.output_rate_hz >= 100.0
-        && config.output_rate_hz <= 10.0e6)
-    {
+    if !takes_output_rate(config.output_rate_hz) {
         return Err(RigError::InvalidOption {
             name: "output_rate_hz",
             value: config.output_rate_hz.to_string(),
