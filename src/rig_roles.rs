@@ -1,5 +1,5 @@
-//! What a rig file's plant hands the measuring chain, in a sweep's case and in a
-//! scenario's run alike: the chain's standard stages read the rig under the standard
+//! What the plant hands the measuring chain (`PLANT_SIGNALS`), in a sweep's case and in
+//! a scenario's run alike, from any rig: the chain's standard stages read the rig under the standard
 //! chain's input names — the gauged shaft's torque as `torque_intermediate_shaft_nm` (the
 //! strain stage takes the gauge's diameter and shear modulus), the speed of the tacho's
 //! body (`[tacho]`, else the motor's) as `speed1_rad_s`, and the speed of the gauged
@@ -12,20 +12,8 @@ use rig::{Gauge, NetworkBlock, RigTopology};
 use crate::chain::ChainStages;
 use crate::steady_point::{judged_shaft, watched_gear};
 use crate::vocabulary::frame::Frame;
-use crate::vocabulary::signal_names::{
-    KEYPHASOR_V, MOTOR_SPEED_RAD_S, SHAFT_TORQUE_NM, SLIP_RING_SPEED_RAD_S,
-};
 
-/// The signals a rig file's plant hands the chain, in frame order.
-pub const RIG_SIGNALS: [&str; 5] = [
-    "time_s",
-    SHAFT_TORQUE_NM,
-    MOTOR_SPEED_RAD_S,
-    SLIP_RING_SPEED_RAD_S,
-    KEYPHASOR_V,
-];
-
-/// The keyphasor's high level (V): [`KEYPHASOR_V`] is this over the first
+/// The keyphasor's high level (V): [`crate::vocabulary::signal_names::KEYPHASOR_V`] is this over the first
 /// 1/[`KEYPHASOR_MARK_SHARE`] of each turn of the watched gear (a reflective mark under an
 /// optical probe), 0 V otherwise; its rising edges are the revolutions a synchronous
 /// average starts from.
@@ -89,7 +77,8 @@ impl RoleColumns {
         }
     }
 
-    /// The frame of [`RIG_SIGNALS`] of `block`, starting at sample `start`.
+    /// The frame of the plant's signals
+    /// ([`crate::vocabulary::signal_names::PLANT_SIGNALS`]) of `block`, starting at sample `start`.
     pub fn frame(&self, block: &NetworkBlock, start: u64) -> Frame {
         let mut frame = Frame::of_channels(vec![
             block.time_s.clone(),

@@ -247,8 +247,13 @@ fn a_preset_file_is_refused_at_its_line() {
 #[test]
 fn a_natural_frequency_target_finds_the_shaft_stiffness_of_the_measured_fundamental() {
     // The measured fundamental, 13.33 Hz, as a natural frequency of the linear model: the
-    // intermediate shaft that gives it is 1449.5 N m/rad (docs/calibration.md, found by
-    // hand with `testrig modes`); the search has only the linear model to evaluate.
+    // rig's first mode with its teeth in contact on the mesh spring (`testrig modes`'s
+    // "teeth locked on the mesh spring K23", as every rig's modes are taken) is 13.33 Hz
+    // with the intermediate shaft at 1469.7 N m/rad (found by bisection on `testrig
+    // modes`; with the gear pair rigid, the thesis's App. C, it is 1449.5). The search has
+    // only the linear model to evaluate. Its loss, one unit per tolerance outside it, is
+    // capped at 80: a tolerance of 0.05 Hz leaves it a slope over ±4 Hz (at 0.005 Hz it
+    // is flat beyond 0.4 Hz, and the search wanders), and holds K34 to 0.75 %.
     let dir = folder("calibrate-natural");
     let text = calibration(&campaign(&dir), 120)
         .split("[[target]]")
@@ -259,7 +264,7 @@ fn a_natural_frequency_target_finds_the_shaft_stiffness_of_the_measured_fundamen
 [[natural]]
 mode = 1
 hz = 13.33
-tolerance_hz = 0.005
+tolerance_hz = 0.05
 
 [[free]]
 name = "k34_intermediate_shaft_nm_per_rad"
@@ -277,7 +282,7 @@ scale = "log"
         .as_str()
         .and_then(|v| v.parse().ok())
         .expect("k34");
-    assert!((k34 / 1449.5 - 1.0).abs() < 0.005, "K34 = {k34}");
+    assert!((k34 / 1469.7 - 1.0).abs() < 0.0075, "K34 = {k34}");
 }
 
 #[test]

@@ -36,8 +36,8 @@ fn stages_run_after_the_stages_they_read_and_bad_wiring_is_named() {
     let wire = Instrument::LowPass(None);
     let plans = vec![
         stage("b_v", "a_v", meter()),
-        stage("a_v", "mesh_torque_nm", wire.clone()),
-        stage("c_v", "mesh_torque_nm", wire.clone()),
+        stage("a_v", "torque_intermediate_shaft_nm", wire.clone()),
+        stage("c_v", "torque_intermediate_shaft_nm", wire.clone()),
     ];
     let stages = ChainStages::ordered(plans).expect("wires");
     let order: Vec<&str> = stages.stages().iter().map(|s| s.output.as_str()).collect();
@@ -45,7 +45,9 @@ fn stages_run_after_the_stages_they_read_and_bad_wiring_is_named() {
     let mut names = testrig::vocabulary::SignalNames::plant();
     let built = stages.build(51_200.0, &mut names).expect("builds");
     assert_eq!(built.len(), 3);
-    assert_eq!(names.index("b_v"), Some(rig::COLUMN_NAMES.len() + 1));
+    // The plant's five signals (time, gauged torque, tacho and slip-ring speeds, keyphasor)
+    // come first, then each stage's output in running order.
+    assert_eq!(names.index("b_v"), Some(5 + 1));
     assert_eq!(stages.unit_of("b_v"), Some("V"));
     assert_eq!(stages.unit_of("speed1_rad_s"), Some("rad/s"));
     assert_eq!(stages.unit_of("nothing"), None);
@@ -56,7 +58,7 @@ fn stages_run_after_the_stages_they_read_and_bad_wiring_is_named() {
     ];
     let err = ChainStages::ordered(looped).expect_err("a loop");
     assert!(matches!(err, WiringError::UnknownInput { ref output, .. } if output == "x_v"));
-    let twice = vec![stage("contact", "mesh_torque_nm", wire)];
+    let twice = vec![stage("keyphasor_v", "torque_intermediate_shaft_nm", wire)];
     let err = ChainStages::ordered(twice).expect_err("a plant name");
     assert!(matches!(err, WiringError::DuplicateOutput { .. }), "{err}");
 }

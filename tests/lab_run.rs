@@ -25,14 +25,19 @@ fn campaign(name: &str, out: &Path, items: &[&str]) {
 /// grid and back down on one rig, each point settling from the state the one before it
 /// left: the first point is a start from rest (the same numbers as the static campaign's
 /// case), and coming back down to 600 rev/min the rig keeps a motion of another size
-/// than going up (the thesis's rig at 2.712 N m: 1.5 against 5.0 N m AC RMS).
+/// than going up (the thesis's rig at 2.712 N m: 1.5 against 5.0 N m AC RMS, settled 30 s).
 #[test]
 fn the_lab_run_steps_up_and_back_down_on_one_rig_and_finds_coexisting_motions() {
     let dir = folder("lab-run");
+    // Settled 30 s and measured 10 s: at the campaign's 60 s and 30 s the run down lands
+    // on the small motion again (which of the two it keeps after the chaotic 700 and 800
+    // rev/min is decided at rounding; `docs/physics.md`).
     let common = [
         "grid.rpm=[600, 700, 800]",
         "grid.load_nm=[2.712]",
         "rig.preset=\"basmaji-1983\"",
+        "case.settle_s=30",
+        "case.measure_s=10",
     ];
     let lab = dir.join("lab");
     let mut items = common.to_vec();

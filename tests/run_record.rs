@@ -162,12 +162,12 @@ fn a_dropping_queue_counts_every_overrun_and_the_recording_shows_the_gaps() {
     let dir = folder("drop");
     let signals = [
         "time_s",
-        "angle1_rad",
-        "angle2_rad",
-        "speed1_rad_s",
-        "speed2_rad_s",
-        "torque_input_shaft_nm",
         "torque_intermediate_shaft_nm",
+        "speed1_rad_s",
+        "speed3_rad_s",
+        "keyphasor_v",
+        "strain",
+        "bridge_v",
         "amplifier_v",
         "filter_v",
         "meter_v",

@@ -3,7 +3,9 @@
 //! (`rig::NetworkPlant`) started at rest and advanced exactly over each communication
 //! step with the inputs held. The C functions (`ffi.rs`) only translate to and from it.
 
-use rig::{NetworkBlock, NetworkPlant, NetworkStart, RigTopology, Schedule, SetPoints, Track};
+use rig::{
+    LiveCeiling, NetworkBlock, NetworkPlant, NetworkStart, RigTopology, Schedule, SetPoints, Track,
+};
 
 use crate::error::FmuError;
 use crate::variables::{Causality, Kind, Role, SAMPLE_RATE_HZ, SetPoint, Variable, variables};
@@ -290,7 +292,11 @@ impl Instance {
             oscillating_load_nm: Track::hold(set.oscillating_load_nm),
             oscillating_load_hz: Track::hold(set.oscillating_load_hz),
         };
-        let ceiling = self.role_value(&Role::SpeedCeiling);
+        // The oscillating load's frequency is held to its variable's range.
+        let ceiling = LiveCeiling {
+            speed_rpm: self.role_value(&Role::SpeedCeiling),
+            oscillating_load_hz: f64::INFINITY,
+        };
         let plant =
             NetworkPlant::live(&rig, schedule, SAMPLE_RATE_HZ, NetworkStart::Rest, ceiling)?;
         self.plant = Some(plant);

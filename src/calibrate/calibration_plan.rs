@@ -241,7 +241,7 @@ fn free_params(
 ) -> anyhow::Result<Vec<FreeParam>> {
     let mut free = Vec::new();
     for entry in &file.free {
-        let param = free_param(entry.get_ref(), matches!(base, CaseRig::Preset(_)))
+        let param = free_param(entry.get_ref(), matches!(base, CaseRig::Preset { .. }))
             .map_err(|message| src.error(entry.span(), "free", message))?;
         if free.iter().any(|p: &FreeParam| p.name == param.name) {
             return Err(src.error(entry.get_ref().name.span(), "free.name", "given twice"));

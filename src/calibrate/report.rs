@@ -61,7 +61,7 @@ pub fn preset_text(
 ) -> anyhow::Result<String> {
     let rig = params_at(&plan.base, &plan.free, &best.x)?;
     let params = match &rig {
-        CaseRig::Preset(params) => params,
+        CaseRig::Preset { params, .. } => params,
         CaseRig::File(file) => return Ok(rig_set_text(plan, best, result, file)),
     };
     // A file cannot be the base of another: then the thesis's preset is.
@@ -139,7 +139,7 @@ pub fn write_outputs(
 ) -> anyhow::Result<Vec<PathBuf>> {
     let mut files = Vec::new();
     let best_rig = match plan.base {
-        CaseRig::Preset(_) => "preset.toml",
+        CaseRig::Preset { .. } => "preset.toml",
         CaseRig::File(_) => "rig-set.toml",
     };
     files.push(PartialFile::write_whole(

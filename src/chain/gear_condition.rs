@@ -6,7 +6,6 @@
 //! caller names.
 
 use instruments::{ConditionIndicators, condition_indicators, gear_signals, synchronous_average};
-use rig::{DRIVEN_GEAR, INTERMEDIATE_SHAFT, SignalBlock};
 use serde_json::{Value, json};
 
 use crate::vocabulary::GearIndicators;
@@ -50,16 +49,6 @@ impl GearCondition {
             pulses_s: Vec::new(),
             previous: None,
         }
-    }
-
-    /// Adds a block of the 1983 rig's true signals: the driven gear and the output-shaft
-    /// torque.
-    pub fn add(&mut self, block: &SignalBlock) {
-        self.add_samples(
-            &block.time_s,
-            &block.angle_rad[DRIVEN_GEAR],
-            &block.shaft_torque_nm[INTERMEDIATE_SHAFT],
-        );
     }
 
     /// Adds samples at `time_s` of the watched gear's absolute angle (rad, in its sense

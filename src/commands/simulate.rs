@@ -237,7 +237,7 @@ fn impact_log(
     impacts: &[NetworkImpact],
 ) -> anyhow::Result<PathBuf> {
     let mut log = ImpactLog::of_meshes(&dir.join("impacts.csv"), rig)?;
-    log.write_meshes(impacts)?;
+    log.write(impacts)?;
     log.finish()
 }
 

@@ -9,7 +9,7 @@ use sha2::{Digest, Sha256};
 use super::pacing::Pace;
 use super::threaded_run::RunResult;
 use crate::recording::{PartialFile, end_journal};
-use crate::scenario::{AnalyserPlan, Plan, PlanRig, measurement_warnings};
+use crate::scenario::{AnalyserPlan, Plan, measurement_warnings};
 
 /// How the run ended.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -58,10 +58,7 @@ pub fn write_manifest(
         "scenario_sha256": sha256_hex(plan.text.as_bytes()),
         "seed": plan.seed,
         "version": env!("CARGO_PKG_VERSION"),
-        "preset": match &plan.rig {
-            PlanRig::Preset { name, .. } => Some(name),
-            PlanRig::File(_) => None,
-        },
+        "preset": plan.rig.preset,
         "rig": plan.rig.name(),
         "ending": ending.label(),
         "errors": result.failures(),

@@ -34,7 +34,6 @@ pub(crate) mod scenario_plant;
 pub(crate) mod sinks;
 pub(crate) mod status;
 pub(crate) mod stop_signals;
-pub(crate) mod thesis_plant;
 pub(crate) mod threaded_run;
 pub(crate) mod wiring;
 

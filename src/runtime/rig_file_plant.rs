@@ -5,8 +5,8 @@
 use std::sync::Arc;
 
 use rig::{
-    NetworkBlock, NetworkImpact, NetworkPlant, NetworkStart, RigError, RigTopology, Schedule,
-    SetPoints, SteadySummary,
+    LiveCeiling, NetworkBlock, NetworkImpact, NetworkPlant, NetworkStart, RigError, RigTopology,
+    Schedule, SetPoints, SteadySummary,
 };
 
 use super::scenario_plant::{PointWindow, ScenarioPlant};
@@ -14,7 +14,7 @@ use crate::rig_roles::RoleColumns;
 use crate::steady_point::motor_of;
 use crate::steady_point::{RigWindow, regime_of};
 use crate::vocabulary::GearIndicators;
-use crate::vocabulary::frame::{Frame, FrameImpacts};
+use crate::vocabulary::frame::Frame;
 use crate::vocabulary::limits::LimitError;
 use crate::vocabulary::limits::{check_load_within, rig_max_load_nm};
 
@@ -28,17 +28,18 @@ pub struct RigFilePlant {
 
 impl RigFilePlant {
     /// `rig`'s plant in steady motion at `schedule`'s first set points, sampled at
-    /// `rate_hz`, its step sized for set speeds up to `speed_ceiling_rpm` beside the
-    /// schedule's own (live commands). A rig without a motor is refused.
+    /// `rate_hz`; for live commands, its step sized for set speeds up to `ceiling`'s
+    /// beside the schedule's own, and set points above `ceiling` refused. A rig without a
+    /// motor is refused.
     pub fn new(
         rig: &RigTopology,
         schedule: Schedule,
         rate_hz: f64,
-        speed_ceiling_rpm: Option<f64>,
+        ceiling: Option<LiveCeiling>,
     ) -> anyhow::Result<Self> {
         motor_of(rig)?;
         let start = NetworkStart::Steady;
-        let plant = match speed_ceiling_rpm {
+        let plant = match ceiling {
             Some(ceiling) => NetworkPlant::live(rig, schedule, rate_hz, start, ceiling)?,
             None => NetworkPlant::new(rig, schedule, rate_hz, start)?,
         };
@@ -108,7 +109,7 @@ impl ScenarioPlant for RigFilePlant {
     fn frame(&self, seq: u64, start: u64, block: &mut RigFileBlock) -> Frame {
         let mut frame = self.roles.frame(&block.signals, start);
         frame.seq = seq;
-        frame.impacts = FrameImpacts::Meshes(std::mem::take(&mut block.impacts).into());
+        frame.impacts = std::mem::take(&mut block.impacts).into();
         frame
     }
 

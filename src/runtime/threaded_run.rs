@@ -7,7 +7,6 @@ use std::sync::{Arc, Mutex, PoisonError};
 use std::time::{Duration, Instant};
 
 use anyhow::Context;
-use rig::{Plant, PlantConfig};
 
 use super::console::Console;
 use super::pacing::Pace;
@@ -25,8 +24,7 @@ use super::status::SharedStatus;
 use super::wiring::{channel, guarded, run_chain, run_sink};
 use crate::chain::NamedStage;
 use crate::recording::start_journal;
-use crate::rig_roles::RIG_SIGNALS;
-use crate::scenario::{Plan, PlanRig};
+use crate::scenario::Plan;
 use crate::vocabulary::control::refusals;
 use crate::vocabulary::frame::SignalNames;
 use crate::vocabulary::signal_names::{AMPLIFIER_V, FILTER_V};
@@ -120,24 +118,10 @@ pub fn run_with_status(
         options,
         status: &status,
     };
-    match &plan.rig {
-        PlanRig::Preset { params, .. } => {
-            let config = PlantConfig {
-                output_rate_hz: plan.rate_hz,
-                live_ceiling: plan.live_ceiling,
-                ..PlantConfig::default()
-            };
-            let plant = Plant::new((**params).clone(), plan.schedule.clone(), config)
-                .context("the rig and schedule of the scenario")?;
-            run.run(plant, SignalNames::plant())
-        }
-        PlanRig::File(rig) => {
-            let ceiling = plan.live_ceiling.map(|c| c.speed_rpm);
-            let plant = RigFilePlant::new(rig, plan.schedule.clone(), plan.rate_hz, ceiling)
-                .with_context(|| format!("rig `{}` and the scenario's schedule", rig.name))?;
-            run.run(plant, SignalNames::of(&RIG_SIGNALS))
-        }
-    }
+    let rig = &plan.rig.topology;
+    let plant = RigFilePlant::new(rig, plan.schedule.clone(), plan.rate_hz, plan.live_ceiling)
+        .with_context(|| format!("rig `{}` and the scenario's schedule", rig.name))?;
+    run.run(plant, SignalNames::plant())
 }
 
 /// A run's plan, options and status, before its plant is built.

@@ -4,7 +4,7 @@ use super::read_chain::{ChainSetting, analyser_plan, chain_plan, record_plan};
 use super::read_rig::{plan_rig, schedule_and_measures};
 use super::read_stages::read_signal_among;
 use super::rig_chain::rig_chain;
-use super::run_plan::{Plan, PlanRig, RecordPlan};
+use super::run_plan::{Plan, RecordPlan};
 use super::scenario_toml::ScenarioFile;
 use super::source::ScenarioSource;
 use super::values::Positive;
@@ -65,9 +65,7 @@ pub fn build(src: &ScenarioSource, command_line: CommandLine) -> anyhow::Result<
         band_hz,
     };
     let mut chain = chain_plan(src, &file.chain, setting)?;
-    if let PlanRig::File(topology) = &rig {
-        chain = rig_chain(src, topology, &chain)?;
-    }
+    chain = rig_chain(src, &rig.topology, &chain)?;
     let names = chain.stages.signal_names_on(&plant);
     if let (Some(a), Some(written)) = (&analyser, &file.analyser) {
         let input = written.input.as_ref();

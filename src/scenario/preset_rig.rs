@@ -28,7 +28,7 @@ pub fn preset_rig_with_overrides(name: &str, overrides: &[String]) -> anyhow::Re
         .partition(|item| is_thesis_name(item));
     let mut rig = if is_preset_file(name) || !named.is_empty() {
         let params = preset_with_overrides(name, &named)?;
-        let (title, description) = titled(name)?;
+        let (title, description) = preset_title(name)?;
         rig::preset_rig(&title, &description, &params)
     } else {
         rig_topology(&preset_rig_source(name)?)?
@@ -51,7 +51,7 @@ fn is_thesis_name(item: &str) -> bool {
 
 /// The name and description of the rig converted from preset `name`: a built-in preset's
 /// its file's; a preset file's its stem and path.
-fn titled(name: &str) -> anyhow::Result<(String, String)> {
+pub(crate) fn preset_title(name: &str) -> anyhow::Result<(String, String)> {
     if is_preset_file(name) {
         let stem = std::path::Path::new(name)
             .file_stem()

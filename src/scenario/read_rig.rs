@@ -4,22 +4,38 @@ use rig::{DEFAULT_PRESET, ParamValue, RigParams, Schedule, Track};
 use toml::Spanned;
 
 use super::preset_file::preset_params;
-use super::rig_overrides::rig_of_file_table;
+use super::preset_rig::preset_title;
+use super::read_rig_mesh::seed_faults;
+use super::rig_overrides::{checked_at_path, rig_of_file_table, set_rig_value};
 use super::run_plan::{Measure, PlanRig};
 use super::scenario_toml::{ChangeFile, RigFile, ScenarioFile, ScheduleFile, SurveyFile};
 use super::source::ScenarioSource;
 use super::values::param_value;
 
 /// The rig of a scenario's `[rig]` table: a rig file's (`file`, relative to the
-/// scenario, with its `[rig.set]` and `[[rig.fault]]`), else a preset's.
-pub fn plan_rig(src: &ScenarioSource, rig: &RigFile) -> anyhow::Result<PlanRig> {
-    if rig.file.is_some() {
-        return Ok(PlanRig::File(Box::new(rig_of_file_table(src, rig)?)));
+/// scenario, with its `[rig.set]` and `[[rig.fault]]`), else a preset's rig: its
+/// parameters with the backlash and the `[rig.set]` names without a dot set, as a rig
+/// (`rig::preset_rig`), then the keys with a dot set as rig paths and its faults seeded.
+pub fn plan_rig(src: &ScenarioSource, table: &RigFile) -> anyhow::Result<PlanRig> {
+    if table.file.is_some() {
+        let topology = Box::new(rig_of_file_table(src, table)?);
+        return Ok(PlanRig {
+            topology,
+            preset: None,
+        });
     }
-    let (name, params) = rig_params(src, rig)?;
-    Ok(PlanRig::Preset {
-        name,
-        params: Box::new(params),
+    let (name, params) = thesis_params(src, table, |key| !key.contains('.'))?;
+    let (title, description) = preset_title(&name)?;
+    let mut rig = rig::preset_rig(&title, &description, &params);
+    seed_faults(src, &mut rig, &table.fault)?;
+    for (key, value) in table.set.iter().filter(|(key, _)| key.contains('.')) {
+        set_rig_value(&mut rig, key, value.get_ref())
+            .map_err(|e| src.error(value.span(), &format!("rig.set.{key}"), e))?;
+    }
+    checked_at_path(&rig).map_err(|e| src.error(0..0, "rig", format!("preset {name}: {e:#}")))?;
+    Ok(PlanRig {
+        topology: Box::new(rig),
+        preset: Some(name),
     })
 }
 
@@ -33,6 +49,16 @@ pub fn rig_params(src: &ScenarioSource, rig: &RigFile) -> anyhow::Result<(String
             "faults are seeded on a rig file's meshes: give rig.file",
         ));
     }
+    thesis_params(src, rig, |_| true)
+}
+
+/// The preset of `rig` (`[rig] preset`, else the default) with its backlash setting and
+/// the `[rig.set]` keys `names` picks set, checked.
+fn thesis_params(
+    src: &ScenarioSource,
+    rig: &RigFile,
+    names: impl Fn(&str) -> bool,
+) -> anyhow::Result<(String, RigParams)> {
     let (name, span) = match &rig.preset {
         Some(p) => (p.get_ref().clone(), p.span()),
         None => (DEFAULT_PRESET.to_string(), 0..0),
@@ -45,7 +71,7 @@ pub fn rig_params(src: &ScenarioSource, rig: &RigFile) -> anyhow::Result<(String
         rig::set_param_value(&mut params, "backlash_mm", value)
             .map_err(|e| src.error(backlash.span(), "rig.backlash_mm", e))?;
     }
-    for (key, value) in &rig.set {
+    for (key, value) in rig.set.iter().filter(|(key, _)| names(key)) {
         let field = format!("rig.set.{key}");
         let checked =
             param_value(value.get_ref()).map_err(|e| src.error(value.span(), &field, e))?;

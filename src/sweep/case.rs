@@ -1,35 +1,23 @@
-//! One case of a sweep: the plant at fixed set points, settled, then measured through the
-//! chain (one thread, stage after stage) into the analyser.
-
-use std::path::Path;
+//! What one case of a sweep shows (`CaseResult`), and what measuring a case takes
+//! (`case_run.rs` runs it): its timing, its instruments, its result from the judge's
+//! summary and the analyser's display.
 
 use instruments::Line;
-use rig::{
-    Approach, DRIVEN_GEAR, Judgement, Plant, PlantConfig, Regime, RegimeCriteria, SignalBlock,
-    SteadySummary, SteadyWindow,
-};
+use rig::{Judgement, Regime, SteadySummary};
 use serde::{Deserialize, Serialize};
 
-use super::case_recording::CaseRecording;
 use super::case_rig::FaultLabel;
 use super::grid::{Case, SweepPlan};
 use super::lines::{OrderLine, order_line, peaks};
-use super::measured_condition::MeasuredCondition;
 use super::sequence::Direction;
-use crate::chain::{
-    AdcChoice, AnalyserWords, ChainStages, GearCondition, InlineChain, MICROSTRAIN_PER_STRAIN,
-    Measurement, Truth,
-};
-use crate::runtime::rolling_regime::REGIME_WINDOW_S;
+use crate::chain::{AdcChoice, AnalyserWords, ChainStages, InlineChain, Measurement, Truth};
 use crate::vocabulary::GearIndicators;
-use crate::vocabulary::frame::{Frame, SignalNames};
+use crate::vocabulary::frame::SignalNames;
 use crate::vocabulary::gear_indicators::null_as_nan;
 use crate::vocabulary::seeds::NoiseSource;
 
 /// Chain time run before the analyser starts, so the filters have settled (s).
 const CHAIN_LEAD_S: f64 = 1.0;
-/// Samples per block.
-const BLOCK: usize = 4096;
 /// Once-per-revolution torque samples a case keeps (the last of its window), for the
 /// bifurcation diagram.
 pub(crate) const KEPT_REVOLUTIONS: usize = 64;
@@ -122,14 +110,6 @@ impl CaseResult {
     }
 }
 
-/// The plant configuration of every case of `plan`.
-pub fn plant_config(plan: &SweepPlan) -> PlantConfig {
-    PlantConfig {
-        output_rate_hz: plan.rate_hz,
-        ..PlantConfig::default()
-    }
-}
-
 /// Chain time run before the measured window (s): the filters settle over it.
 pub fn chain_lead_s(plan: &SweepPlan) -> f64 {
     CHAIN_LEAD_S.min(plan.settle_s)
@@ -149,120 +129,6 @@ const MAX_RUN_UP_S: f64 = 600.0;
 /// spare: no wait), at most [`MAX_RUN_UP_S`]. The same for a preset's plant and any rig's.
 pub(super) fn run_up_wait_s(run_up_s: Option<f64>) -> f64 {
     run_up_s.map_or(0.0, |s| s.min(MAX_RUN_UP_S))
-}
-
-/// The plant of `case`, brought to its point by its approach and settled, standing
-/// [`chain_lead_s`] before the case's window. From rest it settles for `settle_s` once
-/// the drive has run it up (the run-up at the torque limit, at most [`MAX_RUN_UP_S`]).
-pub fn settled_plant(plan: &SweepPlan, case: &Case) -> anyhow::Result<Plant> {
-    let params = case.rig.preset("a case's plant")?;
-    let mut plant =
-        case.approach
-            .plant(params.clone(), case.rpm, case.load_nm, plant_config(plan))?;
-    let lead_in_s = match case.approach {
-        Approach::Rest => run_up_wait_s(params.run_up_from_rest_s(case.rpm, case.load_nm)),
-        other => other.lead_in_s(),
-    };
-    let settle_s = lead_in_s + plan.settle_s - chain_lead_s(plan);
-    plant.skip((settle_s * plan.rate_hz).round() as usize)?;
-    Ok(plant)
-}
-
-/// Measures `case` on `plant`, which stands [`chain_lead_s`] before the case's window:
-/// the chain runs over the lead, then the window is measured through it (and recorded
-/// into `sweep_dir` where the sweep records).
-pub fn measure_case(
-    plan: &SweepPlan,
-    case: &Case,
-    plant: &mut Plant,
-    sweep_dir: Option<&Path>,
-) -> anyhow::Result<CaseResult> {
-    let lead = chain_lead_s(plan);
-    plant.drain_impacts();
-    plant.drain_revolutions();
-    let mut names = SignalNames::plant();
-    let CaseInstruments {
-        mut chain,
-        input,
-        mut measurement,
-    } = case_instruments(plan, case, plan.chain.stages.clone(), &mut names)?;
-    let mut recording = CaseRecording::start(plan, case, sweep_dir, &names)?;
-    let teeth = case.rig.counted_teeth();
-    let mut window = SteadyWindow::new(teeth, plant.output_step_s());
-    // The regime from the last stretch only, as `testrig simulate` and `testrig run` take it.
-    let mut late = SteadyWindow::new(teeth, plant.output_step_s());
-    let lead_samples = (lead * plan.rate_hz).round() as usize;
-    let total = measured_samples(plan);
-    let late_from =
-        total - (REGIME_WINDOW_S.min(plan.measure_s / 2.0) * plan.rate_hz).round() as usize;
-    let mut block = SignalBlock::default();
-    let mut condition = GearCondition::new(plan.rate_hz);
-    let mut measured =
-        MeasuredCondition::new(plan, plan.chain.strain_per_nm * MICROSTRAIN_PER_STRAIN);
-    let mut done = 0;
-    while done < total {
-        let until = if done < lead_samples {
-            lead_samples
-        } else if done < late_from {
-            late_from
-        } else {
-            total
-        };
-        let n = BLOCK.min(until - done);
-        block.clear();
-        plant.run(n, &mut block)?;
-        let frame = chain.process(Frame::of_block(0, done as u64, &block, Vec::new()));
-        if done >= late_from {
-            let (impacts, revolutions) = (plant.drain_impacts(), plant.drain_revolutions());
-            late.add_block(&block, plant.set_points().speed_rad_s());
-            late.add_revolutions(&revolutions);
-            late.add_impacts(&impacts);
-            window.add_impacts(&impacts);
-            window.add_revolutions(&revolutions);
-        } else if done >= lead_samples {
-            window.add_impacts(&plant.drain_impacts());
-            window.add_revolutions(&plant.drain_revolutions());
-        }
-        if done >= lead_samples {
-            window.add_block(&block, plant.set_points().speed_rad_s());
-            condition.add(&block);
-            if let Some(m) = &mut measured {
-                m.add(
-                    &block.time_s,
-                    &block.angle_rad[DRIVEN_GEAR],
-                    &frame.channels[input],
-                );
-            }
-            measurement.push(&frame.channels[input]);
-            if let Some(r) = &mut recording {
-                r.write(&frame)?;
-            }
-        } else {
-            plant.drain_impacts();
-            plant.drain_revolutions();
-        }
-        done += n;
-    }
-    let criteria = RegimeCriteria::default();
-    let mut summary = window.summary(&criteria);
-    summary.regime = late.regime(&criteria);
-    let mut result = case_result(
-        plan,
-        case,
-        &summary,
-        &measurement.setup.analyser.display(),
-        measurement.average_count(),
-    );
-    result.revolution_torque_nm = window.last_revolution_torques_nm(KEPT_REVOLUTIONS);
-    result.condition = condition
-        .report(teeth as usize)
-        .as_ref()
-        .map(GearIndicators::from);
-    result.measured_condition = measured.and_then(|m| m.report(teeth));
-    if let Some(r) = recording {
-        result.recordings = r.finish()?;
-    }
-    Ok(result)
 }
 
 /// A case's measuring chain, the analyser's input channel and its measurement.

@@ -1,18 +1,29 @@
-//! The rig a case runs on: the thesis's plant of a preset (`rig::RigParams`), or a rig
-//! file's rig (`rig::RigTopology`), each with its grid values set.
+//! The rig a case runs on: a preset's parameters (`rig::RigParams`, set by the thesis's
+//! names) or a rig file's rig (`rig::RigTopology`, set by path), each with its grid
+//! values set; either runs as a rig on the plant of any rig (`rig::NetworkPlant`), a
+//! preset's as `rig::preset_rig` converts it.
 
-use rig::{RigChains, RigParams, RigTopology};
+use std::borrow::Cow;
+
+use rig::{RigParams, RigTopology};
 
 use crate::scenario::rig_overrides::set_rig_value;
 use crate::scenario::values::param_value;
-use crate::vocabulary::limits::{check_load_within, max_load_nm, rig_max_load_nm};
+use crate::vocabulary::limits::{check_load_within, rig_max_load_nm};
 
 /// A case's rig.
 #[derive(Clone, Debug)]
 pub enum CaseRig {
-    /// A preset's parameters, run on the thesis's five-inertia plant (`rig::Plant`).
-    Preset(Box<RigParams>),
-    /// A rig file's rig, run on the plant of any rig (`rig::NetworkPlant`).
+    /// A preset's parameters, its grid values set by the thesis's names.
+    Preset {
+        /// The rig's name (its built-in file's, or a preset file's stem).
+        name: String,
+        /// What the rig is, as its file says.
+        description: String,
+        /// The parameters.
+        params: Box<RigParams>,
+    },
+    /// A rig file's rig.
     File(Box<RigTopology>),
 }
 
@@ -35,11 +46,24 @@ impl CaseRig {
     /// The preset's parameters; a rig file's rig is refused, `what` saying what needs them.
     pub fn preset(&self, what: &str) -> anyhow::Result<&RigParams> {
         match self {
-            Self::Preset(params) => Ok(params),
+            Self::Preset { params, .. } => Ok(params),
             Self::File(rig) => anyhow::bail!(
-                "{what} runs on a preset's plant; rig `{}` is a rig file's",
+                "{what} runs on a preset's parameters; rig `{}` is a rig file's",
                 rig.name
             ),
+        }
+    }
+
+    /// The rig the case runs: a rig file's as it is, a preset's converted from its
+    /// parameters (`rig::preset_rig`).
+    pub fn topology(&self) -> Cow<'_, RigTopology> {
+        match self {
+            Self::Preset {
+                name,
+                description,
+                params,
+            } => Cow::Owned(rig::preset_rig(name, description, params)),
+            Self::File(rig) => Cow::Borrowed(rig),
         }
     }
 
@@ -47,10 +71,11 @@ impl CaseRig {
     /// the whole rig.
     pub fn set(&mut self, name: &str, value: &toml::Value) -> anyhow::Result<()> {
         match self {
-            Self::Preset(params) => {
+            Self::Preset { params, .. } => {
                 let value = param_value(value).map_err(anyhow::Error::msg)?;
                 rig::set_param_value(params, name, value)?;
-                Ok(params.validate()?)
+                params.validate()?;
+                Ok(self.topology().check()?)
             }
             Self::File(rig) => {
                 set_rig_value(rig, name, value)?;
@@ -63,7 +88,7 @@ impl CaseRig {
     /// a fault's kind); `None` where the rig has no such value.
     pub fn value_text(&self, name: &str) -> Option<String> {
         match self {
-            Self::Preset(params) => rig::param_spec(name).ok().map(|s| s.value(params)),
+            Self::Preset { params, .. } => rig::param_spec(name).ok().map(|s| s.value(params)),
             Self::File(rig) => rig
                 .fields()
                 .into_iter()
@@ -76,46 +101,21 @@ impl CaseRig {
     /// Whether the rig can hold `load_nm` (the one load check of every rig); the refusal
     /// says why.
     pub fn check_load(&self, load_nm: f64) -> Result<(), String> {
-        let checked = match self {
-            Self::Preset(params) => {
-                check_load_within(load_nm, max_load_nm(params), "the 1983 rig", true)
-            }
-            Self::File(rig) => {
-                let name = format!("rig `{}`", rig.name);
-                check_load_within(load_nm, rig_max_load_nm(rig), &name, rig.brake.is_some())
-            }
-        };
-        checked.map_err(|e| e.to_string())
+        let rig = self.topology();
+        let name = format!("rig `{}`", rig.name);
+        check_load_within(load_nm, rig_max_load_nm(&rig), &name, rig.brake.is_some())
+            .map_err(|e| e.to_string())
     }
 
     /// The whole rig's undamped natural frequencies (Hz), rigid-body mode left out.
     pub fn natural_hz(&self) -> Vec<f64> {
-        match self {
-            Self::Preset(params) => RigChains::of(params)
-                .whole_rig
-                .modes()
-                .iter()
-                .map(|m| m.frequency_hz)
-                .collect(),
-            Self::File(rig) => rig.natural_frequencies_hz(),
-        }
+        self.topology().natural_frequencies_hz()
     }
 
-    /// Teeth of the gear whose teeth a case counts impacts on: the driving gear (a rig
-    /// file's: its first mesh's driver; none without a mesh).
-    pub fn counted_teeth(&self) -> u32 {
-        match self {
-            Self::Preset(params) => params.teeth,
-            Self::File(rig) => rig.meshes.first().map_or(0, |m| m.teeth[0]),
-        }
-    }
-
-    /// The rig's tooth faults (none for a preset: the thesis's plant has none).
+    /// The rig's tooth faults.
     pub fn fault_labels(&self) -> Vec<FaultLabel> {
-        let Self::File(rig) = self else {
-            return Vec::new();
-        };
-        rig.meshes
+        self.topology()
+            .meshes
             .iter()
             .flat_map(|m| {
                 m.faults.iter().map(|f| FaultLabel {

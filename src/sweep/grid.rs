@@ -3,6 +3,7 @@
 use rig::Approach;
 
 use crate::scenario::build::stream_rate_hz;
+use crate::scenario::preset_rig::preset_title;
 use crate::scenario::read_chain::record_plan;
 use crate::scenario::read_chain::{ChainSetting, analyser_plan, chain_plan};
 use crate::scenario::read_rig::rig_params;
@@ -16,7 +17,6 @@ use super::case_rig::CaseRig;
 use super::knock::knock_rad_s;
 use super::sequence::{Direction, Sequence};
 use super::sweep_toml::{CaseFile, GridFile, SweepFile};
-use crate::rig_roles::RIG_SIGNALS;
 use crate::scenario::rig_chain::rig_chain;
 use crate::vocabulary::frame::SignalNames;
 use crate::vocabulary::limits::MAX_SWEEP_CASES;
@@ -94,15 +94,19 @@ pub fn build_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<Swe
         }
         None => {
             let (name, params) = rig_params(src, &file.rig)?;
-            (name, CaseRig::Preset(Box::new(params)))
+            let (title, description) =
+                preset_title(&name).map_err(|e| src.error(0..0, "rig.preset", format!("{e:#}")))?;
+            let rig = CaseRig::Preset {
+                name: title,
+                description,
+                params: Box::new(params),
+            };
+            (name, rig)
         }
     };
     let analyser = analyser_plan(src, &file.analyser, rate_hz, file.seed)?;
     let band_hz = Some(analyser.settings.fmax_hz);
-    let plant = match &base {
-        CaseRig::Preset(_) => SignalNames::plant(),
-        CaseRig::File(_) => SignalNames::of(&RIG_SIGNALS),
-    };
+    let plant = SignalNames::plant();
     let setting = ChainSetting {
         plant: &plant,
         rate_hz,
@@ -110,10 +114,8 @@ pub fn build_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<Swe
         band_hz,
     };
     let chain = chain_plan(src, &file.chain, setting)?;
-    if let CaseRig::File(rig) = &base {
-        // Checked here: a motor and gauges; each case puts the strain stage on its gauge.
-        rig_chain(src, rig, &chain)?;
-    }
+    // Checked here: a motor and gauges; each case puts the strain stage on its gauge.
+    rig_chain(src, &base.topology(), &chain)?;
     let names = chain.stages.signal_names_on(&plant);
     let input = file.analyser.input.as_ref();
     read_signal_among(src, &names, input, "analyser.input", &analyser.input)?;

@@ -7,10 +7,9 @@ use std::path::Path;
 
 use anyhow::Context;
 
-use super::case::{CaseResult, chain_lead_s, measure_case, settled_plant};
-use super::case_rig::CaseRig;
+use super::case::{CaseResult, chain_lead_s};
+use super::case_run::{case_plant, measure_case};
 use super::grid::{Case, SweepPlan};
-use super::rig_case::{measure_rig_case, rig_case_plant};
 use super::series::on_one_plant;
 use crate::steady_point::skip_rig_samples;
 
@@ -22,26 +21,17 @@ pub fn run_knocked(
     sweep_dir: Option<&Path>,
 ) -> Vec<(usize, anyhow::Result<CaseResult>)> {
     let settle = ((plan.settle_s - chain_lead_s(plan)) * plan.rate_hz).round() as usize;
-    if let CaseRig::File(rig) = &series[0].rig {
-        // The knock in the driven gear's own sense of rotation, as the thesis's plant's.
-        let driven = rig.meshes.first().map(|m| m.gears[1]);
-        let plant = rig_case_plant(plan, series[0], rig);
-        return on_one_plant(series, plant, |i, case, plant| {
-            if i > 0 {
-                let body =
-                    driven.context("a knock strikes the driven gear: the rig has no mesh")?;
-                let sense = plant.speed_ratios()[body].signum();
-                plant.kick(body, sense * case.kick_rad_s);
-                skip_rig_samples(plant, settle)?;
-            }
-            measure_rig_case(plan, case, rig, plant, sweep_dir)
-        });
-    }
-    on_one_plant(series, settled_plant(plan, series[0]), |i, case, plant| {
+    let rig = series[0].rig.topology();
+    // The knock in the driven gear's own sense of rotation, as the thesis's plant's.
+    let driven = rig.meshes.first().map(|m| m.gears[1]);
+    let plant = case_plant(plan, series[0], &rig);
+    on_one_plant(series, plant, |i, case, plant| {
         if i > 0 {
-            plant.kick_driven_gear(case.kick_rad_s);
-            plant.skip(settle)?;
+            let body = driven.context("a knock strikes the driven gear: the rig has no mesh")?;
+            let sense = plant.speed_ratios()[body].signum();
+            plant.kick(body, sense * case.kick_rad_s);
+            skip_rig_samples(plant, settle)?;
         }
-        measure_case(plan, case, plant, sweep_dir)
+        measure_case(plan, case, &rig, plant, sweep_dir)
     })
 }

@@ -81,7 +81,7 @@ pub fn sweep_meta(source: &ScenarioSource, plan: &SweepPlan) -> SweepMeta {
 /// parameters (a preset file's values included) and the program's version.
 pub fn fingerprint(source_text: &str, plan: &SweepPlan) -> String {
     let base = plan.cases.first().map(|c| match &c.rig {
-        CaseRig::Preset(params) => format!("{params:?}"),
+        CaseRig::Preset { params, .. } => format!("{params:?}"),
         CaseRig::File(rig) => format!("{rig:?}"),
     });
     let mut hasher = Sha256::new();

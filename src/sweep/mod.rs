@@ -3,13 +3,12 @@
 //!
 //! Files: `sweep_toml.rs` (grid, case timing, chain, analyser and recordings as in a
 //! scenario), `grid.rs` (the grid expanded into cases; each case's start is a
-//! `rig::Approach`), `case_rig.rs` (a case's rig: a preset's, or a rig file's with its
-//! faults),
+//! `rig::Approach`), `case_rig.rs` (a case's rig: a preset's parameters, or a rig file's with its
+//! faults; either run as a rig),
 //! `sequence.rs` (`Sequence`: each point on its own, or up and down;
-//! `Direction`), `run_case.rs` (a case on a plant of its own, by its
-//! rig), `case.rs` (one case: plant settled, the chain inline into ADC and
-//! analyser, regime and the judge's motion), `rig_case.rs` (a rig file's case: the plant of
-//! any rig through the same chain), `measured_condition.rs` (the indicators of the
+//! `Direction`), `case.rs` (a case's result, timing and instruments), `case_run.rs` (one
+//! case: its rig's plant settled, the chain inline into ADC and analyser, regime and the
+//! judge's motion), `measured_condition.rs` (the indicators of the
 //! signal as the chain measures it), `case_recording.rs` (a case's WAV/CSV/UFF58 in
 //! `recordings/`), `series.rs` (the lab's run: one plant per load
 //! stepping the speeds up and back down; a series is one unit of work), `knock.rs` (the
@@ -28,6 +27,7 @@
 pub(crate) mod case;
 pub(crate) mod case_recording;
 pub(crate) mod case_rig;
+pub(crate) mod case_run;
 pub(crate) mod case_table;
 pub(crate) mod facts;
 pub(crate) mod grid;
@@ -40,8 +40,6 @@ pub(crate) mod measured_condition;
 pub(crate) mod meta;
 pub(crate) mod motion_lines;
 pub(crate) mod report;
-pub(crate) mod rig_case;
-pub(crate) mod run_case;
 pub(crate) mod runner;
 pub(crate) mod sequence;
 pub(crate) mod series;
@@ -52,9 +50,9 @@ pub(crate) mod thesis;
 
 pub use case::CaseResult;
 pub use case_rig::{CaseRig, FaultLabel};
+pub use case_run::run_case;
 pub use grid::{Case, SweepPlan, build_sweep};
 pub use meta::{SweepMeta, fingerprint, read_meta, sweep_meta};
-pub use run_case::run_case;
 pub use runner::{Assembled, SweepOptions, SweepOutcome, assemble, missing_cases, run_sweep};
 pub use sequence::{Direction, Sequence};
 pub use shard::Shard;

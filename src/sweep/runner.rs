@@ -12,13 +12,13 @@ use rayon::prelude::*;
 
 use super::case::CaseResult;
 use super::case_recording::RECORDINGS_DIR;
+use super::case_run::run_case;
 use super::grid::{Case, SweepPlan};
 use super::held_motions::held_motions;
 use super::knocked::run_knocked;
 use super::labels::write_labels;
 use super::meta::{SweepMeta, read_meta, write_meta};
 use super::report::write_report;
-use super::run_case::run_case;
 use super::sequence::Direction;
 use super::series::run_series;
 use super::shard::Shard;

@@ -6,12 +6,11 @@
 use std::path::Path;
 
 use anyhow::Context;
-use rig::{NetworkPlant, NetworkStart, Plant, RigTopology, Schedule, Track};
+use rig::{NetworkPlant, NetworkStart, RigTopology, Schedule, Track};
 
-use super::case::{CaseResult, chain_lead_s, measure_case, measured_samples, plant_config};
-use super::case_rig::CaseRig;
+use super::case::{CaseResult, chain_lead_s, measured_samples};
+use super::case_run::measure_case;
 use super::grid::{Case, SweepPlan};
-use super::rig_case::measure_rig_case;
 use crate::steady_point::skip_rig_samples;
 
 /// Time over which the speed knob is turned from one point to the next (s): the
@@ -54,28 +53,17 @@ pub fn run_series(
         position = lead_from(i).max(position) + measured_samples(plan);
         skip
     };
-    if let CaseRig::File(rig) = &series[0].rig {
-        let plant = series_rig_plant(plan, series, rig, schedule);
-        return on_one_plant(series, plant, |i, case, plant| {
-            skip_rig_samples(plant, advance(i))?;
-            measure_rig_case(plan, case, rig, plant, sweep_dir)
-        });
-    }
-    let plant = series[0]
-        .rig
-        .preset("the lab's run up and down")
-        .and_then(|params| {
-            Plant::new(params.clone(), schedule, plant_config(plan)).map_err(anyhow::Error::from)
-        });
+    let rig = series[0].rig.topology();
+    let plant = series_plant(plan, series, &rig, schedule);
     on_one_plant(series, plant, |i, case, plant| {
-        plant.skip(advance(i))?;
-        measure_case(plan, case, plant, sweep_dir)
+        skip_rig_samples(plant, advance(i))?;
+        measure_case(plan, case, &rig, plant, sweep_dir)
     })
 }
 
-/// The plant of a rig file's series, steady at its first point under `schedule`, its
-/// load checked as every rig's.
-fn series_rig_plant(
+/// The plant of a series, steady at its first point under `schedule`, its load checked
+/// as every rig's.
+fn series_plant(
     plan: &SweepPlan,
     series: &[&Case],
     rig: &RigTopology,

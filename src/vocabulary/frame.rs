@@ -3,7 +3,7 @@
 
 use std::sync::Arc;
 
-use rig::{Impact, NetworkImpact, SetPoints, SignalBlock};
+use rig::{NetworkImpact, SetPoints};
 
 use crate::vocabulary::Pending;
 use crate::vocabulary::point_verdict::PointVerdict;
@@ -18,8 +18,8 @@ pub struct Frame {
     pub start_sample: u64,
     /// The samples, one channel per signal.
     pub channels: Vec<Arc<[f64]>>,
-    /// Contacts that started within the block.
-    pub impacts: FrameImpacts,
+    /// Contacts that started within the block, each mesh's.
+    pub impacts: Arc<[NetworkImpact]>,
     /// Commands that take effect at the block's start, for the stages and sinks they
     /// address (each carries them out before the block's samples).
     pub commands: Arc<[Pending]>,
@@ -38,40 +38,7 @@ impl Frame {
             seq: 0,
             start_sample: 0,
             channels: channels.into_iter().map(Arc::from).collect(),
-            impacts: FrameImpacts::default(),
-            commands: Arc::new([]),
-            set_points: None,
-            points: Arc::new([]),
-        }
-    }
-
-    /// A frame of the plant's true signals, channels in the order of
-    /// [`rig::COLUMN_NAMES`].
-    pub fn of_block(
-        seq: u64,
-        start_sample: u64,
-        block: &SignalBlock,
-        impacts: Vec<Impact>,
-    ) -> Self {
-        let mut channels: Vec<Arc<[f64]>> = Vec::with_capacity(rig::COLUMN_NAMES.len());
-        channels.push(block.time_s.as_slice().into());
-        for v in block
-            .angle_rad
-            .iter()
-            .chain(&block.speed_rad_s)
-            .chain(&block.shaft_torque_nm)
-        {
-            channels.push(v.as_slice().into());
-        }
-        channels.push(block.mesh_torque_nm.as_slice().into());
-        channels.push(block.motor_torque_nm.as_slice().into());
-        channels.push(block.contact.iter().map(|&c| f64::from(c)).collect());
-        channels.push(block.tooth.iter().map(|&t| f64::from(t)).collect());
-        Self {
-            seq,
-            start_sample,
-            channels,
-            impacts: FrameImpacts::Gears(impacts.into()),
+            impacts: Arc::new([]),
             commands: Arc::new([]),
             set_points: None,
             points: Arc::new([]),
@@ -118,36 +85,6 @@ impl Frame {
     }
 }
 
-/// The contacts that started within a frame's block, as its plant logs them.
-#[derive(Clone, Debug)]
-pub enum FrameImpacts {
-    /// The thesis's plant: its one gear pair's impacts.
-    Gears(Arc<[Impact]>),
-    /// A rig file's plant: each mesh's impacts.
-    Meshes(Arc<[NetworkImpact]>),
-}
-
-impl Default for FrameImpacts {
-    fn default() -> Self {
-        Self::Gears(Arc::new([]))
-    }
-}
-
-impl FrameImpacts {
-    /// How many contacts started.
-    pub fn len(&self) -> usize {
-        match self {
-            Self::Gears(i) => i.len(),
-            Self::Meshes(i) => i.len(),
-        }
-    }
-
-    /// Whether none did.
-    pub fn is_empty(&self) -> bool {
-        self.len() == 0
-    }
-}
-
 /// Names of a run's channels in frame order; every stage appends the one it produces.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct SignalNames(Vec<String>);
@@ -158,9 +95,10 @@ impl SignalNames {
         Self(names.iter().map(|n| n.to_string()).collect())
     }
 
-    /// The plant's channels, in the order of [`rig::COLUMN_NAMES`].
+    /// The signals the plant hands the chain
+    /// ([`crate::vocabulary::signal_names::PLANT_SIGNALS`]).
     pub fn plant() -> Self {
-        Self(rig::COLUMN_NAMES.iter().map(|n| n.to_string()).collect())
+        Self::of(&super::signal_names::PLANT_SIGNALS)
     }
 
     /// Appends `name`, returning its channel index.

@@ -8,7 +8,7 @@
 //! TOML) and replies; `control.rs` how they travel (`ControlHandle` for senders with the
 //! session's log, `CommandInbox` in the plant's thread, `Pending` on a frame with its reply
 //! channel); `frame.rs` the block of samples passed between threads and `SignalNames`;
-//! `signal_names.rs` every signal's name, the plant's units from `rig::COLUMN_UNITS`;
+//! `signal_names.rs` every signal's name and the plant signals' units;
 //! `display.rs` the panel's spectrum and trace and the chain's settings in effect (what the
 //! page echoes); `choices.rs` a scenario's named choices (window, filter, sampling, WAV
 //! format…) mapped onto the instruments' types; `limits.rs` every input bound (speed, load

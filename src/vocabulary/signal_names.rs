@@ -1,6 +1,6 @@
-//! The signals' names and units, in one place: the plant's columns (names and units from
-//! `rig`'s table) and the names of the signals the standard chain reads and produces, so
-//! that no file spells them by hand. The chain's own units come from its stages
+//! The signals' names and units, in one place: the signals the plant hands the chain
+//! (`crate::rig_roles` fills them from any rig) and the names of the signals the standard
+//! chain reads and produces, so that no file spells them by hand. The chain's own units come from its stages
 //! (`chain::Instrument`).
 
 /// Torque in the intermediate (output) shaft, under the gauges (N m); a plant signal.
@@ -9,9 +9,20 @@ pub const SHAFT_TORQUE_NM: &str = "torque_intermediate_shaft_nm";
 pub const MOTOR_SPEED_RAD_S: &str = "speed1_rad_s";
 /// Speed of the gauged shaft's slip rings (rad/s); a plant signal.
 pub const SLIP_RING_SPEED_RAD_S: &str = "speed3_rad_s";
-/// A rig file's case: the watched gear's once-per-revolution pulse (V), a plant signal
-/// there (`sweep::rig_case`).
+/// The watched gear's once-per-revolution pulse (V); a plant signal.
 pub const KEYPHASOR_V: &str = "keyphasor_v";
+/// Time (s); a plant signal.
+pub const TIME_S: &str = "time_s";
+
+/// The signals the plant hands the chain, in frame order.
+pub const PLANT_SIGNALS: [&str; 5] = [
+    TIME_S,
+    SHAFT_TORQUE_NM,
+    MOTOR_SPEED_RAD_S,
+    SLIP_RING_SPEED_RAD_S,
+    KEYPHASOR_V,
+];
+
 /// Surface strain at +45° on the gauged shaft (µε).
 pub const STRAIN: &str = "strain";
 /// Unit of the chain's strain signal ([`STRAIN`]).
@@ -33,14 +44,15 @@ pub const TACHO_V: &str = "tacho_v";
 /// Digital voltmeter reading of the tacho (V).
 pub const DVM_V: &str = "dvm_v";
 
-/// Unit of plant signal `name`, from `rig`'s table of columns; `None` if the plant has no
-/// such signal.
+/// Unit of plant signal `name`; `None` if the plant has no such signal.
 pub fn plant_unit(name: &str) -> Option<&'static str> {
-    if name == KEYPHASOR_V {
-        return Some("V");
+    match name {
+        TIME_S => Some("s"),
+        SHAFT_TORQUE_NM => Some("N m"),
+        MOTOR_SPEED_RAD_S | SLIP_RING_SPEED_RAD_S => Some("rad/s"),
+        KEYPHASOR_V => Some("V"),
+        _ => None,
     }
-    let column = rig::COLUMN_NAMES.iter().position(|&c| c == name)?;
-    Some(rig::COLUMN_UNITS[column])
 }
 
 /// Full scale of a plant signal of unit `unit`, for integer recordings (in that unit).

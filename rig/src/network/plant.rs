@@ -6,7 +6,7 @@ use std::f64::consts::PI;
 use crate::error::RigError;
 use crate::mode::PairZone;
 use crate::output_rate::takes_output_rate;
-use crate::schedule::Schedule;
+use crate::schedule::{LiveCeiling, Schedule};
 use crate::taylor::{MAX_RHO_H, TAYLOR_ORDER};
 use crate::topology::RigTopology;
 
@@ -53,8 +53,9 @@ const SPEED_LIMIT_RAD_S: f64 = 1.0e5;
 pub struct NetworkPlant {
     pub(super) model: NetworkModel,
     pub(super) schedule: Schedule,
-    /// Highest set speed the internal step is sized for (rev/min).
-    pub(super) speed_ceiling_rpm: f64,
+    /// Highest set speed the internal step is sized for (rev/min), and the highest
+    /// oscillating-load frequency set points may bring (Hz).
+    pub(super) ceiling: LiveCeiling,
     pub(super) output_step_s: f64,
     pub(super) substeps: u32,
     pub(super) step_s: f64,
@@ -102,19 +103,23 @@ impl NetworkPlant {
         output_rate_hz: f64,
         start: NetworkStart,
     ) -> Result<Self, RigError> {
-        let top_rpm = schedule.speed_rpm.range().1.abs();
-        Self::live(rig, schedule, output_rate_hz, start, top_rpm)
+        let ceiling = LiveCeiling {
+            speed_rpm: schedule.speed_rpm.range().1.abs(),
+            oscillating_load_hz: f64::INFINITY,
+        };
+        Self::live(rig, schedule, output_rate_hz, start, ceiling)
     }
 
     /// [`Self::new`] for set points changed while it runs ([`Self::hold_set_points`]):
-    /// its internal step is sized for set speeds up to `speed_ceiling_rpm`, and a higher
-    /// one is refused.
+    /// its internal step is sized for set speeds up to `ceiling.speed_rpm`, and a higher
+    /// one is refused, as is an oscillating load above `ceiling.oscillating_load_hz` (the
+    /// load's harmonic pair is exact at any frequency: that ceiling is the user's).
     pub fn live(
         rig: &RigTopology,
         schedule: Schedule,
         output_rate_hz: f64,
         start: NetworkStart,
-        speed_ceiling_rpm: f64,
+        ceiling: LiveCeiling,
     ) -> Result<Self, RigError> {
         rig.check()?;
         schedule.validate()?;
@@ -127,7 +132,7 @@ impl NetworkPlant {
         }
         let model = assembled(rig)?;
         let output_step_s = 1.0 / output_rate_hz;
-        let top_rpm = speed_ceiling_rpm.max(schedule.speed_rpm.range().1.abs());
+        let top_rpm = ceiling.speed_rpm.max(schedule.speed_rpm.range().1.abs());
         let top_rad_s = top_rpm * PI / 30.0;
         let rho = fastest_rate(&model).max(model.fastest_harmonic_rad_s(top_rad_s));
         let steps = (rho * output_step_s / MAX_RHO_H).ceil().max(1.0);
@@ -148,7 +153,10 @@ impl NetworkPlant {
         let mut plant = Self {
             model,
             schedule,
-            speed_ceiling_rpm: top_rpm,
+            ceiling: LiveCeiling {
+                speed_rpm: top_rpm,
+                ..ceiling
+            },
             output_step_s,
             substeps,
             step_s,

@@ -51,10 +51,17 @@ impl NetworkPlant {
                 "set points must be finite, got {values:?}"
             )));
         }
-        if set.speed_rpm > self.speed_ceiling_rpm {
+        let ceiling = self.ceiling;
+        if set.speed_rpm > ceiling.speed_rpm {
             return Err(RigError::Schedule(format!(
-                "set speed {} rev/min is above the {} rev/min this plant's step was sized for",
-                set.speed_rpm, self.speed_ceiling_rpm
+                "set speed {} rev/min: this plant was built for at most {} rev/min (its step is sized for that speed)",
+                set.speed_rpm, ceiling.speed_rpm
+            )));
+        }
+        if set.oscillating_load_hz > ceiling.oscillating_load_hz {
+            return Err(RigError::Schedule(format!(
+                "oscillating load at {} Hz: this plant was built for at most {} Hz",
+                set.oscillating_load_hz, ceiling.oscillating_load_hz
             )));
         }
         let now = self.time_s();

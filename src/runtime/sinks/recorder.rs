@@ -12,7 +12,7 @@ use crate::recording::{
     WavSamples, Written,
 };
 use crate::runtime::status::SharedStatus;
-use crate::scenario::{Plan, PlanRig, RecordPlan};
+use crate::scenario::{Plan, RecordPlan};
 use crate::vocabulary::Refusal;
 use crate::vocabulary::RigCommand;
 use crate::vocabulary::choices::WavFormat;
@@ -52,10 +52,7 @@ impl RecorderSink {
     /// Opens the files in `dir` for `plan`'s recording, over channels named by `names`.
     pub fn create(dir: &Path, plan: &Plan, names: &SignalNames) -> anyhow::Result<Self> {
         let path = dir.join("impacts.csv");
-        let impacts = match &plan.rig {
-            PlanRig::Preset { .. } => ImpactLog::of_gears(&path)?,
-            PlanRig::File(rig) => ImpactLog::of_meshes(&path, rig)?,
-        };
+        let impacts = ImpactLog::of_meshes(&path, &plan.rig.topology)?;
         let mut sink = Self {
             indices: Vec::new(),
             decimate: 1,

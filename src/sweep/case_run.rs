@@ -1,9 +1,9 @@
-//! One case of a sweep on a rig file's rig: the plant of any rig (`rig::NetworkPlant`)
-//! settled at the case's point, then measured as a preset's case is — the chain stage
-//! after stage into the analyser (reading the rig as `crate::rig_roles` says), the physics
-//! judge on the gauged shaft's torque, the watched gear's condition indicators — and
-//! recorded where the sweep asks. Impacts are counted on the first mesh's driving gear,
-//! per revolution of the motor's body.
+//! One case of a sweep: its rig (a rig file's, or a preset's as its rig) on the plant of
+//! any rig (`rig::NetworkPlant`), settled at the case's point, then measured — the chain
+//! stage after stage into the analyser (reading the rig as `crate::rig_roles` says), the
+//! physics judge on the gauged shaft's torque, the watched gear's condition indicators —
+//! and recorded where the sweep asks. Impacts are counted on the first mesh's driving
+//! gear, per revolution of the motor's body.
 
 use std::path::Path;
 
@@ -16,7 +16,7 @@ use super::case::{
 use super::case_recording::CaseRecording;
 use super::grid::{Case, SweepPlan};
 use super::measured_condition::MeasuredCondition;
-use crate::rig_roles::{RIG_SIGNALS, RoleColumns, gauge_of, gauged_stages};
+use crate::rig_roles::{RoleColumns, gauge_of, gauged_stages};
 use crate::steady_point::{RigPointSpec, RigWindow, settled_rig_plant, skip_rig_samples};
 use crate::vocabulary::GearIndicators;
 use crate::vocabulary::InputNames;
@@ -34,22 +34,23 @@ const NAMES: InputNames = InputNames {
     rate: "rate_hz",
 };
 
-/// Runs `case` of `plan` on `rig`, recording into `sweep_dir` where the sweep records.
-pub fn run_rig_case(
+/// Runs `case` of `plan` on a plant of its own, recording into `sweep_dir` where the
+/// sweep records.
+pub fn run_case(
     plan: &SweepPlan,
     case: &Case,
-    rig: &RigTopology,
     sweep_dir: Option<&Path>,
 ) -> anyhow::Result<CaseResult> {
-    let mut plant = rig_case_plant(plan, case, rig)?;
-    measure_rig_case(plan, case, rig, &mut plant, sweep_dir)
+    let rig = case.rig.topology();
+    let mut plant = case_plant(plan, case, &rig)?;
+    measure_case(plan, case, &rig, &mut plant, sweep_dir)
 }
 
 /// A plant of its own for `case` on `rig`, brought to its point by its approach and
 /// settled, standing [`chain_lead_s`] before the case's window. From rest it settles for
-/// `settle_s` once the drive has run it up, as a preset's case does (the run-up at the
-/// torque limit, [`run_up_wait_s`]).
-pub fn rig_case_plant(
+/// `settle_s` once the drive has run it up (the run-up at the torque limit,
+/// [`run_up_wait_s`]).
+pub fn case_plant(
     plan: &SweepPlan,
     case: &Case,
     rig: &RigTopology,
@@ -74,7 +75,7 @@ pub fn rig_case_plant(
 /// Measures `case` of `plan` on `plant` (its rig `rig`), standing [`chain_lead_s`]
 /// before the case's window: the chain's lead run, then the window measured, judged and
 /// recorded into `sweep_dir` where the sweep records.
-pub fn measure_rig_case(
+pub fn measure_case(
     plan: &SweepPlan,
     case: &Case,
     rig: &RigTopology,
@@ -82,7 +83,7 @@ pub fn measure_rig_case(
     sweep_dir: Option<&Path>,
 ) -> anyhow::Result<CaseResult> {
     let lead_s = chain_lead_s(plan);
-    let mut names = SignalNames::of(&RIG_SIGNALS);
+    let mut names = SignalNames::plant();
     let stages = gauged_stages(&plan.chain.stages, rig)?;
     let CaseInstruments {
         mut chain,
