@@ -6,7 +6,8 @@
 //!   CPU share of one core.
 //!
 //! - campaign: `testrig sweep` on `scenarios/thesis-campaign.toml` (78 points from rest)
-//!   and `scenarios/thesis-campaign-lab.toml` (231 cases: up, down and from rest), each
+//!   and `scenarios/thesis-campaign-lab.toml` (387 cases: up, down, from rest and two
+//!   knocked repeats), each
 //!   case 60 s settling + 30 s measured with ten-average spectra, on every core: wall time,
 //!   median of 3.
 //!
@@ -134,7 +135,7 @@ fn paced_cpu(dir: &Path) {
 }
 
 fn campaign(dir: &Path) {
-    for (name, points) in [("thesis-campaign", 78), ("thesis-campaign-lab", 231)] {
+    for (name, points) in [("thesis-campaign", 78), ("thesis-campaign-lab", 387)] {
         let file = format!("{}/scenarios/{name}.toml", env!("CARGO_MANIFEST_DIR"));
         let mut walls: Vec<f64> = (0..3)
             .map(|k| {

@@ -19,7 +19,7 @@ use serde::Serialize;
 
 use crate::chain::{GearCondition, GearConditionReport};
 use crate::vocabulary::{InputNames, check_times};
-use crate::vocabulary::{check_load_nm, check_load_within, check_speed_rpm, rig_max_load_nm};
+use crate::vocabulary::{check_load_nm, check_load_within, check_speed_rpm};
 
 /// What to run.
 #[derive(Clone, Debug)]
@@ -253,14 +253,8 @@ pub fn settled_rig_plant(
     keep_going: &mut dyn FnMut() -> anyhow::Result<()>,
 ) -> anyhow::Result<NetworkPlant> {
     let rig = spec.rig;
-    let name = format!("rig `{}`", rig.name);
-    check_load_within(
-        spec.load_nm,
-        rig_max_load_nm(rig),
-        &name,
-        rig.brake.is_some(),
-    )
-    .map_err(|e| anyhow::anyhow!("{} {}: {e}", names.load, spec.load_nm))?;
+    check_load_within(spec.load_nm, rig)
+        .map_err(|e| anyhow::anyhow!("{} {}: {e}", names.load, spec.load_nm))?;
     let schedule = spec.approach.schedule(spec.rpm, spec.load_nm);
     let start = spec.approach.network_start();
     let mut plant = NetworkPlant::new(rig, schedule, spec.rate_hz, start)

@@ -26,7 +26,7 @@ fn the_1983_rig_file_has_the_presets_natural_frequencies() {
     let preset = json_of(&["modes", "--json"]);
     let (file_hz, preset_hz) = (
         numbers(&from_file["natural_hz"]),
-        numbers(&preset["locked_mesh_hz"]),
+        numbers(&preset["natural_hz"]),
     );
     assert_eq!(file_hz.len(), 4);
     for (a, b) in file_hz.iter().zip(&preset_hz) {
@@ -135,6 +135,57 @@ fn rigs_nobody_tuned_have_the_roots_of_their_own_characteristic_equation() {
             "{name}: {roots} roots up to {top} Hz, {hz:?}"
         );
     }
+}
+
+/// The meshes held rigid are the limit of stiff meshes, on rigs whose gears are not 1:1
+/// (the FZG's 16/24 pairs in a back-to-back loop, the two-stage rig): with every mesh a
+/// million times stiffer, the modes in contact below the meshes' own are the rigid
+/// modes to 1e-5; and the parts apart are the rig's shafts alone, each part's
+/// frequencies the roots of its own chain (here: as many parts as the shafts join).
+#[test]
+fn rigid_meshes_are_the_limit_of_stiff_ones_on_any_rig() {
+    for (name, meshes) in [
+        ("fzg-back-to-back", &["test", "slave"][..]),
+        ("two-stage", &["stage1", "stage2"][..]),
+    ] {
+        let path = rig_file(name);
+        let modes = json_of(&["modes", "--rig", &path, "--json"]);
+        let rigid = numbers(&modes["rigid_meshes"]["natural_hz"]);
+        let mut args = vec![
+            "modes".to_string(),
+            "--rig".into(),
+            path.clone(),
+            "--json".into(),
+        ];
+        for mesh in meshes {
+            let stiffness = format!("mesh.{mesh}.stiffness_n_per_m");
+            let field = modes_field(&path, &stiffness);
+            args.push("--set".into());
+            args.push(format!("{stiffness}={}", field * 1e6));
+        }
+        let refs: Vec<&str> = args.iter().map(String::as_str).collect();
+        let stiff = numbers(&json_of(&refs)["natural_hz"]);
+        for (a, b) in stiff.iter().zip(&rigid) {
+            assert!(
+                (a / b - 1.0).abs() < 1e-5,
+                "{name}: {stiff:?} against {rigid:?}"
+            );
+        }
+        assert!(!modes["meshes_apart"].as_array().expect("parts").is_empty());
+    }
+}
+
+/// The value of `field` (a path) in the rig file at `path`, as `testrig params --rig`
+/// reads it.
+fn modes_field(path: &str, field: &str) -> f64 {
+    let params = json_of(&["params", "--rig", path, "--json"]);
+    params["fields"]
+        .as_array()
+        .expect("fields")
+        .iter()
+        .find(|f| f["name"] == field)
+        .and_then(|f| f["value"].as_str()?.parse().ok())
+        .unwrap_or_else(|| panic!("no {field} in {path}"))
 }
 
 /// Writes `text` as a rig file in `dir` and runs `modes --rig` on it: its stderr.

@@ -179,3 +179,4 @@ pub use topology::{
     Body, DriveRatings, DriveSettings, Gauge, LockedTorque, MAX_BODIES, MAX_MESHES, Mesh,
     RigTopology, Shaft,
 };
+pub use topology::{MeshHold, ModalPart};

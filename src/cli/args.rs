@@ -211,9 +211,9 @@ pub struct ModesArgs {
     /// Parameters.
     #[command(flatten)]
     pub rig: RigArgs,
-    /// A rig file (docs/rig-files.md) instead of a preset: its natural frequencies with
-    /// every mesh in contact and no speed controller.
-    #[arg(long = "rig", value_name = "FILE", conflicts_with = "overrides")]
+    /// A rig file (docs/rig-files.md) instead of a preset (a preset is its rig file: the
+    /// same modes), --set by path (`mesh.stage1.backlash_mm=0.3`).
+    #[arg(long = "rig", value_name = "FILE", conflicts_with = "preset")]
     pub rig_file: Option<PathBuf>,
     /// Print one JSON object instead of tables.
     #[arg(long)]

@@ -1,69 +1,85 @@
-//! `testrig modes`: natural frequencies and mode shapes.
+//! `testrig modes`: the natural frequencies and mode shapes of any rig (a preset is its
+//! rig file), its meshes held three ways as the thesis's App. C takes its rig: in contact
+//! on their springs, rigid, and apart (`rig::MeshHold`).
 
-use rig::{Chain, NaturalMode, RigChains};
-use serde_json::json;
+use rig::{MeshHold, ModalPart, RigTopology};
+use serde_json::{Value, json};
 
 use crate::cli::ModesArgs;
-use testrig::scenario::{preset_with_overrides, read_rig_file};
+use testrig::scenario::command_rig;
 
 pub fn run(args: &ModesArgs) -> anyhow::Result<()> {
-    if let Some(path) = &args.rig_file {
-        return rig_file_modes(path, args.json);
-    }
-    let params = preset_with_overrides(&args.rig.preset, &args.rig.overrides)?;
-    let chains = RigChains::of(&params);
-    let named = [
-        (
-            "whole_rig",
-            "whole rig, gear pair rigid (thesis App. C)",
-            &chains.whole_rig,
-        ),
-        (
-            "locked_mesh",
-            "five inertias, teeth locked on the mesh spring K23",
-            &chains.locked_mesh,
-        ),
-        (
-            "motor_side",
-            "motor side alone (teeth apart)",
-            &chains.motor_side,
-        ),
-        (
-            "brake_side",
-            "brake side alone (teeth apart)",
-            &chains.brake_side,
-        ),
-    ];
+    let rig = command_rig(
+        args.rig_file.as_deref(),
+        &args.rig.preset,
+        &args.rig.overrides,
+    )?;
+    let [contact, rigid] = [MeshHold::Contact, MeshHold::Rigid].map(|h| first_part(&rig, h));
+    let apart = rig.modal_parts(MeshHold::Apart);
     if args.json {
-        let mut object = serde_json::Map::new();
-        for (key, _, chain) in named {
-            object.insert(format!("{key}_hz"), json!(frequencies(chain)));
-            object.insert(
-                format!("{key}_shapes"),
-                json!(chain.modes().iter().map(|m| &m.shape).collect::<Vec<_>>()),
-            );
-        }
-        println!("{}", serde_json::Value::Object(object));
+        let bodies: Vec<&str> = rig.bodies.iter().map(|b| b.name.as_str()).collect();
+        let value = json!({
+            "rig": rig.name,
+            "bodies": bodies,
+            "natural_hz": frequencies(&contact),
+            "shapes": shapes(&contact),
+            "rigid_meshes": part_json(&rigid),
+            "meshes_apart": apart.iter().map(part_json).collect::<Vec<_>>(),
+        });
+        println!("{value}");
         return Ok(());
     }
-    for (_, title, chain) in named {
-        println!("{title}");
-        print_modes(&chain.bodies, &chain.modes());
+    println!("{}: every mesh in contact, no speed controller", rig.name);
+    print_modes(&contact);
+    println!(
+        "every mesh rigid, each pair's gears one coordinate (the thesis's App. C \"whole rig\")"
+    );
+    print_modes(&rigid);
+    for part in &apart {
+        println!("every mesh apart: {}", coordinate_names(part).join(", "));
+        print_modes(part);
     }
     Ok(())
 }
 
-/// A table of `modes`: frequency, then each body's amplitude in a column as wide as its
-/// name, right-aligned under it.
-fn print_modes(bodies: &[&str], modes: &[NaturalMode]) {
-    let widths: Vec<usize> = bodies.iter().map(|b| b.chars().count().max(7)).collect();
-    let head: Vec<String> = bodies
+/// The one part a connected rig forms with its meshes held as `hold`.
+fn first_part(rig: &RigTopology, hold: MeshHold) -> ModalPart {
+    rig.modal_parts(hold).remove(0)
+}
+
+/// Each coordinate's name: its body, or the bodies a rigid mesh joins (`a + b`).
+fn coordinate_names(part: &ModalPart) -> Vec<String> {
+    part.coordinates.iter().map(|c| c.join(" + ")).collect()
+}
+
+fn frequencies(part: &ModalPart) -> Vec<f64> {
+    part.modes.iter().map(|m| m.frequency_hz).collect()
+}
+
+fn shapes(part: &ModalPart) -> Vec<&Vec<f64>> {
+    part.modes.iter().map(|m| &m.shape).collect()
+}
+
+fn part_json(part: &ModalPart) -> Value {
+    json!({
+        "coordinates": coordinate_names(part),
+        "natural_hz": frequencies(part),
+        "shapes": shapes(part),
+    })
+}
+
+/// A table of `part`'s modes: frequency, then each coordinate's amplitude in a column as
+/// wide as its name, right-aligned under it.
+fn print_modes(part: &ModalPart) {
+    let names = coordinate_names(part);
+    let widths: Vec<usize> = names.iter().map(|b| b.chars().count().max(7)).collect();
+    let head: Vec<String> = names
         .iter()
         .zip(&widths)
         .map(|(b, w)| format!("{b:>w$}"))
         .collect();
     println!("  {:>10}  {}", "f (Hz)", head.join("  "));
-    for mode in modes {
+    for mode in &part.modes {
         let shape: Vec<String> = mode
             .shape
             .iter()
@@ -73,28 +89,4 @@ fn print_modes(bodies: &[&str], modes: &[NaturalMode]) {
         println!("  {:>10.3}  {}", mode.frequency_hz, shape.join("  "));
     }
     println!();
-}
-
-fn frequencies(chain: &Chain) -> Vec<f64> {
-    chain.modes().iter().map(|m| m.frequency_hz).collect()
-}
-
-/// The natural modes of the rig in the rig file at `path`: every mesh in contact, no
-/// speed controller, the rigid-body mode left out.
-fn rig_file_modes(path: &std::path::Path, json: bool) -> anyhow::Result<()> {
-    let rig = read_rig_file(path)?;
-    let modes = rig.natural_modes();
-    let bodies: Vec<&str> = rig.bodies.iter().map(|b| b.name.as_str()).collect();
-    if json {
-        let natural_hz: Vec<f64> = modes.iter().map(|m| m.frequency_hz).collect();
-        let shapes: Vec<&Vec<f64>> = modes.iter().map(|m| &m.shape).collect();
-        println!(
-            "{}",
-            json!({"rig": rig.name, "bodies": bodies, "natural_hz": natural_hz, "shapes": shapes})
-        );
-        return Ok(());
-    }
-    println!("{}: every mesh in contact, no speed controller", rig.name);
-    print_modes(&bodies, &modes);
-    Ok(())
 }

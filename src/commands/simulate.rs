@@ -12,7 +12,7 @@ use crate::cli::SimulateArgs;
 use testrig::plots::{AveragePlot, RasterImpact, write_impact_raster, write_synchronous_average};
 use testrig::recording::{ImpactLog, PartialFile};
 use testrig::runtime::write_command_manifest;
-use testrig::scenario::{preset_rig_with_overrides, rig_with_overrides};
+use testrig::scenario::command_rig;
 use testrig::steady_point::{
     RigPointRun, RigPointSpec, RigPointSummary, judged_shaft, run_rig_point, watched_gear,
 };
@@ -42,10 +42,7 @@ struct Report<'a> {
 
 pub fn run(args: &SimulateArgs) -> anyhow::Result<()> {
     let overrides = &args.rig.overrides;
-    let rig = match &args.rig_file {
-        Some(path) => rig_with_overrides(path, overrides)?,
-        None => preset_rig_with_overrides(&args.rig.preset, overrides)?,
-    };
+    let rig = command_rig(args.rig_file.as_deref(), &args.rig.preset, overrides)?;
     let rig_file = args.rig_file.as_ref().map(|p| p.display().to_string());
     let preset = args.rig_file.is_none().then_some(args.rig.preset.as_str());
     let spec = RigPointSpec {

@@ -16,26 +16,30 @@ use crate::steady_point::{RigWindow, regime_of};
 use crate::vocabulary::GearIndicators;
 use crate::vocabulary::frame::Frame;
 use crate::vocabulary::limits::LimitError;
-use crate::vocabulary::limits::{check_load_within, rig_max_load_nm};
+use crate::vocabulary::limits::check_load_within;
 
 /// A rig file's plant in a run, with what it needs to frame and judge its blocks.
 pub struct RigFilePlant {
     plant: NetworkPlant,
     rig: Arc<RigTopology>,
     roles: RoleColumns,
+    /// The rig's columns (`rig::columns`) each frame carries after the standard inputs.
+    rig_columns: Vec<usize>,
     rate_hz: f64,
 }
 
 impl RigFilePlant {
     /// `rig`'s plant in steady motion at `schedule`'s first set points, sampled at
     /// `rate_hz`; for live commands, its step sized for set speeds up to `ceiling`'s
-    /// beside the schedule's own, and set points above `ceiling` refused. A rig without a
-    /// motor is refused.
+    /// beside the schedule's own, and set points above `ceiling` refused. Its frames carry
+    /// the standard inputs, then `rig_columns` of `rig::columns`. A rig without a motor is
+    /// refused.
     pub fn new(
         rig: &RigTopology,
         schedule: Schedule,
         rate_hz: f64,
         ceiling: Option<LiveCeiling>,
+        rig_columns: Vec<usize>,
     ) -> anyhow::Result<Self> {
         motor_of(rig)?;
         let start = NetworkStart::Steady;
@@ -47,6 +51,7 @@ impl RigFilePlant {
             plant,
             rig: Arc::new(rig.clone()),
             roles: RoleColumns::of(rig),
+            rig_columns,
             rate_hz,
         })
     }
@@ -76,9 +81,7 @@ impl ScenarioPlant for RigFilePlant {
     }
 
     fn check_load(&self, load_nm: f64) -> Result<(), LimitError> {
-        let rig = &self.rig;
-        let name = format!("rig `{}`", rig.name);
-        check_load_within(load_nm, rig_max_load_nm(rig), &name, rig.brake.is_some())
+        check_load_within(load_nm, &self.rig)
     }
 
     fn hold(&mut self, set: SetPoints) -> Result<(), RigError> {
@@ -108,6 +111,12 @@ impl ScenarioPlant for RigFilePlant {
 
     fn frame(&self, seq: u64, start: u64, block: &mut RigFileBlock) -> Frame {
         let mut frame = self.roles.frame(&block.signals, start);
+        if !self.rig_columns.is_empty() {
+            let mut columns = rig::columns(&self.rig, &block.signals);
+            for &k in &self.rig_columns {
+                frame.channels.push(std::mem::take(&mut columns[k]).into());
+            }
+        }
         frame.seq = seq;
         frame.impacts = std::mem::take(&mut block.impacts).into();
         frame

@@ -119,9 +119,10 @@ pub fn run_with_status(
         status: &status,
     };
     let rig = &plan.rig.topology;
-    let plant = RigFilePlant::new(rig, plan.schedule.clone(), plan.rate_hz, plan.live_ceiling)
+    let (schedule, ceiling) = (plan.schedule.clone(), plan.live_ceiling);
+    let plant = RigFilePlant::new(rig, schedule, plan.rate_hz, ceiling, plan.rig.rig_columns())
         .with_context(|| format!("rig `{}` and the scenario's schedule", rig.name))?;
-    run.run(plant, SignalNames::plant())
+    run.run(plant, plan.rig.plant_signals())
 }
 
 /// A run's plan, options and status, before its plant is built.

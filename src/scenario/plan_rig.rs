@@ -5,7 +5,7 @@ use rig::{NetworkBlock, NetworkPlant, NetworkStart, RigError, RigTopology, Sched
 
 use crate::steady_point::judged_shaft;
 use crate::vocabulary::frame::SignalNames;
-use crate::vocabulary::limits::{LimitError, check_load_within, rig_max_load_nm};
+use crate::vocabulary::limits::{LimitError, check_load_within, max_load_nm};
 
 /// The rig a scenario runs on the plant of any rig (`rig::NetworkPlant`), after
 /// `[rig.set]` and its seeded faults; it has a motor and strain gauges (checked when the
@@ -27,20 +27,37 @@ impl PlanRig {
     /// The largest brake load (N m) the motor can hold: its limit over the brake's speed
     /// per unit motor speed (infinite where the rig gives no limit, 0 without a brake).
     pub fn max_load_nm(&self) -> f64 {
-        rig_max_load_nm(&self.topology)
+        max_load_nm(&self.topology)
     }
 
-    /// The signals its plant hands the chain (`crate::rig_roles`).
+    /// The signals its plant hands a run: the standard chain's inputs
+    /// (`crate::rig_roles`), then the rig's own columns as `testrig simulate` writes them
+    /// ([`Self::rig_columns`]).
     pub fn plant_signals(&self) -> SignalNames {
-        SignalNames::plant()
+        let mut names = SignalNames::plant();
+        let columns = rig::column_names(&self.topology);
+        for k in self.rig_columns() {
+            names.push(&columns[k]);
+        }
+        names
+    }
+
+    /// The rig's columns a run hands on beside the standard inputs: every column of
+    /// `rig::column_names` but time and a name a standard input has already.
+    pub fn rig_columns(&self) -> Vec<usize> {
+        let standard = SignalNames::plant();
+        rig::column_names(&self.topology)
+            .iter()
+            .enumerate()
+            .filter(|(_, name)| standard.index(name).is_none())
+            .map(|(k, _)| k)
+            .collect()
     }
 
     /// Whether the motor holds a brake load of `load_nm` (N m), as [`Self::max_load_nm`]
     /// says.
     pub fn check_load(&self, load_nm: f64) -> Result<(), LimitError> {
-        let rig = &self.topology;
-        let name = format!("rig `{}`", rig.name);
-        check_load_within(load_nm, self.max_load_nm(), &name, rig.brake.is_some())
+        check_load_within(load_nm, &self.topology)
     }
 
     /// The gauged shaft's torque (N m) in the steady state at `rpm` (rev/min) and

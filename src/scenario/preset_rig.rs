@@ -13,7 +13,7 @@ use super::builtin_rigs::preset_rig_source;
 use super::preset_file::{is_preset_file, param_key, preset_with_overrides};
 use super::read_rig_file::rig_topology;
 use super::rig_file_toml::RigFileToml;
-use super::rig_overrides::{checked_at_path, set_paths};
+use super::rig_overrides::{checked_at_path, rig_with_overrides, set_paths};
 
 /// The checked rig of preset `name` (a built-in name, or a preset file's path) with every
 /// `NAME=VALUE` or `PATH=VALUE` of `overrides` set, in order within each kind: the
@@ -39,6 +39,19 @@ pub fn preset_rig_with_overrides(name: &str, overrides: &[String]) -> anyhow::Re
             .with_context(|| format!("--preset {name} with --set {}", overrides.join(" --set ")))?;
     }
     Ok(rig)
+}
+
+/// The rig a command names: `--rig FILE` with its `--set PATH=VALUE`s, else `--preset
+/// NAME` (a built-in name or a preset file) with its names and paths set.
+pub fn command_rig(
+    rig_file: Option<&std::path::Path>,
+    preset: &str,
+    overrides: &[String],
+) -> anyhow::Result<RigTopology> {
+    match rig_file {
+        Some(path) => rig_with_overrides(path, overrides),
+        None => preset_rig_with_overrides(preset, overrides),
+    }
 }
 
 /// Whether `item` (`KEY=VALUE`) sets one of the thesis's parameters by name (as `NAME`,

@@ -9,7 +9,7 @@ use rig::{RigParams, RigTopology};
 
 use crate::scenario::rig_overrides::set_rig_value;
 use crate::scenario::values::param_value;
-use crate::vocabulary::limits::{check_load_within, rig_max_load_nm};
+use crate::vocabulary::limits::check_load_within;
 
 /// A case's rig.
 #[derive(Clone, Debug)]
@@ -101,10 +101,7 @@ impl CaseRig {
     /// Whether the rig can hold `load_nm` (the one load check of every rig); the refusal
     /// says why.
     pub fn check_load(&self, load_nm: f64) -> Result<(), String> {
-        let rig = self.topology();
-        let name = format!("rig `{}`", rig.name);
-        check_load_within(load_nm, rig_max_load_nm(&rig), &name, rig.brake.is_some())
-            .map_err(|e| e.to_string())
+        check_load_within(load_nm, &self.topology()).map_err(|e| e.to_string())
     }
 
     /// The whole rig's undamped natural frequencies (Hz), rigid-body mode left out.

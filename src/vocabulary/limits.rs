@@ -39,22 +39,17 @@ pub fn check_load_nm(value: f64) -> Result<f64, LimitError> {
     }
 }
 
-/// The one load check of every rig: a brake load (N m) `rig` (as a message names it:
-/// rig `NAME`) can run against, at most
-/// `max_nm` ([`max_load_nm`], [`rig_max_load_nm`]), and none where it has no brake. Beyond
-/// it the motor cannot hold any speed, and the model's constant-torque brake would then
-/// drive the rig backwards, which an eddy-current brake cannot (its torque falls to zero
-/// with the speed).
-pub fn check_load_within(
-    load_nm: f64,
-    max_nm: f64,
-    rig: &str,
-    has_brake: bool,
-) -> Result<(), LimitError> {
+/// The one load check of every rig: a brake load (N m) `rig` can run against, at most
+/// [`max_load_nm`], and none where it has no brake. Beyond it the motor cannot hold any
+/// speed, and the model's constant-torque brake would then drive the rig backwards, which
+/// an eddy-current brake cannot (its torque falls to zero with the speed).
+pub fn check_load_within(load_nm: f64, rig: &rig::RigTopology) -> Result<(), LimitError> {
+    let (max_nm, has_brake) = (max_load_nm(rig), rig.brake.is_some());
+    let rig = format!("rig `{}`", rig.name);
     if !has_brake && load_nm != 0.0 {
         Err(LimitError::NoBrake {
             load_nm,
-            rig: rig.to_string(),
+            rig: rig.clone(),
         })
     } else if load_nm <= max_nm || !has_brake {
         Ok(())
@@ -62,21 +57,16 @@ pub fn check_load_within(
         Err(LimitError::LoadAboveMotor {
             load_nm,
             max_nm,
-            rig: rig.to_string(),
+            rig: rig.clone(),
         })
     }
 }
 
-/// The largest brake load (N m) the motor of `params` can hold: its torque limit less the
-/// rig's residual drag.
-pub fn max_load_nm(params: &rig::RigParams) -> f64 {
-    params.motor_torque_limit_nm() - params.brake_drag_nm
-}
-
-/// The largest brake load (N m) the motor of a rig file's `rig` holds at its brake: its
+/// The largest brake load (N m) the motor of `rig` holds at its brake (the one load limit
+/// of every rig): its
 /// torque limit over the brake's speed per unit motor speed, less the brake's residual
 /// drag (infinite where the file gives no limit, 0 without a motor or brake).
-pub fn rig_max_load_nm(rig: &rig::RigTopology) -> f64 {
+pub fn max_load_nm(rig: &rig::RigTopology) -> f64 {
     let (Some(motor), Some(brake)) = (rig.motor, rig.brake) else {
         return 0.0;
     };

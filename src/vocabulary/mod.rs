@@ -40,7 +40,7 @@ pub use gear_indicators::GearIndicators;
 pub use input_names::{FLAG_NAMES, InputNames, check_times};
 pub use limits::{
     DEFAULT_LIVE_CEILING, MAX_SIMULATED_S, check_load_nm, check_load_within, check_simulated_s,
-    check_speed_rpm, max_load_nm, rig_max_load_nm,
+    check_speed_rpm, max_load_nm,
 };
 pub use point_verdict::{AwaitingVerdicts, PointVerdict, RowMotion};
 pub use refusal::Refusal;

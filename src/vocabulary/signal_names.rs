@@ -44,14 +44,26 @@ pub const TACHO_V: &str = "tacho_v";
 /// Digital voltmeter reading of the tacho (V).
 pub const DVM_V: &str = "dvm_v";
 
-/// Unit of plant signal `name`; `None` if the plant has no such signal.
+/// Unit of plant signal `name`; `None` if the plant has no such signal. A rig's own
+/// columns (`rig::column_names`) carry their unit in their name: `_rpm`, `_rad`, `_nm`,
+/// `_n`, `_ue`; `contact_<mesh>` is a state (+1, −1, 0).
 pub fn plant_unit(name: &str) -> Option<&'static str> {
     match name {
         TIME_S => Some("s"),
         SHAFT_TORQUE_NM => Some("N m"),
         MOTOR_SPEED_RAD_S | SLIP_RING_SPEED_RAD_S => Some("rad/s"),
         KEYPHASOR_V => Some("V"),
-        _ => None,
+        _ if name.starts_with("contact_") => Some("1"),
+        _ => [
+            ("_rpm", "rev/min"),
+            ("_rad", "rad"),
+            ("_nm", "N m"),
+            ("_n", "N"),
+            ("_ue", MICROSTRAIN_UNIT),
+        ]
+        .into_iter()
+        .find(|(suffix, _)| name.ends_with(suffix))
+        .map(|(_, unit)| unit),
     }
 }
 
@@ -59,7 +71,11 @@ pub fn plant_unit(name: &str) -> Option<&'static str> {
 pub fn plant_full_scale(unit: &str) -> f64 {
     match unit {
         "rad/s" => 1_000.0,
+        "rev/min" => 10_000.0,
         "rad" => 1.0e6,
+        "N" => 1.0e5,
+        MICROSTRAIN_UNIT => 1_000.0,
+        "1" => 1.0,
         "N m" => 100.0,
         "s" => 1.0e5,
         "V" => 10.0,
