@@ -120,9 +120,11 @@ pub fn run_with_status(
     };
     let rig = &plan.rig.topology;
     let (schedule, ceiling) = (plan.schedule.clone(), plan.live_ceiling);
-    let plant = RigFilePlant::new(rig, schedule, plan.rate_hz, ceiling, plan.rig.rig_columns())
+    let columns = plan.rig_columns_read();
+    let names = plan.rig.signals_with(&columns);
+    let plant = RigFilePlant::new(rig, schedule, plan.rate_hz, ceiling, columns)
         .with_context(|| format!("rig `{}` and the scenario's schedule", rig.name))?;
-    run.run(plant, plan.rig.plant_signals())
+    run.run(plant, names)
 }
 
 /// A run's plan, options and status, before its plant is built.

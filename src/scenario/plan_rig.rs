@@ -34,10 +34,15 @@ impl PlanRig {
     /// (`crate::rig_roles`), then the rig's own columns as `testrig simulate` writes them
     /// ([`Self::rig_columns`]).
     pub fn plant_signals(&self) -> SignalNames {
+        self.signals_with(&self.rig_columns())
+    }
+
+    /// The standard inputs, then the rig's columns `columns` (of `rig::column_names`).
+    pub fn signals_with(&self, columns: &[usize]) -> SignalNames {
         let mut names = SignalNames::plant();
-        let columns = rig::column_names(&self.topology);
-        for k in self.rig_columns() {
-            names.push(&columns[k]);
+        let all = rig::column_names(&self.topology);
+        for &k in columns {
+            names.push(&all[k]);
         }
         names
     }

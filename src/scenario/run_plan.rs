@@ -153,6 +153,30 @@ pub struct RecordPlan {
 }
 
 impl Plan {
+    /// Whether the run reads signal `name`: a stage's input, the analyser's or the
+    /// scope's, or a recorded signal.
+    pub fn reads(&self, name: &str) -> bool {
+        let stages = self.chain.stages.stages();
+        stages.iter().any(|s| s.inputs.iter().any(|i| i == name))
+            || self.analyser.as_ref().is_some_and(|a| a.input == name)
+            || self.chain.scope.as_ref().is_some_and(|s| s.input == name)
+            || self
+                .record
+                .as_ref()
+                .is_some_and(|r| r.signals.iter().any(|s| s == name))
+    }
+
+    /// The rig's own columns the run reads (of [`PlanRig::rig_columns`]): the only ones
+    /// its frames carry, so that a run pays for no column it does not use.
+    pub fn rig_columns_read(&self) -> Vec<usize> {
+        let names = rig::column_names(&self.rig.topology);
+        self.rig
+            .rig_columns()
+            .into_iter()
+            .filter(|&k| self.reads(&names[k]))
+            .collect()
+    }
+
     /// The measurements the analyser and the scope work to: the scenario's, or one at
     /// the start when it lists none.
     pub fn measurements(&self) -> Vec<Measure> {
