@@ -2,9 +2,8 @@
 //! threads joined by crossbeam channels, and the run's manifest.
 //!
 //! Files: `testrig run`'s threads: `plant_source.rs` (the paced plant, overruns; a paced
-//! wait looks at the stop flag every 50 ms) on any `scenario_plant.rs` `ScenarioPlant`
-//! (`thesis_plant.rs` the thesis's five inertias, `rig_file_plant.rs` a rig file's rig,
-//! each with its block and judged window), `rolling_regime.rs` (the regime and the
+//! wait looks at the stop flag every 50 ms) on `run_plant.rs` (any rig's plant as a run
+//! drives it, its block and judged window), `rolling_regime.rs` (the regime and the
 //! judge's motion of each full 10 s window once settled, live: "settling" for 15 s after a change of set points), `pacing.rs` (deadlines, lateness
 //! histogram), `wiring.rs` (stage and sink threads; a panic in one fails the run by name),
 //! `sinks/` (`monitor`, `recorder`, `analyser` with `analyser_live` (commands, the display
@@ -28,9 +27,8 @@ pub(crate) mod plant_source;
 pub(crate) mod point_judge;
 pub(crate) mod previous_run;
 pub(crate) mod process_usage;
-pub(crate) mod rig_file_plant;
 pub(crate) mod rolling_regime;
-pub(crate) mod scenario_plant;
+pub(crate) mod run_plant;
 pub(crate) mod sinks;
 pub(crate) mod status;
 pub(crate) mod stop_signals;

@@ -10,7 +10,7 @@ use rig::SetPoints;
 use super::pacing::{LatenessHistogram, Pace, Pacer};
 use super::point_judge::PointJudge;
 use super::rolling_regime::RollingRegime;
-use super::scenario_plant::ScenarioPlant;
+use super::run_plant::RunPlant;
 use super::status::SharedStatus;
 use crate::scenario::Overflow;
 use crate::vocabulary::Refusal;
@@ -22,9 +22,9 @@ use crate::vocabulary::{CommandInbox, Pending, PointVerdict, RigCommand};
 const OVERRUN_TIMES_KEPT: usize = 1000;
 
 /// What the plant's thread was asked to do.
-pub struct PlantJob<P> {
+pub struct PlantJob {
     /// The plant, at t = 0.
-    pub plant: P,
+    pub plant: RunPlant,
     /// Samples to produce.
     pub total_samples: u64,
     /// Samples per block.
@@ -66,7 +66,7 @@ pub struct PlantReport {
 }
 
 /// Runs the job, sending frames to `out`; returns when done, stopped or disconnected.
-pub fn run_plant<P: ScenarioPlant>(mut job: PlantJob<P>, out: Sender<Frame>) -> PlantReport {
+pub fn run_plant(mut job: PlantJob, out: Sender<Frame>) -> PlantReport {
     let step_s = job.plant.output_step_s();
     let mut judge = PointJudge::new(&job.measures_s, job.total_samples, step_s);
     let pacer = match job.pace {
@@ -103,7 +103,7 @@ pub fn run_plant<P: ScenarioPlant>(mut job: PlantJob<P>, out: Sender<Frame>) -> 
             ));
             break;
         }
-        report.impacts += P::impacts_in(&block) as u64;
+        report.impacts += RunPlant::impacts_in(&block) as u64;
         let start_s = report.samples as f64 * step_s;
         let last = report.samples + n as u64 >= job.total_samples;
         let set = job.plant.set_points();
@@ -138,11 +138,7 @@ pub fn run_plant<P: ScenarioPlant>(mut job: PlantJob<P>, out: Sender<Frame>) -> 
 
 /// The commands due at the block starting at `start_sample` (`at_s`): the plant's own
 /// (set points, quit) carried out and answered here, the others returned for the frame.
-fn take_commands<P: ScenarioPlant>(
-    job: &mut PlantJob<P>,
-    start_sample: u64,
-    at_s: f64,
-) -> Vec<Pending> {
+fn take_commands(job: &mut PlantJob, start_sample: u64, at_s: f64) -> Vec<Pending> {
     let mut onward = Vec::new();
     // The set points as the commands of this block leave them (the plant takes them up
     // at its next step, so it cannot be asked between two commands of one block).
@@ -181,7 +177,7 @@ fn take_commands<P: ScenarioPlant>(
 }
 
 /// The bounds every command shares (speed, brake load), as for a scenario's set points.
-fn check_set_points(set: &SetPoints, plant: &impl ScenarioPlant) -> Result<(), Refusal> {
+fn check_set_points(set: &SetPoints, plant: &RunPlant) -> Result<(), Refusal> {
     let limit = |what| move |source| Refusal::Limit { what, source };
     check_speed_rpm(set.speed_rpm).map_err(limit("speed"))?;
     check_load_nm(set.load_nm).map_err(limit("load"))?;
@@ -202,8 +198,8 @@ fn check_set_points(set: &SetPoints, plant: &impl ScenarioPlant) -> Result<(), R
 }
 
 /// Sends one frame by the overflow policy; false when nobody listens any more.
-fn release<P>(
-    job: &PlantJob<P>,
+fn release(
+    job: &PlantJob,
     out: &Sender<Frame>,
     frame: Frame,
     start_s: f64,

@@ -10,7 +10,7 @@ use std::sync::Arc;
 use rig::SetPoints;
 
 use super::rolling_regime::REGIME_WINDOW_S;
-use super::scenario_plant::{PointWindow, ScenarioPlant};
+use super::run_plant::{RunBlock, RunPlant, RunWindow};
 use crate::vocabulary::PointVerdict;
 
 /// One point's window, in samples of the run.
@@ -25,21 +25,21 @@ type HeldSetPoints = (f64, f64);
 
 /// A point's window being filled: its index, the window and the set points it was
 /// opened under.
-struct OpenWindow<W> {
+struct OpenWindow {
     index: usize,
-    window: W,
+    window: RunWindow,
     held: HeldSetPoints,
 }
 
 /// The windows of a run's points and the one being filled.
-pub struct PointJudge<W> {
+pub struct PointJudge {
     spans: Vec<Span>,
     next: usize,
-    open: Option<OpenWindow<W>>,
+    open: Option<OpenWindow>,
     step_s: f64,
 }
 
-impl<W: PointWindow> PointJudge<W> {
+impl PointJudge {
     /// Windows for measurements at `measures_s` (s; empty: the run is one point) in a run
     /// of `total_samples` samples every `step_s`.
     pub fn new(measures_s: &[f64], total_samples: u64, step_s: f64) -> Self {
@@ -72,11 +72,11 @@ impl<W: PointWindow> PointJudge<W> {
     /// Adds `plant`'s block starting at sample `start`, made under set points `set`;
     /// returns the verdicts on windows that ended before it, or with it when `last` (the
     /// run's last block).
-    pub fn add<P: ScenarioPlant<Window = W>>(
+    pub fn add(
         &mut self,
-        plant: &P,
+        plant: &RunPlant,
         start: u64,
-        block: &W::Block,
+        block: &RunBlock,
         set: &SetPoints,
         last: bool,
     ) -> Vec<Arc<PointVerdict>> {
@@ -101,12 +101,7 @@ impl<W: PointWindow> PointJudge<W> {
 
     /// Opens the window the block starting at `start` falls in, if any (windows that no
     /// block started in are passed over).
-    fn open_window_at<P: ScenarioPlant<Window = W>>(
-        &mut self,
-        start: u64,
-        held: HeldSetPoints,
-        plant: &P,
-    ) {
+    fn open_window_at(&mut self, start: u64, held: HeldSetPoints, plant: &RunPlant) {
         while let Some(span) = self.spans.get(self.next) {
             if start >= span.to {
                 self.next += 1;

@@ -11,7 +11,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 
 use rig::SetPoints;
 
-use super::scenario_plant::{PointWindow, ScenarioPlant};
+use super::run_plant::{RunBlock, RunPlant, RunWindow};
 use super::status::SharedStatus;
 
 /// Longest stretch at the end of a run whose once-per-revolution samples decide the regime (s).
@@ -26,8 +26,8 @@ pub const SETTLE_S: f64 = 15.0;
 pub const SETTLING: &str = "settling";
 
 /// The window being filled; the shared status receives each full window's verdicts.
-pub struct RollingRegime<W> {
-    window: W,
+pub struct RollingRegime {
+    window: RunWindow,
     step_s: f64,
     /// Time settled so far since the last change of set points (s), up to [`SETTLE_S`].
     settled_s: f64,
@@ -38,9 +38,9 @@ pub struct RollingRegime<W> {
     status: SharedStatus,
 }
 
-impl<W: PointWindow> RollingRegime<W> {
+impl RollingRegime {
     /// For `plant`, reporting into `status`.
-    pub fn new<P: ScenarioPlant<Window = W>>(plant: &P, status: SharedStatus) -> Self {
+    pub fn new(plant: &RunPlant, status: SharedStatus) -> Self {
         Self {
             window: plant.window(false),
             step_s: plant.output_step_s(),
@@ -55,13 +55,7 @@ impl<W: PointWindow> RollingRegime<W> {
     /// Adds `plant`'s block of `samples` samples made under `set`; when a window has just
     /// filled, its regime goes to the status at once where the plant tells it cheaply, and
     /// the judge's regime and motion when the judge's thread is done.
-    pub fn add<P: ScenarioPlant<Window = W>>(
-        &mut self,
-        plant: &P,
-        block: &W::Block,
-        samples: usize,
-        set: &SetPoints,
-    ) {
+    pub fn add(&mut self, plant: &RunPlant, block: &RunBlock, samples: usize, set: &SetPoints) {
         if self.held.as_ref() != Some(set) {
             self.restart(plant, *set);
         }
@@ -77,9 +71,6 @@ impl<W: PointWindow> RollingRegime<W> {
         }
         let full = std::mem::replace(&mut self.window, plant.window(false));
         self.filled_s = 0.0;
-        if let Some(regime) = full.quick_regime() {
-            self.status.update(|s| s.regime = Some(regime));
-        }
         let status = self.status.clone();
         let generation = Arc::clone(&self.generation);
         let began = generation.load(Ordering::Relaxed);
@@ -98,7 +89,7 @@ impl<W: PointWindow> RollingRegime<W> {
     }
 
     /// New set points: the window so far is dropped and the rig left to settle again.
-    fn restart<P: ScenarioPlant<Window = W>>(&mut self, plant: &P, set: SetPoints) {
+    fn restart(&mut self, plant: &RunPlant, set: SetPoints) {
         self.held = Some(set);
         self.generation.fetch_add(1, Ordering::Relaxed);
         self.window = plant.window(false);

@@ -12,8 +12,7 @@ use super::console::Console;
 use super::pacing::Pace;
 use super::plant_source::{PlantJob, PlantReport, run_plant};
 use super::process_usage::cpu_s_and_peak_rss_mib;
-use super::rig_file_plant::RigFilePlant;
-use super::scenario_plant::ScenarioPlant;
+use super::run_plant::RunPlant;
 use super::sinks::analyser::AnalyserSink;
 use super::sinks::monitor::MonitorSink;
 use super::sinks::recorder::RecorderSink;
@@ -122,7 +121,7 @@ pub fn run_with_status(
     let (schedule, ceiling) = (plan.schedule.clone(), plan.live_ceiling);
     let columns = plan.rig_columns_read();
     let names = plan.rig.signals_with(&columns);
-    let plant = RigFilePlant::new(rig, schedule, plan.rate_hz, ceiling, columns)
+    let plant = RunPlant::new(rig, schedule, plan.rate_hz, ceiling, columns)
         .with_context(|| format!("rig `{}` and the scenario's schedule", rig.name))?;
     run.run(plant, names)
 }
@@ -136,7 +135,7 @@ struct RunParts<'a> {
 
 impl RunParts<'_> {
     /// Runs `plant`, whose channels `names` names, through the chain into the sinks.
-    fn run<P: ScenarioPlant>(&self, plant: P, mut names: SignalNames) -> anyhow::Result<RunResult> {
+    fn run(&self, plant: RunPlant, mut names: SignalNames) -> anyhow::Result<RunResult> {
         let (plan, options, status) = (self.plan, self.options, self.status);
         let stages = plan.chain.stages.build(plan.rate_hz, &mut names)?;
         let live = options.control.is_some();
@@ -203,9 +202,9 @@ type PlantOutcome = std::thread::Result<PlantReport>;
 impl Threads<'_> {
     /// Spawns the plant, the chain's thread (its stages in turn, feeding every sink) and a
     /// thread per sink; draws the console until the plant is done; joins all.
-    fn run<P: ScenarioPlant>(
+    fn run(
         &self,
-        job: PlantJob<P>,
+        job: PlantJob,
         stages: Vec<NamedStage>,
         sinks: Vec<NamedSink>,
     ) -> (PlantOutcome, Vec<SinkReport>) {

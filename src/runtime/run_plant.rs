@@ -1,6 +1,8 @@
-//! A rig file's plant (`rig::NetworkPlant`) as a scenario's run drives it: it hands the
-//! chain the signals `crate::rig_roles` names, logs each mesh's impacts, and its windows
-//! are judged on the gauged shaft's torque as `testrig simulate --rig` judges its point.
+//! The plant as a scenario's run drives it (`rig::NetworkPlant`, any rig): it advances
+//! block by block under set points that commands change, hands the chain the signals
+//! `crate::rig_roles` names (and the rig's own columns the run reads), logs each mesh's
+//! impacts, and its windows are judged on the gauged shaft's torque as `testrig simulate`
+//! judges its point.
 
 use std::sync::Arc;
 
@@ -9,7 +11,6 @@ use rig::{
     Schedule, SetPoints, SteadySummary,
 };
 
-use super::scenario_plant::{PointWindow, ScenarioPlant};
 use crate::rig_roles::RoleColumns;
 use crate::steady_point::motor_of;
 use crate::steady_point::{RigWindow, regime_of};
@@ -18,8 +19,8 @@ use crate::vocabulary::frame::Frame;
 use crate::vocabulary::limits::LimitError;
 use crate::vocabulary::limits::check_load_within;
 
-/// A rig file's plant in a run, with what it needs to frame and judge its blocks.
-pub struct RigFilePlant {
+/// The plant of a run, with what it needs to frame and judge its blocks.
+pub struct RunPlant {
     plant: NetworkPlant,
     rig: Arc<RigTopology>,
     roles: RoleColumns,
@@ -28,7 +29,7 @@ pub struct RigFilePlant {
     rate_hz: f64,
 }
 
-impl RigFilePlant {
+impl RunPlant {
     /// `rig`'s plant in steady motion at `schedule`'s first set points, sampled at
     /// `rate_hz`; for live commands, its step sized for set speeds up to `ceiling`'s
     /// beside the schedule's own, and set points above `ceiling` refused. Its frames carry
@@ -57,47 +58,51 @@ impl RigFilePlant {
     }
 }
 
-/// One block of a rig file's plant.
-pub struct RigFileBlock {
+/// One block of the run's plant: its signals, impacts and revolutions.
+pub struct RunBlock {
     signals: NetworkBlock,
     impacts: Vec<NetworkImpact>,
     revolutions_s: Vec<f64>,
 }
 
-impl ScenarioPlant for RigFilePlant {
-    type Block = RigFileBlock;
-    type Window = RigFileWindow;
-
-    fn output_step_s(&self) -> f64 {
+impl RunPlant {
+    /// Time between output samples (s).
+    pub fn output_step_s(&self) -> f64 {
         1.0 / self.rate_hz
     }
 
-    fn time_s(&self) -> f64 {
+    /// Simulated time now (s).
+    pub fn time_s(&self) -> f64 {
         self.plant.time_s()
     }
 
-    fn set_points(&self) -> SetPoints {
+    /// The set points now.
+    pub fn set_points(&self) -> SetPoints {
         self.plant.set_points()
     }
 
-    fn check_load(&self, load_nm: f64) -> Result<(), LimitError> {
+    /// Whether the motor holds a brake load of `load_nm` (N m).
+    pub fn check_load(&self, load_nm: f64) -> Result<(), LimitError> {
         check_load_within(load_nm, &self.rig)
     }
 
-    fn hold(&mut self, set: SetPoints) -> Result<(), RigError> {
+    /// Holds `set` from the next sample on.
+    pub fn hold(&mut self, set: SetPoints) -> Result<(), RigError> {
         self.plant.hold_set_points(set)
     }
 
-    fn block(&self) -> RigFileBlock {
+    /// An empty block, shaped for the rig's signals.
+    pub fn block(&self) -> RunBlock {
         let rig = &self.rig;
-        RigFileBlock {
+        RunBlock {
             signals: NetworkBlock::new(rig.bodies.len(), rig.shafts.len(), rig.meshes.len()),
             impacts: Vec::new(),
             revolutions_s: Vec::new(),
         }
     }
 
-    fn advance(&mut self, samples: usize, block: &mut RigFileBlock) -> Result<(), RigError> {
+    /// Advances `samples` samples into `block` (cleared first).
+    pub fn advance(&mut self, samples: usize, block: &mut RunBlock) -> Result<(), RigError> {
         block.signals.clear();
         self.plant.run(samples, &mut block.signals)?;
         block.impacts = self.plant.take_impacts();
@@ -105,11 +110,14 @@ impl ScenarioPlant for RigFilePlant {
         Ok(())
     }
 
-    fn impacts_in(block: &RigFileBlock) -> usize {
+    /// Contacts that started in `block`.
+    pub fn impacts_in(block: &RunBlock) -> usize {
         block.impacts.len()
     }
 
-    fn frame(&self, seq: u64, start: u64, block: &mut RigFileBlock) -> Frame {
+    /// The frame of `block` (sequence `seq`, from sample `start`); its impacts are moved
+    /// into the frame.
+    pub fn frame(&self, seq: u64, start: u64, block: &mut RunBlock) -> Frame {
         let mut frame = self.roles.frame(&block.signals, start);
         if !self.rig_columns.is_empty() {
             let mut columns = rig::columns(&self.rig, &block.signals);
@@ -122,9 +130,12 @@ impl ScenarioPlant for RigFilePlant {
         frame
     }
 
-    fn window(&self, indicators: bool) -> RigFileWindow {
+    /// An empty window; with `indicators`, it also averages the watched gear's
+    /// revolutions for its condition indicators (a point's window; the live regime's
+    /// needs none).
+    pub fn window(&self, indicators: bool) -> RunWindow {
         let window = RigWindow::new(&self.rig, self.rate_hz);
-        RigFileWindow {
+        RunWindow {
             window: if indicators {
                 window
             } else {
@@ -138,9 +149,9 @@ impl ScenarioPlant for RigFilePlant {
     }
 }
 
-/// A window of a rig file's plant: its sums, the gauged shaft's torque, the watched
+/// A window of the run's plant: its sums, the gauged shaft's torque, the watched
 /// gear's average, the window's impacts and the motor body's revolutions.
-pub struct RigFileWindow {
+pub struct RunWindow {
     window: RigWindow,
     rig: Arc<RigTopology>,
     /// The set speed the window was opened under (rev/min).
@@ -149,7 +160,7 @@ pub struct RigFileWindow {
     revolutions_s: Vec<f64>,
 }
 
-impl RigFileWindow {
+impl RunWindow {
     /// The window summed up and judged as a steady point.
     fn steady(&self) -> SteadySummary {
         let rpm = self.rpm.unwrap_or(0.0);
@@ -158,28 +169,23 @@ impl RigFileWindow {
             .summary(&self.rig, rpm, &self.impacts, &self.revolutions_s);
         summary.steady
     }
-}
-
-impl PointWindow for RigFileWindow {
-    type Block = RigFileBlock;
-
-    fn add(&mut self, block: &RigFileBlock, set: &SetPoints) {
+    /// Adds a block made under `set`.
+    pub fn add(&mut self, block: &RunBlock, set: &SetPoints) {
         self.rpm.get_or_insert(set.speed_rpm);
         self.window.add(&block.signals);
         self.impacts.extend_from_slice(&block.impacts);
         self.revolutions_s.extend_from_slice(&block.revolutions_s);
     }
 
-    fn verdict(&self) -> (SteadySummary, Option<GearIndicators>) {
+    /// The window summed up and its motion judged, and the watched gear's indicators
+    /// (none under two revolutions).
+    pub fn verdict(&self) -> (SteadySummary, Option<GearIndicators>) {
         let report = self.window.condition_report();
         (self.steady(), report.as_ref().map(GearIndicators::from))
     }
 
-    fn quick_regime(&self) -> Option<String> {
-        None
-    }
-
-    fn judged(self) -> (String, String) {
+    /// The regime and the judged motion (a spectrum of the window: costly).
+    pub fn judged(self) -> (String, String) {
         let motion = self.steady().motion.motion;
         (regime_of(motion).to_string(), motion.to_string())
     }
