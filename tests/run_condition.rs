@@ -8,10 +8,9 @@ use common::{csv_rows, folder, json_of, number, testrig_ok};
 
 /// At 1300 rev/min and 2.712 N m on the chosen rig (period 2), a run held from the start
 /// and measured at 20 s judges its point over 20–30 s; its indicators in `readings.csv`
-/// and in the manifest equal `simulate`'s over the same window to 1e-6. (`run` takes a
-/// preset on the thesis's plant, `simulate` on its rig file's; they agree to 1.7e-8 here,
-/// measured: the plants' rounding. On the rig file alone the run, recorded from the
-/// start, and simulate, settled in strides, agree to 3.5e-9.)
+/// and in the manifest equal `simulate`'s over the same window to 1e-6 (both run the
+/// preset as its rig on the one plant; the run, recorded from the start, and simulate,
+/// settled in strides, agree to 3.5e-9, measured).
 #[test]
 fn a_runs_point_carries_the_indicators_simulate_gives_for_the_same_window() {
     let dir = folder("run-condition");

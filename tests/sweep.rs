@@ -332,6 +332,22 @@ fn orders_beyond_the_band_are_recorded_as_missing_and_too_short_cases_are_refuse
         stderr.contains("edges.toml:7:") && stderr.contains("case.measure_s"),
         "{stderr}"
     );
+    // A preset's value its parameters take and its rig does not (a speed loop of 0 Hz,
+    // the thesis plant's "no loop") is refused when the sweep is read, at its path.
+    std::fs::write(
+        &file,
+        format!("{text}[rig]\nset = {{ speed_loop_hz = 0 }}\n"),
+    )
+    .expect("sweep file");
+    let refused = testrig(&[
+        "sweep",
+        file.to_str().expect("utf-8"),
+        "--out",
+        out.to_str().expect("utf-8"),
+    ]);
+    let stderr = String::from_utf8_lossy(&refused.stderr);
+    assert_eq!(refused.status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("motor.speed_loop_hz"), "{stderr}");
     std::fs::remove_dir_all(&dir).ok();
 }
 
@@ -340,8 +356,7 @@ fn orders_beyond_the_band_are_recorded_as_missing_and_too_short_cases_are_refuse
 /// and 5.424 N m; period-1 and aperiodic among them), run as the campaign runs them on
 /// the calibrated preset's rig file, which `simulate --preset` runs too: chaotic at
 /// 600 rev/min, 2.712 N m, so that agreement there means the same steps, not a robust
-/// motion. (The campaign on the preset itself still runs on the thesis's plant, whose
-/// rounding parts from the rig file's within a second at a chaotic point.)
+/// motion. (The campaign on the preset itself now runs the same rig on the same plant.)
 #[test]
 fn simulate_with_its_defaults_classifies_as_the_campaign_does() {
     let dir = folder("agree");

@@ -1,10 +1,8 @@
 //! The motion of the last stretch of a live run: after each change of the set points the
 //! rig is left [`SETTLE_S`] to settle (the panel says "settling"), then windows of
 //! [`REGIME_WINDOW_S`] are summarised, each started afresh when the one before fills. The
-//! regime, where the plant tells it cheaply (the thesis's, from its once-per-revolution
-//! states), is taken in the plant's thread; the physics judge (a spectrum of the window)
-//! runs in a thread of its own, so that the paced thread is never held up by it, and
-//! gives a rig file's regime with its motion.
+//! physics judge (a spectrum of the window) runs in a thread of its own, so that the
+//! paced thread is never held up by it, and gives the regime with the motion.
 
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -53,8 +51,8 @@ impl RollingRegime {
     }
 
     /// Adds `plant`'s block of `samples` samples made under `set`; when a window has just
-    /// filled, its regime goes to the status at once where the plant tells it cheaply, and
-    /// the judge's regime and motion when the judge's thread is done.
+    /// filled, the judge's regime and motion go to the status when the judge's thread is
+    /// done.
     pub fn add(&mut self, plant: &RunPlant, block: &RunBlock, samples: usize, set: &SetPoints) {
         if self.held.as_ref() != Some(set) {
             self.restart(plant, *set);

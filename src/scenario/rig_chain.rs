@@ -1,6 +1,6 @@
-//! The measuring chain on a rig file's rig: the strain stage and the static calibration on
-//! the gauged shaft (the stages were wired on what a rig file's plant offers,
-//! `crate::rig_roles`).
+//! The measuring chain on the rig (a rig file's, or a preset's as its rig): the strain
+//! stage and the static calibration on the gauged shaft (the stages were wired on what
+//! the plant offers, `crate::rig_roles`).
 
 use super::run_plan::ChainPlan;
 use super::source::ScenarioSource;
@@ -8,7 +8,8 @@ use crate::rig_roles::gauged_shaft_strain;
 use crate::steady_point::motor_of;
 
 /// `chain` on `rig`: its strain stage and static calibration on the gauged shaft. A rig
-/// without a motor or gauges is refused, named at the scenario's `rig.file`.
+/// without a motor or gauges is refused, named at the scenario's `rig.file` (a preset's
+/// rig has both).
 pub fn rig_chain(
     src: &ScenarioSource,
     rig: &rig::RigTopology,

@@ -104,7 +104,8 @@ impl CaseRig {
         check_load_within(load_nm, &self.topology()).map_err(|e| e.to_string())
     }
 
-    /// The whole rig's undamped natural frequencies (Hz), rigid-body mode left out.
+    /// The rig's undamped natural frequencies (Hz) with its meshes in contact, rigid-body
+    /// mode left out (`testrig modes`' first table).
     pub fn natural_hz(&self) -> Vec<f64> {
         self.topology().natural_frequencies_hz()
     }

@@ -8,7 +8,7 @@ use crate::scenario::read_chain::record_plan;
 use crate::scenario::read_chain::{ChainSetting, analyser_plan, chain_plan};
 use crate::scenario::read_rig::rig_params;
 use crate::scenario::read_stages::read_signal_among;
-use crate::scenario::rig_overrides::rig_of_file_table;
+use crate::scenario::rig_overrides::{checked_at_path, rig_of_file_table};
 use crate::scenario::scenario_toml::RecordFile;
 use crate::scenario::{AnalyserPlan, ChainPlan, RecordPlan, ScenarioSource};
 use crate::vocabulary::limits::check_simulated_s;
@@ -114,8 +114,12 @@ pub fn build_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<Swe
         band_hz,
     };
     let chain = chain_plan(src, &file.chain, setting)?;
-    // Checked here: a motor and gauges; each case puts the strain stage on its gauge.
-    rig_chain(src, &base.topology(), &chain)?;
+    // Checked here: the rig (a preset's as converted: a value its parameters take and no
+    // rig does is refused at its path), a motor and gauges; each case puts the strain
+    // stage on its gauge.
+    let topology = base.topology();
+    checked_at_path(&topology).map_err(|e| src.error(0..0, "rig", format!("{e:#}")))?;
+    rig_chain(src, &topology, &chain)?;
     let names = chain.stages.signal_names_on(&plant);
     let input = file.analyser.input.as_ref();
     read_signal_among(src, &names, input, "analyser.input", &analyser.input)?;

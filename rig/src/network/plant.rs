@@ -150,12 +150,14 @@ impl NetworkPlant {
         let step_s = output_step_s / f64::from(substeps);
         let len = model.layout.padded();
         let meshes = model.meshes.len();
+        // The schedule's own oscillating load is always taken, as its top speed is.
+        let oscillating_top_hz = schedule.oscillating_load_hz.range().1;
         let mut plant = Self {
             model,
             schedule,
             ceiling: LiveCeiling {
                 speed_rpm: top_rpm,
-                ..ceiling
+                oscillating_load_hz: ceiling.oscillating_load_hz.max(oscillating_top_hz),
             },
             output_step_s,
             substeps,

@@ -17,15 +17,17 @@ use crate::vocabulary::Refusal;
 use crate::vocabulary::RigCommand;
 use crate::vocabulary::choices::WavFormat;
 use crate::vocabulary::frame::{Frame, SignalNames};
-use crate::vocabulary::signal_names::STRAIN;
+use crate::vocabulary::signal_names::{STRAIN, TIME_S};
 
 /// Order of the Butterworth low-pass a decimated recording passes each signal through.
 const DECIMATION_FILTER_ORDER: usize = 8;
 /// Its cut-off as a share of the kept rate's Nyquist frequency (as scipy's `decimate`).
 const DECIMATION_CUTOFF_OF_NYQUIST: f64 = 0.8;
-/// Signals that are states or counts, kept sample by sample when decimating (a low-pass
-/// of a tooth number means nothing).
-const STATE_SIGNALS: [&str; 3] = ["time_s", "contact", "tooth"];
+/// Whether signal `name` is a state or a time, kept sample by sample when decimating (a
+/// low-pass of a contact state means nothing): time, and each mesh's `contact_<mesh>`.
+fn is_state(name: &str) -> bool {
+    name == TIME_S || name.starts_with("contact_")
+}
 
 /// Writes every recorded frame.
 pub struct RecorderSink {
@@ -149,7 +151,7 @@ fn decimation_filter(
     rate_hz: f64,
     decimate: usize,
 ) -> anyhow::Result<Option<AntiAliasFilter>> {
-    if decimate <= 1 || STATE_SIGNALS.contains(&name) {
+    if decimate <= 1 || is_state(name) {
         return Ok(None);
     }
     let spec = decimation_spec(rate_hz, decimate);
@@ -373,12 +375,12 @@ mod tests {
     #[test]
     fn states_and_counts_are_kept_as_sampled_and_no_decimation_filters_nothing() {
         assert!(
-            decimation_filter("tooth", 51_200.0, 8)
+            decimation_filter("time_s", 51_200.0, 8)
                 .expect("ok")
                 .is_none()
         );
         assert!(
-            decimation_filter("contact", 51_200.0, 8)
+            decimation_filter("contact_gears", 51_200.0, 8)
                 .expect("ok")
                 .is_none()
         );
