@@ -156,7 +156,7 @@ pub use judge::{JudgeInput, Judgement, Motion, judge};
 pub use modal::{Chain, NaturalMode, RigChains};
 pub use mode::{MeshMode, Mode, MotorMode, PairZone};
 pub use network::{
-    Column, Contact, NetworkBlock, NetworkImpact, NetworkPlant, NetworkStart, column_names,
+    Column, Contact, NetworkBlock, NetworkImpact, NetworkPlant, NetworkStart, column, column_names,
     column_specs, columns,
 };
 pub use options::{ContactLaw, MeshPairs};

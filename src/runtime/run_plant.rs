@@ -119,11 +119,10 @@ impl RunPlant {
     /// into the frame.
     pub fn frame(&self, seq: u64, start: u64, block: &mut RunBlock) -> Frame {
         let mut frame = self.roles.frame(&block.signals, start);
-        if !self.rig_columns.is_empty() {
-            let mut columns = rig::columns(&self.rig, &block.signals);
-            for &k in &self.rig_columns {
-                frame.channels.push(std::mem::take(&mut columns[k]).into());
-            }
+        for &k in &self.rig_columns {
+            // The indices are the rig's own (`PlanRig::rig_columns`), each a column.
+            let column = rig::column(&self.rig, &block.signals, k).expect("a column of the rig");
+            frame.channels.push(column.into());
         }
         frame.seq = seq;
         frame.impacts = std::mem::take(&mut block.impacts).into();

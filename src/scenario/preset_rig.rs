@@ -27,9 +27,7 @@ pub fn preset_rig_with_overrides(name: &str, overrides: &[String]) -> anyhow::Re
         .cloned()
         .partition(|item| is_thesis_name(item));
     let mut rig = if is_preset_file(name) || !named.is_empty() {
-        let params = preset_with_overrides(name, &named)?;
-        let (title, description) = preset_title(name)?;
-        rig::preset_rig(&title, &description, &params)
+        preset_topology(name, &preset_with_overrides(name, &named)?)?
     } else {
         rig_topology(&preset_rig_source(name)?)?
     };
@@ -60,6 +58,13 @@ pub fn command_rig(
 /// near it.
 fn is_thesis_name(item: &str) -> bool {
     !param_key(item).contains('.')
+}
+
+/// The rig preset `name`'s parameters `params` describe (`rig::preset_rig`), named and
+/// described as [`preset_title`] says.
+pub(crate) fn preset_topology(name: &str, params: &rig::RigParams) -> anyhow::Result<RigTopology> {
+    let (title, description) = preset_title(name)?;
+    Ok(rig::preset_rig(&title, &description, params))
 }
 
 /// The name and description of the rig converted from preset `name`: a built-in preset's

@@ -4,9 +4,9 @@ use rig::{DEFAULT_PRESET, ParamValue, RigParams, Schedule, Track};
 use toml::Spanned;
 
 use super::preset_file::preset_params;
-use super::preset_rig::preset_title;
+use super::preset_rig::preset_topology;
 use super::read_rig_mesh::seed_faults;
-use super::rig_overrides::{checked_at_path, rig_of_file_table, set_rig_value};
+use super::rig_overrides::{checked_at_path, rig_of_file_table, set_table_paths};
 use super::run_plan::{Measure, PlanRig};
 use super::scenario_toml::{ChangeFile, RigFile, ScenarioFile, ScheduleFile, SurveyFile};
 use super::source::ScenarioSource;
@@ -25,13 +25,10 @@ pub fn plan_rig(src: &ScenarioSource, table: &RigFile) -> anyhow::Result<PlanRig
         });
     }
     let (name, params) = thesis_params(src, table, |key| !key.contains('.'))?;
-    let (title, description) = preset_title(&name)?;
-    let mut rig = rig::preset_rig(&title, &description, &params);
+    let mut rig = preset_topology(&name, &params)?;
     seed_faults(src, &mut rig, &table.fault)?;
-    for (key, value) in table.set.iter().filter(|(key, _)| key.contains('.')) {
-        set_rig_value(&mut rig, key, value.get_ref())
-            .map_err(|e| src.error(value.span(), &format!("rig.set.{key}"), e))?;
-    }
+    let paths = table.set.iter().filter(|(key, _)| key.contains('.'));
+    set_table_paths(src, &mut rig, paths)?;
     checked_at_path(&rig).map_err(|e| src.error(0..0, "rig", format!("preset {name}: {e:#}")))?;
     Ok(PlanRig {
         topology: Box::new(rig),

@@ -6,6 +6,7 @@ use std::path::Path;
 
 use anyhow::Context;
 use rig::RigTopology;
+use toml::Spanned;
 
 use super::read_rig_file::{place_item, read_rig_file, rig_topology};
 use super::read_rig_mesh::seed_faults;
@@ -83,13 +84,24 @@ pub fn rig_of_file_table(src: &ScenarioSource, table: &RigFile) -> anyhow::Resul
     let mut rig =
         read_rig_file(&path).map_err(|e| src.error(file.span(), "rig.file", format!("{e:#}")))?;
     seed_faults(src, &mut rig, &table.fault)?;
-    for (key, value) in &table.set {
-        set_rig_value(&mut rig, key, value.get_ref())
-            .map_err(|e| src.error(value.span(), &format!("rig.set.{key}"), e))?;
-    }
+    set_table_paths(src, &mut rig, table.set.iter())?;
     rig.check()
         .map_err(|e| src.error(file.span(), "rig", format!("{}: {e}", path.display())))?;
     Ok(rig)
+}
+
+/// Sets each `[rig.set]` entry of `entries` (a rig path and its value) on `rig`, a refusal
+/// named at its entry; not checked with the whole rig.
+pub fn set_table_paths<'a>(
+    src: &ScenarioSource,
+    rig: &mut RigTopology,
+    entries: impl Iterator<Item = (&'a String, &'a Spanned<toml::Value>)>,
+) -> anyhow::Result<()> {
+    for (key, value) in entries {
+        set_rig_value(rig, key, value.get_ref())
+            .map_err(|e| src.error(value.span(), &format!("rig.set.{key}"), e))?;
+    }
+    Ok(())
 }
 
 /// Sets `path` of `rig` to `value`: a number by [`RigTopology::set_field`], a fault's kind

@@ -76,27 +76,49 @@ pub fn column_names(rig: &RigTopology) -> Vec<String> {
 /// The columns of `block` in the order of [`column_specs`] (speeds in rev/min, strain
 /// in µε).
 pub fn columns(rig: &RigTopology, block: &NetworkBlock) -> Vec<Vec<f64>> {
-    let rpm = |c: &Vec<f64>| c.iter().map(|w| w * 30.0 / PI).collect::<Vec<f64>>();
-    let mut out = vec![block.time_s.clone()];
-    out.extend(block.speed_rad_s.iter().map(rpm));
-    out.extend(block.angle_rad.iter().cloned());
-    out.extend(block.shaft_torque_nm.iter().cloned());
-    out.extend(
-        block
-            .contact
-            .iter()
-            .map(|c| c.iter().map(|&x| f64::from(x)).collect()),
-    );
-    out.extend(block.mesh_force_n.iter().cloned());
-    out.push(block.motor_torque_nm.clone());
-    if let Some(g) = &rig.gauge {
-        let k = g.microstrain_per_nm();
-        out.push(
-            block.shaft_torque_nm[g.shaft]
-                .iter()
-                .map(|t| t * k)
-                .collect(),
-        );
+    (0..).map_while(|k| column(rig, block, k)).collect()
+}
+
+/// Column `k` of `block` in the order of [`column_specs`] (speeds in rev/min, strain in
+/// µε), alone: a run computes only the columns it reads. `None` past the last.
+pub fn column(rig: &RigTopology, block: &NetworkBlock, k: usize) -> Option<Vec<f64>> {
+    let (bodies, shafts, meshes) = (rig.bodies.len(), rig.shafts.len(), rig.meshes.len());
+    let mut k = k;
+    if k == 0 {
+        return Some(block.time_s.clone());
     }
-    out
+    k -= 1;
+    if k < bodies {
+        return Some(block.speed_rad_s[k].iter().map(|w| w * 30.0 / PI).collect());
+    }
+    k -= bodies;
+    if k < bodies {
+        return Some(block.angle_rad[k].clone());
+    }
+    k -= bodies;
+    if k < shafts {
+        return Some(block.shaft_torque_nm[k].clone());
+    }
+    k -= shafts;
+    if k < meshes {
+        return Some(block.contact[k].iter().map(|&x| f64::from(x)).collect());
+    }
+    k -= meshes;
+    if k < meshes {
+        return Some(block.mesh_force_n[k].clone());
+    }
+    k -= meshes;
+    match (k, &rig.gauge) {
+        (0, _) => Some(block.motor_torque_nm.clone()),
+        (1, Some(g)) => {
+            let per_nm = g.microstrain_per_nm();
+            Some(
+                block.shaft_torque_nm[g.shaft]
+                    .iter()
+                    .map(|t| t * per_nm)
+                    .collect(),
+            )
+        }
+        _ => None,
+    }
 }

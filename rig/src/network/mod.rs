@@ -47,6 +47,6 @@ mod system_cache;
 mod teeth;
 
 pub use block::{NetworkBlock, NetworkImpact};
-pub use columns::{Column, column_names, column_specs, columns};
+pub use columns::{Column, column, column_names, column_specs, columns};
 pub use mode::Contact;
 pub use plant::{NetworkPlant, NetworkStart, SKIP_STRETCH};

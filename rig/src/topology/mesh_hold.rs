@@ -102,41 +102,15 @@ impl RigTopology {
     /// coordinate, the angle of its first body; another gear turns at −r_b1/r_b2 of the
     /// gear it meshes with.
     fn rigid_coordinates(&self) -> Coordinates {
-        let n = self.bodies.len();
-        let mut of_body: Vec<Option<(usize, f64)>> = vec![None; n];
-        let mut count = 0;
-        for first in 0..n {
-            if of_body[first].is_some() {
-                continue;
-            }
-            of_body[first] = Some((count, 1.0));
-            let mut stack = vec![first];
-            while let Some(body) = stack.pop() {
-                let (_, ratio) = of_body[body].expect("placed");
-                for m in &self.meshes {
-                    let [a, b] = m.gears;
-                    let [ra, rb] = m.base_radii_m();
-                    let next = if a == body {
-                        Some((b, -ratio * ra / rb))
-                    } else if b == body {
-                        Some((a, -ratio * rb / ra))
-                    } else {
-                        None
-                    };
-                    if let Some((other, r)) = next
-                        && of_body[other].is_none()
-                    {
-                        of_body[other] = Some((count, r));
-                        stack.push(other);
-                    }
-                }
-            }
-            count += 1;
-        }
+        let links = self.meshes.iter().map(|m| {
+            let [ra, rb] = m.base_radii_m();
+            (m.gears, -ra / rb)
+        });
+        let (of_body, count) = groups(self.bodies.len(), links.collect());
         Coordinates {
-            of_body: of_body.into_iter().map(|c| c.expect("placed")).collect(),
+            part_of: vec![0; of_body.len()],
+            of_body,
             count,
-            part_of: vec![0; n],
             parts: 1,
         }
     }
@@ -144,37 +118,48 @@ impl RigTopology {
     /// The parts the shafts join with every mesh apart, each body its own coordinate.
     fn shaft_parts(&self) -> Coordinates {
         let n = self.bodies.len();
-        let mut part: Vec<Option<usize>> = vec![None; n];
-        let mut count = 0;
-        for first in 0..n {
-            if part[first].is_some() {
-                continue;
-            }
-            part[first] = Some(count);
-            let mut stack = vec![first];
-            while let Some(body) = stack.pop() {
-                for s in &self.shafts {
-                    let [a, b] = s.between;
-                    let other = if a == body {
-                        b
-                    } else if b == body {
-                        a
-                    } else {
-                        continue;
-                    };
-                    if part[other].is_none() {
-                        part[other] = Some(count);
-                        stack.push(other);
-                    }
-                }
-            }
-            count += 1;
-        }
+        let (part_of, parts) = groups(n, self.shafts.iter().map(|s| (s.between, 1.0)).collect());
         Coordinates {
             of_body: (0..n).map(|body| (body, 1.0)).collect(),
             count: n,
-            part_of: part.into_iter().map(|p| p.expect("placed")).collect(),
-            parts: count,
+            part_of: part_of.into_iter().map(|(part, _)| part).collect(),
+            parts,
         }
     }
+}
+
+/// The groups `links` join among `n` bodies, numbered in the order of their first body,
+/// and each body's angle per unit angle of that first body: a link ([a, b], ratio) turns
+/// b at `ratio` times a (and a at 1/`ratio` times b). Also how many groups there are.
+fn groups(n: usize, links: Vec<([usize; 2], f64)>) -> (Vec<(usize, f64)>, usize) {
+    let mut of_body: Vec<Option<(usize, f64)>> = vec![None; n];
+    let mut count = 0;
+    for first in 0..n {
+        if of_body[first].is_some() {
+            continue;
+        }
+        of_body[first] = Some((count, 1.0));
+        let mut stack = vec![first];
+        while let Some(body) = stack.pop() {
+            let (_, ratio) = of_body[body].expect("placed");
+            for &([a, b], link) in &links {
+                let next = if a == body {
+                    (b, ratio * link)
+                } else if b == body {
+                    (a, ratio / link)
+                } else {
+                    continue;
+                };
+                if of_body[next.0].is_none() {
+                    of_body[next.0] = Some((count, next.1));
+                    stack.push(next.0);
+                }
+            }
+        }
+        count += 1;
+    }
+    (
+        of_body.into_iter().map(|c| c.expect("placed")).collect(),
+        count,
+    )
 }
