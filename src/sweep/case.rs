@@ -1,12 +1,11 @@
-//! What one case of a sweep shows (`CaseResult`), and what measuring a case takes
-//! (`case_run.rs` runs it): its timing, its instruments, its result from the judge's
-//! summary and the analyser's display.
+//! What one case of a sweep shows (`CaseResult`, with its rig's faults as `labels.csv`
+//! names them), and what measuring a case takes (`case_run.rs` runs it): its timing, its
+//! instruments, its result from the judge's summary and the analyser's display.
 
 use instruments::Line;
-use rig::{Judgement, Regime, SteadySummary};
+use rig::{Judgement, Regime, RigTopology, SteadySummary};
 use serde::{Deserialize, Serialize};
 
-use super::case_rig::FaultLabel;
 use super::grid::{Case, SweepPlan};
 use super::lines::{OrderLine, order_line, peaks};
 use super::sequence::Direction;
@@ -101,6 +100,21 @@ pub struct CaseResult {
     pub spectrum: Vec<(f64, f64)>,
     /// The lines that stand out: (Hz, V² rms).
     pub peaks: Vec<(f64, f64)>,
+}
+
+/// One tooth fault of a case's rig, as `labels.csv` names it.
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct FaultLabel {
+    /// The mesh's name.
+    pub mesh: String,
+    /// `driver` or `driven`.
+    pub gear: String,
+    /// The tooth, 1..=z of that gear.
+    pub tooth: u32,
+    /// `crack`, `pit` or `broken`.
+    pub kind: String,
+    /// Its severity, 0..=1 (0: the tooth is healthy).
+    pub severity: f64,
 }
 
 impl CaseResult {
@@ -220,4 +234,20 @@ pub(crate) fn case_result(
         spectrum: lines.iter().map(|l| (l.frequency_hz, l.value)).collect(),
         peaks: peaks(lines, plan.line_db),
     }
+}
+
+/// The tooth faults of `rig` (a case's rig as it runs), as `labels.csv` names them.
+pub fn fault_labels(rig: &RigTopology) -> Vec<FaultLabel> {
+    rig.meshes
+        .iter()
+        .flat_map(|m| {
+            m.faults.iter().map(|f| FaultLabel {
+                mesh: m.name.clone(),
+                gear: f.gear.name().into(),
+                tooth: f.tooth,
+                kind: f.kind.name().into(),
+                severity: f.severity,
+            })
+        })
+        .collect()
 }

@@ -27,21 +27,6 @@ pub enum CaseRig {
     File(Box<RigTopology>),
 }
 
-/// One tooth fault of a case's rig, as `labels.csv` names it.
-#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
-pub struct FaultLabel {
-    /// The mesh's name.
-    pub mesh: String,
-    /// `driver` or `driven`.
-    pub gear: String,
-    /// The tooth, 1..=z of that gear.
-    pub tooth: u32,
-    /// `crack`, `pit` or `broken`.
-    pub kind: String,
-    /// Its severity, 0..=1 (0: the tooth is healthy).
-    pub severity: f64,
-}
-
 impl CaseRig {
     /// The preset's parameters; a rig file's rig is refused, `what` saying what needs them.
     pub fn preset(&self, what: &str) -> anyhow::Result<&RigParams> {
@@ -108,22 +93,5 @@ impl CaseRig {
     /// mode left out (`testrig modes`' first table).
     pub fn natural_hz(&self) -> Vec<f64> {
         self.topology().natural_frequencies_hz()
-    }
-
-    /// The rig's tooth faults.
-    pub fn fault_labels(&self) -> Vec<FaultLabel> {
-        self.topology()
-            .meshes
-            .iter()
-            .flat_map(|m| {
-                m.faults.iter().map(|f| FaultLabel {
-                    mesh: m.name.clone(),
-                    gear: f.gear.name().into(),
-                    tooth: f.tooth,
-                    kind: f.kind.name().into(),
-                    severity: f.severity,
-                })
-            })
-            .collect()
     }
 }

@@ -11,7 +11,7 @@ use rig::{Approach, NetworkPlant, RigTopology};
 
 use super::case::{
     CaseInstruments, CaseResult, KEPT_REVOLUTIONS, case_instruments, case_result, chain_lead_s,
-    run_up_wait_s,
+    fault_labels, run_up_wait_s,
 };
 use super::case_recording::CaseRecording;
 use super::grid::{Case, SweepPlan};
@@ -132,7 +132,7 @@ pub fn measure_case(
     result.measured_condition = roles
         .watched_teeth
         .and_then(|teeth| measured.and_then(|m| m.report(teeth)));
-    result.faults = case.rig.fault_labels();
+    result.faults = fault_labels(rig);
     if let Some(r) = recording {
         result.recordings = r.finish()?;
     }

@@ -67,7 +67,7 @@ fn fault_columns(c: &CaseResult) -> [String; 5] {
             String::new(),
         ];
     }
-    let join = |f: &dyn Fn(&super::case_rig::FaultLabel) -> String| {
+    let join = |f: &dyn Fn(&super::case::FaultLabel) -> String| {
         faults.iter().map(|x| f(x)).collect::<Vec<_>>().join("+")
     };
     [

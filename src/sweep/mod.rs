@@ -6,7 +6,7 @@
 //! `rig::Approach`), `case_rig.rs` (a case's rig: a preset's parameters, or a rig file's with its
 //! faults; either run as a rig),
 //! `sequence.rs` (`Sequence`: each point on its own, or up and down;
-//! `Direction`), `case.rs` (a case's result, timing and instruments), `case_run.rs` (one
+//! `Direction`), `case.rs` (a case's result with its fault labels, timing and instruments), `case_run.rs` (one
 //! case: its rig's plant settled, the chain inline into ADC and analyser, regime and the
 //! judge's motion), `measured_condition.rs` (the indicators of the
 //! signal as the chain measures it), `case_recording.rs` (a case's WAV/CSV/UFF58 in
@@ -49,7 +49,8 @@ pub(crate) mod table;
 pub(crate) mod thesis;
 
 pub use case::CaseResult;
-pub use case_rig::{CaseRig, FaultLabel};
+pub use case::FaultLabel;
+pub use case_rig::CaseRig;
 pub use case_run::run_case;
 pub use grid::{Case, SweepPlan, build_sweep};
 pub use meta::{SweepMeta, fingerprint, read_meta, sweep_meta};
