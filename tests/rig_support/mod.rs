@@ -4,6 +4,7 @@
 #![allow(dead_code)]
 
 pub mod faulted;
+pub mod thesis_reference;
 
 use rig::{NetworkBlock, NetworkPlant, NetworkStart, RigTopology, Schedule, Track};
 use testrig::scenario::read_rig_file;

@@ -368,6 +368,11 @@ impl NetworkPlant {
         self.sample as f64 * self.output_step_s
     }
 
+    /// The time between output samples (s).
+    pub fn output_step_s(&self) -> f64 {
+        self.output_step_s
+    }
+
     /// The current sample's index: samples run so far.
     pub fn sample(&self) -> u64 {
         self.sample

@@ -3,7 +3,10 @@
 
 pub mod reference;
 
-use rig::{Plant, PlantConfig, RigParams, Schedule, SignalBlock, preset};
+use rig::{
+    NetworkBlock, NetworkPlant, NetworkStart, Plant, PlantConfig, RigParams, Schedule, SignalBlock,
+    preset, preset_rig,
+};
 
 /// The thesis preset.
 pub fn thesis() -> RigParams {
@@ -17,6 +20,31 @@ pub fn plant(params: RigParams, schedule: Schedule, rate_hz: f64) -> Plant {
         ..PlantConfig::default()
     };
     Plant::new(params, schedule, config).expect("valid plant")
+}
+
+/// The one plant of the rig `params` describe (`rig::preset_rig`), on `schedule` at
+/// `rate_hz`, starting in its steady state at the schedule's first set points.
+pub fn preset_plant(params: &RigParams, schedule: Schedule, rate_hz: f64) -> NetworkPlant {
+    let rig = preset_rig("test", "a preset's parameters in a test", params);
+    NetworkPlant::new(&rig, schedule, rate_hz, NetworkStart::Steady).expect("valid plant")
+}
+
+/// Runs the one plant `plant` for `seconds` and returns the samples.
+pub fn run_for(plant: &mut NetworkPlant, seconds: f64) -> NetworkBlock {
+    let samples = (seconds / plant.output_step_s()).round() as usize;
+    let mut block = plant.block();
+    plant.run(samples, &mut block).expect("run completes");
+    block
+}
+
+/// The driven gear's lag behind the driving gear, θ3 − θ2 (rad, each in its sense of
+/// rotation) of each sample of the one plant's `block` (bodies 1 and 2).
+pub fn mesh_lag_rad(block: &NetworkBlock) -> Vec<f64> {
+    block.angle_rad[2]
+        .iter()
+        .zip(&block.angle_rad[1])
+        .map(|(x3, x2)| x3 - x2)
+        .collect()
 }
 
 /// Runs `plant` for `seconds` and returns the samples.
