@@ -1,34 +1,40 @@
 //! The physics judge's cost on one settled window: 10 s of output-shaft torque at 51.2 kHz
 //! (the live panel's window) and 30 s at 10.24 kHz (a campaign case), with their
-//! once-per-revolution samples, judged from the plant's own run.
+//! once-per-revolution samples, judged from the one plant's run of the preset
+//! `basmaji-1983-rig`.
 
 use divan::Bencher;
-use rig::{JudgeInput, Plant, PlantConfig, Schedule, SignalBlock, judge, preset};
+use rig::{JudgeInput, NetworkPlant, NetworkStart, Schedule, judge, preset, preset_rig};
 
 fn main() {
     divan::main();
 }
 
-/// The torque and its revolution samples over `seconds` at `rate_hz`, settled first.
+/// The intermediate shaft's torque and its samples at the motor's whole revolutions over
+/// `seconds` at `rate_hz`, settled 20 s first.
 fn window(seconds: f64, rate_hz: f64) -> (Vec<f64>, Vec<f64>) {
-    let config = PlantConfig {
-        output_rate_hz: rate_hz,
-        ..PlantConfig::default()
-    };
     let params = preset("basmaji-1983-rig").expect("preset");
+    let rig = preset_rig("basmaji-1983-rig", "the lab's rig", &params);
+    let schedule = Schedule::constant(1300.0, 2.712);
     let mut plant =
-        Plant::new(params, Schedule::constant(1300.0, 2.712), config).expect("valid plant");
+        NetworkPlant::new(&rig, schedule, rate_hz, NetworkStart::Steady).expect("valid plant");
     plant.skip((20.0 * rate_hz) as usize).expect("settles");
-    plant.drain_revolutions();
-    let mut block = SignalBlock::default();
+    plant.take_revolutions();
+    let start_s = plant.time_s();
+    let mut block = plant.block();
     plant
         .run((seconds * rate_hz) as usize, &mut block)
         .expect("runs");
-    let torque = block.shaft_torque_nm[rig::INTERMEDIATE_SHAFT].clone();
+    let intermediate = rig.shafts.iter().position(|s| s.name == "intermediate");
+    let torque = block.shaft_torque_nm[intermediate.expect("the gauged shaft")].clone();
     let revolutions = plant
-        .drain_revolutions()
+        .take_revolutions()
         .iter()
-        .map(|r| r.shaft_torque_nm)
+        .filter_map(|t| {
+            torque
+                .get(((t - start_s) * rate_hz).round() as usize)
+                .copied()
+        })
         .collect();
     (torque, revolutions)
 }

@@ -1,19 +1,24 @@
-//! The hand-calibrated preset against the thesis's measured fundamental: 13.33 Hz, seen as the
-//! running speed (≈ 780 rev/min) at which the output shaft resonates once per revolution.
+//! The hand-calibrated preset's rig on the one plant against the thesis's measured
+//! fundamental: 13.33 Hz, seen as the running speed (≈ 780 rev/min) at which the output
+//! shaft resonates once per revolution.
 //! With backlash the teeth separate at that resonance and the rig softens, so the peak of
 //! the once-per-revolution response lies below the linear 17.84 Hz (1070 rev/min) of App. C.
 
 mod support;
 
-use rig::{INTERMEDIATE_SHAFT, RigParams, Schedule, preset};
+use rig::{RigParams, Schedule, preset};
 
-/// Amplitude (N m) of the once-per-revolution component of the output-shaft torque at
-/// `rpm` and `load_nm`, over 60 revolutions after 8 s of settling.
+/// The preset rig's intermediate (output, gauged) shaft, K34.
+const INTERMEDIATE_SHAFT: usize = 1;
+
+/// Amplitude (N m) of the once-per-revolution component of the output-shaft torque of the
+/// one plant of `params`' rig at `rpm` and `load_nm`, over 60 revolutions after 8 s of
+/// settling.
 fn first_order_nm(params: &RigParams, rpm: f64, load_nm: f64) -> f64 {
-    let mut plant = support::plant(params.clone(), Schedule::constant(rpm, load_nm), 51_200.0);
+    let mut plant = support::preset_plant(params, Schedule::constant(rpm, load_nm), 51_200.0);
     plant.skip(8 * 51_200).expect("settles");
     let revolution_s = 60.0 / rpm;
-    let block = support::record(&mut plant, 60.0 * revolution_s);
+    let block = support::run_for(&mut plant, 60.0 * revolution_s);
     let (re, im) = support::phasor(
         &block.time_s,
         &block.shaft_torque_nm[INTERMEDIATE_SHAFT],

@@ -1,16 +1,29 @@
-//! Each mesh option shows its physical effect.
+//! Each mesh option shows its physical effect on the one plant of the thesis's rig
+//! (`rig::preset_rig`).
 
 mod support;
 
-use rig::{ContactLaw, GearGeometry, MeshPairs, Schedule};
+use rig::{ContactLaw, GearGeometry, MeshPairs, NetworkBlock, RigParams, Schedule};
 
 const LOAD: f64 = 2.712;
 const RPM: f64 = 200.0;
 
+/// The thesis's mesh torque (N m) of each sample: the mesh's force along the line of
+/// action times the base radius r_b = m z cos α / 2.
+fn mesh_torque_nm(p: &RigParams, block: &NetworkBlock) -> Vec<f64> {
+    let base_radius_m =
+        p.module_m * f64::from(p.teeth) * p.pressure_angle_deg.to_radians().cos() / 2.0;
+    block.mesh_force_n[0]
+        .iter()
+        .map(|f| f * base_radius_m)
+        .collect()
+}
+
 #[test]
 fn without_options_a_loaded_rig_is_static() {
-    let mut plant = support::plant(support::quiet(), Schedule::constant(RPM, LOAD), 51_200.0);
-    let block = support::record(&mut plant, 1.0);
+    let mut plant =
+        support::preset_plant(&support::quiet(), Schedule::constant(RPM, LOAD), 51_200.0);
+    let block = support::run_for(&mut plant, 1.0);
     let torque = &block.shaft_torque_nm[1];
     assert!(
         support::std_dev(torque) < 1e-9,
@@ -18,15 +31,15 @@ fn without_options_a_loaded_rig_is_static() {
         support::std_dev(torque)
     );
     assert!((support::mean(torque) - LOAD).abs() < 1e-9);
-    assert!(plant.impacts().is_empty());
+    assert!(plant.take_impacts().is_empty());
 }
 
 #[test]
 fn tooth_shifting_kicks_the_shafts_at_tooth_pass_frequency() {
     let mut p = support::quiet();
     p.tooth_shifting = true;
-    let mut plant = support::plant(p, Schedule::constant(RPM, LOAD), 51_200.0);
-    let block = support::record(&mut plant, 3.0);
+    let mut plant = support::preset_plant(&p, Schedule::constant(RPM, LOAD), 51_200.0);
+    let block = support::run_for(&mut plant, 3.0);
     let start = block.len() / 3;
     let (t, torque) = (&block.time_s[start..], &block.shaft_torque_nm[1][start..]);
     let tooth_hz = RPM / 60.0 * 30.0;
@@ -71,8 +84,8 @@ fn two_pairs_halve_the_mesh_deflection_for_the_contact_ratio_fraction() {
         "{}",
         geometry.contact_ratio
     );
-    let mut plant = support::plant(p.clone(), Schedule::constant(RPM, LOAD), 51_200.0);
-    let block = support::record(&mut plant, 2.0);
+    let mut plant = support::preset_plant(&p, Schedule::constant(RPM, LOAD), 51_200.0);
+    let block = support::run_for(&mut plant, 2.0);
     let b = geometry.half_backlash_rad;
     let (mut single, mut double) = (Vec::new(), Vec::new());
     for i in block.len() / 2..block.len() {
@@ -112,10 +125,10 @@ fn two_pairs_halve_the_mesh_deflection_for_the_contact_ratio_fraction() {
 fn backlash_variation_moves_the_loaded_gears_once_per_revolution() {
     let mut p = support::quiet();
     p.backlash_variation_c1 = 0.38;
-    let mut plant = support::plant(p.clone(), Schedule::constant(RPM, LOAD), 51_200.0);
-    let block = support::record(&mut plant, 3.0);
+    let mut plant = support::preset_plant(&p, Schedule::constant(RPM, LOAD), 51_200.0);
+    let block = support::run_for(&mut plant, 3.0);
     assert!(
-        plant.impacts().is_empty(),
+        plant.take_impacts().is_empty(),
         "the load keeps the teeth together at 200 rev/min"
     );
     // Eight whole revolutions (0.6 s to 3 s) for the projection.
@@ -139,15 +152,14 @@ fn the_no_pull_law_never_pulls_and_the_thesis_law_does() {
     let run = |law: ContactLaw| {
         let mut p = support::thesis();
         p.contact_law = law;
-        let mut plant = support::plant(p, Schedule::constant(1300.0, LOAD), 51_200.0);
-        let block = support::record(&mut plant, 2.0);
-        let pulling = block
-            .mesh_torque_nm
+        let mut plant = support::preset_plant(&p, Schedule::constant(1300.0, LOAD), 51_200.0);
+        let block = support::run_for(&mut plant, 2.0);
+        let pulling = mesh_torque_nm(&p, &block)
             .iter()
-            .zip(&block.contact)
+            .zip(&block.contact[0])
             .filter(|&(&torque, &contact)| f64::from(contact) * torque < 0.0)
             .count();
-        (pulling, plant.impacts().len())
+        (pulling, plant.take_impacts().len())
     };
     let (thesis_pulling, thesis_impacts) = run(ContactLaw::Thesis);
     let (no_pull_pulling, no_pull_impacts) = run(ContactLaw::NoPull);

@@ -1,8 +1,9 @@
-//! Regime classification on once-per-revolution samples.
+//! Regime classification on once-per-revolution samples, of synthetic sequences and of
+//! the one plant (the preset's rig) at its motor's whole revolutions.
 
 mod support;
 
-use rig::{Regime, RegimeCriteria, RevolutionSample, Schedule, classify};
+use rig::{Regime, RegimeCriteria, RevolutionSample, Schedule, classify, classify_scaled};
 
 fn samples(states: impl Iterator<Item = f64>) -> Vec<RevolutionSample> {
     states
@@ -41,30 +42,67 @@ fn classifies_synthetic_sequences() {
 }
 
 #[test]
-fn revolution_samples_are_one_turn_of_the_driving_gear_apart() {
-    let mut plant = support::plant(
-        support::thesis(),
+fn revolution_instants_are_one_turn_of_the_motor_apart() {
+    let mut plant = support::preset_plant(
+        &support::thesis(),
         Schedule::constant(600.0, 2.712),
         51_200.0,
     );
-    support::record(&mut plant, 2.0);
-    let revs = plant.revolutions();
+    support::run_for(&mut plant, 2.0);
+    let revs = plant.take_revolutions();
     assert_eq!(revs.len(), 19, "600 rev/min for 2 s from angle 0");
     for pair in revs.windows(2) {
-        let period = pair[1].time_s - pair[0].time_s;
-        // The gear vibrates about the set rotation, so a turn takes 0.1 s within its vibration.
+        let period = pair[1] - pair[0];
+        // The motor vibrates about the set rotation, so a turn takes 0.1 s within its
+        // vibration.
         assert!((period - 0.1).abs() < 1e-4, "{period}");
     }
 }
 
+/// The value of `column` (sampled at `rate_hz` from `start_s`) at `t_s`, linear between
+/// the samples either side; `None` past the last sample.
+fn at_instant(column: &[f64], start_s: f64, rate_hz: f64, t_s: f64) -> Option<f64> {
+    let x = (t_s - start_s) * rate_hz;
+    let i = x.floor() as usize;
+    let f = x - i as f64;
+    Some(column.get(i)? * (1.0 - f) + column.get(i + 1)? * f)
+}
+
+/// The regime of the thesis's rig on the one plant at `rpm` and 2.712 N m, settled 20 s:
+/// the bodies' speeds about the set speed (rad/s) at the motor's whole revolutions over
+/// 5 s, each compared on the RMS of its vibration over the window (angles left out).
 fn steady_regime(rpm: f64) -> Regime {
-    let mut plant = support::plant(support::thesis(), Schedule::constant(rpm, 2.712), 51_200.0);
-    let summary = rig::run_steady(&mut plant, 20.0, 5.0, &RegimeCriteria::default(), |_| {
-        Ok::<(), rig::RigError>(())
-    })
-    .expect("runs");
-    assert!(summary.revolutions >= 50);
-    summary.regime
+    let rate_hz = 51_200.0;
+    let mut plant =
+        support::preset_plant(&support::thesis(), Schedule::constant(rpm, 2.712), rate_hz);
+    plant.skip((20.0 * rate_hz) as usize).expect("settles");
+    plant.take_impacts();
+    plant.take_revolutions();
+    let block = support::run_for(&mut plant, 5.0);
+    let revolutions = plant.take_revolutions();
+    assert!(revolutions.len() >= 50);
+    let set_rad_s = rpm * std::f64::consts::PI / 30.0;
+    let start_s = block.time_s[0];
+    let samples: Vec<RevolutionSample> = revolutions
+        .iter()
+        .filter_map(|&t| {
+            let mut state = [0.0; 10];
+            for k in 0..5 {
+                state[k] = at_instant(&block.angle_rad[k], start_s, rate_hz, t)? - set_rad_s * t;
+                state[5 + k] = at_instant(&block.speed_rad_s[k], start_s, rate_hz, t)? - set_rad_s;
+            }
+            Some(RevolutionSample {
+                time_s: t,
+                state,
+                shaft_torque_nm: at_instant(&block.shaft_torque_nm[1], start_s, rate_hz, t)?,
+            })
+        })
+        .collect();
+    let scale: [f64; 10] = std::array::from_fn(|i| match i.checked_sub(5) {
+        None => f64::INFINITY,
+        Some(k) => support::std_dev(&block.speed_rad_s[k]),
+    });
+    classify_scaled(&samples, &scale, &RegimeCriteria::default())
 }
 
 #[test]

@@ -1,11 +1,12 @@
 //! Set points that change during a run: the speed loop follows steps and ramps, the brake
-//! follows load steps, and the motor torque respects its limit.
+//! follows load steps, and the motor torque respects its limit; on the one plant of the
+//! thesis's rig (`rig::preset_rig`).
 
 mod support;
 
 use rig::{Schedule, Track};
 
-fn mean_speed_rpm(block: &rig::SignalBlock, from: usize, to: usize) -> f64 {
+fn mean_speed_rpm(block: &rig::NetworkBlock, from: usize, to: usize) -> f64 {
     support::mean(&block.speed_rad_s[0][from..to]) * 30.0 / std::f64::consts::PI
 }
 
@@ -15,8 +16,8 @@ fn the_speed_loop_follows_a_speed_step() {
         speed_rpm: Track::hold(600.0).step_to(1.0, 700.0),
         ..Schedule::constant(600.0, 2.712)
     };
-    let mut plant = support::plant(support::thesis(), schedule, 5_120.0);
-    let block = support::record(&mut plant, 12.0);
+    let mut plant = support::preset_plant(&support::thesis(), schedule, 5_120.0);
+    let block = support::run_for(&mut plant, 12.0);
     let rate = 5_120;
     assert!((mean_speed_rpm(&block, 0, rate) - 600.0).abs() < 0.5);
     // A 0.5 Hz loop with ζ 0.7 has settled 10 s later.
@@ -41,8 +42,8 @@ fn the_speed_loop_tracks_a_ramp() {
         speed_rpm: Track::hold(400.0).ramp_to(1.0, 11.0, 700.0),
         ..Schedule::constant(400.0, 2.712)
     };
-    let mut plant = support::plant(support::thesis(), schedule, 5_120.0);
-    let block = support::record(&mut plant, 11.0);
+    let mut plant = support::preset_plant(&support::thesis(), schedule, 5_120.0);
+    let block = support::run_for(&mut plant, 11.0);
     let rate = 5_120;
     // PI on the filtered speed follows a ramp with no steady error in the filtered speed,
     // so the shaft runs ahead of the set point by the filter's lag τ·α (τ = 1/(2π·2 Hz),
@@ -51,7 +52,7 @@ fn the_speed_loop_tracks_a_ramp() {
     let tau = 1.0 / (2.0 * std::f64::consts::PI * 2.0);
     let got = mean_speed_rpm(&block, 9 * rate, 10 * rate);
     assert!((got - (655.0 + tau * 30.0)).abs() < 0.2, "{got}");
-    // The staircase ends on the ramp's last value.
+    // The set point ends on the ramp's last value.
     assert!(
         (plant.set_points().speed_rpm - 700.0).abs() < 0.2,
         "{}",
@@ -68,8 +69,8 @@ fn a_load_step_reaches_the_output_shaft_and_the_motor() {
     let mut p = support::thesis();
     p.backlash_variation_c1 = 0.0;
     p.tooth_shifting = false;
-    let mut plant = support::plant(p, schedule, 5_120.0);
-    let block = support::record(&mut plant, 10.0);
+    let mut plant = support::preset_plant(&p, schedule, 5_120.0);
+    let block = support::run_for(&mut plant, 10.0);
     let rate = 5_120;
     let before = support::mean(&block.shaft_torque_nm[1][..rate / 2]);
     let after = support::mean(&block.shaft_torque_nm[1][8 * rate..]);
@@ -87,8 +88,8 @@ fn the_motor_torque_stays_within_its_limit() {
         speed_rpm: Track::hold(300.0).step_to(0.2, 1500.0),
         ..Schedule::constant(300.0, 2.712)
     };
-    let mut plant = support::plant(p, schedule, 5_120.0);
-    let block = support::record(&mut plant, 3.0);
+    let mut plant = support::preset_plant(&p, schedule, 5_120.0);
+    let block = support::run_for(&mut plant, 3.0);
     let peak = block
         .motor_torque_nm
         .iter()
@@ -123,11 +124,11 @@ fn speed_steps_at_no_load_ride_the_limit_without_chatter_or_windup() {
         speed_rpm: speed,
         ..Schedule::constant(800.0, 0.0)
     };
-    let mut plant = support::plant(p, schedule, 51_200.0);
+    let mut plant = support::preset_plant(&p, schedule, 51_200.0);
     plant
         .skip(108 * 51_200)
         .expect("no chatter through five steps");
-    let block = support::record(&mut plant, 18.0);
+    let block = support::run_for(&mut plant, 18.0);
     let rate = 51_200;
     let at_limit = block
         .motor_torque_nm
@@ -175,8 +176,8 @@ fn the_drive_holds_a_load_within_its_current_limit_and_sags_beyond_it() {
             load_nm: Track::hold(1.0).step_to(1.0, load_nm),
             ..Schedule::constant(rpm, 1.0)
         };
-        let mut plant = support::plant(p.clone(), schedule, 5_120.0);
-        support::record(&mut plant, 30.0)
+        let mut plant = support::preset_plant(&p, schedule, 5_120.0);
+        support::run_for(&mut plant, 30.0)
     };
     // 9 N m: beyond the old 7.12 N m limit, within 10.68: the speed holds.
     let held = run(9.0);

@@ -176,3 +176,21 @@ impl Reference {
         }
     }
 }
+
+/// The relative state [X1..X5, V1..V5, Vf, z] [`Reference::new`] starts from, of the one
+/// plant of the 1983 rig (`rig::preset_rig`) running at `rpm`: its angles less their share
+/// of the set rotation and its absolute speeds, each about its own axis, counted in the
+/// direction of rotation and the speeds less the set speed.
+pub fn relative_state(plant: &rig::NetworkPlant, rpm: f64) -> [f64; 12] {
+    let (u, ratios) = (plant.state_rad(), plant.speed_ratios());
+    let set_speed_rad_s = rpm * PI / 30.0;
+    let mut x = [0.0; 12];
+    for i in 0..5 {
+        let sense = ratios[i].signum();
+        x[i] = sense * u[i];
+        x[5 + i] = sense * u[5 + i] - set_speed_rad_s;
+    }
+    x[10] = u[10] - set_speed_rad_s;
+    x[11] = u[11];
+    x
+}
