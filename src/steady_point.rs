@@ -198,7 +198,7 @@ pub fn motor_of(rig: &RigTopology) -> anyhow::Result<usize> {
 
 /// Checks `spec` (each input refused under its name in `names`), runs it and hands `sink`
 /// every block of the measuring window. `keep_going` is asked every
-/// [`rig::network::SKIP_STRETCH`] samples of settling (and `sink` after every block): an
+/// [`rig::plant::SKIP_STRETCH`] samples of settling (and `sink` after every block): an
 /// error from either stops the run (a Python caller's Ctrl-C).
 pub fn run_rig_point(
     spec: &RigPointSpec,

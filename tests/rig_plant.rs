@@ -475,7 +475,7 @@ fn a_settling_run_that_may_be_stopped_takes_the_steps_of_one_skip() {
         })
         .expect("settles");
     assert_eq!(done, settle);
-    assert_eq!(questions, settle / rig::network::SKIP_STRETCH as usize);
+    assert_eq!(questions, settle / rig::plant::SKIP_STRETCH as usize);
     let bits =
         |p: &rig::NetworkPlant| -> Vec<u64> { p.state_rad().iter().map(|x| x.to_bits()).collect() };
     assert_eq!(bits(&asked), bits(&whole), "the same state, bit for bit");
@@ -488,5 +488,5 @@ fn a_settling_run_that_may_be_stopped_takes_the_steps_of_one_skip() {
             questions < 2
         })
         .expect("stops");
-    assert_eq!(done, 2 * rig::network::SKIP_STRETCH as usize);
+    assert_eq!(done, 2 * rig::plant::SKIP_STRETCH as usize);
 }

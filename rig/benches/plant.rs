@@ -85,7 +85,7 @@ fn quiet_200rpm_one_second(bencher: Bencher) {
 fn rk4_10us_1300rpm_2712mnm_one_second(bencher: Bencher) {
     let params = preset("basmaji-1983").expect("preset");
     let plant = settled_plant(&params, 1300.0, 2.712);
-    let start = reference::relative_state(&plant, 1300.0);
+    let start = reference::relative_state(&plant);
     bencher.bench_local(|| {
         let mut rk4 = reference::Reference::new(&params, 1300.0, 2.712, start);
         rk4.run(1.0, 1e-5);

@@ -5,10 +5,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::error::RigError;
-use crate::network::NetworkStart;
-use crate::params::RigParams;
-use crate::plant::{Plant, PlantConfig};
+use crate::plant::NetworkStart;
 use crate::schedule::{Schedule, Track};
 
 /// How a run starts.
@@ -96,21 +93,6 @@ impl Approach {
             Self::Static | Self::Rest => 0.0,
             Self::Ramp { ramp_s, .. } => ramp_s,
         }
-    }
-
-    /// The 1983 rig's plant at the start of a run to `rpm` and `load_nm`.
-    pub fn plant(
-        self,
-        params: RigParams,
-        rpm: f64,
-        load_nm: f64,
-        config: PlantConfig,
-    ) -> Result<Plant, RigError> {
-        let mut plant = Plant::new(params, self.schedule(rpm, load_nm), config)?;
-        if self == Self::Rest {
-            plant.start_at_rest();
-        }
-        Ok(plant)
     }
 
     /// Where a rig file's plant starts ([`NetworkPlant::new`](crate::NetworkPlant::new)):

@@ -2,31 +2,9 @@
 
 use nalgebra::DMatrix;
 
-use crate::layout::{N_MECH, V0, VF};
-
 /// The largest balancing scale of a forcing state: products of A's entries with it and
 /// its inverse stay far from overflow and underflow.
 pub const MAX_FORCING_SCALE: f64 = 1e100;
-
-/// e^{A k h} for k = 1..=`count`, computed on the balanced matrix D⁻¹AD, whose entries
-/// are all of order ρ or less: D = 1 for angles and the controller integral, ρ for speeds,
-/// and for each forcing state (unit, load, harmonics) the scale that brings its column's
-/// largest entry to ρ. The Padé exponential of the balanced matrix is then accurate to
-/// rounding in every entry, not only relative to the largest (K/J·h ≈ 3000 for the mesh),
-/// and the constant forcing adds no bias; its powers are taken there too.
-pub fn exp_powers(a: &DMatrix<f64>, step_s: f64, rho: f64, count: usize) -> Vec<DMatrix<f64>> {
-    let rho = rho.max(1.0);
-    let mechanical: Vec<f64> = (0..N_MECH)
-        .map(|i| {
-            if (V0..V0 + 5).contains(&i) || i == VF {
-                rho
-            } else {
-                1.0
-            }
-        })
-        .collect();
-    exp_powers_balanced(a, step_s, &forcing_scales(a, &mechanical, rho), count)
-}
 
 /// The balancing scale of every state: `mechanical` for the first states as given (ρ for
 /// speeds, 1 for angles), and for each later (forcing) state the scale that brings its
@@ -51,7 +29,13 @@ pub fn forcing_scales(a: &DMatrix<f64>, mechanical: &[f64], rho: f64) -> Vec<f64
         .collect()
 }
 
-/// e^{A k h} for k = 1..=`count`, computed on D⁻¹AD with D = diag(`scale`).
+/// e^{A k h} for k = 1..=`count`, computed on the balanced matrix D⁻¹AD with
+/// D = diag(`scale`), whose entries are all of order ρ or less (D = 1 for angles and the
+/// controller integral, ρ for speeds, and for each forcing state the scale that brings
+/// its column's largest entry to ρ: [`forcing_scales`]). The Padé exponential of the
+/// balanced matrix is then accurate to rounding in every entry, not only relative to the
+/// largest (K/J·h ≈ 3000 for the mesh), and the constant forcing adds no bias; its powers
+/// are taken there too.
 pub fn exp_powers_balanced(
     a: &DMatrix<f64>,
     step_s: f64,

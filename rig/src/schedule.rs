@@ -18,31 +18,6 @@ impl Track {
         }
     }
 
-    /// Knots (time in s, value), times non-decreasing; the error names `what`.
-    pub fn from_knots(what: &str, knots: Vec<(f64, f64)>) -> Result<Self, RigError> {
-        if knots.is_empty() {
-            return Err(RigError::Schedule(format!("{what}: no knots")));
-        }
-        for (index, pair) in knots.windows(2).enumerate() {
-            if pair[1].0 < pair[0].0 {
-                return Err(RigError::Schedule(format!(
-                    "{what}: knot {} at t = {} s comes before the one before it",
-                    index + 1,
-                    pair[1].0
-                )));
-            }
-        }
-        if let Some(&(t, v)) = knots
-            .iter()
-            .find(|(t, v)| !t.is_finite() || !v.is_finite() || *t < 0.0)
-        {
-            return Err(RigError::Schedule(format!(
-                "{what}: knot ({t}, {v}) must have a finite time ≥ 0 and a finite value"
-            )));
-        }
-        Ok(Self { knots })
-    }
-
     /// Adds a step to `value` at `t_s`.
     pub fn step_to(mut self, t_s: f64, value: f64) -> Self {
         let held = self.value_at(t_s);
@@ -164,11 +139,6 @@ impl Schedule {
         for (track, value) in tracks {
             track.hold_from(t_s, value);
         }
-    }
-
-    /// Whether any oscillating load is ever applied.
-    pub fn has_oscillating_load(&self) -> bool {
-        self.oscillating_load_nm.range().1 > 0.0
     }
 
     fn tracks(&self) -> [&Track; 4] {

@@ -1,7 +1,4 @@
-//! The Taylor expansion of e^{A τ} within a step: its order, its coefficients and the
-//! vectors it is summed from.
-
-use crate::layout::Layout;
+//! The Taylor expansion of e^{A τ} within a step: its order and its coefficients.
 
 /// Highest Taylor order kept; with ρ·h ≤ 0.5 the remainder of order 16 is below 1e-17.
 pub const TAYLOR_ORDER: usize = 16;
@@ -34,7 +31,3 @@ pub fn taylor_order(rho_span: f64) -> usize {
         .map_or(TAYLOR_ORDER, |k| k + 1)
         .max(4)
 }
-
-/// Taylor vectors v_k = (A δ)^k u₀ / k!, so that u(s δ) = Σ_k v_k s^k for s ∈ [0, 1]
-/// (only those up to the order of the last expansion are valid).
-pub type TaylorVectors = [[f64; Layout::MAX_LEN]; TAYLOR_ORDER + 1];

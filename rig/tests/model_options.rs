@@ -9,18 +9,6 @@ use rig::{GearGeometry, NetworkBlock, RigParams, Schedule};
 
 const LOAD_NM: f64 = 2.712;
 
-/// The base radius r_b = m z cos α / 2 (m) of the thesis's gears.
-fn base_radius_m(p: &RigParams) -> f64 {
-    p.module_m * f64::from(p.teeth) * p.pressure_angle_deg.to_radians().cos() / 2.0
-}
-
-/// The thesis's mesh torque (N m) of each sample: the mesh's force along the line of
-/// action times the base radius.
-fn mesh_torque_nm(p: &RigParams, block: &NetworkBlock) -> Vec<f64> {
-    let r_b = base_radius_m(p);
-    block.mesh_force_n[0].iter().map(|f| f * r_b).collect()
-}
-
 #[test]
 fn bearing_drag_loads_each_shaft_with_the_drag_behind_it_and_starts_static() {
     let mut p = support::quiet();
@@ -158,7 +146,7 @@ fn a_quasi_static_profile_error_turns_the_driven_gear_by_the_error_at_mesh_frequ
     assert_follows(phasor, p_rad);
     // The recorded mesh torque carries the load (the error moves the gears, not the torque,
     // when they follow it quasi-statically): within 1 % of the load.
-    let worst = mesh_torque_nm(&p, &block)
+    let worst = support::mesh_torque_nm(&p, &block)
         .iter()
         .map(|t| (t - LOAD_NM).abs())
         .fold(0.0, f64::max);
@@ -178,7 +166,7 @@ fn a_smoothed_mesh_stiffness_steps_through_its_staircase_for_the_set_share_of_ea
         let b = GearGeometry::of(&p).half_backlash_rad;
         let mut plant = support::preset_plant(&p, Schedule::constant(20.0, LOAD_NM), 10_240.0);
         let block = support::run_for(&mut plant, 1.0);
-        let torque = mesh_torque_nm(&p, &block);
+        let torque = support::mesh_torque_nm(&p, &block);
         let stiffness: Vec<f64> = (0..block.len())
             .map(|n| {
                 let overlap = -(block.angle_rad[2][n] - block.angle_rad[1][n]) - b;
@@ -235,7 +223,7 @@ fn each_tooth_pair_displaces_the_mesh_by_its_own_spacing_error() {
     // of each gear), as a relative rotation of the gears (rad).
     let mesh = &rig::preset_rig("spacing", "spacing errors", &p).meshes[0];
     let [driver, driven] = rig::spacing::mesh_spacing_m(mesh);
-    let r_b = base_radius_m(&p);
+    let r_b = support::base_radius_m(&p);
     let errors: Vec<f64> = driver
         .iter()
         .zip(&driven)

@@ -1,7 +1,7 @@
 //! The plant's modules form layers: no file imports, directly or through others, a file
 //! that imports it. Checked from the source: every `crate::…` and `super::…` path outside
 //! comments is an edge, at two levels (the crate's modules, each folder as one; and the
-//! files inside each folder: `topology/`, `network/`, `plant/`, `judge/`).
+//! files inside each folder: `topology/`, `plant/`, `judge/`).
 
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -26,7 +26,7 @@ fn files(dir: &Path) -> Vec<(String, String)> {
 }
 
 /// The sub-folders of the crate's source, each a module of files.
-const FOLDERS: [&str; 4] = ["judge", "network", "plant", "topology"];
+const FOLDERS: [&str; 3] = ["judge", "plant", "topology"];
 
 /// The crate-level graph (each folder one node) and each folder's graph of its files.
 fn graphs() -> (Graph, BTreeMap<&'static str, Graph>) {
@@ -79,15 +79,11 @@ fn the_reference_finder_sees_each_form_of_path() {
 fn the_plant_has_no_import_cycles() {
     let (crate_level, folders) = graphs();
     assert!(
-        crate_level["propagator"].contains("stride"),
+        crate_level["plant"].contains("stride"),
         "graph read: {crate_level:?}"
     );
     assert!(
-        folders["plant"]["output"].contains("state"),
-        "graph read: {folders:?}"
-    );
-    assert!(
-        folders["network"]["stepping"].contains("plant"),
+        folders["plant"]["stepping"].contains("network_plant"),
         "graph read: {folders:?}"
     );
     assert_eq!(cycle(&crate_level), None, "modules of rig");

@@ -3,21 +3,10 @@
 
 mod support;
 
-use rig::{ContactLaw, GearGeometry, MeshPairs, NetworkBlock, RigParams, Schedule};
+use rig::{ContactLaw, GearGeometry, MeshPairs, Schedule};
 
 const LOAD: f64 = 2.712;
 const RPM: f64 = 200.0;
-
-/// The thesis's mesh torque (N m) of each sample: the mesh's force along the line of
-/// action times the base radius r_b = m z cos α / 2.
-fn mesh_torque_nm(p: &RigParams, block: &NetworkBlock) -> Vec<f64> {
-    let base_radius_m =
-        p.module_m * f64::from(p.teeth) * p.pressure_angle_deg.to_radians().cos() / 2.0;
-    block.mesh_force_n[0]
-        .iter()
-        .map(|f| f * base_radius_m)
-        .collect()
-}
 
 #[test]
 fn without_options_a_loaded_rig_is_static() {
@@ -154,7 +143,7 @@ fn the_no_pull_law_never_pulls_and_the_thesis_law_does() {
         p.contact_law = law;
         let mut plant = support::preset_plant(&p, Schedule::constant(1300.0, LOAD), 51_200.0);
         let block = support::run_for(&mut plant, 2.0);
-        let pulling = mesh_torque_nm(&p, &block)
+        let pulling = support::mesh_torque_nm(&p, &block)
             .iter()
             .zip(&block.contact[0])
             .filter(|&(&torque, &contact)| f64::from(contact) * torque < 0.0)

@@ -3,35 +3,13 @@
 
 mod support;
 
-use rig::{Contact, NetworkPlant, Schedule};
-use support::reference::Reference;
-
-/// The plant's state as the reference takes it, relative to the set rotation at speed
-/// `omega` (rad/s), each body in its own sense of rotation: [X1..X5 (rad), V1..V5 (rad/s),
-/// Vf (rad/s), z (rad)]. The plant's angles are already less their share of the set
-/// rotation; its speeds and filtered speed are absolute.
-fn reference_start(plant: &NetworkPlant, omega: f64) -> [f64; 12] {
-    let state = plant.state_rad();
-    let share = plant.speed_ratios();
-    let n = share.len();
-    assert_eq!(n, 5, "the thesis's five bodies");
-    assert_eq!(
-        state.len(),
-        2 * n + 2,
-        "angles, speeds, the speed loop's two states"
-    );
-    std::array::from_fn(|i| match i {
-        0..5 => share[i].signum() * state[i],
-        5..10 => share[i - 5].signum() * state[i] - share[i - 5].abs() * omega,
-        10 => state[i] - omega,
-        _ => state[i],
-    })
-}
+use rig::{Contact, Schedule};
+use support::reference::{Reference, relative_state};
 
 /// Every contact start of the plant within `window_s` matches one of the reference within 1 µs.
 fn compare(params: rig::RigParams, rpm: f64, load_nm: f64, window_s: f64) -> usize {
     let mut plant = support::preset_plant(&params, Schedule::constant(rpm, load_nm), 51_200.0);
-    let start = reference_start(&plant, rpm * std::f64::consts::PI / 30.0);
+    let start = relative_state(&plant);
     support::run_for(&mut plant, window_s);
     let mut reference = Reference::new(&params, rpm, load_nm, start);
     reference.run(window_s, 2.0e-8);

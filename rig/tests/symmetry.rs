@@ -8,17 +8,8 @@ use rig::{NetworkPlant, Schedule};
 /// The bodies' angles (rad) and speeds (rad/s) of `plant` about the set rotation, each in
 /// its own sense of rotation (the thesis's X1..X5, V1..V5).
 fn relative_state(plant: &NetworkPlant) -> [f64; 10] {
-    let state = plant.state_rad();
-    let ratios = plant.speed_ratios();
-    let set_rad_s = plant.set_points().speed_rpm * std::f64::consts::PI / 30.0;
-    std::array::from_fn(|i| {
-        let body = i % 5;
-        if i < 5 {
-            ratios[body].signum() * state[body]
-        } else {
-            ratios[body].signum() * state[i] - ratios[body].abs() * set_rad_s
-        }
-    })
+    let state = support::reference::relative_state(plant);
+    std::array::from_fn(|i| state[i])
 }
 
 #[test]

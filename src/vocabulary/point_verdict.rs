@@ -118,11 +118,32 @@ mod tests {
     use super::*;
 
     fn verdict(index: usize) -> Arc<PointVerdict> {
-        let window = rig::SteadyWindow::new(30, 1.0 / 51_200.0);
+        // A still window: no torque, no impacts, the judge's verdict on nothing.
+        let motion = rig::judge(&rig::JudgeInput {
+            torque_nm: &[0.0; 1024],
+            rate_hz: 51_200.0,
+            running_hz: 10.0,
+            revolution_torque_nm: &[],
+        });
+        let summary = rig::SteadySummary {
+            measured_s: 0.02,
+            impacts: 0,
+            impacts_per_rev: 0.0,
+            impacts_per_tooth: vec![0; 30],
+            regime: rig::Regime::Periodic(1),
+            separates: false,
+            apart_fraction: 0.0,
+            torque_mean_nm: 0.0,
+            torque_rms_nm: 0.0,
+            torque_ac_rms_nm: 0.0,
+            revolutions: 0,
+            speed_offset_rpm: 0.0,
+            motion,
+        };
         Arc::new(PointVerdict {
             index,
             from_s: 0.0,
-            summary: window.summary(&rig::RegimeCriteria::default()),
+            summary,
             condition: None,
         })
     }

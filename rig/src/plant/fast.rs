@@ -1,179 +1,245 @@
-//! The fast path: runs of output samples in one mode. Each stride or step is one fused
-//! product; the switch checks, the bounds and the samples are done on locals. A step
-//! that may switch goes to the exact path and ends the run; a run also stops before a
-//! set-point change or a re-sync of the harmonic states (the one-at-a-time path in
-//! `advance_step` takes those).
+//! The fast path: runs of output samples in one mode, each step one fused product, the
+//! switch checks against targets taken once for the run, the samples stored without
+//! asking again which mode they are in. A step where a function may cross is taken on
+//! the exact path (`stepping.rs`), the rest of its output period too, and the run ends
+//! there. The fast path's products are folded for the run (`run_spans.rs`), so the two
+//! paths part at rounding; which path takes a step depends on the motion alone, never
+//! on the blocks a run is asked for in, so a run gives the same bytes whatever they are. A run
+//! that writes no samples (settling) takes strides of several steps in one product where
+//! the mode allows (`system.rs`), checked for switches over the whole stride; where one
+//! may fall, that stretch is taken in single steps.
 
 use crate::error::RigError;
-use crate::fused_step::{FUSED_ROWS, FusedRows, MAX_ROW_EVENTS};
-use crate::layout::{Layout, N_MECH};
+use crate::roots::may_cross;
 
-use super::output::within_bounds;
-use super::segment_start::rotate;
-use super::state::{Plant, RESYNC_STEPS};
-use super::stepping::StepEnds;
+use super::block::NetworkBlock;
+use super::events::edge_values;
+use super::network_plant::NetworkPlant;
+use super::products;
+use super::run_spans::RunSpans;
+use super::system::{ModeSystem, SpanMatrix};
+use super::system_cache::SystemCache;
 
-impl Plant {
-    /// Takes up to `limit` samples on the fast path (their states stored in the chunk when
-    /// `RECORD`), each after `substeps` internal steps, all in the mode it starts in: a
-    /// step that may switch is taken on the exact path, the rest of its output period one
-    /// step at a time, and the run ends there. Returns how many samples it took (maybe
-    /// none) and the error of the exact path, if any (the samples before it, and that of
-    /// the failing period, are taken).
-    pub(super) fn fast_run<const RECORD: bool>(
+/// How a fast run ended.
+enum RunEnd {
+    /// Every sample asked for is taken, or the next begins a stretch of set points or
+    /// must be checked for bounds.
+    Done,
+    /// A function may cross within step `substep` of the current sample's output period
+    /// (the sample stored, the steps before that one taken).
+    MaySwitch { substep: u32 },
+}
+
+impl NetworkPlant {
+    /// Takes up to `limit` samples, as many as it can on the fast path and the one where
+    /// a switch may fall on the exact path, storing them only if `RECORD`; returns how
+    /// many it took (at least one when `limit` > 0).
+    pub(super) fn run_some<const RECORD: bool>(
         &mut self,
-        limit: usize,
-    ) -> (usize, Result<(), RigError>) {
-        let first = self.step_index;
-        let per_sample = self.substeps as usize;
-        let Some(count) = self.run_length(limit) else {
-            return (0, Ok(()));
+        limit: u64,
+        block: &mut NetworkBlock,
+    ) -> Result<u64, RigError> {
+        let first = self.sample;
+        let segment_begins = self.segment_end.is_some_and(|end| self.sample >= end);
+        // Samples held that this one cannot join (of another mode, or of the stretch of set
+        // points before it) are written out here, so that the fast path takes it as it
+        // does at a block's start: the same bytes whatever the blocks.
+        if RECORD && (segment_begins || !self.chunk.takes(self.sample, &self.mode)) {
+            self.flush_samples(block);
+        }
+        if segment_begins {
+            self.begin_segment();
+        }
+        let Some(mut cache) = self.cache.take() else {
+            return Err(RigError::Schedule(
+                "a run began inside a step (the plant's cache was out)".into(),
+            ));
         };
-        self.cache.ensure(self.mode);
-        let system = self.cache.built(self.mode);
-        let rotations = self.cache.rotations();
-        let stride = &system.stride;
-        let stride_rotations = self.cache.rotations_by(stride.steps);
-        let segment = self.segment;
-        let targets = self.angle_targets(system);
-        let (speed, h) = (self.segment.set.speed_rad_s(), self.step_s);
-        let mut u = self.u;
-        let mut edge = self.edge.unwrap_or_else(|| system.row_event_values(&u));
-        // Internal steps taken; samples stored so far, and the step of the next.
-        let mut taken = 0;
-        let (mut samples, mut next_sample) = (0, 0);
-        // After a stride that may switch, single steps up to here.
-        let mut singles_until = 0;
-        while taken < count {
-            let step = first + taken as u64;
-            if !within_bounds(&u) {
-                break;
-            }
-            let phase_rad = segment.phase_after((step - segment.start_step) as f64, h);
-            // Whether a switch may fall within the `steps` from `u` that end at `end`.
-            let may_switch = |edge: &[f64; 2 * MAX_ROW_EVENTS],
-                              end: &FusedRows,
-                              u: &[f64; Layout::MAX_LEN],
-                              steps: usize| {
-                let ends = StepEnds {
-                    start: edge,
-                    end,
-                    u0: u,
-                    phase_rad,
-                    speed_rad_s: speed,
-                    step_s: steps as f64 * h,
-                };
-                ends.may_switch(&targets)
-            };
-            let m = stride.steps;
-            if m > 1 && taken >= singles_until && count - taken >= m {
-                let end = stride.end(&u);
-                if !may_switch(&edge, &end, &u, m) {
-                    // The samples inside the stride, written out here: behind a helper
-                    // taking a closure this loop ran 15 % slower (measured).
-                    let mut k = next_sample - taken;
-                    if RECORD && k == 0 {
-                        self.chunk.store(samples, &u);
-                    }
-                    if k == 0 {
-                        samples += 1;
-                        k += per_sample;
-                    }
-                    // No tooth pass inside a stride: one spacing error for all of it.
-                    let spacing = self.chunk.spacing_of(&u);
-                    while k < m {
-                        if RECORD {
-                            let (c, s) = rotated(&u, self.cache.phase_rotation_by(k));
-                            self.chunk
-                                .store_parts(samples, &stride.sample(k, &u), c, s, spacing);
-                        }
-                        samples += 1;
-                        k += per_sample;
-                    }
-                    next_sample = taken + k;
-                    take_end(&mut u, &mut edge, &end, stride_rotations);
-                    taken += m;
-                    continue;
-                }
-                singles_until = taken + m;
-            }
-            let end = system.step(&u);
-            let switches = may_switch(&edge, &end, &u, 1);
-            if taken == next_sample {
-                if RECORD {
-                    self.chunk.store(samples, &u);
-                }
-                samples += 1;
-                next_sample += per_sample;
-            }
-            if switches {
-                let mut step_end = u;
-                step_end[..N_MECH].copy_from_slice(&end[..N_MECH]);
-                rotate(&mut step_end, rotations);
-                self.u = u;
-                self.edge = None;
-                self.step_index = step;
-                let finished = self.finish_period_exactly(step_end, next_sample - taken - 1);
-                return (samples, finished);
-            }
-            take_end(&mut u, &mut edge, &end, rotations);
-            taken += 1;
+        let end = self.fast_run_dispatch::<RECORD>(&mut cache, limit, block);
+        self.cache = Some(cache);
+        if let RunEnd::MaySwitch { substep } = end {
+            self.finish_period(substep)?;
         }
-        self.u = u;
-        self.edge = Some(edge);
-        self.step_index = first + taken as u64;
-        (samples, Ok(()))
+        Ok(self.sample - first)
     }
 
-    /// Internal steps of the next fast run (whole output periods, up to `limit` samples,
-    /// ending before a re-sync of the harmonic states and the segment's end), or None.
-    fn run_length(&self, limit: usize) -> Option<usize> {
-        let first = self.step_index;
-        let per_sample = self.substeps as usize;
-        let mut steps_left = (first / RESYNC_STEPS + 1) * RESYNC_STEPS - first;
-        if let Some(end) = self.segment.end_step {
-            steps_left = steps_left.min(end.saturating_sub(first));
+    /// The steps of the current sample's output period from `substep` on, on the exact
+    /// path, then the sample counted.
+    fn finish_period(&mut self, substep: u32) -> Result<(), RigError> {
+        for k in substep..self.substeps {
+            self.step_start_s = self.time_s() + f64::from(k) * self.step_s;
+            self.step()?;
         }
-        if first.is_multiple_of(RESYNC_STEPS) || steps_left < per_sample as u64 {
-            return None;
-        }
-        Some((limit * per_sample).min(steps_left as usize / per_sample * per_sample))
-    }
-
-    /// Takes the current step on the exact path (`step_end` being its end without a
-    /// switch), then the `rest` steps of its output period one at a time.
-    #[inline(never)]
-    fn finish_period_exactly(
-        &mut self,
-        step_end: [f64; Layout::MAX_LEN],
-        rest: usize,
-    ) -> Result<(), RigError> {
-        self.advance_exactly(step_end)?;
-        self.step_index += 1;
-        for _ in 0..rest {
-            self.advance_step()?;
-        }
+        self.sample += 1;
         Ok(())
     }
-}
 
-/// Moves `u` to the end of a step or stride: its mechanical states from `end`, its
-/// harmonic pairs turned by `rotations`, and the row events there into `edge`.
-#[inline(always)]
-fn take_end(
-    u: &mut [f64; Layout::MAX_LEN],
-    edge: &mut [f64; 2 * MAX_ROW_EVENTS],
-    end: &FusedRows,
-    rotations: &[(usize, f64, f64)],
-) {
-    u[..N_MECH].copy_from_slice(&end[..N_MECH]);
-    rotate(u, rotations);
-    edge.copy_from_slice(&end[N_MECH..FUSED_ROWS]);
-}
+    /// [`Self::fast_run`] compiled for AVX2 and FMA where the CPU has them (its products
+    /// [`products::gathered`] inlined), else for baseline x86-64.
+    fn fast_run_dispatch<const RECORD: bool>(
+        &mut self,
+        cache: &mut SystemCache,
+        limit: u64,
+        block: &mut NetworkBlock,
+    ) -> RunEnd {
+        #[cfg(target_arch = "x86_64")]
+        if crate::fma::available() {
+            // SAFETY: the CPU has AVX2 and FMA, checked at run time.
+            return unsafe { self.fast_run_v3::<RECORD>(cache, limit, block) };
+        }
+        self.fast_run::<RECORD>(cache, limit, block)
+    }
 
-/// The harmonic pair at `index` of `u` turned by (cos, sin).
-#[inline(always)]
-fn rotated(u: &[f64; Layout::MAX_LEN], (index, cos, sin): (usize, f64, f64)) -> (f64, f64) {
-    let (c, s) = (u[index], u[index + 1]);
-    (c * cos - s * sin, s * cos + c * sin)
+    /// [`Self::fast_run`] compiled for AVX2 and FMA.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,fma")]
+    fn fast_run_v3<const RECORD: bool>(
+        &mut self,
+        cache: &mut SystemCache,
+        limit: u64,
+        block: &mut NetworkBlock,
+    ) -> RunEnd {
+        self.fast_run::<RECORD>(cache, limit, block)
+    }
+
+    /// Samples on the fast path in the current mode (stored if `RECORD`), up to `limit`, stopping before a
+    /// sample that begins a stretch of set points and after one due for a check of
+    /// bounds.
+    #[inline(always)]
+    fn fast_run<const RECORD: bool>(
+        &mut self,
+        cache: &mut SystemCache,
+        limit: u64,
+        block: &mut NetworkBlock,
+    ) -> RunEnd {
+        let (system, run) = cache.get_run(&self.model, &self.mode, &self.u);
+        self.fill_targets(system);
+        if self.edge.len() != system.events.len() {
+            edge_values(&system.events, &self.u, &mut self.edge);
+        }
+        self.prepare_run(system, run);
+        let stop = self.fast_stop(limit);
+        // Strides only where no sample is written inside them, in whole output periods.
+        let substeps = self.substeps;
+        let stride = system
+            .stride
+            .as_ref()
+            .zip(run.stride.as_ref())
+            .filter(|(s, _)| !RECORD && s.steps.is_multiple_of(substeps));
+        // After a stride that may switch, single steps up to this sample.
+        let mut singles_until = 0;
+        while self.sample < stop {
+            if RECORD {
+                if self.chunk.is_full() {
+                    self.chunk.flush(&system.outputs, self.output_step_s, block);
+                }
+                self.chunk.store(self.sample, &self.mode, &self.u);
+            }
+            if let Some((stride, matrix)) = stride {
+                let samples = u64::from(stride.steps / substeps);
+                if self.sample >= singles_until && self.sample + samples <= stop {
+                    self.run_end(system, run, matrix);
+                    if !self.may_switch(system, f64::from(stride.steps) * self.step_s) {
+                        self.take_span_end();
+                        self.sample += samples;
+                        continue;
+                    }
+                    singles_until = self.sample + samples;
+                }
+            }
+            for substep in 0..substeps {
+                self.run_end(system, run, &run.step);
+                if self.may_switch(system, self.step_s) {
+                    return RunEnd::MaySwitch { substep };
+                }
+                self.take_span_end();
+            }
+            self.sample += 1;
+        }
+        RunEnd::Done
+    }
+
+    /// Readies the scratch for a fast run's products: room for their rows, and the forcing
+    /// states the run holds copied into `self.next` (its products leave them be).
+    fn prepare_run(&mut self, system: &ModeSystem, run: &RunSpans) {
+        if self.fused_out.len() < system.fused_rows {
+            self.fused_out.resize(system.fused_rows, 0.0);
+        }
+        if self.forcing_out.len() < run.moving_rows {
+            self.forcing_out.resize(run.moving_rows, 0.0);
+        }
+        let mechanical = self.model.layout.mechanical();
+        self.next[mechanical..].copy_from_slice(&self.u[mechanical..]);
+    }
+
+    /// The end of the span of `matrix` (a step or a stride of `run`) from `self.u`:
+    /// `self.next` the state there, `self.next_edge` each switching function's value and
+    /// rate.
+    #[inline(always)]
+    fn run_end(&mut self, system: &ModeSystem, run: &RunSpans, matrix: &SpanMatrix) {
+        let mechanical = self.model.layout.mechanical();
+        products::gathered(
+            &matrix.fused,
+            system.fused_rows,
+            &run.columns,
+            &self.u,
+            &mut self.fused_out,
+        );
+        self.next[..mechanical].copy_from_slice(&self.fused_out[..mechanical]);
+        // None move with the set speed at zero and nothing ramping.
+        if !run.moving.is_empty() {
+            products::gathered(
+                &matrix.forcing,
+                run.moving_rows,
+                &run.forcing_columns,
+                &self.u,
+                &mut self.forcing_out,
+            );
+            for (&i, &x) in run.moving.iter().zip(&self.forcing_out) {
+                self.next[i] = x;
+            }
+        }
+        self.fill_next_edge(system);
+    }
+
+    /// The first sample the fast run may not take: `limit` on, the next stretch of set
+    /// points or the next check of bounds, whichever comes first (past the current one).
+    fn fast_stop(&self, limit: u64) -> u64 {
+        let check = super::network_plant::CHECK_EVERY;
+        let mut stop = (self.sample + limit).min((self.sample / check + 1) * check);
+        if let Some(end) = self.segment_end {
+            stop = stop.min(end);
+        }
+        stop
+    }
+
+    /// Each switching function's target now, into `self.targets` (they move only at
+    /// switches, so they hold for a fast run).
+    fn fill_targets(&mut self, system: &ModeSystem) {
+        let mut targets = std::mem::take(&mut self.targets);
+        targets.clear();
+        targets.extend(system.events.iter().map(|form| self.target(form)));
+        self.targets = targets;
+    }
+
+    /// Whether any function may cross over the span of `span_s` from `self.u` to
+    /// `self.next` (values and rates at its ends in `self.edge` and `self.next_edge`), as
+    /// the exact path's check decides it.
+    #[inline(always)]
+    fn may_switch(&self, system: &ModeSystem, span_s: f64) -> bool {
+        // A plain loop: written with `any`, the check was a call out of the loop.
+        let events = system.events.len();
+        for ((&target, &(value_0, rate_0)), &end) in self.targets[..events]
+            .iter()
+            .zip(&self.edge[..events])
+            .zip(&self.next_edge[..events])
+        {
+            let g0 = (value_0 - target).min(0.0);
+            let g1 = end.0 - target;
+            if may_cross(g0, rate_0 * span_s, g1, end.1 * span_s) {
+                return true;
+            }
+        }
+        false
+    }
 }

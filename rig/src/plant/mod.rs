@@ -1,24 +1,52 @@
-//! The plant: state, set points and the stepping loop that is exact at every switch.
+//! The one plant, of any rig a rig file describes ([`crate::RigTopology`]): bodies, shafts and
+//! up to four meshes with backlash, a speed-controlled motor, a brake, a locked-in loop
+//! torque; advanced exactly between the switches of every mesh and of the motor's limit,
+//! each switch found on the exact solution.
 //!
-//! Between switches the equations are linear with constant and harmonic forcing, so a
-//! whole internal step is one product with e^{A h} (computed once per mode), and where
-//! the mode is slow a stride of several steps is one product too. Every switching
-//! function is checked on each step or stride from its values and slopes at both ends;
-//! where it may cross, the step is redone on the Taylor expansion of e^{A τ} (exact to
-//! rounding for ρh ≤ 0.5), the first crossing is found to within 64 ulps, the mode
-//! switches there, and the step continues from that instant.
+//! `layout.rs` the state: absolute angles and speeds, the speed loop, then forcing states
+//! (unit, set speed and its ramp rate, brake load and its rate, the oscillating load's
+//! pair, the set rotation, the meshes' harmonic pairs and spacing errors). `mode.rs` the
+//! discrete state (each mesh apart / drive / back, clipped under the no-pull law, its
+//! pairs one, two or a step of a smoothed change; the motor linear or at a limit).
+//! `model.rs` the constants of a topology (the gear errors included) and A of u' = A u
+//! per mode, `drive_model.rs` the motor's and the brake's (drag, characteristic), `mesh_model.rs` a mesh's constants (its pair zones,
+//! its faulted teeth's factors). `events.rs` the switching functions of a mode.
+//! `system.rs` per mode the fused step (e^{A h}'s mechanical rows with the fixed-target
+//! functions' values and rates) and the events, `system_cache.rs` them built on first
+//! use and kept; `run_spans.rs` them folded for a fast run, the forcing states that hold
+//! still in one column.
+//! `equilibrium.rs` the steady state at a set speed and load (and at rest, a loop's
+//! locked torque carried), and the model assembled with a loop's preload.
+//! `block.rs` the samples and impacts a run gives, `output.rs` the samples held by
+//! state and turned into signals a chunk at a time, `columns.rs` them as named columns.
+//! `run_up.rs` how long the drive takes to run the rig up from rest.
+//! `network_plant.rs` the plant (`NetworkPlant`: the name it had beside the retired thesis plant), `teeth.rs` its pair zones and tooth passes, `segment.rs` its set
+//! points over time, `fast.rs` its runs of samples in one mode,
+//! `stepping.rs` its exact steps and switches, `products.rs` the
+//! matrix–state products they take.
 
-mod chunk;
+mod block;
+mod columns;
+mod drive_model;
+mod equilibrium;
+mod events;
 mod fast;
-mod mesh_position;
+mod layout;
+mod mesh_model;
+mod mode;
+mod model;
+mod network_plant;
 mod output;
+mod products;
+mod run_spans;
+mod run_up;
 mod segment;
-mod segment_start;
-mod state;
 mod stepping;
-mod switches;
+mod system;
+mod system_cache;
+mod teeth;
 
-pub(crate) use switches::RELEASE_MARGIN_NM;
-
-pub(crate) use state::SWITCH_LIMIT;
-pub use state::{Plant, PlantConfig};
+pub use block::{NetworkBlock, NetworkImpact};
+pub use columns::{Column, column, column_names, column_specs, columns};
+pub use mode::Contact;
+pub use network_plant::{NetworkPlant, NetworkStart, SKIP_STRETCH};

@@ -1,138 +1,198 @@
-//! Taking samples: the true signals at the output rate, and the bounds that stop a blown-up run.
+//! The samples a run writes: each sample's state stored column by column in a chunk, and
+//! the block's signals computed from a whole chunk at once. In one mode (and one stretch
+//! of set points) every signal is a linear form of the state: a body's angle and speed, a
+//! shaft's torque, a mesh's force, the motor's torque. So a chunk holds the samples of one
+//! mode, and each signal is a few sums over it in whole vectors (written one sample at a
+//! time, the signals cost the plant as much as its steps).
 
-use crate::error::RigError;
-use crate::layout::{Layout, N_MECH, REV, V0, VF, X0, Z};
-use crate::mode::Mode;
-use crate::model::ModelConstants;
-use crate::records::Flank;
-use crate::signals::SignalBlock;
+use super::block::NetworkBlock;
+use super::mode::NetMode;
+use super::model::NetworkModel;
 
-use super::chunk::{CHUNK, SampleFrame};
-use super::mesh_position::{flank_overlap, tooth_at};
-use super::state::{Plant, SPEED_LIMIT_RAD_S, TWIST_LIMIT_RAD};
+/// Most samples a chunk holds before its signals are computed.
+pub const CHUNK: usize = 128;
 
-impl Plant {
-    /// Advances `samples` output samples, appending each (the state at t = n / rate, then one step) to `out`.
-    /// On an error the block keeps every sample taken before it.
-    pub fn run(&mut self, samples: usize, out: &mut SignalBlock) -> Result<(), RigError> {
-        self.advance_samples(samples, Some(out))
-    }
+/// A mode's signals as linear forms of the state (index, coefficient).
+#[derive(Clone, Debug, Default)]
+pub struct OutputForms {
+    /// Each body's angle in its sense of rotation (rad).
+    pub angle: Vec<Vec<(usize, f64)>>,
+    /// Each body's speed in its sense of rotation (rad/s).
+    pub speed: Vec<Vec<(usize, f64)>>,
+    /// Each shaft's torque (N m), in its first body's sense of rotation.
+    pub shaft_torque: Vec<Vec<(usize, f64)>>,
+    /// Each mesh's force along its line of action (N).
+    pub mesh_force: Vec<Vec<(usize, f64)>>,
+    /// Each mesh's contact: +1 drive, −1 back, 0 apart.
+    pub contact: Vec<i8>,
+    /// The motor's torque (N m): its loop's command, or the limit it is held at.
+    pub motor_torque: Vec<(usize, f64)>,
+}
 
-    /// Advances `samples` output samples without recording them.
-    pub fn skip(&mut self, samples: usize) -> Result<(), RigError> {
-        self.advance_samples(samples, None)
-    }
-
-    /// Takes `samples` samples (appended to `out` if given), advancing one output period
-    /// after each: whole runs on the fast path, the rest one at a time. On an error, `out`
-    /// keeps every sample taken before it.
-    fn advance_samples(
-        &mut self,
-        samples: usize,
-        mut out: Option<&mut SignalBlock>,
-    ) -> Result<(), RigError> {
-        let mut done = 0;
-        while done < samples {
-            let (first, mode) = (self.step_index, self.mode);
-            let limit = CHUNK.min(samples - done);
-            let (taken, switched) = match out.as_deref_mut() {
-                Some(block) => {
-                    let run = self.fast_run::<true>(limit);
-                    self.frame_in(mode).append(&self.chunk, run.0, first, block);
-                    run
-                }
-                None => self.fast_run::<false>(limit),
-            };
-            switched?;
-            done += taken;
-            if taken > 0 {
-                continue;
-            }
-            if !self.within_bounds() {
-                return Err(self.blow_up());
-            }
-            if let Some(block) = out.as_deref_mut() {
-                self.chunk.store(0, &self.u);
-                self.frame_in(self.mode)
-                    .append(&self.chunk, 1, self.step_index, block);
-            }
-            for _ in 0..self.substeps {
-                self.advance_step()?;
-            }
-            done += 1;
+impl OutputForms {
+    /// The signals of `model` in `mode`, the harmonic pairs turning with the set speed
+    /// `speed_rad_s`.
+    pub fn of(model: &NetworkModel, mode: &NetMode, speed_rad_s: f64) -> Self {
+        let l = &model.layout;
+        let sense = |body: usize| model.speed_ratio[body].signum();
+        let angle = (0..l.bodies)
+            .map(|i| {
+                vec![
+                    (l.angle(i), sense(i)),
+                    (l.phase(), sense(i) * model.speed_ratio[i]),
+                ]
+            })
+            .collect();
+        let speed = (0..l.bodies)
+            .map(|i| vec![(l.speed(i), sense(i))])
+            .collect();
+        let shaft_torque = model
+            .shafts
+            .iter()
+            .map(|s| {
+                let [a, b] = s.between;
+                let (k, sign) = (s.stiffness_nm_per_rad, sense(a));
+                vec![
+                    (l.angle(a), sign * k),
+                    (l.angle(b), -sign * k),
+                    (l.unit(), sign * s.preload_nm),
+                ]
+            })
+            .collect();
+        let mesh_force = (0..model.meshes.len())
+            .map(|i| {
+                let state = mode.meshes[i];
+                state.pushing_flank().map_or_else(Vec::new, |flank| {
+                    model.force_terms(i, state, flank, speed_rad_s)
+                })
+            })
+            .collect();
+        let contact = (0..model.meshes.len())
+            .map(|i| mode.meshes[i].contact.sign())
+            .collect();
+        Self {
+            angle,
+            speed,
+            shaft_torque,
+            mesh_force,
+            contact,
+            motor_torque: model.motor_torque_terms(mode.motor),
         }
-        Ok(())
     }
+}
 
-    /// What a sample needs besides the state, for `mode` and the current segment.
-    pub(super) fn frame_in(&self, mode: Mode) -> SampleFrame<'_> {
-        SampleFrame {
-            mc: &self.mc,
-            mode,
-            segment: self.segment,
-            step_s: self.step_s,
-            steps_per_sample: self.substeps,
-            tooth_pitch_rad: self.geometry.tooth_pitch_rad,
-            teeth: f64::from(self.params.teeth),
+/// The states of up to [`CHUNK`] consecutive samples in one mode, one array per state.
+#[derive(Clone, Debug)]
+pub struct SampleChunk {
+    /// State i of sample k at `i * CHUNK + k`.
+    states: Vec<f64>,
+    /// States per sample.
+    len: usize,
+    count: usize,
+    first_sample: u64,
+    mode: NetMode,
+}
+
+impl SampleChunk {
+    /// An empty chunk for states of `len` entries.
+    pub fn new(len: usize) -> Self {
+        Self {
+            states: vec![0.0; len * CHUNK],
+            len,
+            count: 0,
+            first_sample: 0,
+            mode: NetMode::apart(),
         }
     }
 
-    /// Tooth of the driving gear in mesh at its angle `theta2` (rad), 0..teeth.
-    pub(super) fn tooth_at(&self, theta2: f64) -> u32 {
-        tooth_at(
-            theta2,
-            self.geometry.tooth_pitch_rad,
-            f64::from(self.params.teeth),
-        )
-    }
-
-    /// Whether the state is within its bounds (see [`within_bounds`]).
+    /// Whether the next sample, `sample` in `mode`, can join the chunk.
     #[inline]
-    pub(super) fn within_bounds(&self) -> bool {
-        within_bounds(&self.u)
+    pub fn takes(&self, sample: u64, mode: &NetMode) -> bool {
+        self.count == 0
+            || (self.count < CHUNK
+                && self.mode == *mode
+                && self.first_sample + self.count as u64 == sample)
     }
 
-    /// The error for a state that left its bounds, saying which bound.
-    #[cold]
-    pub(super) fn blow_up(&self) -> RigError {
-        let u = &self.u;
-        let reason = if !u[..N_MECH].iter().all(|v| v.is_finite()) {
-            "the state is no longer finite".to_string()
-        } else if (0..4).any(|i| (u[X0 + i] - u[X0 + i + 1]).abs() > TWIST_LIMIT_RAD) {
-            format!("a shaft or the mesh is twisted by more than {TWIST_LIMIT_RAD} rad")
-        } else {
-            format!("a speed departs from the set speed by more than {SPEED_LIMIT_RAD_S} rad/s")
+    /// Whether it holds [`CHUNK`] samples, as many as it can.
+    pub fn is_full(&self) -> bool {
+        self.count == CHUNK
+    }
+
+    /// Whether it holds no sample.
+    pub fn is_empty(&self) -> bool {
+        self.count == 0
+    }
+
+    /// The mode its samples were taken in.
+    pub fn mode(&self) -> &NetMode {
+        &self.mode
+    }
+
+    /// Adds sample `sample`, the state `u` in `mode` (the chunk must take it).
+    #[inline]
+    pub fn store(&mut self, sample: u64, mode: &NetMode, u: &[f64]) {
+        if self.count == 0 {
+            self.first_sample = sample;
+            self.mode = *mode;
+        }
+        let k = self.count;
+        assert!(k < CHUNK, "a sample stored in a full chunk");
+        for (column, &x) in self.states.chunks_exact_mut(CHUNK).zip(&u[..self.len]) {
+            column[k] = x;
+        }
+        self.count += 1;
+    }
+
+    /// Appends the chunk's samples to `block` (their signals by `forms`, the forms of the
+    /// chunk's mode; sample n at n · `output_step_s`), and empties it.
+    pub fn flush(&mut self, forms: &OutputForms, output_step_s: f64, block: &mut NetworkBlock) {
+        let n = self.count;
+        if n == 0 {
+            return;
+        }
+        let first = self.first_sample;
+        block
+            .time_s
+            .extend((0..n as u64).map(|k| (first + k) as f64 * output_step_s));
+        let append = |terms: &[(usize, f64)], column: &mut Vec<f64>| self.sum(terms, n, column);
+        for (terms, column) in forms.angle.iter().zip(&mut block.angle_rad) {
+            append(terms, column);
+        }
+        for (terms, column) in forms.speed.iter().zip(&mut block.speed_rad_s) {
+            append(terms, column);
+        }
+        for (terms, column) in forms.shaft_torque.iter().zip(&mut block.shaft_torque_nm) {
+            append(terms, column);
+        }
+        for (terms, column) in forms.mesh_force.iter().zip(&mut block.mesh_force_n) {
+            append(terms, column);
+        }
+        append(&forms.motor_torque, &mut block.motor_torque_nm);
+        for (&sign, column) in forms.contact.iter().zip(&mut block.contact) {
+            column.extend(std::iter::repeat_n(sign, n));
+        }
+        self.count = 0;
+    }
+
+    /// Appends to `column`, for each of the first `n` samples k, Σ c · state i of sample
+    /// k over the terms (i, c): the first term's products appended, the others added in
+    /// place.
+    #[inline]
+    fn sum(&self, terms: &[(usize, f64)], n: usize, column: &mut Vec<f64>) {
+        let state = |i: usize| &self.states[i * CHUNK..i * CHUNK + n];
+        let start = column.len();
+        let Some((&(i, c), rest)) = terms.split_first() else {
+            column.resize(start + n, 0.0);
+            return;
         };
-        RigError::BlowUp {
-            t_s: self.time_at(0.0),
-            reason,
-            state: u[..10].to_vec(),
+        // + 0.0: a zero signal is +0, as a sum from zero gives it.
+        column.extend(state(i).iter().map(|&x| c * x + 0.0));
+        let out = &mut column[start..];
+        for &(i, c) in rest {
+            for (o, &x) in out.iter_mut().zip(state(i)) {
+                *o += c * x;
+            }
         }
     }
-}
-
-/// Whether `u` is finite, every twist within 1 rad and every relative speed within 10⁴ rad/s.
-#[inline]
-pub(super) fn within_bounds(u: &[f64; Layout::MAX_LEN]) -> bool {
-    let twist_ok = (0..4).all(|i| (u[X0 + i] - u[X0 + i + 1]).abs() <= TWIST_LIMIT_RAD);
-    let speed_ok = (0..5).all(|i| u[V0 + i].abs() <= SPEED_LIMIT_RAD_S);
-    twist_ok && speed_ok && u[VF].is_finite() && u[Z].is_finite()
-}
-
-/// Overlap of `flank` (rad, > 0 when the teeth overlap) and its rate (rad/s) in state `u`,
-/// whose harmonic states hold cos φ and sin φ (and cos zφ, sin zφ where `layout` has
-/// them) of that instant, and the spacing error of the pair in mesh where it has one.
-#[inline]
-pub(super) fn flank_gap(
-    mc: &ModelConstants,
-    layout: &Layout,
-    speed_rad_s: f64,
-    u: &[f64; Layout::MAX_LEN],
-    flank: Flank,
-) -> (f64, f64) {
-    let mesh = [u[X0 + 1], u[X0 + 2], u[V0 + 1], u[V0 + 2]];
-    let (cos_z, sin_z) = layout.mesh.map_or((0.0, 0.0), |m| (u[m], u[m + 1]));
-    let harmonics = [u[REV], u[REV + 1], cos_z, sin_z];
-    let spacing = layout.spacing.map_or(0.0, |s| u[s]);
-    flank_overlap(mc, speed_rad_s, flank.sign(), mesh, harmonics, spacing)
 }

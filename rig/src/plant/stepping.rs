@@ -1,295 +1,366 @@
-//! The stepping loop: the fast exact step, the checks for switches within it, and the
-//! exact path that locates every switch and continues from it.
+//! One internal step of the exact plant: e^{A h} u in the current mode, then every
+//! switching function checked. Where one may have crossed (a sign change, or a Hermite
+//! cubic through both ends coming near zero), the step's Taylor expansion
+//! u(s h) = Σ (A h)^k u / k! s^k (to the order ρh needs to be exact to rounding) gives each
+//! function as a polynomial; the first crossing of any is the switch, the state there is
+//! the expansion's, and the rest of the step runs on in the new mode.
+
+use std::f64::consts::PI;
 
 use crate::error::RigError;
-use crate::events::{EventFn, EventKind};
-use crate::fused_step::{FUSED_ROWS, FusedRows, MAX_ROW_EVENTS};
-use crate::jump_response::GEAR_ANGLES;
-use crate::layout::{Layout, N_MECH, V0, X0};
-use crate::propagator::ModeSystem;
+use crate::mode::{MotorMode, PairZone};
 use crate::roots::{first_crossing, may_cross};
-use crate::taylor::TAYLOR_ORDER;
+use crate::taylor::{TAYLOR_ORDER, taylor_order};
 
-use super::segment_start::rotate;
-use super::state::{Plant, RESYNC_STEPS, SWITCH_LIMIT};
+use super::block::NetworkImpact;
+use super::events::{EventForm, NetEvent, Target, edge_values};
+use super::mode::{Contact, MeshState};
+use super::network_plant::NetworkPlant;
+use super::products;
+use super::system::ModeSystem;
+use super::system_cache::SystemCache;
 
-impl Plant {
-    /// One internal step, handling every switch inside it.
-    pub(super) fn advance_step(&mut self) -> Result<(), RigError> {
-        if Some(self.step_index) == self.segment.end_step {
-            self.begin_segment();
-        } else if self.step_index.is_multiple_of(RESYNC_STEPS) {
-            self.resync_harmonics(0.0);
-        }
-        self.cache.ensure(self.mode);
-        let system = self.cache.built(self.mode);
-        let fused = system.step(&self.u);
-        let start = self
-            .edge
-            .unwrap_or_else(|| system.row_event_values(&self.u));
-        let targets = self.angle_targets(system);
-        let crossing = StepEnds {
-            start: &start,
-            end: &fused,
-            u0: &self.u,
-            phase_rad: self.phase_rad(0.0),
-            speed_rad_s: self.segment.set.speed_rad_s(),
-            step_s: self.step_s,
+/// Most switches handled within one internal step before the run is declared chattering.
+pub const SWITCH_LIMIT: usize = 64;
+
+/// How far inside the torque limit a released controller command starts (N m): far above
+/// the rounding of the command (~1e-13 N m), far below anything measurable.
+pub const RELEASE_MARGIN_NM: f64 = 1e-9;
+
+impl NetworkPlant {
+    /// Advances one internal step, switching wherever a function crosses.
+    pub(super) fn step(&mut self) -> Result<(), RigError> {
+        let Some(mut cache) = self.cache.take() else {
+            return Err(RigError::Schedule(
+                "a step began inside another (the plant's cache was out)".into(),
+            ));
         };
-        let mut end = self.u;
-        end[..N_MECH].copy_from_slice(&fused[..N_MECH]);
-        rotate(&mut end, self.cache.rotations());
-        if crossing.may_switch(&targets) {
-            self.edge = None;
-            self.advance_exactly(end)?;
-        } else {
-            self.u = end;
-            let mut edge = [0.0; 2 * MAX_ROW_EVENTS];
-            edge.copy_from_slice(&fused[N_MECH..FUSED_ROWS]);
-            self.edge = Some(edge);
-        }
-        self.step_index += 1;
-        Ok(())
+        let result = self.step_with(&mut cache);
+        self.cache = Some(cache);
+        result
     }
 
-    pub(super) fn event_may_cross(
-        &self,
-        event: &EventFn,
-        u0: &[f64],
-        u1: &[f64],
-        tau_s: f64,
-        delta_s: f64,
-    ) -> bool {
-        let (offset, rate) = self.angle_terms(event.kind, event.angle_sign, tau_s);
-        let g1 = event.value.dot(u1) + offset + rate * delta_s;
-        if g1 > 0.0 {
-            return true;
-        }
-        let g0 = event.value.dot(u0) + offset;
-        let d0 = (event.slope.dot(u0) + rate) * delta_s;
-        let d1 = (event.slope.dot(u1) + rate) * delta_s;
-        may_cross(g0.min(0.0), d0, g1, d1)
-    }
-
-    /// Offset and rate of an angle event's φ term at `tau_s` into the step: sign·(φ − target), sign·Ω.
-    pub(super) fn angle_terms(&self, kind: EventKind, sign: f64, tau_s: f64) -> (f64, f64) {
-        if sign == 0.0 {
-            return (0.0, 0.0);
-        }
-        let phase = self.phase_rad(tau_s);
-        (
-            sign * (phase - self.angle_target(kind)),
-            sign * self.segment.set.speed_rad_s(),
-        )
-    }
-
-    /// The nearest angles ahead and behind at which an angle event of `system` fires.
-    pub(super) fn angle_targets(&self, system: &ModeSystem) -> AngleTargets {
-        let mut targets = AngleTargets {
-            ahead_rad: f64::INFINITY,
-            behind_rad: f64::NEG_INFINITY,
-        };
-        for &k in &system.angle_events {
-            let event = &system.events[k];
-            let target = self.angle_target(event.kind);
-            if event.angle_sign > 0.0 {
-                targets.ahead_rad = targets.ahead_rad.min(target);
-            } else {
-                targets.behind_rad = targets.behind_rad.max(target);
-            }
-        }
-        targets
-    }
-
-    /// The driving-gear angle an angle event waits for (rad).
-    pub(super) fn angle_target(&self, kind: EventKind) -> f64 {
-        match kind {
-            EventKind::ToothPass => self.next_tooth_rad,
-            EventKind::Revolution => self.next_rev_rad,
-            EventKind::ZoneEnd => self.zone_bounds().1,
-            EventKind::ZoneStart => self.zone_bounds().0,
-            _ => 0.0,
-        }
-    }
-
-    /// Redoes the current step on the Taylor expansion, switching at every crossing;
-    /// `step_end` is the state at the step's end without a switch (e^{A h} u).
-    #[inline(never)]
-    pub(super) fn advance_exactly(
-        &mut self,
-        step_end: [f64; Layout::MAX_LEN],
-    ) -> Result<(), RigError> {
-        let mut step_end = Some(step_end);
-        let mut tau = 0.0;
+    /// [`Self::step`] with the cache of modes held apart from the plant.
+    fn step_with(&mut self, cache: &mut SystemCache) -> Result<(), RigError> {
+        let mut left = 1.0;
         for _ in 0..SWITCH_LIMIT {
-            let delta = self.step_s - tau;
-            self.cache.ensure(self.mode);
-            let system = self.cache.built(self.mode);
-            let order = system.taylor(&self.u, delta, &mut self.taylor);
-            // Until the first switch, the end is the step's own; after it, the expansion's.
-            let end = step_end.take().unwrap_or_else(|| {
-                let mut end = [0.0; Layout::MAX_LEN];
-                system.taylor_state(&self.taylor, order, 1.0, &mut end);
-                end
-            });
-            match self.first_event(system, &end, order, tau, delta) {
-                None => {
-                    self.u = end;
-                    return Ok(());
-                }
-                Some((s, kind)) => {
-                    let mut at = [0.0; Layout::MAX_LEN];
-                    system.taylor_state(&self.taylor, order, s, &mut at);
-                    self.u = at;
-                    tau += s * delta;
-                    self.switch_count += 1;
-                    let mode = self.mode;
-                    self.handle(kind, tau);
-                    if self.mode == mode
-                        && let Some(jumped) = self.end_after_jump(&at, &end, tau)
-                    {
-                        self.u = jumped;
-                        return Ok(());
-                    }
-                }
+            let system = cache.get(&self.model, &self.mode);
+            let span_s = left * self.step_s;
+            if left == 1.0 {
+                self.fused_step(system);
+            } else {
+                self.expand(system, span_s);
+                evaluate(&self.taylor[..=self.taylor_order], 1.0, &mut self.next);
+                edge_values(&system.events, &self.next, &mut self.next_edge);
+            }
+            let Some((s, event)) = self.first_switch(system, span_s, left == 1.0) else {
+                self.take_span_end();
+                return Ok(());
+            };
+            evaluate(&self.taylor[..=self.taylor_order], s, &mut self.u);
+            self.edge.clear();
+            let at_s = self.step_start_s + (1.0 - left + s * left) * self.step_s;
+            self.switch(event, at_s);
+            left *= 1.0 - s;
+            if left <= f64::EPSILON {
+                return Ok(());
             }
         }
         Err(RigError::Chatter {
-            t_s: self.time_at(tau),
+            t_s: self.step_start_s,
             limit: SWITCH_LIMIT,
         })
     }
 
-    /// The step's end after a switch at `tau_s` that kept the mode and moved at most the
-    /// gear angles (a tooth pass, a revolution sample), by linearity: `end` (the step's
-    /// end from `before`, the state just ahead of the switch) plus e^{A (h − τ)} Δ, Δ the
-    /// jump to the state now. None when the switch moved anything else, or when some
-    /// switching function may cross in the rest of the step: the expansion from the new
-    /// state then decides.
-    fn end_after_jump(
-        &self,
-        before: &[f64; Layout::MAX_LEN],
-        end: &[f64; Layout::MAX_LEN],
-        tau_s: f64,
-    ) -> Option<[f64; Layout::MAX_LEN]> {
-        let moved_elsewhere = (0..Layout::MAX_LEN)
-            .filter(|i| !GEAR_ANGLES.contains(i))
-            .any(|i| self.u[i] != before[i]);
-        if moved_elsewhere {
-            return None;
+    /// A whole step in one product: `self.next` the state at its end (the forcing states
+    /// advanced apart), `self.next_edge` each switching function's value and rate there.
+    pub(super) fn fused_step(&mut self, system: &ModeSystem) {
+        let mechanical = self.model.layout.mechanical();
+        if self.fused_out.len() < system.fused_rows {
+            self.fused_out.resize(system.fused_rows, 0.0);
         }
-        let system = self.cache.built(self.mode);
-        let rest_s = self.step_s - tau_s;
-        let mut jumped = *end;
-        let jump = GEAR_ANGLES.map(|i| self.u[i] - before[i]);
-        let order = system.taylor_order(rest_s);
-        system
-            .jump_response
-            .add_to(jump, rest_s / self.step_s, order, &mut jumped);
-        let may_cross = system
-            .events
-            .iter()
-            .any(|event| self.event_may_cross(event, &self.u, &jumped, tau_s, rest_s));
-        (!may_cross).then_some(jumped)
+        products::rows(
+            &system.step.fused,
+            system.fused_rows,
+            &self.u,
+            &mut self.fused_out,
+        );
+        self.next[..mechanical].copy_from_slice(&self.fused_out[..mechanical]);
+        if self.forcing_out.len() < system.forcing_rows {
+            self.forcing_out.resize(system.forcing_rows, 0.0);
+        }
+        let forcing = self.next.len().min(mechanical + system.forcing_rows) - mechanical;
+        products::rows(
+            &system.step.forcing,
+            system.forcing_rows,
+            &self.u[mechanical..],
+            &mut self.forcing_out,
+        );
+        self.next[mechanical..mechanical + forcing].copy_from_slice(&self.forcing_out[..forcing]);
+        self.fill_next_edge(system);
     }
 
-    /// The earliest crossing (fraction s of the remaining `delta_s`, kind) of any switching
-    /// function, given the Taylor vectors from the state now and the state `end` at `delta_s`.
-    pub(super) fn first_event(
-        &self,
+    /// Each switching function's value and rate at `self.next` into `self.next_edge`: a
+    /// row event's from the fused rows just taken into `self.fused_out`, the others from
+    /// the state.
+    #[inline(always)]
+    pub(super) fn fill_next_edge(&mut self, system: &ModeSystem) {
+        let mechanical = self.model.layout.mechanical();
+        self.next_edge.clear();
+        let (values, rates) = (mechanical, mechanical + system.row_events);
+        for (form, slot) in system.events.iter().zip(&system.row_slot) {
+            self.next_edge.push(match slot {
+                Some(j) => (self.fused_out[values + j], self.fused_out[rates + j]),
+                None => (form.value(&self.next), form.rate(&self.next)),
+            });
+        }
+    }
+
+    /// Moves to the end of the span just taken: `self.next` and `self.next_edge` become
+    /// the state and the functions' values and rates (the old ones left as scratch).
+    /// The edges swap first: the other order made the second swap's load overlap the
+    /// first's stores, a stall that cost the fast run 13 % (measured).
+    #[inline(always)]
+    pub(super) fn take_span_end(&mut self) {
+        std::mem::swap(&mut self.edge, &mut self.next_edge);
+        std::mem::swap(&mut self.u, &mut self.next);
+    }
+
+    /// The earliest crossing (fraction of the span, event) of any switching function
+    /// over the span from `self.u` to `self.next` (their values and rates there in
+    /// `self.next_edge`, kept for the next step); expands the span when one may cross.
+    fn first_switch(
+        &mut self,
         system: &ModeSystem,
-        end: &[f64],
-        order: usize,
-        tau_s: f64,
-        delta_s: f64,
-    ) -> Option<(f64, EventKind)> {
-        let mut best: Option<(f64, EventKind)> = None;
-        let mut buffer = [0.0; TAYLOR_ORDER + 1];
-        let coeffs = &mut buffer[..=order];
-        for event in &system.events {
-            if !self.event_may_cross(event, &self.u, end, tau_s, delta_s) {
+        span_s: f64,
+        need_expansion: bool,
+    ) -> Option<(f64, NetEvent)> {
+        let mut expanded = !need_expansion;
+        let mut best: Option<(f64, NetEvent)> = None;
+        let known = self.edge.len() == system.events.len();
+        for (k, form) in system.events.iter().enumerate() {
+            let target = self.target(form);
+            let (value_0, rate_0) = if known {
+                self.edge[k]
+            } else {
+                (form.value(&self.u), form.rate(&self.u))
+            };
+            let end = self.next_edge[k];
+            let g0 = (value_0 - target).min(0.0);
+            let g1 = end.0 - target;
+            if !may_cross(g0, rate_0 * span_s, g1, end.1 * span_s) {
                 continue;
             }
-            for (c, v) in coeffs.iter_mut().zip(self.taylor.iter()) {
-                *c = event.value.dot(v);
+            if !expanded {
+                self.expand(system, span_s);
+                expanded = true;
             }
-            let (offset, rate) = self.angle_terms(event.kind, event.angle_sign, tau_s);
-            coeffs[0] += offset;
-            coeffs[1] += rate * delta_s;
-            if let Some(s) = first_crossing(coeffs)
+            if let Some(s) = first_crossing(&self.coefficients(form, target))
                 && best.is_none_or(|(b, _)| s < b)
             {
-                best = Some((s, event.kind));
+                best = Some((s, form.event));
             }
         }
         best
     }
-}
 
-/// The driving-gear angles at which the nearest angle events fire. Checking the nearest
-/// target ahead (and behind) suffices: a farther one cannot be reached without passing it.
-#[derive(Clone, Copy, Debug)]
-pub(super) struct AngleTargets {
-    /// Smallest target of the events that fire as θ2 rises past it (rad; +∞ if none).
-    ahead_rad: f64,
-    /// Largest target of the events that fire as θ2 falls past it (rad; −∞ if none).
-    behind_rad: f64,
-}
+    /// The value a form's target takes now.
+    pub(super) fn target(&self, form: &EventForm) -> f64 {
+        match form.target {
+            Target::Fixed => 0.0,
+            Target::ZoneEnd(i) => self.zone_bounds(i, self.zones[i]).1,
+            Target::ZoneStartNegated(i) => -self.zone_bounds(i, self.zones[i]).0,
+            Target::Revolution => self.next_revolution_rad,
+            Target::Tooth(i) => self.next_tooth_rad[i],
+        }
+    }
 
-/// One whole step as the fast path sees it, for the switch checks.
-pub(super) struct StepEnds<'a> {
-    /// Row events' values and slopes at the step's start.
-    pub start: &'a [f64; 2 * MAX_ROW_EVENTS],
-    /// The fused step: state and row events at the step's end.
-    pub end: &'a FusedRows,
-    /// The augmented state at the step's start.
-    pub u0: &'a [f64; Layout::MAX_LEN],
-    /// Set rotation φ at the step's start (rad).
-    pub phase_rad: f64,
-    /// Set speed Ω (rad/s).
-    pub speed_rad_s: f64,
-    /// Internal step (s).
-    pub step_s: f64,
-}
+    /// Mesh `i`'s `flank` meets the pair in mesh at `at_s` (its zone known): an impact,
+    /// the flank in contact with the zone's pairs; where the pair in mesh is broken
+    /// through, no tooth is there to meet, and the mesh stays apart until the next pair.
+    fn engage(&mut self, i: usize, flank: Contact, at_s: f64) {
+        let m = &self.model.meshes[i];
+        let zone = self.zones[i];
+        let factor = m.zone_factor(zone);
+        let state = &mut self.mode.meshes[i];
+        state.level = m.level(zone);
+        state.factor_bits = factor.to_bits();
+        if factor == 0.0 {
+            state.contact = Contact::Apart;
+            state.toothless = true;
+            state.clipped = false;
+            return;
+        }
+        state.contact = flank;
+        state.toothless = false;
+        state.clipped = false;
+        let (_, approach_m_s) = self.model.deflection(i, &self.u);
+        // The pair that strikes: the one coming into mesh in a double-pair stretch.
+        let m = &self.model.meshes[i];
+        let teeth = m.pair_teeth(m.pair_of_zone(zone));
+        self.impacts.push(NetworkImpact {
+            time_s: at_s,
+            mesh: i,
+            flank,
+            approach_m_s,
+            teeth,
+        });
+    }
 
-impl StepEnds<'_> {
-    /// Whether any switching function may cross within the step: a row event from its
-    /// values and slopes at both ends, an angle event from the driving gear's angle
-    /// θ2 = φ + X2 and its rate at both ends.
-    #[inline]
-    pub(super) fn may_switch(&self, targets: &AngleTargets) -> bool {
-        let (start, end, h) = (self.start, self.end, self.step_s);
-        for j in 0..MAX_ROW_EVENTS {
-            let (g1, d1) = (end[N_MECH + j], end[N_MECH + MAX_ROW_EVENTS + j] * h);
-            if g1 > 0.0 {
-                return true;
+    /// Mesh `i`'s driver has turned into a new pair zone: the pairs in mesh take their
+    /// stiffness and spacing error. In contact, a zone whose pair is broken through parts
+    /// the teeth, as does a pair whose spacing error opens the gap; after a broken pair,
+    /// or apart where the new pair's spacing error closes the gap, the pair strikes
+    /// wherever the gears have closed on a flank.
+    pub(super) fn enter_zone(&mut self, i: usize, at_s: f64) {
+        self.set_spacing(i);
+        let m = &self.model.meshes[i];
+        let zone = self.zones[i];
+        let factor = m.zone_factor(zone);
+        let state = self.mode.meshes[i];
+        if state.toothless || (state.contact == Contact::Apart && m.spaced()) {
+            if factor == 0.0 {
+                return;
             }
-            // ≤ 0 at both ends: an interior maximum needs rising at the start, falling at the end.
-            let d0 = start[MAX_ROW_EVENTS + j] * h;
-            if d0 > 0.0 && d1 < 0.0 && may_cross(start[j].min(0.0), d0, g1, d1) {
-                return true;
+            let speed = self.harmonic_speed_rad_s;
+            let drive = self.model.overlap(i, 1.0, &self.u, speed).0 > 0.0;
+            let back = self.model.overlap(i, -1.0, &self.u, speed).0 < 0.0;
+            self.mode.meshes[i].toothless = false;
+            if drive || back {
+                // Struck at a pair's entry: that tooth pass is behind it (no shifting).
+                self.pass_tooth_here(i);
+            }
+            match (drive, back) {
+                (true, _) => self.engage(i, Contact::Drive, at_s),
+                (false, true) => self.engage(i, Contact::Back, at_s),
+                (false, false) => self.mode.meshes[i] = MeshState::APART,
+            }
+            return;
+        }
+        let spaced = m.spaced();
+        let state = &mut self.mode.meshes[i];
+        state.level = m.level(zone);
+        state.factor_bits = factor.to_bits();
+        if factor == 0.0 {
+            state.contact = Contact::Apart;
+            state.level = PairZone::ONE;
+            state.toothless = true;
+            state.clipped = false;
+            return;
+        }
+        let flank = state.contact.sign();
+        // At a tooth pass with the thesis's tooth shifting, the pass itself decides
+        // whether the new pair stays in contact (`shift_tooth`, next at this instant).
+        let tooth_pass_decides = m.tooth_shifting && m.zones.starts_period(zone);
+        if spaced && flank != 0 && !tooth_pass_decides {
+            let flank = f64::from(flank);
+            let speed = self.harmonic_speed_rad_s;
+            if flank * self.model.overlap(i, flank, &self.u, speed).0 < 0.0 {
+                self.mode.meshes[i] = MeshState::APART;
+            } else {
+                self.reclip(i);
             }
         }
-        let omega = self.speed_rad_s;
-        let theta0 = self.phase_rad + self.u0[X0 + 1];
-        let theta1 = self.phase_rad + omega * h + end[X0 + 1];
-        let (rate0, rate1) = (omega + self.u0[V0 + 1], omega + end[V0 + 1]);
-        [(1.0, targets.ahead_rad), (-1.0, targets.behind_rad)]
-            .into_iter()
-            .filter(|(_, target)| target.is_finite())
-            .any(|(sign, target)| {
-                let g1 = sign * (theta1 - target);
-                if g1 > 0.0 {
-                    return true;
-                }
-                let d1 = sign * rate1 * h;
-                d1 < 0.0
-                    && may_cross(
-                        (sign * (theta0 - target)).min(0.0),
-                        sign * rate0 * h,
-                        g1,
-                        d1,
-                    )
-            })
+    }
+
+    /// Leaves the motor's limit: the command, held there up to rounding, starts just
+    /// inside it (by [`RELEASE_MARGIN_NM`]) so that rounding
+    /// cannot put it straight back (a tangency of the command with the limit would else
+    /// switch at zero progress until the step gave up).
+    fn release_motor(&mut self) {
+        let Some(m) = &self.model.motor else {
+            return;
+        };
+        let Some(limit) = m.limit_nm else {
+            return;
+        };
+        let inside = match self.mode.motor {
+            MotorMode::LimitHigh => limit - RELEASE_MARGIN_NM,
+            MotorMode::LimitLow => -limit + RELEASE_MARGIN_NM,
+            MotorMode::Linear => return,
+        };
+        let (ki, integral) = (m.ki_nm_per_rad, self.model.layout.integral());
+        if ki > 0.0 {
+            let command = self.model.controller_nm(&self.u);
+            self.u[integral] += (inside - command) / ki;
+        }
+        self.mode.motor = MotorMode::Linear;
+    }
+
+    /// The Taylor vectors v_k = (A τ)^k u / k! of a span τ = `span_s`, up to the order
+    /// the mode's fastest motion needs over the span (`taylor_order`: as the 1983 plant's).
+    fn expand(&mut self, system: &ModeSystem, span_s: f64) {
+        self.taylor_order = taylor_order(system.rho_rad_s * span_s);
+        self.taylor[0].copy_from_slice(&self.u);
+        for k in 1..=self.taylor_order {
+            let (done, rest) = self.taylor.split_at_mut(k);
+            let out = &mut rest[0];
+            products::rows(&system.a_columns, out.len(), &done[k - 1], out);
+            let scale = span_s / k as f64;
+            for x in out.iter_mut() {
+                *x *= scale;
+            }
+        }
+    }
+
+    /// The polynomial in s of a form over the expanded span, target taken off.
+    fn coefficients(&self, form: &EventForm, target: f64) -> [f64; TAYLOR_ORDER + 1] {
+        let order = self.taylor_order;
+        let mut c: [f64; TAYLOR_ORDER + 1] = std::array::from_fn(|k| {
+            if k <= order {
+                form.value(&self.taylor[k])
+            } else {
+                0.0
+            }
+        });
+        c[0] -= target;
+        c
+    }
+
+    /// Carries out a switch at `at_s`.
+    fn switch(&mut self, event: NetEvent, at_s: f64) {
+        match event {
+            NetEvent::Touch(i, flank) => {
+                self.zones[i] = self.zone_at(i);
+                self.set_spacing(i);
+                self.catch_up_tooth(i);
+                self.engage(i, flank, at_s);
+            }
+            NetEvent::Leave(i) => {
+                self.mode.meshes[i].contact = Contact::Apart;
+                self.mode.meshes[i].level = PairZone::ONE;
+                self.mode.meshes[i].clipped = false;
+            }
+            NetEvent::Unload(i) => self.mode.meshes[i].clipped = true,
+            NetEvent::Reload(i) => self.mode.meshes[i].clipped = false,
+            NetEvent::ZoneEnd(i) | NetEvent::ZoneStart(i) => {
+                self.zones[i] += if matches!(event, NetEvent::ZoneEnd(_)) {
+                    1
+                } else {
+                    -1
+                };
+                self.enter_zone(i, at_s);
+            }
+            NetEvent::LimitHigh => self.mode.motor = MotorMode::LimitHigh,
+            NetEvent::LimitLow => self.mode.motor = MotorMode::LimitLow,
+            NetEvent::LimitRelease => self.release_motor(),
+            NetEvent::ToothPass(i) => self.shift_tooth(i, at_s),
+            NetEvent::Revolution => {
+                self.revolutions_s.push(at_s);
+                self.next_revolution_rad += 2.0 * PI;
+            }
+        }
+    }
+}
+
+/// u(s τ) from the Taylor vectors `taylor` (v_0 to the expansion's order), written into
+/// `u` (Horner).
+fn evaluate(taylor: &[Vec<f64>], s: f64, u: &mut [f64]) {
+    let (last, lower) = taylor.split_last().expect("v_0 at least");
+    u.copy_from_slice(last);
+    for v in lower.iter().rev() {
+        for (x, c) in u.iter_mut().zip(v) {
+            *x = *x * s + c;
+        }
     }
 }

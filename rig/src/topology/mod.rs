@@ -1,5 +1,5 @@
 //! The rig as data, the first stage of the pipeline (the rig → its assembled model and
-//! plant in `network/` → the judge): `rig_topology.rs` a rig of any topology as a rig file
+//! plant in `plant/` → the judge): `rig_topology.rs` a rig of any topology as a rig file
 //! describes it (bodies, shafts, meshes, motor, brake, drive); `check.rs` what makes it one
 //! the plant can run, each fault at its item and field; `fields.rs` every number by its
 //! path, with unit and meaning; `modes.rs` its undamped natural modes;

@@ -3,23 +3,11 @@
 
 pub mod reference;
 
-use rig::{
-    NetworkBlock, NetworkPlant, NetworkStart, Plant, PlantConfig, RigParams, Schedule, SignalBlock,
-    preset, preset_rig,
-};
+use rig::{NetworkBlock, NetworkPlant, NetworkStart, RigParams, Schedule, preset, preset_rig};
 
 /// The thesis preset.
 pub fn thesis() -> RigParams {
     preset("basmaji-1983").expect("the preset exists")
-}
-
-/// A plant on `schedule` at `rate_hz`.
-pub fn plant(params: RigParams, schedule: Schedule, rate_hz: f64) -> Plant {
-    let config = PlantConfig {
-        output_rate_hz: rate_hz,
-        ..PlantConfig::default()
-    };
-    Plant::new(params, schedule, config).expect("valid plant")
 }
 
 /// The one plant of the rig `params` describe (`rig::preset_rig`), on `schedule` at
@@ -47,12 +35,16 @@ pub fn mesh_lag_rad(block: &NetworkBlock) -> Vec<f64> {
         .collect()
 }
 
-/// Runs `plant` for `seconds` and returns the samples.
-pub fn record(plant: &mut Plant, seconds: f64) -> SignalBlock {
-    let samples = (seconds / plant.output_step_s()).round() as usize;
-    let mut block = SignalBlock::default();
-    plant.run(samples, &mut block).expect("run completes");
-    block
+/// The gears' base radius r_b = m z cos α / 2 (m) of `params`.
+pub fn base_radius_m(params: &RigParams) -> f64 {
+    params.module_m * f64::from(params.teeth) * params.pressure_angle_deg.to_radians().cos() / 2.0
+}
+
+/// The thesis's mesh torque (N m) of each sample of the one plant's `block`: the mesh's
+/// force along the line of action times the base radius of `params`' gears.
+pub fn mesh_torque_nm(params: &RigParams, block: &NetworkBlock) -> Vec<f64> {
+    let r_b = base_radius_m(params);
+    block.mesh_force_n[0].iter().map(|f| f * r_b).collect()
 }
 
 /// Amplitude and phase (complex) of the component at `freq_hz` in `signal` sampled at
@@ -86,15 +78,6 @@ pub fn quiet() -> RigParams {
     p.backlash_variation_c1 = 0.0;
     p.tooth_shifting = false;
     p
-}
-
-/// The gears' relative angle X3 − X2 (rad) of each sample.
-pub fn mesh_angle(block: &SignalBlock) -> Vec<f64> {
-    block.angle_rad[2]
-        .iter()
-        .zip(&block.angle_rad[1])
-        .map(|(x3, x2)| x3 - x2)
-        .collect()
 }
 
 /// The linear rig's dynamic stiffness at `w_rad_s` with the teeth in contact:

@@ -177,20 +177,25 @@ impl Reference {
     }
 }
 
-/// The relative state [X1..X5, V1..V5, Vf, z] [`Reference::new`] starts from, of the one
-/// plant of the 1983 rig (`rig::preset_rig`) running at `rpm`: its angles less their share
-/// of the set rotation and its absolute speeds, each about its own axis, counted in the
-/// direction of rotation and the speeds less the set speed.
-pub fn relative_state(plant: &rig::NetworkPlant, rpm: f64) -> [f64; 12] {
-    let (u, ratios) = (plant.state_rad(), plant.speed_ratios());
-    let set_speed_rad_s = rpm * PI / 30.0;
-    let mut x = [0.0; 12];
-    for i in 0..5 {
-        let sense = ratios[i].signum();
-        x[i] = sense * u[i];
-        x[5 + i] = sense * u[5 + i] - set_speed_rad_s;
-    }
-    x[10] = u[10] - set_speed_rad_s;
-    x[11] = u[11];
-    x
+/// The relative state [X1..X5 (rad), V1..V5 (rad/s), Vf (rad/s), z (rad)]
+/// [`Reference::new`] starts from, of the one plant of the 1983 rig (`rig::preset_rig`):
+/// each body in its own sense of rotation, about the set rotation at the plant's set
+/// speed. The plant's angles are already less their share of the set rotation; its
+/// speeds and filtered speed are absolute.
+pub fn relative_state(plant: &rig::NetworkPlant) -> [f64; 12] {
+    let state = plant.state_rad();
+    let share = plant.speed_ratios();
+    assert_eq!(share.len(), 5, "the thesis's five bodies");
+    assert_eq!(
+        state.len(),
+        12,
+        "angles, speeds, the speed loop's two states"
+    );
+    let omega = plant.set_points().speed_rpm * PI / 30.0;
+    std::array::from_fn(|i| match i {
+        0..5 => share[i].signum() * state[i],
+        5..10 => share[i - 5].signum() * state[i] - share[i - 5].abs() * omega,
+        10 => state[i] - omega,
+        _ => state[i],
+    })
 }

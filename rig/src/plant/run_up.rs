@@ -5,7 +5,7 @@
 use crate::run_up_time::run_up_time_s;
 
 use super::model::NetworkModel;
-use super::plant::NetworkPlant;
+use super::network_plant::NetworkPlant;
 
 impl NetworkModel {
     /// Time (s) the motor at its torque limit takes to bring the rig from rest to `rpm`

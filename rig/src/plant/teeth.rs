@@ -5,7 +5,7 @@
 use crate::mode::PairZone;
 
 use super::mode::Contact;
-use super::plant::NetworkPlant;
+use super::network_plant::NetworkPlant;
 
 impl NetworkPlant {
     /// Each alternating mesh's pair zone from its driver's angle, and its next tooth

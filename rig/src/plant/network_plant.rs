@@ -262,7 +262,7 @@ impl NetworkPlant {
 
     /// Advances `samples` output samples without writing them (a settling run), the
     /// impacts and revolutions kept: the motion of [`Self::run`], to rounding, taken in
-    /// strides of several steps in modes slow against the step (`network/fast.rs`).
+    /// strides of several steps in modes slow against the step (`plant/fast.rs`).
     pub fn skip(&mut self, samples: usize) -> Result<(), RigError> {
         let mut unwritten = self.block();
         self.run_samples::<false>(samples, &mut unwritten)?;
