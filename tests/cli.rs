@@ -215,6 +215,25 @@ fn params_lists_every_parameter() {
     );
 }
 
+/// A preset is its rig: `params --preset NAME` lists, beside the thesis's names, every
+/// field of the rig it runs as by path, the same as `params --rig` on its shipped file;
+/// a rig path set on the preset shows there.
+#[test]
+fn params_of_a_preset_lists_its_rig_as_params_of_its_file_does() {
+    for name in rig::PRESET_NAMES {
+        let preset = json(&testrig(&["params", "--preset", name, "--json"]));
+        let file = format!("{}/scenarios/rigs/{name}.toml", env!("CARGO_MANIFEST_DIR"));
+        let shipped = json(&testrig(&["params", "--rig", &file, "--json"]));
+        assert_eq!(preset["rig"], shipped["rig"], "{name}");
+        assert_eq!(preset["fields"], shipped["fields"], "{name}");
+        assert_eq!(preset["rig_derived"], shipped["derived"], "{name}");
+    }
+    let set = ["params", "--set", "mesh.gears.backlash_mm=0.3", "--json"];
+    let out = json(&testrig(&set));
+    let backlash = listed(&out, "fields", "mesh.gears.backlash_mm");
+    assert_eq!(backlash, serde_json::json!("0.3"), "{out}");
+}
+
 #[test]
 fn a_closed_pipe_ends_the_output_quietly_without_a_panic() {
     use std::os::unix::process::ExitStatusExt;

@@ -4,13 +4,26 @@ use rig::{DERIVED_SPECS, GearGeometry, PARAM_SPECS, ParamSpec};
 use serde_json::json;
 
 use crate::cli::ParamsArgs;
-use testrig::scenario::{preset_with_overrides, read_rig_file};
+use testrig::scenario::{
+    is_thesis_name, preset_rig_with_overrides, preset_with_overrides, read_rig_file,
+};
+
+/// A table's rows: (name, value, unit, meaning).
+type Rows = Vec<[String; 4]>;
 
 pub fn run(args: &ParamsArgs) -> anyhow::Result<()> {
     if let Some(path) = &args.rig_file {
         return rig_file_params(path, args.json);
     }
-    let params = preset_with_overrides(&args.rig.preset, &args.rig.overrides)?;
+    // A preset is its rig: the thesis's names it is set by, then the rig it runs as, by
+    // path, as `params --rig` prints a rig file.
+    let named: Vec<String> = (args.rig.overrides.iter())
+        .filter(|item| is_thesis_name(item))
+        .cloned()
+        .collect();
+    let params = preset_with_overrides(&args.rig.preset, &named)?;
+    let rig = preset_rig_with_overrides(&args.rig.preset, &args.rig.overrides)?;
+    let (rig_fields, rig_derived) = rig_rows(&rig);
     let geometry = GearGeometry::of(&params);
     let (kp, ki) = params.speed_loop_gains();
     let derived = [
@@ -64,7 +77,7 @@ pub fn run(args: &ParamsArgs) -> anyhow::Result<()> {
             .collect();
         println!(
             "{}",
-            json!({"preset": args.rig.preset, "parameters": as_json(PARAM_SPECS), "derived_settable": as_json(DERIVED_SPECS), "derived": derived})
+            json!({"preset": args.rig.preset, "parameters": as_json(PARAM_SPECS), "derived_settable": as_json(DERIVED_SPECS), "derived": derived, "rig": rig.name, "fields": rows_json(&rig_fields), "rig_derived": rows_json(&rig_derived)})
         );
         return Ok(());
     }
@@ -100,6 +113,8 @@ pub fn run(args: &ParamsArgs) -> anyhow::Result<()> {
         ("derived", derived),
     ];
     print_table(&sections);
+    println!("\nthe rig it runs as: {} ({})", rig.name, rig.description);
+    print_table(&[("", rig_fields), ("derived", rig_derived)]);
     Ok(())
 }
 
@@ -130,13 +145,37 @@ fn print_table(sections: &[(&str, Vec<[String; 4]>)]) {
 }
 
 /// Every field of the rig file at `path` by its path, with unit and meaning, then what
-/// follows from them (base radii, each body's speed per unit motor speed).
+/// follows from them.
 fn rig_file_params(path: &std::path::Path, as_json: bool) -> anyhow::Result<()> {
     let rig = read_rig_file(path)?;
+    let (fields, derived) = rig_rows(&rig);
+    if as_json {
+        println!(
+            "{}",
+            json!({"rig": rig.name, "fields": rows_json(&fields), "derived": rows_json(&derived)})
+        );
+        return Ok(());
+    }
+    println!("rig {} ({})", rig.name, rig.description);
+    print_table(&[("", fields), ("derived", derived)]);
+    Ok(())
+}
+
+/// Rows as JSON objects with `name`, `value`, `unit` and `meaning`.
+fn rows_json(rows: &[[String; 4]]) -> Vec<serde_json::Value> {
+    rows.iter()
+        .map(|[n, v, u, m]| json!({"name": n, "value": v, "unit": u, "meaning": m}))
+        .collect()
+}
+
+/// Every field of `rig` by its path, with unit and meaning, and what follows from them
+/// (base radii, the potential-energy method's numbers, each body's speed per unit motor
+/// speed): (fields, derived).
+fn rig_rows(rig: &rig::RigTopology) -> (Rows, Rows) {
     let row = |name: String, value: String, unit: &str, meaning: &str| {
         [name, value, unit.to_string(), meaning.to_string()]
     };
-    let mut fields: Vec<[String; 4]> = rig
+    let mut fields: Rows = rig
         .fields()
         .into_iter()
         .map(|f| row(f.path, f.value.to_string(), f.unit, f.meaning))
@@ -179,21 +218,7 @@ fn rig_file_params(path: &std::path::Path, as_json: bool) -> anyhow::Result<()> 
             "speed per unit speed of the motor's body (negative: turns the other way)",
         ));
     }
-    if as_json {
-        let as_json = |rows: &[[String; 4]]| -> Vec<serde_json::Value> {
-            rows.iter()
-                .map(|[n, v, u, m]| json!({"name": n, "value": v, "unit": u, "meaning": m}))
-                .collect()
-        };
-        println!(
-            "{}",
-            json!({"rig": rig.name, "fields": as_json(&fields), "derived": as_json(&derived)})
-        );
-        return Ok(());
-    }
-    println!("rig {} ({})", rig.name, rig.description);
-    print_table(&[("", fields), ("derived", derived)]);
-    Ok(())
+    (fields, derived)
 }
 
 /// What the potential-energy method derives for a mesh given by its face width, with the

@@ -42,7 +42,7 @@ pub use builtin_rigs::preset_rig_source;
 pub use coverage::measurement_warnings;
 pub use overrides::apply_override;
 pub use preset_file::preset_with_overrides;
-pub use preset_rig::{command_rig, preset_rig_with_overrides};
+pub use preset_rig::{command_rig, is_thesis_name, preset_rig_with_overrides};
 pub use read_rig_file::{read_rig_file, rig_topology};
 pub use rig_overrides::{rig_with_overrides, source_rig_with_overrides};
 pub use run_plan::{AnalyserPlan, ChainPlan, Measure, Plan, PlanRig, RecordPlan, ScopePlan};

@@ -56,7 +56,7 @@ pub fn command_rig(
 /// `rig.set.NAME` or `rig.NAME`) rather than a rig path: a rig path has a dot
 /// (`mesh.gears.backlash_mm`), a name none, so a mistyped name is refused with the names
 /// near it.
-fn is_thesis_name(item: &str) -> bool {
+pub fn is_thesis_name(item: &str) -> bool {
     !param_key(item).contains('.')
 }
 
