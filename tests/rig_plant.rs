@@ -331,42 +331,52 @@ fn a_rattling_rig_runs_to_the_same_bytes_a_sample_at_a_time_as_in_long_blocks() 
 /// shaft's AC is 7.6 N m RMS). The two round differently, and the motion amplifies
 /// rounding: a kick of 1e-13 rad/s at the start parts two recorded runs by 0.14 ns and
 /// 3e-8 N m after 3 s; skip and run part by 3.3 ns and 7e-7 N m (measured). A stride
-/// that stepped over a switch would miss an impact or shift it by microseconds.
+/// that stepped over a switch would miss an impact or shift it by microseconds. At
+/// 51.2 kHz (a step a sample, strides of up to 8) and at a sweep's 10.24 kHz (3 steps a
+/// sample, strides of 3 or 6: whole output periods).
 #[test]
 fn a_settling_run_taken_in_strides_keeps_the_motion_of_a_recorded_one() {
+    for (rate_hz, substeps) in [(rig_support::RATE_HZ, 1), (10_240.0, 3)] {
+        strides_keep_the_motion(rate_hz, substeps);
+    }
+}
+
+/// [`a_settling_run_taken_in_strides_keeps_the_motion_of_a_recorded_one`] at `rate_hz`,
+/// whose plant takes `substeps` steps a sample.
+fn strides_keep_the_motion(rate_hz: f64, substeps: u32) {
     let rig = shipped("basmaji-1983");
-    let settle = (3.0 * rig_support::RATE_HZ) as usize;
+    let settle = (3.0 * rate_hz) as usize;
     let settled = |by_skip: bool| {
-        let mut p = plant(
-            &rig,
-            Schedule::constant(1300.0, 2.712),
-            NetworkStart::Steady,
-        );
+        let schedule = Schedule::constant(1300.0, 2.712);
+        let mut p =
+            NetworkPlant::new(&rig, schedule, rate_hz, NetworkStart::Steady).expect("plant");
+        assert_eq!(p.substeps(), substeps, "{rate_hz} Hz");
         if by_skip {
             p.skip(settle).expect("settles");
         } else {
             p.run(settle, &mut p.block()).expect("settles");
         }
         let settling_impacts = p.take_impacts().len();
-        let block = run(&mut p, &rig, 0.5);
+        let mut block = p.block();
+        p.run((0.5 * rate_hz) as usize, &mut block).expect("runs");
         (settling_impacts, block, p.take_impacts())
     };
     let (skipped_impacts, skipped, skipped_after) = settled(true);
     let (run_impacts, recorded, recorded_after) = settled(false);
     assert_eq!(
         skipped_impacts, run_impacts,
-        "the same impacts while settling"
+        "{rate_hz} Hz: the same impacts while settling"
     );
     assert!(
         recorded_after.len() > 50,
         "{} impacts",
         recorded_after.len()
     );
-    assert_eq!(skipped_after.len(), recorded_after.len());
+    assert_eq!(skipped_after.len(), recorded_after.len(), "{rate_hz} Hz");
     for (a, b) in skipped_after.iter().zip(&recorded_after) {
         assert!(
             (a.time_s - b.time_s).abs() < 1e-7 && a.mesh == b.mesh && a.flank == b.flank,
-            "impact at {} s against {} s",
+            "{rate_hz} Hz: impact at {} s against {} s",
             a.time_s,
             b.time_s
         );
@@ -381,7 +391,10 @@ fn a_settling_run_taken_in_strides_keeps_the_motion_of_a_recorded_one() {
             .zip(b)
             .map(|(x, y)| (x - y).abs())
             .fold(0.0, f64::max);
-        assert!(worst < 1e-4, "shaft torques part by {worst} N m");
+        assert!(
+            worst < 1e-4,
+            "{rate_hz} Hz: shaft torques part by {worst} N m"
+        );
     }
 }
 

@@ -162,7 +162,7 @@ impl NetworkPlant {
             output_step_s,
             substeps,
             step_s,
-            cache: Some(Box::new(SystemCache::new(step_s, rho))),
+            cache: Some(Box::new(SystemCache::new(step_s, substeps, rho))),
             u: vec![0.0; len],
             mode: NetMode::apart(),
             sample: 0,

@@ -31,7 +31,7 @@ pub struct SpanMatrix {
 /// may qualify), by a settling run that writes no samples.
 #[derive(Clone, Debug)]
 pub struct Stride {
-    /// Internal steps it takes (a power of two, at least 2).
+    /// Internal steps it takes (whole output periods, a power of two of them; at least 2).
     pub steps: u32,
     /// e^{A m h} for m = `steps`.
     pub matrix: SpanMatrix,
@@ -67,19 +67,20 @@ pub struct ModeSystem {
 }
 
 impl ModeSystem {
-    /// The system of `mode` of `model` for set points of `rates`, stepped by `step_s`,
-    /// its matrices balanced for ρ = `rho` (rad/s, the fastest rate of any mode).
+    /// The system of `mode` of `model` for set points of `rates`, stepped by `step_s`
+    /// (`substeps` steps an output period), its matrices balanced for ρ = `rho` (rad/s,
+    /// the fastest rate of any mode).
     pub fn build(
         model: &NetworkModel,
         mode: &NetMode,
         rates: &SegmentRates,
-        step_s: f64,
+        (step_s, substeps): (f64, u32),
         rho: f64,
     ) -> Self {
         let a = model.system_matrix(mode, rates);
         let padded = model.layout.padded();
         let rho_rad_s = spectral_radius(&a);
-        let steps = stride_steps(rho_rad_s, step_s);
+        let steps = stride_steps(rho_rad_s, step_s, substeps);
         let spans = exp_spans(model, &a, step_s, rho, steps);
         let events = event_forms(model, mode, &a, rates.harmonic_rad_s);
         let a_columns = padded_columns(&a, padded);

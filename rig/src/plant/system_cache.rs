@@ -18,6 +18,8 @@ pub struct SystemCache {
     /// The mode asked for last and where its system sits (most steps stay in one mode).
     last: Option<(NetMode, usize)>,
     step_s: f64,
+    /// Internal steps an output period.
+    substeps: u32,
     rho: f64,
     /// The rates of the set points the systems were built for.
     rates: SegmentRates,
@@ -26,13 +28,15 @@ pub struct SystemCache {
 }
 
 impl SystemCache {
-    /// An empty cache for steps of `step_s`, ρ the fastest rate of any mode (rad/s).
-    pub fn new(step_s: f64, rho: f64) -> Self {
+    /// An empty cache for steps of `step_s`, `substeps` an output period, ρ the fastest
+    /// rate of any mode (rad/s).
+    pub fn new(step_s: f64, substeps: u32, rho: f64) -> Self {
         Self {
             systems: HashMap::new(),
             built: Vec::new(),
             last: None,
             step_s,
+            substeps,
             rho,
             rates: SegmentRates::default(),
             runs: Vec::new(),
@@ -98,7 +102,7 @@ impl SystemCache {
             model,
             mode,
             &self.rates,
-            self.step_s,
+            (self.step_s, self.substeps),
             self.rho,
         ));
         self.systems.insert(*mode, self.built.len() - 1);
