@@ -113,6 +113,21 @@ fn case(
     }
 }
 
+/// The cases `PREFIX-600` (steady at 600 rev/min under 2.712 N m, 2 s) and
+/// `PREFIX-rattle` ([`rattle`] for `rattle_s`) of `rig` and `params`.
+fn steady_and_rattling(
+    prefix: &str,
+    rig: &RigTopology,
+    params: &RigParams,
+    rattle_s: f64,
+) -> Vec<Case> {
+    let steady = Schedule::constant(600.0, 2.712);
+    vec![
+        case(&format!("{prefix}-600"), rig, params, steady, 2.0),
+        case(&format!("{prefix}-rattle"), rig, params, rattle(), rattle_s),
+    ]
+}
+
 /// The shipped 1983 file as it is: steady at 600 and 1300 rev/min under 2.712 N m, and
 /// rattling. At 1300 rev/min the rattle is so sensitive that the two plants' rounding
 /// differs visibly after about a second, so that point runs 0.6 s.
@@ -151,17 +166,7 @@ pub fn spacing_cases(shifting: bool) -> Vec<Case> {
     params.tooth_spacing_error_um = 10.0;
     params.tooth_spacing_seed = 1983;
     params.tooth_shifting = shifting;
-    let key = |k: &str| format!("spacing-shifting-{shifting}-{k}");
-    vec![
-        case(
-            &key("600"),
-            &rig,
-            &params,
-            Schedule::constant(600.0, 2.712),
-            2.0,
-        ),
-        case(&key("rattle"), &rig, &params, rattle(), 0.3),
-    ]
+    steady_and_rattling(&format!("spacing-shifting-{shifting}"), &rig, &params, 0.3)
 }
 
 /// The no-pull contact law (`law` on the one plant's rig; the thesis plant's runs have
@@ -173,17 +178,7 @@ pub fn no_pull_cases(shifting: bool, law: ContactLaw) -> Vec<Case> {
     let mut params = rig::preset("basmaji-1983").expect("preset");
     params.contact_law = ContactLaw::NoPull;
     params.tooth_shifting = shifting;
-    let key = |k: &str| format!("no-pull-shifting-{shifting}-{k}");
-    vec![
-        case(
-            &key("600"),
-            &rig,
-            &params,
-            Schedule::constant(600.0, 2.712),
-            2.0,
-        ),
-        case(&key("rattle"), &rig, &params, rattle(), 0.5),
-    ]
+    steady_and_rattling(&format!("no-pull-shifting-{shifting}"), &rig, &params, 0.5)
 }
 
 /// Alternating pairs with the stiffness change smoothed over `smoothing` of a tooth
@@ -199,17 +194,8 @@ pub fn smoothed_cases(shifting: bool, smoothing: f64) -> Vec<Case> {
     params.mesh_pairs = MeshPairs::Alternating;
     params.mesh_stiffness_smoothing = 0.041;
     params.tooth_shifting = shifting;
-    let key = |k: &str| format!("smoothed-shifting-{shifting}-{k}");
-    let mut cases = vec![
-        case(
-            &key("600"),
-            &rig,
-            &params,
-            Schedule::constant(600.0, 2.712),
-            2.0,
-        ),
-        case(&key("rattle"), &rig, &params, rattle(), 0.5),
-    ];
+    let prefix = format!("smoothed-shifting-{shifting}");
+    let mut cases = steady_and_rattling(&prefix, &rig, &params, 0.5);
     for c in &mut cases {
         c.from_ours = true;
     }
