@@ -71,7 +71,7 @@ pub struct BodySummary {
     pub speed_mean_rpm: f64,
 }
 
-/// The measuring window of a rig's point: the keys of the 1983 plant's summary
+/// The measuring window of a rig's point: the keys of the steady summary
 /// (`rig::SteadySummary`), so that `simulate --json` reads alike for a preset and a rig
 /// file (the judged shaft's torque; the impacts of every mesh, in all and per revolution
 /// of the motor's body; the first mesh's impacts on each tooth of its driving gear, from
@@ -79,7 +79,7 @@ pub struct BodySummary {
 /// own: every body, shaft and mesh.
 #[derive(Clone, Debug, Serialize)]
 pub struct RigPointSummary {
-    /// The window in the 1983 plant's keys.
+    /// The window in the steady summary's keys.
     #[serde(flatten)]
     pub steady: SteadySummary,
     /// The motor's mean torque (N m).
@@ -97,7 +97,7 @@ pub struct RigPointSummary {
     pub condition: Option<serde_json::Value>,
 }
 
-/// A rig's window in the 1983 plant's keys: its `bodies`, `shafts` and `meshes` as
+/// A rig's window in the steady summary's keys: its `bodies`, `shafts` and `meshes` as
 /// summed, its `motion` over `measured_s` and whole `revolutions` of the motor's body,
 /// the shaft judged `judged`, the motor's body set to `rpm` (rev/min), `impacts` the
 /// window's.
@@ -132,9 +132,8 @@ fn steady_summary(
     }
 }
 
-/// The regime a rig file's window reports: the judge's period (at rest: period 1),
-/// aperiodic otherwise (the thesis's plant classifies its own state once per revolution;
-/// a rig file's plant is judged on the gauged shaft's torque alone).
+/// The regime a rig's window reports: the judge's period of the judged shaft's torque (at
+/// rest: period 1), aperiodic otherwise.
 pub fn regime_of(motion: Motion) -> Regime {
     match motion {
         Motion::Periodic(k) => Regime::Periodic(k),

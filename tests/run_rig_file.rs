@@ -216,7 +216,7 @@ fn the_tacho_and_the_keyphasor_sit_where_the_rig_file_puts_them() {
 }
 
 /// What a rig file's run cannot do is refused before it starts, at the field: a load on
-/// a rig without a brake, a stage reading a signal only the thesis's plant has, a rig
+/// a rig without a brake, a stage reading a signal the rig does not give, a rig
 /// without strain gauges, a tacho on a body the rig lacks, a keyphasor on no gear.
 #[test]
 fn a_rig_file_scenario_is_refused_at_the_field_it_cannot_run() {

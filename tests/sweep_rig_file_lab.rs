@@ -35,13 +35,14 @@ fn lab_sweep(
 /// repeats take a rig file as they take a preset. The 1983 rig as a file and as its
 /// preset, stepped 600 → 700 → 800 rev/min and back at 2.712 N m, each point also from
 /// rest and knocked once: the same walk of cases; the period-1 cases' torque (up, rest,
-/// knocked at 600 rev/min) the preset's to 1e-4 (the two plants agree to 1e-6 where the
-/// motion does not depend on its history to rounding: 700 and 800 rev/min are chaotic
+/// knocked at 600 rev/min) the preset's to 1e-4 (the file and the preset's conversion,
+/// equal to 1e-12 in every number, agree to 1e-6 where the motion does not depend on its
+/// history to rounding: 700 and 800 rev/min are chaotic
 /// going up and down); from rest and knocked, the same motion at every point (its AC
 /// RMS to 1e-3) and the same judged motion at 600 and 800 rev/min. At 700 rev/min from
 /// rest (settled 30 s after a 14 s run-up) the rig lies at the edge of period-6 locking:
 /// its six-revolution spread (3.1 % on the preset, 5.9 % on the file, measured) lies
-/// about the judge's 5 %, and the two plants, 2e-5 apart in AC RMS, fall on either side
+/// about the judge's 5 %, and the two rigs, 2e-5 apart in AC RMS, fall on either side
 /// (period 6 and quasi-periodic; knocked, both period 6). And at 600
 /// rev/min the coexisting motions the preset's lab run finds (`lab_run.rs`): coming down
 /// the rig keeps a motion more than twice as large as going up, and the report's

@@ -1,6 +1,6 @@
 //! The eddy-current brake's characteristic: at a fixed excitation its torque follows
 //! T ∝ g(ω) = 2x/(1 + x²), x = ω/ω_c (Wouterse 1991), peaking at the critical speed ω_c.
-//! Both plants linearise it about the set point where it brakes with the set torque.
+//! The plant linearises it about the set point where it brakes with the set torque.
 
 /// Slope (N m s/rad) of the brake's torque with its speed at its set speed `speed_rad_s`,
 /// braking `torque_nm` there, critical speed `critical_rad_s`: T(ω) = T_set g(ω)/g(Ω),

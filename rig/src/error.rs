@@ -45,14 +45,14 @@ pub enum RigError {
     },
     /// The state left physical bounds or stopped being finite.
     #[error(
-        "simulation blew up at t = {t_s:.6} s: {reason}; state X (rad) and V (rad/s) relative to the set rotation: {state:?}"
+        "simulation blew up at t = {t_s:.6} s: {reason}; mechanical state (the bodies' angles less their share of the set rotation, rad; their speeds, rad/s; the speed loop's filtered speed and integral): {state:?}"
     )]
     BlowUp {
         /// Simulated time of detection (s).
         t_s: f64,
         /// What was seen.
         reason: String,
-        /// The relative state [X1..X5, V1..V5] when it was seen.
+        /// The mechanical state when it was seen (`NetworkPlant::state_rad`).
         state: Vec<f64>,
     },
     /// A rig (from a rig file) the plant cannot run.

@@ -14,8 +14,6 @@ impl PairZone {
     pub const ONE: Self = Self(0);
     /// Two pairs: stiffness K23 × `double_pair_stiffness_ratio`.
     pub const TWO: Self = Self(TRANSITION_STEPS + 1);
-    /// Number of levels.
-    pub const LEVELS: usize = Self::TWO.0 as usize + 1;
 
     /// Where the level lies from one pair (0) to two (1): step l of a change at (l − ½)/steps.
     pub fn share_of_second_pair(self) -> f64 {

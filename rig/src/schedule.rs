@@ -180,7 +180,7 @@ impl Schedule {
     }
 }
 
-/// The highest set points live commands may bring (see `PlantConfig::live_ceiling`).
+/// The highest set points live commands may bring (`NetworkPlant::live`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LiveCeiling {
     /// Highest speed set point (rev/min).

@@ -1,26 +1,12 @@
-//! Tooth-pair spacing errors: with a 1:1 pair, tooth i of the driving gear always meets
-//! tooth i of the driven gear, so each of the `teeth` pairs has one combined error, the
-//! displacement of the mesh while that pair is in mesh. A rig file's mesh of other teeth
-//! gives each gear's teeth errors of their own (`mesh_spacing_m`).
+//! Tooth-pair spacing errors (`mesh_spacing_m`): with a 1:1 pair, as the thesis's, tooth i
+//! of the driving gear always meets tooth i of the driven gear, so each pair has one
+//! combined error, the displacement of the mesh while that pair is in mesh; a mesh of
+//! other teeth gives each gear's teeth errors of their own.
 
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64Mcg;
 
-use crate::geometry::GearGeometry;
-use crate::params::RigParams;
 use crate::topology::Mesh;
-
-/// The spacing error of each tooth pair (rad of relative rotation, arc at the pitch
-/// circle over the pitch radius): normal draws from `tooth_spacing_seed` (PCG 64,
-/// Box–Muller), made zero-mean and scaled to an RMS of `tooth_spacing_error_um`. Empty
-/// when the RMS is 0.
-pub fn spacing_errors_rad(params: &RigParams) -> Vec<f64> {
-    if params.tooth_spacing_error_um == 0.0 {
-        return Vec::new();
-    }
-    let rms = params.tooth_spacing_error_um * 1e-6 / GearGeometry::of(params).pitch_radius_m;
-    spacing_draws(params.teeth, params.tooth_spacing_seed, rms)
-}
 
 /// The spacing errors of a rig file's mesh along the line of action (m), per tooth of the
 /// driving and of the driven gear (the pair in mesh displaces the mesh by the sum of its
@@ -68,29 +54,35 @@ fn spacing_draws(count: u32, seed: u32, rms: f64) -> Vec<f64> {
 
 #[cfg(test)]
 mod tests {
-    use super::spacing_errors_rad;
+    use super::mesh_spacing_m;
+    use crate::params::RigParams;
+    use crate::preset_rig::preset_rig;
     use crate::presets::basmaji_1983;
+    use crate::topology::Mesh;
 
     #[test]
     fn the_errors_have_the_rms_asked_for_a_zero_mean_and_follow_the_seed() {
         let mut params = basmaji_1983();
-        assert!(spacing_errors_rad(&params).is_empty());
+        let mesh = |params: &RigParams| -> Mesh { preset_rig("t", "", params).meshes[0].clone() };
+        assert!(mesh_spacing_m(&mesh(&params))[0].is_empty());
         params.tooth_spacing_error_um = 10.0;
-        let errors = spacing_errors_rad(&params);
+        let [errors, driven] = mesh_spacing_m(&mesh(&params));
         assert_eq!(errors.len(), 30);
+        assert!(driven.iter().all(|&e| e == 0.0), "1:1: one error a pair");
         let mean = errors.iter().sum::<f64>() / 30.0;
         let rms = (errors.iter().map(|e| e * e).sum::<f64>() / 30.0).sqrt();
-        assert!(mean.abs() < 1e-15, "{mean}");
-        // 10 µm at the 75 mm pitch radius.
-        assert!((rms - 10e-6 / 0.075).abs() < 1e-12, "{rms}");
+        assert!(mean.abs() < 1e-20, "{mean}");
+        // 10 µm of arc at the pitch circle, 10 cos 20° µm along the line of action.
+        let along_m = 10e-6 * 20.0_f64.to_radians().cos();
+        assert!((rms - along_m).abs() < 1e-15, "{rms}");
         assert_eq!(
-            spacing_errors_rad(&params),
+            mesh_spacing_m(&mesh(&params))[0],
             errors,
             "the same seed, the same errors"
         );
         params.tooth_spacing_seed += 1;
         assert_ne!(
-            spacing_errors_rad(&params),
+            mesh_spacing_m(&mesh(&params))[0],
             errors,
             "another seed, other errors"
         );

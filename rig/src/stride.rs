@@ -21,21 +21,41 @@ pub const MAX_RHO_STRIDE: f64 = 1.0;
 
 /// The steps a stride of a mode takes: whole output periods of `substeps` internal steps
 /// each, their number a power of two, as many as keep ρ·m·h ≤ [`MAX_RHO_STRIDE`] and m
-/// within [`MAX_STRIDE`] (or one period, where a period is longer), for spectral radius
-/// `rho` (rad/s) and internal step `step_s` (s); 1 where not even one period qualifies or
-/// a period is one step that cannot double. At 51.2 kHz (one step a sample) that is up
-/// to 8 steps; at 10.24 kHz (3 steps a sample for the 1983 rig) 3 or 6, so a settling run
-/// strides at a sweep's rate too.
+/// within [`MAX_STRIDE`], for spectral radius `rho` (rad/s) and internal step `step_s`
+/// (s); 1 (no stride) where not even one period qualifies, a period is longer than
+/// [`MAX_STRIDE`] or is one step that cannot double. At 51.2 kHz (one step a sample) that
+/// is up to 8 steps; at 10.24 kHz (3 steps a sample for the 1983 rig) 3 or 6, so a
+/// settling run strides at a sweep's rate too.
 pub fn stride_steps(rho: f64, step_s: f64, substeps: u32) -> usize {
     let period = substeps.max(1) as usize;
     let fits = |steps: usize| rho * steps as f64 * step_s <= MAX_RHO_STRIDE;
-    let most = MAX_STRIDE.max(period);
-    if !fits(period) {
+    if period > MAX_STRIDE || !fits(period) {
         return 1;
     }
     let mut steps = period;
-    while 2 * steps <= most && fits(2 * steps) {
+    while 2 * steps <= MAX_STRIDE && fits(2 * steps) {
         steps *= 2;
     }
     steps
+}
+
+#[cfg(test)]
+mod tests {
+    use super::stride_steps;
+
+    #[test]
+    fn a_stride_is_whole_output_periods_within_its_bounds() {
+        let h = 1e-5;
+        // One step a sample: powers of two up to 8, as far as ρ·m·h ≤ 1 allows.
+        assert_eq!(stride_steps(1.0, h, 1), 8);
+        assert_eq!(stride_steps(0.3 / h, h, 1), 2);
+        assert_eq!(stride_steps(0.6 / h, h, 1), 1);
+        // Three steps a sample: 3 or 6, never a count that splits a period.
+        assert_eq!(stride_steps(1.0, h, 3), 6);
+        assert_eq!(stride_steps(0.2 / h, h, 3), 3);
+        assert_eq!(stride_steps(0.4 / h, h, 3), 1);
+        // A period longer than the longest stride, or no period at all: no stride.
+        assert_eq!(stride_steps(1.0, h, 9), 1);
+        assert_eq!(stride_steps(1.0, h, 0), 8);
+    }
 }

@@ -81,7 +81,11 @@ pub fn run(args: &ParamsArgs) -> anyhow::Result<()> {
         );
         return Ok(());
     }
-    println!("preset {}", args.rig.preset);
+    println!(
+        "preset {}, by the thesis's names (a rig path set with --set changes only the rig \
+         below, which is what runs)",
+        args.rig.preset
+    );
     let rows = |specs: &[ParamSpec]| -> Vec<[String; 4]> {
         specs
             .iter()

@@ -2,8 +2,8 @@
 //! plant (issue 45): each case is a rig file (the shipped `basmaji-1983` with an option
 //! set, or a shipped preset file) under a schedule from steady running, and the thesis
 //! plant's run of the same rig as its preset's parameters (`params`), stored in
-//! `tests/reference/thesis-plant-1983.json` by `tests/thesis_reference_gen.rs` at the
-//! last commit that had that plant: the intermediate shaft's torque every
+//! `tests/reference/thesis-plant-1983.json` by `tests/thesis_reference_gen.rs` (commit
+//! `3c19348`, the last with that plant): the intermediate shaft's torque every
 //! [`TORQUE_EVERY`] samples at 51.2 kHz, its largest magnitude over every sample, and
 //! every impact's time.
 

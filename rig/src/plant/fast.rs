@@ -119,13 +119,14 @@ impl NetworkPlant {
         }
         self.prepare_run(system, run);
         let stop = self.fast_stop(limit);
-        // Strides only where no sample is written inside them, in whole output periods.
+        // Strides (whole output periods: `stride.rs`) only where no sample is written
+        // inside them.
         let substeps = self.substeps;
         let stride = system
             .stride
             .as_ref()
             .zip(run.stride.as_ref())
-            .filter(|(s, _)| !RECORD && s.steps.is_multiple_of(substeps));
+            .filter(|_| !RECORD);
         // After a stride that may switch, single steps up to this sample.
         let mut singles_until = 0;
         while self.sample < stop {

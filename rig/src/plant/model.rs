@@ -396,8 +396,8 @@ impl NetworkModel {
                     -1.0
                 };
                 self.add_torque(a, m.body, &[(l.unit(), sign * limit)]);
-                // The integrator tracks so that the command stays at the limit (as the
-                // 1983 plant's drive): ki ż = kp ω̇_f with Ω constant, kp Ω̇ with a ramp.
+                // The integrator tracks so that the command stays at the limit:
+                // ki ż = kp ω̇_f with Ω constant, kp Ω̇ with a ramp.
                 let gain = kp / ki;
                 a[(l.integral(), l.speed(m.body))] = gain * wf;
                 a[(l.integral(), l.filtered())] = -gain * wf;

@@ -1,6 +1,6 @@
 //! How long the drive takes to run a rig up from rest to a set speed at its torque limit:
-//! the time a point from rest waits before it settles (a sweep's cases from rest), as the
-//! 1983 plant's `RigParams::run_up_from_rest_s` for its five bodies.
+//! the time a point from rest waits before it settles (a sweep's cases from rest), by the
+//! rule `RigParams::run_up_from_rest_s` gives the 1983 rig's five bodies.
 
 use crate::run_up_time::run_up_time_s;
 

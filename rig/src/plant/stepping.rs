@@ -288,7 +288,7 @@ impl NetworkPlant {
     }
 
     /// The Taylor vectors v_k = (A τ)^k u / k! of a span τ = `span_s`, up to the order
-    /// the mode's fastest motion needs over the span (`taylor_order`: as the 1983 plant's).
+    /// the mode's fastest motion needs over the span (`taylor_order`).
     fn expand(&mut self, system: &ModeSystem, span_s: f64) {
         self.taylor_order = taylor_order(system.rho_rad_s * span_s);
         self.taylor[0].copy_from_slice(&self.u);

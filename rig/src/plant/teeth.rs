@@ -80,7 +80,7 @@ impl NetworkPlant {
     }
 
     /// With the no-pull law, mesh `i` on a flank is clipped where its spring would not
-    /// push there now (as the thesis plant decides at a tooth pass).
+    /// push there now (as the thesis decides at a tooth pass).
     pub(super) fn reclip(&mut self, i: usize) {
         let state = self.mode.meshes[i];
         if !self.model.meshes[i].no_pull || state.contact == Contact::Apart {
