@@ -4,7 +4,7 @@
 //! `scenario_toml.rs` and `chain_toml.rs` the schema (serde, unknown keys rejected, spans
 //! kept; `chain_toml.rs` the `[chain.*]` and `[analyser]` tables sweeps share); `values.rs`
 //! checked numbers (`NumberError`); `source.rs` the text and its errors (a line written by
-//! `--set` names the `--set`); `overrides.rs` `--set KEY=VALUE` as an edit of the text;
+//! `--set` names the `--set`); `text_overrides.rs` `--set KEY=VALUE` as an edit of the text;
 //! `read_rig.rs` (preset, backlash, overrides, schedule, survey, measurements),
 //! `read_chain.rs` (the standard chain, scope, analyser, recordings), `read_stages.rs` (the
 //! standard table plus the file's `[[chain.stage]]`s, each fault at its line),
@@ -20,7 +20,6 @@ pub(crate) mod chain_toml;
 pub(crate) mod read_chain;
 
 pub(crate) mod coverage;
-pub(crate) mod overrides;
 pub(crate) mod plan_rig;
 pub(crate) mod preset_file;
 pub(crate) mod preset_rig;
@@ -35,12 +34,12 @@ pub(crate) mod rig_overrides;
 pub(crate) mod run_plan;
 pub(crate) mod scenario_toml;
 pub(crate) mod source;
+pub(crate) mod text_overrides;
 pub(crate) mod values;
 
 pub use build::{CommandLine, build};
 pub use builtin_rigs::preset_rig_source;
 pub use coverage::measurement_warnings;
-pub use overrides::apply_override;
 pub use preset_file::preset_with_overrides;
 pub use preset_rig::{command_rig, is_thesis_name, preset_rig_with_overrides};
 pub use read_rig_file::{read_rig_file, rig_topology};
@@ -48,3 +47,4 @@ pub use rig_overrides::{rig_with_overrides, source_rig_with_overrides};
 pub use run_plan::{AnalyserPlan, ChainPlan, Measure, Plan, PlanRig, RecordPlan, ScopePlan};
 pub use scenario_toml::Overflow;
 pub use source::ScenarioSource;
+pub use text_overrides::apply_override;

@@ -6,8 +6,8 @@ use std::path::{Path, PathBuf};
 
 use anyhow::anyhow;
 
-use super::overrides::{SET_MARK, apply_override};
 use super::scenario_toml::ScenarioFile;
+use super::text_overrides::{SET_MARK, apply_override};
 
 /// A scenario file as read from disk.
 #[derive(Clone, Debug)]

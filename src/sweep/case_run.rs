@@ -9,11 +9,11 @@ use std::path::Path;
 
 use rig::{Approach, NetworkPlant, RigTopology};
 
-use super::case::{
+use super::case_recording::CaseRecording;
+use super::case_result::{
     CaseInstruments, CaseResult, KEPT_REVOLUTIONS, case_instruments, case_result, chain_lead_s,
     fault_labels, run_up_wait_s,
 };
-use super::case_recording::CaseRecording;
 use super::grid::{Case, SweepPlan};
 use super::measured_condition::MeasuredCondition;
 use crate::rig_roles::{RoleColumns, gauge_of, gauged_stages};

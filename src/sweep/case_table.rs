@@ -5,7 +5,7 @@
 
 use std::fmt::Write as _;
 
-use super::case::CaseResult;
+use super::case_result::CaseResult;
 use super::meta::SweepMeta;
 use super::motion_lines::motion_lines;
 

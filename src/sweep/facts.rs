@@ -7,7 +7,7 @@ use std::fmt::Write as _;
 use rig::Motion;
 use rig::judge::{SUBHARMONIC_CLEAR_DB, SUBHARMONIC_VISIBLE_SHARE};
 
-use super::case::CaseResult;
+use super::case_result::CaseResult;
 use super::motion_lines::listed;
 use super::thesis::HEAVY_LOAD_NM;
 

@@ -2,7 +2,7 @@
 //! parameter variant), each motion the judge named there with the approaches that reached
 //! it. Where a point holds more than one, its motions coexist.
 
-use super::case::CaseResult;
+use super::case_result::CaseResult;
 use super::sequence::Direction;
 
 /// One operating point and the motions its cases settled to.

@@ -7,7 +7,7 @@ use std::path::Path;
 
 use anyhow::Context;
 
-use super::case::{CaseResult, chain_lead_s};
+use super::case_result::{CaseResult, chain_lead_s};
 use super::case_run::{case_plant, measure_case};
 use super::grid::{Case, SweepPlan};
 use super::series::on_one_plant;

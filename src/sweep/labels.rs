@@ -4,7 +4,7 @@
 
 use std::path::{Path, PathBuf};
 
-use super::case::CaseResult;
+use super::case_result::CaseResult;
 use super::table::{condition_columns, condition_header};
 use crate::recording::CsvRecorder;
 
@@ -67,7 +67,7 @@ fn fault_columns(c: &CaseResult) -> [String; 5] {
             String::new(),
         ];
     }
-    let join = |f: &dyn Fn(&super::case::FaultLabel) -> String| {
+    let join = |f: &dyn Fn(&super::case_result::FaultLabel) -> String| {
         faults.iter().map(|x| f(x)).collect::<Vec<_>>().join("+")
     };
     [

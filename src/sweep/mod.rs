@@ -6,7 +6,7 @@
 //! `rig::Approach`), `case_rig.rs` (a case's rig: a preset's parameters, or a rig file's with its
 //! faults; either run as a rig),
 //! `sequence.rs` (`Sequence`: each point on its own, or up and down;
-//! `Direction`), `case.rs` (a case's result with its fault labels, timing and instruments), `case_run.rs` (one
+//! `Direction`), `case_result.rs` (a case's result with its fault labels, timing and instruments), `case_run.rs` (one
 //! case: its rig's plant settled, the chain inline into ADC and analyser, regime and the
 //! judge's motion), `measured_condition.rs` (the indicators of the
 //! signal as the chain measures it), `case_recording.rs` (a case's WAV/CSV/UFF58 in
@@ -24,8 +24,8 @@
 //! cannot hold the set speed), `case_table.rs` (what a rig file's sweep adds: its case by
 //! case table, and the summary where no thesis holds it)
 
-pub(crate) mod case;
 pub(crate) mod case_recording;
+pub(crate) mod case_result;
 pub(crate) mod case_rig;
 pub(crate) mod case_run;
 pub(crate) mod case_table;
@@ -48,8 +48,8 @@ pub(crate) mod sweep_toml;
 pub(crate) mod table;
 pub(crate) mod thesis;
 
-pub use case::CaseResult;
-pub use case::FaultLabel;
+pub use case_result::CaseResult;
+pub use case_result::FaultLabel;
 pub use case_rig::CaseRig;
 pub use case_run::run_case;
 pub use grid::{Case, SweepPlan, build_sweep};

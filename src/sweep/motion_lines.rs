@@ -4,7 +4,7 @@
 
 use std::fmt::Write as _;
 
-use super::case::CaseResult;
+use super::case_result::CaseResult;
 use super::held_motions::held_motions;
 use super::sequence::Direction;
 

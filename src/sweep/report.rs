@@ -8,7 +8,7 @@
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
-use super::case::CaseResult;
+use super::case_result::CaseResult;
 use super::case_table::{each_case, rig_summary};
 use super::facts::facts;
 use super::meta::SweepMeta;

@@ -10,8 +10,8 @@ use anyhow::Context;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rayon::prelude::*;
 
-use super::case::CaseResult;
 use super::case_recording::RECORDINGS_DIR;
+use super::case_result::CaseResult;
 use super::case_run::run_case;
 use super::grid::{Case, SweepPlan};
 use super::held_motions::held_motions;

@@ -8,7 +8,7 @@ use std::path::Path;
 use anyhow::Context;
 use rig::{NetworkPlant, NetworkStart, RigTopology, Schedule, Track};
 
-use super::case::{CaseResult, chain_lead_s, measured_samples};
+use super::case_result::{CaseResult, chain_lead_s, measured_samples};
 use super::case_run::measure_case;
 use super::grid::{Case, SweepPlan};
 use crate::steady_point::skip_rig_samples;

@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 
 use anyhow::Context;
 
-use super::case::CaseResult;
+use super::case_result::CaseResult;
 use super::thesis::{physics_match, thesis_motion};
 use crate::recording::{CsvRecorder, PartialFile};
 use crate::vocabulary::GearIndicators;

@@ -3,7 +3,7 @@
 
 use rig::Motion;
 
-use super::case::CaseResult;
+use super::case_result::CaseResult;
 
 /// Speed from which the thesis saw the half-order line (rev/min).
 pub const HALF_ORDER_FROM_RPM: f64 = 1100.0;

@@ -11,6 +11,16 @@ pub fn testrig(args: &[&str]) -> Output {
         .expect("the binary runs")
 }
 
+/// The JSON object a successful run of the binary printed (else fails with its stderr).
+pub fn json(output: &Output) -> serde_json::Value {
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    serde_json::from_slice(&output.stdout).expect("one JSON object")
+}
+
 /// Runs the binary with `args`, checks that it succeeded (else fails with its stderr) and
 /// returns its stdout.
 pub fn testrig_ok(args: &[&str]) -> String {
