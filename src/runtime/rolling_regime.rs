@@ -12,7 +12,7 @@ use rig::SetPoints;
 use super::run_plant::{RunBlock, RunPlant, RunWindow};
 use super::status::SharedStatus;
 
-/// Longest stretch at the end of a run whose once-per-revolution samples decide the regime (s).
+/// Length of the windows the judge decides a live run's regime and motion on (s).
 pub const REGIME_WINDOW_S: f64 = 10.0;
 
 /// Time left to settle after the set points change before a window starts (s): the
