@@ -124,7 +124,11 @@ pub use steady::SteadySummary;
 pub use tooth_fault::{FaultKind, FaultedGear, ToothFault};
 pub use topology::TopologyField;
 pub use topology::{
-    Body, DriveRatings, DriveSettings, Gauge, LockedTorque, MAX_BODIES, MAX_MESHES, Mesh,
-    RigTopology, Shaft,
+    Body, DriveRatings, DriveSettings, FrameShaft, Gauge, LockedTorque, MAX_BODIES, MAX_MESHES,
+    Mesh, RigTopology, Shaft,
 };
-pub use topology::{MeshHold, ModalPart};
+pub use topology::{Coordinate, CoordinateKind, Coupling, RigCoordinates};
+pub use topology::{
+    LineOfAction, MAX_PLANETS, PlanarBearing, PlanetaryStage, StageMesh, StageRadii, StageTeeth,
+};
+pub use topology::{MeshHold, ModalPart, ModeKind, STILL_SHARE};

@@ -36,14 +36,15 @@ impl Chain {
             k[(i, i + 1)] -= spring;
             k[(i + 1, i)] -= spring;
         }
-        free_modes(&k, &self.inertia_kgm2)
+        free_modes(&k, &self.inertia_kgm2, 1)
     }
 }
 
-/// The flexible modes of free bodies of inertias `inertia_kgm2` (kg m²) joined by the
-/// stiffness matrix `k` (N m/rad), in ascending frequency: the eigen-solution of
-/// K − ω² M, the one rigid-body mode of a connected free system left out.
-pub(crate) fn free_modes(k: &DMatrix<f64>, inertia_kgm2: &[f64]) -> Vec<NaturalMode> {
+/// The flexible modes of coordinates of inertias `inertia_kgm2` (kg m² for a rotation,
+/// kg for a translation) joined by the stiffness matrix `k` (N m/rad, N/m), in ascending
+/// frequency: the eigen-solution of K − ω² M, its `rigid` lowest modes (the motions no
+/// spring resists) left out.
+pub(crate) fn free_modes(k: &DMatrix<f64>, inertia_kgm2: &[f64], rigid: usize) -> Vec<NaturalMode> {
     let n = inertia_kgm2.len();
     let inv_sqrt = DVector::from_iterator(n, inertia_kgm2.iter().map(|j| 1.0 / j.sqrt()));
     let scaled: DMatrix<f64> = DMatrix::from_fn(n, n, |r, c| inv_sqrt[r] * k[(r, c)] * inv_sqrt[c]);
@@ -61,7 +62,7 @@ pub(crate) fn free_modes(k: &DMatrix<f64>, inertia_kgm2: &[f64]) -> Vec<NaturalM
         })
         .collect();
     modes.sort_by(|a, b| a.frequency_hz.total_cmp(&b.frequency_hz));
-    modes.remove(0);
+    modes.drain(..rigid.min(modes.len()));
     modes
 }
 

@@ -38,6 +38,7 @@ pub fn preset_rig(name: &str, description: &str, params: &RigParams) -> RigTopol
             name: (*body).to_string(),
             inertia_kgm2,
             drag_nms_per_rad: params.bearing_drag_nms_per_rad,
+            planar: None,
         })
         .collect();
     let shaft = |name: &str, between, k, c| Shaft {
@@ -73,6 +74,8 @@ pub fn preset_rig(name: &str, description: &str, params: &RigParams) -> RigTopol
         bodies,
         shafts,
         meshes: vec![mesh(params)],
+        frame_shafts: Vec::new(),
+        planetary: Vec::new(),
         motor: Some(0),
         brake: Some(4),
         locked_torque: None,
@@ -101,6 +104,7 @@ fn mesh(params: &RigParams) -> Mesh {
         pressure_angle_deg: params.pressure_angle_deg,
         backlash_mm: geometry.circular_backlash_m * 1e3,
         centre_distance_shift_mm: params.centre_distance_shift_m * 1e3,
+        centre_line_deg: 0.0,
         stiffness_n_per_m: params.k23_mesh_nm_per_rad / along,
         damping_ns_per_m: params.c23_mesh_nms_per_rad / along,
         pairs: params.mesh_pairs,

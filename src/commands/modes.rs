@@ -2,7 +2,7 @@
 //! rig file), its meshes held three ways as the thesis's App. C takes its rig: in contact
 //! on their springs, rigid, and apart (`rig::MeshHold`).
 
-use rig::{MeshHold, ModalPart, RigTopology};
+use rig::{MeshHold, ModalPart, ModeKind, RigTopology};
 use serde_json::{Value, json};
 
 use crate::cli::ModesArgs;
@@ -14,30 +14,41 @@ pub fn run(args: &ModesArgs) -> anyhow::Result<()> {
         &args.rig.preset,
         &args.rig.overrides,
     )?;
-    let [contact, rigid] = [MeshHold::Contact, MeshHold::Rigid].map(|h| first_part(&rig, h));
+    let contact = first_part(&rig, MeshHold::Contact);
+    // Lin & Parker's kinds, for a rig that moves in the plane.
+    let kinds = (!rig.is_torsional()).then(|| rig.mode_kinds());
+    let rigid = rig.modal_parts(MeshHold::Rigid).into_iter().next();
     let apart = rig.modal_parts(MeshHold::Apart);
     if args.json {
         let bodies: Vec<&str> = rig.bodies.iter().map(|b| b.name.as_str()).collect();
         let value = json!({
             "rig": rig.name,
             "bodies": bodies,
+            "coordinates": coordinate_names(&contact),
             "natural_hz": frequencies(&contact),
             "shapes": shapes(&contact),
-            "rigid_meshes": part_json(&rigid),
+            "kinds": kinds,
+            "rigid_meshes": rigid.as_ref().map(part_json),
             "meshes_apart": apart.iter().map(part_json).collect::<Vec<_>>(),
         });
         println!("{value}");
         return Ok(());
     }
     println!("{}: every mesh in contact, no speed controller", rig.name);
-    print_modes(&contact);
+    print_modes(&contact, kinds.as_deref());
+    let Some(rigid) = rigid else {
+        println!(
+            "(meshes rigid or apart: forms of a torsional rig; this one has planetary stages or bodies that move in the plane)"
+        );
+        return Ok(());
+    };
     println!(
         "every mesh rigid, each pair's gears one coordinate (the thesis's App. C \"whole rig\")"
     );
-    print_modes(&rigid);
+    print_modes(&rigid, None);
     for part in &apart {
         println!("every mesh apart: {}", coordinate_names(part).join(", "));
-        print_modes(part);
+        print_modes(part, None);
     }
     Ok(())
 }
@@ -68,9 +79,9 @@ fn part_json(part: &ModalPart) -> Value {
     })
 }
 
-/// A table of `part`'s modes: frequency, then each coordinate's amplitude in a column as
-/// wide as its name, right-aligned under it.
-fn print_modes(part: &ModalPart) {
+/// A table of `part`'s modes: frequency, each mode's kind where given, then each
+/// coordinate's amplitude in a column as wide as its name, right-aligned under it.
+fn print_modes(part: &ModalPart, kinds: Option<&[ModeKind]>) {
     let names = coordinate_names(part);
     let widths: Vec<usize> = names.iter().map(|b| b.chars().count().max(7)).collect();
     let head: Vec<String> = names
@@ -78,15 +89,23 @@ fn print_modes(part: &ModalPart) {
         .zip(&widths)
         .map(|(b, w)| format!("{b:>w$}"))
         .collect();
-    println!("  {:>10}  {}", "f (Hz)", head.join("  "));
-    for mode in &part.modes {
+    let kind_head = if kinds.is_some() {
+        "kind           "
+    } else {
+        ""
+    };
+    println!("  {:>10}  {kind_head}{}", "f (Hz)", head.join("  "));
+    for (m, mode) in part.modes.iter().enumerate() {
+        let kind = kinds.map_or(String::new(), |k| {
+            format!("{:<15}", format!("{:?}", k[m]).to_lowercase())
+        });
         let shape: Vec<String> = mode
             .shape
             .iter()
             .zip(&widths)
             .map(|(v, w)| format!("{v:>+w$.4}"))
             .collect();
-        println!("  {:>10.3}  {}", mode.frequency_hz, shape.join("  "));
+        println!("  {:>10.3}  {kind}{}", mode.frequency_hz, shape.join("  "));
     }
     println!();
 }

@@ -7,12 +7,16 @@ use std::ops::Range;
 use std::path::Path;
 
 use rig::{
-    Body, DriveRatings, DriveSettings, Gauge, LockedTorque, Mesh, RigTopology, Shaft, TopologyPlace,
+    Body, DriveRatings, DriveSettings, FrameShaft, Gauge, LockedTorque, Mesh, RigTopology, Shaft,
+    TopologyPlace,
 };
 use toml::Spanned;
 
 use super::read_rig_mesh::{mesh, or};
-use super::rig_file_toml::{BrakeToml, KeyphasorToml, MotorToml, RigFileToml, ShaftToml};
+use super::read_rig_planetary::{FRAME, planar_bearing, planetary_stage};
+use super::rig_file_toml::{
+    BrakeToml, KeyphasorToml, MotorToml, PlanetaryToml, RigFileToml, ShaftToml,
+};
 use super::source::ScenarioSource;
 
 /// Shear modulus where a gauge leaves it out (Pa): steel's.
@@ -35,8 +39,16 @@ pub fn rig_topology(src: &ScenarioSource) -> anyhow::Result<RigTopology> {
 /// The rig the file describes, its names resolved.
 fn build(src: &ScenarioSource, file: &RigFileToml) -> anyhow::Result<RigTopology> {
     let bodies = names(src, "body", file.bodies.iter().map(|b| &b.name))?;
-    let shaft_names = names(src, "shaft", file.shafts.iter().map(|s| &s.name))?;
+    if let Some(b) = file.bodies.iter().find(|b| b.name.get_ref() == FRAME) {
+        return Err(src.error(
+            b.name.span(),
+            "body.name",
+            "`frame` is reserved: the housing, which a shaft between = [body, \"frame\"] holds a body to; name the body otherwise",
+        ));
+    }
+    names(src, "shaft", file.shafts.iter().map(|s| &s.name))?;
     names(src, "mesh", file.meshes.iter().map(|m| &m.name))?;
+    names(src, "planetary", file.planetary.iter().map(|p| &p.name))?;
     let body = |name: &Spanned<String>, field: &str| -> anyhow::Result<usize> {
         bodies.get(name.get_ref().as_str()).copied().ok_or_else(|| {
             src.error(
@@ -50,10 +62,24 @@ fn build(src: &ScenarioSource, file: &RigFileToml) -> anyhow::Result<RigTopology
             )
         })
     };
-    let shafts = file
-        .shafts
+    let mut shafts = Vec::new();
+    let mut frame_shafts = Vec::new();
+    for s in &file.shafts {
+        match shaft(src, s, &body)? {
+            ReadShaft::Between(shaft) => shafts.push(shaft),
+            ReadShaft::Frame(shaft) => frame_shafts.push(shaft),
+        }
+    }
+    // Gauges and locked torques name shafts between two bodies.
+    let shaft_names: HashMap<&str, usize> = shafts
         .iter()
-        .map(|s| shaft(src, s, &body))
+        .enumerate()
+        .map(|(i, s)| (s.name.as_str(), i))
+        .collect();
+    let planetary = file
+        .planetary
+        .iter()
+        .map(|p| planetary_stage(src, p, &body))
         .collect::<anyhow::Result<Vec<_>>>()?;
     let meshes = file
         .meshes
@@ -71,7 +97,7 @@ fn build(src: &ScenarioSource, file: &RigFileToml) -> anyhow::Result<RigTopology
                     format!(
                         "no shaft `{}`; the shafts are {}",
                         name.get_ref(),
-                        listed(file.shafts.iter().map(|s| s.name.get_ref()))
+                        listed(shafts.iter().map(|s| &s.name))
                     ),
                 )
             })
@@ -92,9 +118,9 @@ fn build(src: &ScenarioSource, file: &RigFileToml) -> anyhow::Result<RigTopology
                     l.shaft.span(),
                     "locked_torque.shaft",
                     format!(
-                        "no shaft `{}`; the shafts are {}",
+                        "no shaft `{}` between two bodies; those shafts are {}",
                         l.shaft.get_ref(),
-                        listed(file.shafts.iter().map(|s| s.name.get_ref()))
+                        listed(shafts.iter().map(|s| &s.name))
                     ),
                 )
             })?;
@@ -116,14 +142,24 @@ fn build(src: &ScenarioSource, file: &RigFileToml) -> anyhow::Result<RigTopology
         bodies: file
             .bodies
             .iter()
-            .map(|b| Body {
-                name: b.name.get_ref().clone(),
-                inertia_kgm2: *b.inertia_kgm2.get_ref(),
-                drag_nms_per_rad: or(&b.drag_nms_per_rad, 0.0),
+            .map(|b| {
+                Ok(Body {
+                    name: b.name.get_ref().clone(),
+                    inertia_kgm2: *b.inertia_kgm2.get_ref(),
+                    drag_nms_per_rad: or(&b.drag_nms_per_rad, 0.0),
+                    planar: planar_bearing(
+                        src,
+                        [&b.mass_kg, &b.bearing_stiffness_n_per_m],
+                        &b.bearing_damping_ns_per_m,
+                        &format!("body `{}`.mass_kg", b.name.get_ref()),
+                    )?,
+                })
             })
-            .collect(),
+            .collect::<anyhow::Result<Vec<_>>>()?,
         shafts,
         meshes,
+        frame_shafts,
+        planetary,
         motor: file
             .motor
             .as_ref()
@@ -266,11 +302,17 @@ fn names<'a>(
     Ok(map)
 }
 
+/// A `[[shaft]]` as read: between two bodies, or from one to the frame.
+enum ReadShaft {
+    Between(Shaft),
+    Frame(FrameShaft),
+}
+
 fn shaft(
     src: &ScenarioSource,
     s: &ShaftToml,
     body: &impl Fn(&Spanned<String>, &str) -> anyhow::Result<usize>,
-) -> anyhow::Result<Shaft> {
+) -> anyhow::Result<ReadShaft> {
     let field = format!("shaft `{}`.between", s.name.get_ref());
     let [a, b] = s.between.get_ref().as_slice() else {
         return Err(src.error(
@@ -282,12 +324,35 @@ fn shaft(
             ),
         ));
     };
-    Ok(Shaft {
-        name: s.name.get_ref().clone(),
+    let name = s.name.get_ref().clone();
+    let stiffness_nm_per_rad = *s.stiffness_nm_per_rad.get_ref();
+    let damping_nms_per_rad = or(&s.damping_nms_per_rad, 0.0);
+    let held = match (a.get_ref() == FRAME, b.get_ref() == FRAME) {
+        (true, true) => {
+            return Err(src.error(
+                s.between.span(),
+                &field,
+                "joins the frame to itself: name a body and \"frame\"",
+            ));
+        }
+        (false, true) => Some(a),
+        (true, false) => Some(b),
+        (false, false) => None,
+    };
+    if let Some(held) = held {
+        return Ok(ReadShaft::Frame(FrameShaft {
+            name,
+            body: body(held, &field)?,
+            stiffness_nm_per_rad,
+            damping_nms_per_rad,
+        }));
+    }
+    Ok(ReadShaft::Between(Shaft {
+        name,
         between: [body(a, &field)?, body(b, &field)?],
-        stiffness_nm_per_rad: *s.stiffness_nm_per_rad.get_ref(),
-        damping_nms_per_rad: s.damping_nms_per_rad.as_ref().map_or(0.0, |d| *d.get_ref()),
-    })
+        stiffness_nm_per_rad,
+        damping_nms_per_rad,
+    }))
 }
 
 /// `names` as "`a`, `b`, `c`".
@@ -300,10 +365,43 @@ fn listed<'a>(names: impl Iterator<Item = &'a String>) -> String {
 
 /// The field a check's fault names, as the file writes it (`shaft `input`.stiffness…`).
 fn field_name(rig: &RigTopology, place: &TopologyPlace) -> String {
+    // A shaft to the frame is a `[[shaft]]` in the file.
+    let table = match place.table {
+        "frame_shaft" => "shaft",
+        table => table,
+    };
     match place_item(rig, place) {
-        Some(name) => format!("{} `{name}`.{}", place.table, place.field),
-        None => format!("{}.{}", place.table, place.field),
+        Some(name) => format!("{table} `{name}`.{}", place.field),
+        None => format!("{table}.{}", place.field),
     }
+}
+
+/// Where in a `[[planetary]]` table a check's fault on `field` lies.
+fn planetary_span(p: &PlanetaryToml, field: &str) -> Range<usize> {
+    let given = |v: &Option<Spanned<f64>>| v.as_ref().map(Spanned::span);
+    match field {
+        "sun" => Some(p.sun.span()),
+        "ring" => Some(p.ring.span()),
+        "carrier" => Some(p.carrier.span()),
+        "planets" => Some(p.planets.span()),
+        "planet_angles_deg" => p
+            .planet_angles_deg
+            .as_ref()
+            .map_or(Some(p.planets.span()), |a| Some(a.span())),
+        "planet_inertia_kgm2" => Some(p.planet_inertia_kgm2.span()),
+        "planet_mass_kg" => given(&p.planet_mass_kg),
+        "planet_bearing_stiffness_n_per_m" => given(&p.planet_bearing_stiffness_n_per_m),
+        "planet_bearing_damping_ns_per_m" => given(&p.planet_bearing_damping_ns_per_m),
+        "teeth" => Some(p.teeth.span()),
+        "module_m" => Some(p.module_m.span()),
+        "pressure_angle_deg" => given(&p.pressure_angle_deg),
+        "base_diameter_m" => p.base_diameter_m.as_ref().map(Spanned::span),
+        "carrier_radius_m" => given(&p.carrier_radius_m),
+        "sun_planet" => Some(p.sun_planet.span()),
+        "ring_planet" => Some(p.ring_planet.span()),
+        _ => None,
+    }
+    .unwrap_or(p.name.span())
 }
 
 /// The name of the body, shaft or mesh a check's fault lies in, if it lies in one.
@@ -312,6 +410,8 @@ pub(super) fn place_item<'a>(rig: &'a RigTopology, place: &TopologyPlace) -> Opt
         "body" => rig.bodies.get(place.index).map(|b| b.name.as_str()),
         "shaft" => rig.shafts.get(place.index).map(|s| s.name.as_str()),
         "mesh" => rig.meshes.get(place.index).map(|m| m.name.as_str()),
+        "frame_shaft" => rig.frame_shafts.get(place.index).map(|s| s.name.as_str()),
+        "planetary" => rig.planetary.get(place.index).map(|s| s.name.as_str()),
         _ => None,
     }
 }
@@ -321,6 +421,18 @@ fn span_of(file: &RigFileToml, place: &TopologyPlace) -> Range<usize> {
     let i = place.index;
     let span = match (place.table, place.field) {
         ("body", "inertia_kgm2") => file.bodies.get(i).map(|b| b.inertia_kgm2.span()),
+        ("body", "mass_kg") => file
+            .bodies
+            .get(i)
+            .and_then(|b| b.mass_kg.as_ref().map(Spanned::span)),
+        ("body", "bearing_stiffness_n_per_m") => file
+            .bodies
+            .get(i)
+            .and_then(|b| b.bearing_stiffness_n_per_m.as_ref().map(Spanned::span)),
+        ("body", "bearing_damping_ns_per_m") => file
+            .bodies
+            .get(i)
+            .and_then(|b| b.bearing_damping_ns_per_m.as_ref().map(Spanned::span)),
         ("body", "drag_nms_per_rad") => file
             .bodies
             .get(i)
@@ -358,6 +470,20 @@ fn span_of(file: &RigFileToml, place: &TopologyPlace) -> Range<usize> {
             "gear_error_c3_nm" => m.gear_error_c3_nm.as_ref().map(Spanned::span),
             _ => Some(m.name.span()),
         }),
+        ("frame_shaft", field) => file
+            .shafts
+            .iter()
+            .filter(|s| s.between.get_ref().iter().any(|b| b.get_ref() == FRAME))
+            .nth(i)
+            .map(|s| match field {
+                "stiffness_nm_per_rad" => s.stiffness_nm_per_rad.span(),
+                "damping_nms_per_rad" => s
+                    .damping_nms_per_rad
+                    .as_ref()
+                    .map_or(s.between.span(), Spanned::span),
+                _ => s.between.span(),
+            }),
+        ("planetary", field) => file.planetary.get(i).map(|p| planetary_span(p, field)),
         ("locked_torque", _) => file.locked_torque.as_ref().map(|l| l.torque_nm.span()),
         ("motor", field) => file.motor.as_ref().and_then(|m| match field {
             "torque_limit_nm" => m.torque_limit_nm.as_ref().map(Spanned::span),

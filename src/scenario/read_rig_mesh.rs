@@ -50,6 +50,7 @@ pub(super) fn mesh(
             .map_or(DEFAULT_PRESSURE_ANGLE_DEG, |a| *a.get_ref()),
         backlash_mm: *m.backlash_mm.get_ref(),
         centre_distance_shift_mm: or(&m.centre_distance_shift_mm, 0.0),
+        centre_line_deg: or(&m.centre_line_deg, 0.0),
         stiffness_n_per_m: stiffness.0,
         potential_energy: stiffness.2,
         damping_ns_per_m: or(&m.damping_ns_per_m, 0.0),

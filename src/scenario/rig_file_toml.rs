@@ -1,4 +1,5 @@
-//! The rig file's schema (TOML; `docs/rig-files.md`): bodies, shafts, meshes, the motor's
+//! The rig file's schema (TOML; `docs/rig-files.md`): bodies, shafts, meshes, planetary
+//! stages, the motor's
 //! and the brake's body, the torque locked into a loop, the gauged shaft, the tacho's
 //! body and the keyphasor's gear. Unknown keys are refused; every
 //! value keeps its place in the file for errors.
@@ -28,6 +29,9 @@ pub struct RigFileToml {
     /// `[[mesh]]` tables.
     #[serde(default, rename = "mesh")]
     pub meshes: Vec<MeshToml>,
+    /// `[[planetary]]` tables.
+    #[serde(default)]
+    pub planetary: Vec<PlanetaryToml>,
     /// `[motor]`: the body the motor drives, its speed loop and torque limit.
     pub motor: Option<MotorToml>,
     /// `[brake]`: the body the brake loads.
@@ -82,6 +86,15 @@ pub struct BodyToml {
     /// Bearing and windage drag (N m s/rad); 0 when left out.
     #[serde(default)]
     pub drag_nms_per_rad: Option<Spanned<f64>>,
+    /// Mass (kg): with `bearing_stiffness_n_per_m`, the body moves in the plane.
+    #[serde(default)]
+    pub mass_kg: Option<Spanned<f64>>,
+    /// Its bearing's radial stiffness to the frame (N/m), isotropic.
+    #[serde(default)]
+    pub bearing_stiffness_n_per_m: Option<Spanned<f64>>,
+    /// Its bearing's radial damping (N s/m); 0 when left out.
+    #[serde(default)]
+    pub bearing_damping_ns_per_m: Option<Spanned<f64>>,
 }
 
 /// `[[shaft]]`: a torsional spring-damper between two bodies.
@@ -122,6 +135,10 @@ pub struct MeshToml {
     /// left out.
     #[serde(default)]
     pub centre_distance_shift_mm: Option<Spanned<f64>>,
+    /// Direction of the line from the driver's centre to the driven gear's (degrees);
+    /// 0 when left out.
+    #[serde(default)]
+    pub centre_line_deg: Option<Spanned<f64>>,
     /// Stiffness of one tooth pair along the line of action (N/m); left out, the
     /// potential-energy method gives it from `face_width_m` (docs/faults.md).
     #[serde(default)]
@@ -191,6 +208,91 @@ pub struct MeshToml {
     /// `[[mesh.fault]]`: faults seeded on single teeth.
     #[serde(default)]
     pub fault: Vec<FaultToml>,
+}
+
+/// `[[planetary]]`: a planetary stage on three bodies of the file.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PlanetaryToml {
+    /// Unique name; its planets are `<name>_planet<k>`.
+    pub name: Spanned<String>,
+    /// The sun's body.
+    pub sun: Spanned<String>,
+    /// The ring's body.
+    pub ring: Spanned<String>,
+    /// The carrier's body.
+    pub carrier: Spanned<String>,
+    /// Number of planets, 1 to 8.
+    pub planets: Spanned<u32>,
+    /// Each planet's angle on the carrier (degrees); equally spaced when left out.
+    #[serde(default)]
+    pub planet_angles_deg: Option<Spanned<Vec<f64>>>,
+    /// Each planet's moment of inertia (kg m²).
+    pub planet_inertia_kgm2: Spanned<f64>,
+    /// Each planet's mass (kg): with `planet_bearing_stiffness_n_per_m`, planets move on
+    /// their pins' bearings.
+    #[serde(default)]
+    pub planet_mass_kg: Option<Spanned<f64>>,
+    /// Each pin bearing's radial stiffness (N/m).
+    #[serde(default)]
+    pub planet_bearing_stiffness_n_per_m: Option<Spanned<f64>>,
+    /// Each pin bearing's radial damping (N s/m); 0 when left out.
+    #[serde(default)]
+    pub planet_bearing_damping_ns_per_m: Option<Spanned<f64>>,
+    /// Teeth of the sun, each planet and the ring.
+    pub teeth: Spanned<StageTeethToml>,
+    /// Module (m).
+    pub module_m: Spanned<f64>,
+    /// Pressure angle (degrees); 20 when left out.
+    #[serde(default)]
+    pub pressure_angle_deg: Option<Spanned<f64>>,
+    /// Base diameters as a publication gives them (m); m z cos α when left out.
+    #[serde(default)]
+    pub base_diameter_m: Option<Spanned<StageDiametersToml>>,
+    /// Radius of the planets' centres (m); the centre distance when left out.
+    #[serde(default)]
+    pub carrier_radius_m: Option<Spanned<f64>>,
+    /// The sun–planet meshes.
+    pub sun_planet: Spanned<StageMeshToml>,
+    /// The ring–planet meshes.
+    pub ring_planet: Spanned<StageMeshToml>,
+}
+
+/// `teeth = { sun = 24, planet = 36, ring = 96 }`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct StageTeethToml {
+    /// The sun's.
+    pub sun: u32,
+    /// Each planet's.
+    pub planet: u32,
+    /// The ring's.
+    pub ring: u32,
+}
+
+/// `base_diameter_m = { sun = …, planet = …, ring = … }` (m).
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct StageDiametersToml {
+    /// The sun's (m).
+    pub sun: f64,
+    /// Each planet's (m).
+    pub planet: f64,
+    /// The ring's (m).
+    pub ring: f64,
+}
+
+/// A stage's mesh: `{ stiffness_n_per_m = …, damping_ns_per_m = …, backlash_mm = … }`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct StageMeshToml {
+    /// Stiffness along the line of action (N/m).
+    pub stiffness_n_per_m: f64,
+    /// Damping along the line of action (N s/m); 0 when left out.
+    #[serde(default)]
+    pub damping_ns_per_m: f64,
+    /// Total circular backlash at the pitch circles (mm).
+    pub backlash_mm: f64,
 }
 
 /// `[[mesh.fault]]`: a fault on one tooth of the mesh above it (a sweep's

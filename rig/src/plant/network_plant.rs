@@ -122,6 +122,7 @@ impl NetworkPlant {
         ceiling: LiveCeiling,
     ) -> Result<Self, RigError> {
         rig.check()?;
+        rig.check_steppable()?;
         schedule.validate()?;
         if !takes_output_rate(output_rate_hz) {
             return Err(RigError::InvalidOption {

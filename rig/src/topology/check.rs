@@ -6,7 +6,12 @@
 use super::rig_topology::{MAX_BODIES, MAX_MESHES, RigTopology};
 use crate::error::{TopologyError, TopologyPlace};
 
-fn fault(table: &'static str, index: usize, field: &'static str, message: String) -> TopologyError {
+pub(super) fn fault(
+    table: &'static str,
+    index: usize,
+    field: &'static str,
+    message: String,
+) -> TopologyError {
     TopologyError {
         place: TopologyPlace {
             table,
@@ -18,7 +23,7 @@ fn fault(table: &'static str, index: usize, field: &'static str, message: String
 }
 
 /// Refuses a number that is not finite (NaN or infinite).
-fn finite(
+pub(super) fn finite(
     value: f64,
     (table, index, field): (&'static str, usize, &'static str),
 ) -> Result<(), TopologyError> {
@@ -40,7 +45,7 @@ const SMALLEST: f64 = 1e-12;
 const LARGEST: f64 = 1e15;
 
 /// `value` as a positive finite number, or the fault at its place.
-fn positive(
+pub(super) fn positive(
     value: f64,
     (table, index, field): (&'static str, usize, &'static str),
 ) -> Result<(), TopologyError> {
@@ -56,7 +61,7 @@ fn positive(
 }
 
 /// `value` as a finite number ≥ 0, or the fault at its place.
-fn non_negative(
+pub(super) fn non_negative(
     value: f64,
     (table, index, field): (&'static str, usize, &'static str),
 ) -> Result<(), TopologyError> {
@@ -76,6 +81,7 @@ impl RigTopology {
     pub fn check(&self) -> Result<(), TopologyError> {
         self.check_sizes()?;
         self.check_numbers()?;
+        self.check_planar()?;
         self.check_connected()?;
         self.check_loops_close()?;
         if let Some(locked) = &self.locked_torque
@@ -353,6 +359,15 @@ impl RigTopology {
         let speeds = self.relative_speeds();
         match speeds.iter().position(Option::is_none) {
             None => Ok(()),
+            Some(i) if let Some(k) = self.stage_of(i) => Err(fault(
+                "planetary",
+                k,
+                "ring",
+                format!(
+                    "the speeds of `{}`'s sun, ring and carrier are not set by the rest of the rig: it turns as a differential; hold one of the three by a shaft to the frame (between = [\"{}\", \"frame\"]) or join two of them to the rest of the rig",
+                    self.planetary[k].name, self.bodies[self.planetary[k].ring].name
+                ),
+            )),
             Some(i) => Err(fault(
                 "body",
                 i,
@@ -365,14 +380,19 @@ impl RigTopology {
         }
     }
 
-    /// Each body's speed per unit speed of the first, propagated through shafts (1) and
-    /// meshes (−z₁/z₂) from the first body; `None` for a body not reached.
+    /// Each body's speed per unit speed of the first body not held to the frame (held
+    /// ones 0), propagated through shafts (1), meshes (−z₁/z₂) and planetary stages
+    /// (Willis's equation, once two of sun, ring and carrier are known); `None` for a
+    /// body not reached.
     pub fn relative_speeds(&self) -> Vec<Option<f64>> {
         let mut speed: Vec<Option<f64>> = vec![None; self.bodies.len()];
-        if speed.is_empty() {
-            return speed;
+        for s in &self.frame_shafts {
+            speed[s.body] = Some(0.0);
         }
-        speed[0] = Some(1.0);
+        let Some(reference) = speed.iter().position(Option::is_none) else {
+            return speed;
+        };
+        speed[reference] = Some(1.0);
         loop {
             let mut changed = false;
             for (a, b, ratio) in self.joints() {
@@ -388,10 +408,29 @@ impl RigTopology {
                     _ => {}
                 }
             }
+            for stage in &self.planetary {
+                let known = [stage.sun, stage.ring, stage.carrier].map(|b| speed[b]);
+                if known.iter().all(Option::is_some) {
+                    continue;
+                }
+                if let Some(all) = stage.willis(known[0], known[1], known[2]) {
+                    for (body, v) in [stage.sun, stage.ring, stage.carrier].into_iter().zip(all) {
+                        speed[body] = Some(v);
+                    }
+                    changed = true;
+                }
+            }
             if !changed {
                 return speed;
             }
         }
+    }
+
+    /// The planetary stage body `body` is the sun, ring or carrier of, if any.
+    fn stage_of(&self, body: usize) -> Option<usize> {
+        self.planetary
+            .iter()
+            .position(|s| [s.sun, s.ring, s.carrier].contains(&body))
     }
 
     /// Every joint as (body, body, speed of the second per unit speed of the first).
@@ -431,6 +470,32 @@ impl RigTopology {
                         self.bodies[b].name,
                         y / x,
                         self.bodies[a].name
+                    ),
+                ));
+            }
+        }
+        self.check_stages_close(&speeds)
+    }
+
+    /// A stage whose sun, ring and carrier the rest of the rig turns must turn them as
+    /// Willis's equation says.
+    fn check_stages_close(&self, speeds: &[Option<f64>]) -> Result<(), TopologyError> {
+        for (k, stage) in self.planetary.iter().enumerate() {
+            let [Some(s), Some(r), Some(c)] =
+                [stage.sun, stage.ring, stage.carrier].map(|b| speeds[b])
+            else {
+                continue;
+            };
+            let Some([_, _, willis]) = stage.willis(Some(s), Some(r), None) else {
+                continue;
+            };
+            if (willis - c).abs() > 1e-9 * s.abs().max(r.abs()).max(c.abs()) {
+                return Err(fault(
+                    "planetary",
+                    k,
+                    "carrier",
+                    format!(
+                        "the rest of the rig turns sun, ring and carrier at {s:.6}, {r:.6} and {c:.6}; the stage's teeth need the carrier at {willis:.6}"
                     ),
                 ));
             }

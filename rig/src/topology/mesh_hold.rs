@@ -3,10 +3,13 @@
 //! gears turn as one coordinate in the ratio of their base radii, so an external pair's
 //! r_b1 θ1 + r_b2 θ2 stays 0), or apart (the rig falls into the parts its shafts join,
 //! each with its own rigid-body mode left out). App. C's "whole rig" is the rigid form
-//! with the driven gear's inertia left out; here every inertia counts.
+//! with the driven gear's inertia left out; here every inertia counts. Rigid and apart
+//! are forms of a torsional rig: a rig with planetary stages or bodies that move in the
+//! plane has its modes in contact only.
 
 use nalgebra::DMatrix;
 
+use super::coordinates::RigCoordinates;
 use super::modes::add_coupling;
 use super::rig_topology::RigTopology;
 use crate::modal::{NaturalMode, free_modes};
@@ -25,8 +28,8 @@ pub enum MeshHold {
 /// The flexible modes of bodies that move together.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ModalPart {
-    /// Each coordinate's bodies (names): one body, or the gears a rigid mesh joins and
-    /// the bodies on them.
+    /// Each coordinate's bodies (names): one body (`<body>.x`, `<body>.y` for its
+    /// translations in the plane), or the gears a rigid mesh joins and the bodies on them.
     pub coordinates: Vec<Vec<String>>,
     /// The flexible modes, ascending; each shape gives the coordinates' amplitudes
     /// (rad per rad of the coordinate's first body), the largest scaled to 1.
@@ -43,13 +46,27 @@ struct Coordinates {
 }
 
 impl RigTopology {
+    /// Whether the rig turns about fixed axes alone: no planetary stage, no body on a
+    /// bearing in the plane.
+    pub fn is_torsional(&self) -> bool {
+        self.planetary.is_empty() && self.bodies.iter().all(|b| b.planar.is_none())
+    }
+
     /// The rig's flexible modes with its meshes held as `hold` says: one part in contact
     /// or rigid (a checked rig is connected), the parts the shafts join when apart (a
-    /// part of one body has no flexible mode and is left out).
+    /// part of one body has no flexible mode and is left out). Rigid and apart give no
+    /// part for a rig that is not torsional ([`Self::is_torsional`]).
     pub fn modal_parts(&self, hold: MeshHold) -> Vec<ModalPart> {
+        if hold != MeshHold::Contact && !self.is_torsional() {
+            return Vec::new();
+        }
         match hold {
             MeshHold::Contact => vec![ModalPart {
-                coordinates: self.bodies.iter().map(|b| vec![b.name.clone()]).collect(),
+                coordinates: RigCoordinates::of(self)
+                    .coordinates
+                    .iter()
+                    .map(|c| vec![c.name()])
+                    .collect(),
                 modes: self.natural_modes(),
             }],
             MeshHold::Rigid => vec![self.part(&self.rigid_coordinates(), 0)],
@@ -92,8 +109,15 @@ impl RigTopology {
                 s.stiffness_nm_per_rad,
             );
         }
+        let mut held = false;
+        for s in self.frame_shafts.iter().filter(|s| in_part(s.body)) {
+            let (c, ratio) = coordinates.of_body[s.body];
+            add_coupling(&mut k, &[(index[c], ratio)], s.stiffness_nm_per_rad);
+            held = true;
+        }
         ModalPart {
-            modes: free_modes(&k, &inertia),
+            // A part turns freely unless a shaft holds it to the frame.
+            modes: free_modes(&k, &inertia, usize::from(!held)),
             coordinates: names,
         }
     }

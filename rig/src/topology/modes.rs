@@ -1,35 +1,39 @@
 //! The undamped natural modes of a rig of any topology with every mesh in contact and no
-//! speed controller (as the thesis's App. C takes the 1983 rig), the rigid-body mode left
-//! out. In absolute angles an external pair's deflection along the line of action is
-//! δ = r_b1 θ1 + r_b2 θ2, so its stiffness k adds k r_b1², k r_b2² to the gears' diagonal
-//! entries and k r_b1 r_b2 off the diagonal; a shaft adds k to each end and −k between.
+//! speed controller (as the thesis's App. C takes the 1983 rig), the rigid-body modes
+//! left out, at zero speed. Each spring of the rig on its coordinates
+//! (`coordinates.rs`) adds k g gᵀ to the stiffness matrix, g its deflection's
+//! coefficients: in a torsional rig an external pair's δ = r_b1 θ1 + r_b2 θ2 adds
+//! k r_b1², k r_b2² to the gears' diagonal entries and k r_b1 r_b2 off the diagonal, a
+//! shaft k to each end and −k between; in the plane, Lin & Parker's (1999) K_b + K_m.
 
 use nalgebra::DMatrix;
 
+use super::coordinates::{Coupling, RigCoordinates};
 use super::rig_topology::RigTopology;
 use crate::modal::{NaturalMode, free_modes};
 
 impl RigTopology {
-    /// The stiffness matrix in the bodies' absolute angles, meshes in contact (N m/rad).
+    /// The stiffness matrix on the rig's coordinates ([`RigCoordinates`]), meshes in
+    /// contact (N m/rad, N/m).
     pub fn stiffness_matrix(&self) -> DMatrix<f64> {
-        let n = self.bodies.len();
+        let coordinates = RigCoordinates::of(self);
+        let n = coordinates.len();
         let mut k = DMatrix::zeros(n, n);
-        for s in &self.shafts {
-            let [a, b] = s.between;
-            add_coupling(&mut k, &[(a, 1.0), (b, -1.0)], s.stiffness_nm_per_rad);
-        }
-        for m in &self.meshes {
-            let [a, b] = m.gears;
-            let [ra, rb] = m.base_radii_m();
-            add_coupling(&mut k, &[(a, ra), (b, rb)], m.stiffness_n_per_m);
+        for c in coordinates.couplings(self) {
+            add_coupling(&mut k, &c.terms, c.stiffness);
         }
         k
     }
 
-    /// The flexible modes in ascending frequency (a checked rig: one connected body).
+    /// The flexible modes in ascending frequency, each shape over the rig's coordinates
+    /// (rad for rotations, m for translations).
     pub fn natural_modes(&self) -> Vec<NaturalMode> {
-        let inertia: Vec<f64> = self.bodies.iter().map(|b| b.inertia_kgm2).collect();
-        free_modes(&self.stiffness_matrix(), &inertia)
+        let coordinates = RigCoordinates::of(self);
+        free_modes(
+            &self.stiffness_matrix(),
+            &coordinates.masses(),
+            rigid_motions(&coordinates, &coordinates.couplings(self)),
+        )
     }
 
     /// The undamped natural frequencies (Hz), ascending, rigid-body mode left out.
@@ -39,6 +43,27 @@ impl RigTopology {
             .map(|m| m.frequency_hz)
             .collect()
     }
+}
+
+/// How many independent motions of the coordinates no spring resists (the rigid-body
+/// modes): the coordinates less the rank of the springs' deflection forms, each scaled to
+/// unit length so that the rank does not depend on how stiff they are (a form counts where
+/// its singular value exceeds 1e-9 of the largest; a real form's is far above).
+pub(crate) fn rigid_motions(coordinates: &RigCoordinates, couplings: &[Coupling]) -> usize {
+    let n = coordinates.len();
+    if couplings.is_empty() {
+        return n;
+    }
+    let mut forms = DMatrix::<f64>::zeros(couplings.len(), n);
+    for (row, c) in couplings.iter().enumerate() {
+        let norm = c.terms.iter().map(|&(_, v)| v * v).sum::<f64>().sqrt();
+        for &(j, v) in &c.terms {
+            forms[(row, j)] += v / norm;
+        }
+    }
+    let singular = forms.singular_values();
+    let largest = singular.max();
+    n - singular.iter().filter(|&&s| s > 1e-9 * largest).count()
 }
 
 /// Adds a spring `spring` on the deflection Σ c_i θ_i of `terms` (body, c_i) to the

@@ -1,7 +1,8 @@
-//! A rig of any topology, as a rig file describes it: rotating bodies, torsional shafts
-//! between two bodies, and external spur meshes with backlash between two gears' base
-//! circles; a motor body, a brake body, and for a back-to-back loop the torque locked
-//! into one shaft. SI inside, units in the names. Built from a rig file by the
+//! A rig of any topology, as a rig file describes it: rotating bodies (some moving in the
+//! plane on their bearings), torsional shafts between two bodies or from a body to the
+//! frame, external spur meshes with backlash between two gears' base circles, and
+//! planetary stages (`planetary.rs`); a motor body, a brake body, and for a back-to-back
+//! loop the torque locked into one shaft. SI inside, units in the names. Built from a rig file by the
 //! application; checked by [`RigTopology::check`] (`check.rs`); its natural frequencies
 //! by [`RigTopology::natural_frequencies_hz`] (`modes.rs`).
 
@@ -10,6 +11,8 @@ use serde::{Deserialize, Serialize};
 use crate::mesh_stiffness::PairGeometry;
 use crate::options::{ContactLaw, MeshPairs};
 use crate::tooth_fault::ToothFault;
+
+use super::planetary::{PlanarBearing, PlanetaryStage};
 
 /// Most bodies a rig may have.
 pub const MAX_BODIES: usize = 32;
@@ -25,6 +28,25 @@ pub struct Body {
     pub inertia_kgm2: f64,
     /// Bearing and windage drag on its absolute speed (N m s/rad); 0 for none.
     pub drag_nms_per_rad: f64,
+    /// Its mass and bearing, if it moves in the plane (x, y beside its rotation); `None`:
+    /// its axis held rigidly.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub planar: Option<PlanarBearing>,
+}
+
+/// A torsional spring-damper from a body to the frame (a rig file's shaft with
+/// `between = [body, "frame"]`): it holds the body's rotation, as a housing holds a ring
+/// gear.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct FrameShaft {
+    /// Its name, unique among the rig's shafts.
+    pub name: String,
+    /// The body it holds (index).
+    pub body: usize,
+    /// Torsional stiffness (N m/rad).
+    pub stiffness_nm_per_rad: f64,
+    /// Torsional viscous damping (N m s/rad).
+    pub damping_nms_per_rad: f64,
 }
 
 /// A torsional spring-damper between two bodies.
@@ -61,6 +83,11 @@ pub struct Mesh {
     /// 1 mm shift's, 2ΔC tan α).
     #[serde(default, skip_serializing_if = "is_zero")]
     pub centre_distance_shift_mm: f64,
+    /// Direction of the line from the driver's centre to the driven gear's (degrees from
+    /// the x axis; 0 when left out): where its line of action lies in the plane, which
+    /// matters only where a gear moves in the plane.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub centre_line_deg: f64,
     /// Stiffness of one tooth pair along the line of action (N/m).
     pub stiffness_n_per_m: f64,
     /// Damping along the line of action (N s/m).
@@ -313,6 +340,12 @@ pub struct RigTopology {
     pub shafts: Vec<Shaft>,
     /// Its meshes.
     pub meshes: Vec<Mesh>,
+    /// Its shafts to the frame.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub frame_shafts: Vec<FrameShaft>,
+    /// Its planetary stages.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub planetary: Vec<PlanetaryStage>,
     /// The body the motor drives (index).
     pub motor: Option<usize>,
     /// The body the brake loads (index).

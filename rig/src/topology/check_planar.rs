@@ -1,0 +1,249 @@
+//! What makes a rig's planar parts ones the model can take: bodies' masses and bearings,
+//! shafts to the frame, and planetary stages (their bodies, planets, teeth, geometry and
+//! meshes). Each fault names the item and field, and what is allowed.
+
+use std::f64::consts::PI;
+
+use super::check::{fault, non_negative, positive};
+use super::planetary::{MAX_PLANETS, PlanarBearing, PlanetaryStage, StageMesh};
+use super::rig_topology::RigTopology;
+use crate::error::TopologyError;
+
+impl RigTopology {
+    /// Checks planar bearings, shafts to the frame and planetary stages.
+    pub(super) fn check_planar(&self) -> Result<(), TopologyError> {
+        for (i, b) in self.bodies.iter().enumerate() {
+            if let Some(bearing) = &b.planar {
+                check_bearing(bearing, "body", i, ["mass_kg", "bearing_stiffness_n_per_m"])?;
+                non_negative(
+                    bearing.damping_ns_per_m,
+                    ("body", i, "bearing_damping_ns_per_m"),
+                )?;
+            }
+        }
+        for (i, s) in self.frame_shafts.iter().enumerate() {
+            positive(
+                s.stiffness_nm_per_rad,
+                ("frame_shaft", i, "stiffness_nm_per_rad"),
+            )?;
+            non_negative(
+                s.damping_nms_per_rad,
+                ("frame_shaft", i, "damping_nms_per_rad"),
+            )?;
+        }
+        for (i, stage) in self.planetary.iter().enumerate() {
+            check_stage(stage, i)?;
+        }
+        Ok(())
+    }
+}
+
+impl RigTopology {
+    /// Refuses what the time-domain plant does not step yet: bodies that move in the
+    /// plane, shafts to the frame and planetary stages (their natural modes are
+    /// computed, `modes.rs`).
+    pub fn check_steppable(&self) -> Result<(), TopologyError> {
+        let pending = "the time-domain plant does not step it yet (docs/planetary.md): `modes` gives the rig's natural frequencies, while simulate, run, sweep, calibrate, the panel, SCPI, Python and the FMU refuse it";
+        if let Some(s) = self.planetary.first() {
+            return Err(fault(
+                "planetary",
+                0,
+                "name",
+                format!("planetary stage `{}`: {pending}", s.name),
+            ));
+        }
+        if let Some(i) = self.bodies.iter().position(|b| b.planar.is_some()) {
+            return Err(fault(
+                "body",
+                i,
+                "mass_kg",
+                format!(
+                    "body `{}` moves in the plane (mass_kg): {pending}",
+                    self.bodies[i].name
+                ),
+            ));
+        }
+        if let Some(s) = self.frame_shafts.first() {
+            return Err(fault(
+                "frame_shaft",
+                0,
+                "between",
+                format!("shaft `{}` holds a body to the frame: {pending}", s.name),
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// A bearing's mass and stiffness, both positive (`fields`: their names in the file).
+fn check_bearing(
+    bearing: &PlanarBearing,
+    table: &'static str,
+    i: usize,
+    fields: [&'static str; 2],
+) -> Result<(), TopologyError> {
+    positive(bearing.mass_kg, (table, i, fields[0]))?;
+    positive(bearing.stiffness_n_per_m, (table, i, fields[1]))
+}
+
+/// One stage: three distinct bodies, 1 to 8 planets that can be assembled where they
+/// stand, teeth that fit, positive geometry and meshes.
+fn check_stage(s: &PlanetaryStage, i: usize) -> Result<(), TopologyError> {
+    let members = [s.sun, s.ring, s.carrier];
+    if members[0] == members[1] || members[0] == members[2] || members[1] == members[2] {
+        return Err(fault(
+            "planetary",
+            i,
+            "carrier",
+            "sun, ring and carrier are one body twice: name three bodies".into(),
+        ));
+    }
+    if !(1..=MAX_PLANETS).contains(&s.planets()) {
+        return Err(fault(
+            "planetary",
+            i,
+            "planets",
+            format!("{}: a stage has 1 to {MAX_PLANETS} planets", s.planets()),
+        ));
+    }
+    positive(
+        s.planet_inertia_kgm2,
+        ("planetary", i, "planet_inertia_kgm2"),
+    )?;
+    if let Some(bearing) = &s.planet_bearing {
+        check_bearing(
+            bearing,
+            "planetary",
+            i,
+            ["planet_mass_kg", "planet_bearing_stiffness_n_per_m"],
+        )?;
+        non_negative(
+            bearing.damping_ns_per_m,
+            ("planetary", i, "planet_bearing_damping_ns_per_m"),
+        )?;
+    }
+    positive(s.module_m, ("planetary", i, "module_m"))?;
+    if !(s.pressure_angle_deg > 0.0 && s.pressure_angle_deg < 45.0) {
+        return Err(fault(
+            "planetary",
+            i,
+            "pressure_angle_deg",
+            format!(
+                "{}: a pressure angle lies in (0, 45) degrees",
+                s.pressure_angle_deg
+            ),
+        ));
+    }
+    check_teeth(s, i)?;
+    if let Some(r) = &s.base_radii_m {
+        for value in [r.sun, r.planet, r.ring] {
+            positive(value, ("planetary", i, "base_diameter_m"))?;
+        }
+    }
+    if let Some(rc) = s.carrier_radius_given_m {
+        positive(rc, ("planetary", i, "carrier_radius_m"))?;
+    }
+    check_angles(s, i)?;
+    check_stage_mesh(&s.sun_planet, s.module_m, i, "sun_planet")?;
+    check_stage_mesh(&s.ring_planet, s.module_m, i, "ring_planet")
+}
+
+/// At least 5 teeth each, and a ring of z_s + 2 z_p teeth (standard gears on one centre
+/// distance) unless the base diameters are given.
+fn check_teeth(s: &PlanetaryStage, i: usize) -> Result<(), TopologyError> {
+    let t = s.teeth;
+    if [t.sun, t.planet, t.ring].iter().any(|&z| z < 5) {
+        return Err(fault(
+            "planetary",
+            i,
+            "teeth",
+            format!(
+                "sun {}, planet {}, ring {}: each gear needs at least 5 teeth",
+                t.sun, t.planet, t.ring
+            ),
+        ));
+    }
+    let standard = t.sun + 2 * t.planet;
+    if s.base_radii_m.is_none() && t.ring != standard {
+        return Err(fault(
+            "planetary",
+            i,
+            "teeth",
+            format!(
+                "ring {}: standard gears on one centre distance need ring = sun + 2 planet = {standard} (or give base_diameter_m, as a published model's numbers)",
+                t.ring
+            ),
+        ));
+    }
+    Ok(())
+}
+
+/// Planet angles in [0°, 360°), distinct, each one the planets can be assembled at
+/// ((z_s + z_r) ψ / 360° whole), and no two planets' tips overlapping.
+fn check_angles(s: &PlanetaryStage, i: usize) -> Result<(), TopologyError> {
+    let field = "planet_angles_deg";
+    for (k, &psi) in s.planet_angles_rad.iter().enumerate() {
+        if !(0.0..2.0 * PI).contains(&psi) {
+            return Err(fault(
+                "planetary",
+                i,
+                field,
+                format!(
+                    "planet {}: {}°: an angle in [0, 360) degrees",
+                    k + 1,
+                    psi.to_degrees()
+                ),
+            ));
+        }
+    }
+    let step_deg = 360.0 / f64::from(s.teeth.sun + s.teeth.ring);
+    if let Some((k, deg)) = s.unassemblable() {
+        return Err(fault(
+            "planetary",
+            i,
+            field,
+            format!(
+                "planet {} at {deg:.3}°: planets can be assembled only at multiples of 360°/(z_s + z_r) = {step_deg:.4}° (equally spaced: (z_s + z_r)/N whole)",
+                k + 1
+            ),
+        ));
+    }
+    if let Some((a, b, apart_mm, least_mm)) = s.overlapping_planets() {
+        return Err(fault(
+            "planetary",
+            i,
+            field,
+            format!(
+                "planets {} and {} are {apart_mm:.1} mm apart, centre to centre; their tips need {least_mm:.1} mm: fewer planets, or a larger carrier",
+                a + 1,
+                b + 1
+            ),
+        ));
+    }
+    Ok(())
+}
+
+/// A stage's mesh: positive stiffness, damping ≥ 0, backlash below half the pitch.
+fn check_stage_mesh(
+    m: &StageMesh,
+    module_m: f64,
+    i: usize,
+    field: &'static str,
+) -> Result<(), TopologyError> {
+    positive(m.stiffness_n_per_m, ("planetary", i, field))?;
+    non_negative(m.damping_ns_per_m, ("planetary", i, field))?;
+    positive(m.backlash_mm, ("planetary", i, field))?;
+    let half_pitch_mm = PI * module_m * 1e3 / 2.0;
+    if m.backlash_mm >= half_pitch_mm {
+        return Err(fault(
+            "planetary",
+            i,
+            field,
+            format!(
+                "backlash {} mm: a gap between teeth, below half the circular pitch (π m / 2 = {half_pitch_mm:.3} mm)",
+                m.backlash_mm
+            ),
+        ));
+    }
+    Ok(())
+}

@@ -1,0 +1,313 @@
+//! The rig's coordinates and every spring on them, in the planar lumped model of Lin &
+//! Parker (J. Sound Vib. 222(1), 1999) at zero carrier speed. Each body has its rotation
+//! θ (rad, absolute); a body with a bearing in the plane has x and y (m) beside it; each
+//! planet of a stage has its rotation (absolute) and, on a bearing, x and y. A body or a
+//! planet without one keeps its centre where its axis holds it: a body's still, a
+//! planet's on its pin, moving with the carrier.
+//!
+//! A spring acts on a deflection that is a linear form of the coordinates:
+//! - a shaft on θ_a − θ_b, a shaft to the frame on θ;
+//! - a bearing on x and on y (a planet's on its centre less its pin's,
+//!   (x_c, y_c) + r_c θ_c e_t);
+//! - a mesh on δ = r_a θ_a + r_b θ_b + (d_a − d_b)·n, d a gear's centre, n the unit
+//!   line of action along which the first gear pushes the second; for a stage's planet
+//!   k, δ_sp = r_s θ_s + r_p θ_p + (d_s − d_p)·n_s and δ_rp = r_r θ_r − r_p θ_p + (d_p −
+//!   d_r)·n_r (`PlanetaryStage::sun_line`, `ring_line`): Lin & Parker's δ_sn, δ_rn with
+//!   u = r θ.
+//!
+//! A torsional rig's coordinates are its bodies' rotations, in order, and its meshes'
+//! deflections the torsional r_a θ_a + r_b θ_b, as before planar bodies.
+
+use super::planetary::PlanetaryStage;
+use super::rig_topology::RigTopology;
+
+/// What a coordinate measures.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CoordinateKind {
+    /// Rotation (rad), absolute.
+    Rotation,
+    /// Translation along x (m).
+    X,
+    /// Translation along y (m).
+    Y,
+}
+
+/// One coordinate of the rig.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Coordinate {
+    /// The body's or the planet's name.
+    pub body: String,
+    /// What it measures.
+    pub kind: CoordinateKind,
+    /// Its inertia: kg m² for a rotation, kg for a translation.
+    pub mass: f64,
+}
+
+impl Coordinate {
+    /// Its name: the body's for a rotation, `<body>.x` and `<body>.y` for translations.
+    pub fn name(&self) -> String {
+        match self.kind {
+            CoordinateKind::Rotation => self.body.clone(),
+            CoordinateKind::X => format!("{}.x", self.body),
+            CoordinateKind::Y => format!("{}.y", self.body),
+        }
+    }
+}
+
+/// A spring-damper on a linear form of the coordinates.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Coupling {
+    /// The deflection's terms (coordinate, coefficient): rad or m per unit coordinate.
+    pub terms: Vec<(usize, f64)>,
+    /// Stiffness on the deflection (N m/rad for a rotation's, N/m for a length's).
+    pub stiffness: f64,
+    /// Damping on its rate (N m s/rad or N s/m).
+    pub damping: f64,
+}
+
+/// Where a gear's coordinates sit.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct Place {
+    /// Its rotation.
+    rotation: usize,
+    /// Its x (y follows), if it moves in the plane.
+    translation: Option<usize>,
+}
+
+/// The coordinates of a whole rig.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RigCoordinates {
+    /// Every coordinate: each body's, in order, then each stage's planets'.
+    pub coordinates: Vec<Coordinate>,
+    bodies: Vec<Place>,
+    /// Per stage, per planet.
+    planets: Vec<Vec<Place>>,
+    /// The first planet's first coordinate (the bodies' come before).
+    first_planet: usize,
+}
+
+/// A centre's displacement: its x and its y as linear forms.
+type Centre = [Vec<(usize, f64)>; 2];
+
+impl RigCoordinates {
+    /// The coordinates of `rig`.
+    pub fn of(rig: &RigTopology) -> Self {
+        let mut coordinates = Vec::new();
+        let mut place = |name: &str, inertia: f64, mass: Option<f64>| {
+            let mut add = |kind, mass| {
+                coordinates.push(Coordinate {
+                    body: name.to_string(),
+                    kind,
+                    mass,
+                });
+                coordinates.len() - 1
+            };
+            let rotation = add(CoordinateKind::Rotation, inertia);
+            let translation = mass.map(|m| {
+                let x = add(CoordinateKind::X, m);
+                add(CoordinateKind::Y, m);
+                x
+            });
+            Place {
+                rotation,
+                translation,
+            }
+        };
+        let bodies = rig
+            .bodies
+            .iter()
+            .map(|b| {
+                place(
+                    &b.name,
+                    b.inertia_kgm2,
+                    b.planar.as_ref().map(|p| p.mass_kg),
+                )
+            })
+            .collect();
+        let first_planet = rig
+            .bodies
+            .iter()
+            .map(|b| if b.planar.is_some() { 3 } else { 1 })
+            .sum();
+        let planets = rig
+            .planetary
+            .iter()
+            .map(|s| {
+                let mass = s.planet_bearing.as_ref().map(|p| p.mass_kg);
+                (0..s.planets())
+                    .map(|k| place(&s.planet_name(k), s.planet_inertia_kgm2, mass))
+                    .collect()
+            })
+            .collect();
+        Self {
+            coordinates,
+            bodies,
+            planets,
+            first_planet,
+        }
+    }
+
+    /// Whether any body or planet moves in the plane.
+    pub fn translates(&self) -> bool {
+        self.coordinates
+            .iter()
+            .any(|c| c.kind != CoordinateKind::Rotation)
+    }
+
+    /// Whether coordinate `j` is a planet's.
+    pub fn is_planet(&self, j: usize) -> bool {
+        j >= self.first_planet
+    }
+
+    /// Number of coordinates.
+    pub fn len(&self) -> usize {
+        self.coordinates.len()
+    }
+
+    /// Whether there are none.
+    pub fn is_empty(&self) -> bool {
+        self.coordinates.is_empty()
+    }
+
+    /// Each coordinate's inertia (kg m² or kg).
+    pub fn masses(&self) -> Vec<f64> {
+        self.coordinates.iter().map(|c| c.mass).collect()
+    }
+
+    /// Every spring of `rig` on these coordinates, meshes in contact on their drive
+    /// flanks: shafts, shafts to the frame, bearings, meshes, then each stage's.
+    pub fn couplings(&self, rig: &RigTopology) -> Vec<Coupling> {
+        let mut out = Vec::new();
+        for s in &rig.shafts {
+            let [a, b] = s.between.map(|i| self.bodies[i].rotation);
+            out.push(coupling(
+                vec![(a, 1.0), (b, -1.0)],
+                s.stiffness_nm_per_rad,
+                s.damping_nms_per_rad,
+            ));
+        }
+        for s in &rig.frame_shafts {
+            let theta = self.bodies[s.body].rotation;
+            out.push(coupling(
+                vec![(theta, 1.0)],
+                s.stiffness_nm_per_rad,
+                s.damping_nms_per_rad,
+            ));
+        }
+        for (body, place) in rig.bodies.iter().zip(&self.bodies) {
+            if let (Some(bearing), Some(x)) = (&body.planar, place.translation) {
+                for axis in [x, x + 1] {
+                    out.push(coupling(
+                        vec![(axis, 1.0)],
+                        bearing.stiffness_n_per_m,
+                        bearing.damping_ns_per_m,
+                    ));
+                }
+            }
+        }
+        for m in &rig.meshes {
+            let [a, b] = m.gears;
+            let [ra, rb] = m.base_radii_m();
+            let phi = m.centre_line_deg.to_radians();
+            let (s, c) = m.pressure_angle_deg.to_radians().sin_cos();
+            let (er, et) = ([phi.cos(), phi.sin()], [-phi.sin(), phi.cos()]);
+            let n = [c * et[0] + s * er[0], c * et[1] + s * er[1]];
+            let mut terms = vec![(self.bodies[a].rotation, ra), (self.bodies[b].rotation, rb)];
+            terms.extend(along(&self.body_centre(a), n, 1.0));
+            terms.extend(along(&self.body_centre(b), n, -1.0));
+            out.push(coupling(terms, m.stiffness_n_per_m, m.damping_ns_per_m));
+        }
+        for (i, stage) in rig.planetary.iter().enumerate() {
+            self.stage_couplings(i, stage, &mut out);
+        }
+        out
+    }
+
+    /// A stage's springs: per planet its bearing on the pin (where it moves in the
+    /// plane), its sun–planet and its ring–planet mesh.
+    fn stage_couplings(&self, i: usize, stage: &PlanetaryStage, out: &mut Vec<Coupling>) {
+        let r = stage.radii_m();
+        let sun = self.bodies[stage.sun];
+        let ring = self.bodies[stage.ring];
+        for (k, planet) in self.planets[i].iter().enumerate() {
+            let pin = self.pin_centre(stage, k);
+            if let (Some(bearing), Some(x)) = (&stage.planet_bearing, planet.translation) {
+                for (axis, pin_axis) in [(x, &pin[0]), (x + 1, &pin[1])] {
+                    let mut terms = vec![(axis, 1.0)];
+                    terms.extend(pin_axis.iter().map(|&(j, v)| (j, -v)));
+                    out.push(coupling(
+                        terms,
+                        bearing.stiffness_n_per_m,
+                        bearing.damping_ns_per_m,
+                    ));
+                }
+            }
+            let centre = self.planet_centre(planet, pin);
+            let n = stage.sun_line(k).n;
+            let mut terms = vec![(sun.rotation, r.sun), (planet.rotation, r.planet)];
+            terms.extend(along(&self.body_centre(stage.sun), n, 1.0));
+            terms.extend(along(&centre, n, -1.0));
+            let m = &stage.sun_planet;
+            out.push(coupling(terms, m.stiffness_n_per_m, m.damping_ns_per_m));
+            let n = stage.ring_line(k).n;
+            let mut terms = vec![(ring.rotation, r.ring), (planet.rotation, -r.planet)];
+            terms.extend(along(&centre, n, 1.0));
+            terms.extend(along(&self.body_centre(stage.ring), n, -1.0));
+            let m = &stage.ring_planet;
+            out.push(coupling(terms, m.stiffness_n_per_m, m.damping_ns_per_m));
+        }
+    }
+
+    /// A body's centre: its x and y where it moves in the plane, else still.
+    fn body_centre(&self, body: usize) -> Centre {
+        match self.bodies[body].translation {
+            Some(x) => [vec![(x, 1.0)], vec![(x + 1, 1.0)]],
+            None => [Vec::new(), Vec::new()],
+        }
+    }
+
+    /// Planet `k`'s pin: the carrier's centre plus r_c θ_c e_t.
+    fn pin_centre(&self, stage: &PlanetaryStage, k: usize) -> Centre {
+        let [mut x, mut y] = self.body_centre(stage.carrier);
+        let (_, et) = stage.axes(k);
+        let rc = stage.carrier_radius_m();
+        let theta = self.bodies[stage.carrier].rotation;
+        x.push((theta, rc * et[0]));
+        y.push((theta, rc * et[1]));
+        [x, y]
+    }
+
+    /// A planet's centre: its own x and y on a bearing, else its pin's.
+    fn planet_centre(&self, planet: &Place, pin: Centre) -> Centre {
+        match planet.translation {
+            Some(x) => [vec![(x, 1.0)], vec![(x + 1, 1.0)]],
+            None => pin,
+        }
+    }
+}
+
+/// `sign` · d·n as terms, d a centre's displacement.
+fn along(centre: &Centre, n: [f64; 2], sign: f64) -> Vec<(usize, f64)> {
+    centre[0]
+        .iter()
+        .map(|&(j, v)| (j, sign * v * n[0]))
+        .chain(centre[1].iter().map(|&(j, v)| (j, sign * v * n[1])))
+        .filter(|&(_, v)| v != 0.0)
+        .collect()
+}
+
+/// A coupling on `terms`, those of one coordinate summed.
+fn coupling(terms: Vec<(usize, f64)>, stiffness: f64, damping: f64) -> Coupling {
+    let mut merged: Vec<(usize, f64)> = Vec::with_capacity(terms.len());
+    for (j, v) in terms {
+        match merged.iter_mut().find(|(i, _)| *i == j) {
+            Some(t) => t.1 += v,
+            None => merged.push((j, v)),
+        }
+    }
+    Coupling {
+        terms: merged,
+        stiffness,
+        damping,
+    }
+}

@@ -1,0 +1,122 @@
+//! A rig file's planar parts read into `rig`'s: a `[[planetary]]` stage, a body's or the
+//! planets' bearing in the plane, and a shaft to the frame (`between = [body, "frame"]`);
+//! every fault at its place with what is allowed.
+
+use rig::{MAX_PLANETS, PlanarBearing, PlanetaryStage, StageMesh, StageRadii, StageTeeth};
+use toml::Spanned;
+
+use super::read_rig_mesh::or;
+use super::rig_file_toml::{PlanetaryToml, StageMeshToml};
+use super::source::ScenarioSource;
+
+/// The reserved body name of the housing: a shaft to it holds a body's rotation.
+pub const FRAME: &str = "frame";
+
+/// Pressure angle where a stage leaves it out (degrees): the standard 20°.
+const DEFAULT_PRESSURE_ANGLE_DEG: f64 = 20.0;
+
+/// The stage `p`, its sun, ring and carrier named by `body`.
+pub(super) fn planetary_stage(
+    src: &ScenarioSource,
+    p: &PlanetaryToml,
+    body: &impl Fn(&Spanned<String>, &str) -> anyhow::Result<usize>,
+) -> anyhow::Result<PlanetaryStage> {
+    let name = p.name.get_ref();
+    let field = |f: &str| format!("planetary `{name}`.{f}");
+    let teeth = p.teeth.get_ref();
+    let mesh = |m: &Spanned<StageMeshToml>| StageMesh {
+        stiffness_n_per_m: m.get_ref().stiffness_n_per_m,
+        damping_ns_per_m: m.get_ref().damping_ns_per_m,
+        backlash_mm: m.get_ref().backlash_mm,
+    };
+    Ok(PlanetaryStage {
+        name: name.clone(),
+        sun: body(&p.sun, &field("sun"))?,
+        ring: body(&p.ring, &field("ring"))?,
+        carrier: body(&p.carrier, &field("carrier"))?,
+        planet_angles_rad: planet_angles(src, p, &field("planet_angles_deg"))?,
+        planet_inertia_kgm2: *p.planet_inertia_kgm2.get_ref(),
+        planet_bearing: planar_bearing(
+            src,
+            [&p.planet_mass_kg, &p.planet_bearing_stiffness_n_per_m],
+            &p.planet_bearing_damping_ns_per_m,
+            &field("planet_mass_kg"),
+        )?,
+        teeth: StageTeeth {
+            sun: teeth.sun,
+            planet: teeth.planet,
+            ring: teeth.ring,
+        },
+        module_m: *p.module_m.get_ref(),
+        pressure_angle_deg: or(&p.pressure_angle_deg, DEFAULT_PRESSURE_ANGLE_DEG),
+        base_radii_m: p.base_diameter_m.as_ref().map(|d| {
+            let d = d.get_ref();
+            StageRadii {
+                sun: d.sun / 2.0,
+                planet: d.planet / 2.0,
+                ring: d.ring / 2.0,
+            }
+        }),
+        carrier_radius_given_m: p.carrier_radius_m.as_ref().map(|r| *r.get_ref()),
+        sun_planet: mesh(&p.sun_planet),
+        ring_planet: mesh(&p.ring_planet),
+    })
+}
+
+/// The planets' angles (rad): as given (one per planet), else equally spaced.
+fn planet_angles(src: &ScenarioSource, p: &PlanetaryToml, field: &str) -> anyhow::Result<Vec<f64>> {
+    let planets = *p.planets.get_ref() as usize;
+    if !(1..=MAX_PLANETS).contains(&planets) {
+        return Err(src.error(
+            p.planets.span(),
+            field.replace("planet_angles_deg", "planets").as_str(),
+            format!("{planets}: a stage has 1 to {MAX_PLANETS} planets"),
+        ));
+    }
+    let Some(given) = &p.planet_angles_deg else {
+        return Ok(PlanetaryStage::equally_spaced_rad(planets));
+    };
+    if given.get_ref().len() != planets {
+        return Err(src.error(
+            given.span(),
+            field,
+            format!(
+                "{} angles for {planets} planets: one angle (degrees) per planet",
+                given.get_ref().len()
+            ),
+        ));
+    }
+    Ok(given.get_ref().iter().map(|d| d.to_radians()).collect())
+}
+
+/// A bearing in the plane from its mass and stiffness (both, or neither: `None`) and
+/// its damping (0 when left out); `field` names the mass where one is missing.
+pub(super) fn planar_bearing(
+    src: &ScenarioSource,
+    [mass, stiffness]: [&Option<Spanned<f64>>; 2],
+    damping: &Option<Spanned<f64>>,
+    field: &str,
+) -> anyhow::Result<Option<PlanarBearing>> {
+    match (mass, stiffness) {
+        (None, None) => {
+            if let Some(d) = damping {
+                return Err(src.error(
+                    d.span(),
+                    field,
+                    "a bearing's damping needs its mass and stiffness: the body moves in the plane only with both",
+                ));
+            }
+            Ok(None)
+        }
+        (Some(m), Some(k)) => Ok(Some(PlanarBearing {
+            mass_kg: *m.get_ref(),
+            stiffness_n_per_m: *k.get_ref(),
+            damping_ns_per_m: or(damping, 0.0),
+        })),
+        (Some(given), None) | (None, Some(given)) => Err(src.error(
+            given.span(),
+            field,
+            "a body moves in the plane with its mass (kg) and its bearing's stiffness (N/m) both: give both, or neither for an axis held rigidly",
+        )),
+    }
+}

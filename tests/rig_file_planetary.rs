@@ -1,0 +1,236 @@
+//! Planetary stages and planar bodies in a rig file, through the `testrig` binary: bad
+//! stages refused at their line naming the field and what is allowed; the speeds Willis's
+//! equation gives (`params --rig`); the modes' kinds in `modes --json`; and the plant's
+//! refusal, until it steps them, naming the stage.
+
+mod common;
+
+use common::{folder, json, testrig};
+
+fn lin_parker() -> String {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenarios/rigs/lin-parker-1999.toml"
+    );
+    std::fs::read_to_string(path).expect("shipped rig")
+}
+
+/// Writes `text` as `name.toml` in `dir` and returns what `modes --rig` says on refusing
+/// it.
+fn refused(dir: &std::path::Path, name: &str, text: &str) -> String {
+    let path = dir.join(format!("{name}.toml"));
+    std::fs::write(&path, text).expect("written");
+    let out = testrig(&["modes", "--rig", path.to_str().expect("utf-8")]);
+    assert!(!out.status.success(), "{name} accepted");
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    stderr
+}
+
+/// The line (from 1) of the file's first line that starts with `start`.
+fn line_of(text: &str, start: &str) -> usize {
+    text.lines()
+        .position(|l| l.starts_with(start))
+        .expect("line there")
+        + 1
+}
+
+#[test]
+fn bad_stages_are_refused_at_their_line_naming_the_field_and_what_is_allowed() {
+    let dir = folder("bad-planetary");
+    let good = lin_parker();
+    // (name, the text as written, as mangled, the mangled line's start, what the error says)
+    let cases: Vec<(&str, &str, &str, &str, Vec<&str>)> = vec![
+        (
+            "ring-teeth",
+            "ring = 96 }\nmodule_m = 0.003\npressure_angle_deg = 24.6\nbase_diameter_m = { sun = 0.0774, planet = 0.1003, ring = 0.275 }\n",
+            "ring = 97 }\nmodule_m = 0.003\npressure_angle_deg = 24.6\n",
+            "teeth =",
+            vec![
+                "planetary `epi`.teeth",
+                "ring 97: standard gears on one centre distance need ring = sun + 2 planet = 96",
+                "base_diameter_m",
+            ],
+        ),
+        (
+            "not-assemblable",
+            "planets = 3\n",
+            "planets = 7\n",
+            "planets =",
+            vec![
+                "planetary `epi`.planet_angles_deg",
+                "planet 2",
+                "multiples of 360°/(z_s + z_r) = 3.0000°",
+            ],
+        ),
+        (
+            "too-many-planets",
+            "planets = 3\n",
+            "planets = 9\n",
+            "planets =",
+            vec!["planetary `epi`.planets", "1 to 8 planets"],
+        ),
+        (
+            "angles-for-other-planets",
+            "planets = 3\n",
+            "planets = 3\nplanet_angles_deg = [0.0, 120.0]\n",
+            "planet_angles_deg",
+            vec!["2 angles for 3 planets"],
+        ),
+        (
+            "angle-off-a-tooth",
+            "planets = 3\n",
+            "planets = 3\nplanet_angles_deg = [0.0, 120.0, 241.0]\n",
+            "planet_angles_deg",
+            vec!["planet 3 at 241.000°"],
+        ),
+        (
+            "mass-without-bearing",
+            "planet_bearing_stiffness_n_per_m = 1.0e8\n",
+            "",
+            "planet_mass_kg",
+            vec!["mass (kg) and its bearing's stiffness (N/m) both"],
+        ),
+        (
+            "same-body-twice",
+            "carrier = \"carrier\"\n",
+            "carrier = \"sun\"\n",
+            "carrier =",
+            vec!["planetary `epi`.carrier", "name three bodies"],
+        ),
+        (
+            "frame-as-a-body",
+            "name = \"carrier\"\n",
+            "name = \"frame\"\n",
+            "name = \"frame\"",
+            vec!["`frame` is reserved"],
+        ),
+        (
+            "zero-mesh-stiffness",
+            "ring_planet = { stiffness_n_per_m = 5.0e8",
+            "ring_planet = { stiffness_n_per_m = 0.0",
+            "ring_planet",
+            vec!["planetary `epi`.ring_planet", "> 0"],
+        ),
+    ];
+    for (name, from, to, line_start, says) in cases {
+        assert!(good.contains(from), "{name}: {from:?} not in the file");
+        let text = good.replacen(from, to, 1);
+        let stderr = refused(&dir, name, &text);
+        let line = line_of(&text, line_start);
+        assert!(
+            stderr.contains(&format!("{name}.toml:{line}:")),
+            "{name}: line {line}: {stderr}"
+        );
+        for s in says {
+            assert!(stderr.contains(s), "{name}: {s:?} in {stderr}");
+        }
+    }
+    // Tips that overlap: five planets of 36 teeth, 3 mm module, on a standard carrier.
+    let real = good
+        .replace(
+            "base_diameter_m = { sun = 0.0774, planet = 0.1003, ring = 0.275 }\n",
+            "",
+        )
+        .replace("carrier_radius_m = 0.0884\n", "")
+        .replace("planets = 3\n", "planets = 5\n");
+    let stderr = refused(&dir, "overlapping-planets", &real);
+    assert!(
+        stderr.contains("planets 1 and 2 are 105.8 mm apart")
+            && stderr.contains("their tips need 114.0 mm"),
+        "{stderr}"
+    );
+    // A stage nothing holds turns as a differential: its speeds are not set.
+    let start = good.find("[[shaft]]").expect("the housing");
+    let end = good.find("[[planetary]]").expect("the stage");
+    let free = format!("{}{}", &good[..start], &good[end..]);
+    let stderr = refused(&dir, "differential", &free);
+    assert!(
+        stderr.contains("planetary `epi`.ring") && stderr.contains("turns as a differential"),
+        "{stderr}"
+    );
+}
+
+#[test]
+fn params_give_willis_speeds_with_the_ring_held() {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenarios/rigs/lin-parker-1999.toml"
+    );
+    let out = testrig(&["params", "--rig", path]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8_lossy(&out.stdout);
+    let ratio = |body: &str| -> f64 {
+        let line = text
+            .lines()
+            .find(|l| l.starts_with(&format!("body.{body}.speed_ratio")))
+            .expect("speed ratio listed");
+        line.split_whitespace()
+            .nth(1)
+            .expect("value")
+            .parse()
+            .expect("number")
+    };
+    // z_s / (z_s + z_r) = 24 / 120 with the ring held.
+    assert!((ratio("carrier") - 0.2).abs() < 1e-6);
+    assert!(ratio("ring").abs() < 1e-6);
+    assert!((ratio("sun") - 1.0).abs() < 1e-6);
+}
+
+#[test]
+fn modes_json_names_the_planar_coordinates_and_the_kinds() {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenarios/rigs/lin-parker-1999.toml"
+    );
+    let out = testrig(&["modes", "--rig", path, "--json"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let value = json(&out);
+    let coordinates: Vec<&str> = value["coordinates"]
+        .as_array()
+        .expect("coordinates")
+        .iter()
+        .map(|c| c.as_str().expect("name"))
+        .collect();
+    // Three central members and three planets, each θ, x, y.
+    assert_eq!(coordinates.len(), 18);
+    assert_eq!(&coordinates[..3], ["sun", "sun.x", "sun.y"]);
+    assert!(coordinates.contains(&"epi_planet3.y"));
+    let kinds = value["kinds"].as_array().expect("kinds");
+    let count = |k: &str| kinds.iter().filter(|v| v.as_str() == Some(k)).count();
+    assert_eq!((count("rotational"), count("translational")), (5, 12));
+    assert!(value["rigid_meshes"].is_null());
+}
+
+#[test]
+fn the_plant_refuses_a_stage_it_does_not_step_naming_it() {
+    let text = lin_parker() + "\n[motor]\nbody = \"sun\"\n\n[brake]\nbody = \"carrier\"\n";
+    let dir = folder("planetary-run");
+    let path = dir.join("driven.toml");
+    std::fs::write(&path, text).expect("written");
+    let out = testrig(&[
+        "simulate",
+        "--rig",
+        path.to_str().expect("utf-8"),
+        "--rpm",
+        "1000",
+        "--load",
+        "1",
+    ]);
+    assert!(!out.status.success());
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.contains("planetary stage `epi`")
+            && stderr.contains("does not step it yet")
+            && !stderr.contains("panicked"),
+        "{stderr}"
+    );
+}
