@@ -25,7 +25,7 @@ fn one_second(bencher: Bencher, rig_name: &str, schedule: Schedule) {
     let rig = read_rig_file(std::path::Path::new(&path)).expect("shipped rig");
     let mut plant =
         NetworkPlant::new(&rig, schedule, RATE_HZ as f64, NetworkStart::Steady).expect("plant");
-    let mut block = NetworkBlock::new(rig.bodies.len(), rig.shafts.len(), rig.meshes.len());
+    let mut block = NetworkBlock::new(&rig);
     plant.run(2 * RATE_HZ, &mut block).expect("settles");
     bencher.bench_local(|| {
         for _ in 0..RATE_HZ / BLOCK {

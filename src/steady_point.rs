@@ -213,7 +213,7 @@ pub fn run_rig_point(
     motor_of(rig)?;
     let started = Instant::now();
     let mut plant = settled_rig_plant(spec, names, &mut keep_going)?;
-    let mut block = NetworkBlock::new(rig.bodies.len(), rig.shafts.len(), rig.meshes.len());
+    let mut block = NetworkBlock::new(rig);
     let mut window = RigWindow::new(rig, spec.rate_hz);
     let mut left = (spec.duration_s * spec.rate_hz).round() as usize;
     while left > 0 {

@@ -200,7 +200,7 @@ fn a_set_point_changed_between_steps_is_the_schedules_step() {
     };
     let mut plant =
         NetworkPlant::new(&rig, schedule, SAMPLE_RATE_HZ, NetworkStart::Rest).expect("plant");
-    let mut block = NetworkBlock::new(5, 3, 1);
+    let mut block = NetworkBlock::new(&rig);
     plant.run(30_000, &mut block).expect("run");
     block.clear();
     plant.sample_now(&mut block);

@@ -33,8 +33,7 @@ fn mutated_rig_files_are_read_and_run_or_refused_with_the_place_named() {
         let rig = testrig::scenario::rig_topology(source)?;
         let frequencies = rig.natural_frequencies_hz();
         let schedule = rig::Schedule::constant(300.0, 1.0);
-        let mut block =
-            rig::NetworkBlock::new(rig.bodies.len(), rig.shafts.len(), rig.meshes.len());
+        let mut block = rig::NetworkBlock::new(&rig);
         rig::NetworkPlant::new(&rig, schedule, 5_120.0, rig::NetworkStart::Steady)
             .and_then(|mut plant| plant.run(102, &mut block))
             .with_context(|| format!("{}: run at 300 rev/min, 1 N m", source.path.display()))?;

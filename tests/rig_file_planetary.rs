@@ -200,10 +200,17 @@ fn modes_json_names_the_planar_coordinates_and_the_kinds() {
         .iter()
         .map(|c| c.as_str().expect("name"))
         .collect();
-    // Three central members and three planets, each θ, x, y.
+    // Three central members and three planets, each θ, x, y: the bodies' rotations first,
+    // then their translations, then the planets'.
     assert_eq!(coordinates.len(), 18);
-    assert_eq!(&coordinates[..3], ["sun", "sun.x", "sun.y"]);
-    assert!(coordinates.contains(&"epi_planet3.y"));
+    assert_eq!(
+        &coordinates[..5],
+        ["sun", "ring", "carrier", "sun.x", "sun.y"]
+    );
+    assert_eq!(
+        &coordinates[15..],
+        ["epi_planet3", "epi_planet3.x", "epi_planet3.y"]
+    );
     let kinds = value["kinds"].as_array().expect("kinds");
     let count = |k: &str| kinds.iter().filter(|v| v.as_str() == Some(k)).count();
     assert_eq!((count("rotational"), count("translational")), (5, 12));
@@ -233,4 +240,68 @@ fn the_plant_refuses_a_stage_it_does_not_step_naming_it() {
             && !stderr.contains("panicked"),
         "{stderr}"
     );
+}
+
+#[test]
+fn a_pair_on_bearings_runs_through_simulate_with_its_translations_as_signals() {
+    // The two-stage rig with its first pair's gears on bearings, the wheel's set by path.
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/scenarios/rigs/two-stage.toml");
+    let text = std::fs::read_to_string(path)
+        .expect("shipped rig")
+        .replacen(
+            "name = \"pinion1\"\n",
+            "name = \"pinion1\"\nmass_kg = 1.2\nbearing_stiffness_n_per_m = 2.0e8\n",
+            1,
+        )
+        .replacen(
+            "name = \"wheel1\"\n",
+            "name = \"wheel1\"\nmass_kg = 6.0\nbearing_stiffness_n_per_m = 1.0e8\n",
+            1,
+        );
+    let dir = folder("planar-simulate");
+    let rig = dir.join("planar.toml");
+    std::fs::write(&rig, text).expect("written");
+    let out = dir.join("out");
+    let run = testrig(&[
+        "simulate",
+        "--rig",
+        rig.to_str().expect("utf-8"),
+        "--rpm",
+        "1500",
+        "--load",
+        "60",
+        "--settle",
+        "1",
+        "--duration",
+        "0.5",
+        "--set",
+        "body.wheel1.bearing_stiffness_n_per_m=5.0e8",
+        "--out",
+        out.to_str().expect("utf-8"),
+    ]);
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    let csv = std::fs::read_to_string(out.join("signals.csv")).expect("signals");
+    let mut lines = csv.lines();
+    let head: Vec<&str> = lines.next().expect("header").split(',').collect();
+    let last: Vec<f64> = lines
+        .last()
+        .expect("a sample")
+        .split(',')
+        .map(|v| v.parse().expect("number"))
+        .collect();
+    let value = |name: &str| last[head.iter().position(|h| *h == name).expect(name)];
+    // In steady motion the wheel's bearing carries the first mesh's force: |d| = F/k.
+    let force = value("force_stage1_n");
+    let displacement = value("x_wheel1_m").hypot(value("y_wheel1_m"));
+    assert!(force > 100.0, "the mesh carries {force} N");
+    assert!(
+        (displacement - force / 5.0e8).abs() < 1e-6 * force / 5.0e8,
+        "{displacement} m against F/k = {} m",
+        force / 5.0e8
+    );
+    assert!(head.contains(&"y_pinion1_m"));
 }

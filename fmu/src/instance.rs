@@ -51,7 +51,7 @@ impl Instance {
         rig.check()?;
         let variables = variables(&rig);
         let values = variables.iter().map(|v| v.start.unwrap_or(0.0)).collect();
-        let block = NetworkBlock::new(rig.bodies.len(), rig.shafts.len(), rig.meshes.len());
+        let block = NetworkBlock::new(&rig);
         Ok(Self {
             rig,
             variables,

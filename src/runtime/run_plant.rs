@@ -95,7 +95,7 @@ impl RunPlant {
     pub fn block(&self) -> RunBlock {
         let rig = &self.rig;
         RunBlock {
-            signals: NetworkBlock::new(rig.bodies.len(), rig.shafts.len(), rig.meshes.len()),
+            signals: NetworkBlock::new(rig),
             impacts: Vec::new(),
             revolutions_s: Vec::new(),
         }

@@ -72,7 +72,7 @@ impl PlanRig {
         let rig = &self.topology;
         let schedule = Schedule::constant(rpm, load_nm);
         let mut plant = NetworkPlant::new(rig, schedule, rate_hz, NetworkStart::Steady)?;
-        let mut block = NetworkBlock::new(rig.bodies.len(), rig.shafts.len(), rig.meshes.len());
+        let mut block = NetworkBlock::new(rig);
         plant.sample_now(&mut block);
         Ok(block.shaft_torque_nm[judged_shaft(rig)][0])
     }

@@ -21,7 +21,7 @@ pub fn plant(rig: &RigTopology, schedule: Schedule, start: NetworkStart) -> Netw
 }
 
 pub fn run(plant: &mut NetworkPlant, rig: &RigTopology, seconds: f64) -> NetworkBlock {
-    let mut block = NetworkBlock::new(rig.bodies.len(), rig.shafts.len(), rig.meshes.len());
+    let mut block = NetworkBlock::new(rig);
     plant
         .run((seconds * RATE_HZ).round() as usize, &mut block)
         .expect("run");

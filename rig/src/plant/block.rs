@@ -1,7 +1,9 @@
 //! What a run of a rig gives: per sample each body's angle and speed, each shaft's
-//! torque, each mesh's force and contact, the motor's torque; and each impact.
+//! torque, each mesh's force and contact, the translations of bodies that move in the
+//! plane, the motor's torque; and each impact.
 
 use super::mode::Contact;
+use crate::topology::RigTopology;
 
 /// True signals of a rig, one entry per output sample (SI). Angles, speeds and shaft
 /// torques are taken in each body's own sense of rotation: positive the way it turns
@@ -21,13 +23,29 @@ pub struct NetworkBlock {
     pub mesh_force_n: Vec<Vec<f64>>,
     /// Each mesh's contact, +1 drive flank, −1 back flank, 0 apart, `[mesh][sample]`.
     pub contact: Vec<Vec<i8>>,
+    /// The x and y (m) of each body that moves in the plane, in the bodies' order:
+    /// `[2 k]` its x, `[2 k + 1]` its y (empty for a torsional rig; the plant's
+    /// `block()` shapes it).
+    pub translation_m: Vec<Vec<f64>>,
     /// The motor's torque (N m).
     pub motor_torque_nm: Vec<f64>,
 }
 
 impl NetworkBlock {
-    /// An empty block for a rig of these sizes.
-    pub fn new(bodies: usize, shafts: usize, meshes: usize) -> Self {
+    /// An empty block shaped for `rig`: a column per body, shaft and mesh, and x and y
+    /// per body that moves in the plane.
+    pub fn new(rig: &RigTopology) -> Self {
+        let planar = rig.bodies.iter().filter(|b| b.planar.is_some()).count();
+        Self::shaped(
+            rig.bodies.len(),
+            rig.shafts.len(),
+            rig.meshes.len(),
+            2 * planar,
+        )
+    }
+
+    /// An empty block of these sizes.
+    pub(super) fn shaped(bodies: usize, shafts: usize, meshes: usize, translations: usize) -> Self {
         Self {
             time_s: Vec::new(),
             angle_rad: vec![Vec::new(); bodies],
@@ -35,6 +53,7 @@ impl NetworkBlock {
             shaft_torque_nm: vec![Vec::new(); shafts],
             mesh_force_n: vec![Vec::new(); meshes],
             contact: vec![Vec::new(); meshes],
+            translation_m: vec![Vec::new(); translations],
             motor_torque_nm: Vec::new(),
         }
     }
@@ -57,7 +76,8 @@ impl NetworkBlock {
             .iter_mut()
             .chain(&mut self.speed_rad_s)
             .chain(&mut self.shaft_torque_nm)
-            .chain(&mut self.mesh_force_n);
+            .chain(&mut self.mesh_force_n)
+            .chain(&mut self.translation_m);
         for c in columns {
             c.clear();
         }

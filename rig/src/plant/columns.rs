@@ -22,7 +22,8 @@ pub struct Column {
 
 /// The signals' columns, after the rig: `time_s`, `speed_<body>_rpm`, `angle_<body>_rad`,
 /// `torque_<shaft>_nm`, `contact_<mesh>` (+1 drive flank, −1 back flank, 0 apart),
-/// `force_<mesh>_n`, `motor_torque_nm`, and `strain_<shaft>_ue` where the rig has gauges.
+/// `force_<mesh>_n`, `x_<body>_m` and `y_<body>_m` for each body that moves in the plane,
+/// `motor_torque_nm`, and `strain_<shaft>_ue` where the rig has gauges.
 pub fn column_specs(rig: &RigTopology) -> Vec<Column> {
     let column = |name: String, unit, meaning: String| Column {
         name,
@@ -54,6 +55,12 @@ pub fn column_specs(rig: &RigTopology) -> Vec<Column> {
     for m in &rig.meshes {
         let meaning = format!("mesh {}: force along the line of action", m.name);
         out.push(column(format!("force_{}_n", m.name), "N", meaning));
+    }
+    for b in rig.bodies.iter().filter(|b| b.planar.is_some()) {
+        for axis in ["x", "y"] {
+            let meaning = format!("{axis} of body {}'s centre on its bearing", b.name);
+            out.push(column(format!("{axis}_{}_m", b.name), "m", meaning));
+        }
     }
     out.push(column(
         "motor_torque_nm".into(),
@@ -108,6 +115,11 @@ pub fn column(rig: &RigTopology, block: &NetworkBlock, k: usize) -> Option<Vec<f
         return Some(block.mesh_force_n[k].clone());
     }
     k -= meshes;
+    let translations = 2 * rig.bodies.iter().filter(|b| b.planar.is_some()).count();
+    if k < translations {
+        return Some(block.translation_m[k].clone());
+    }
+    k -= translations;
     match (k, &rig.gauge) {
         (0, _) => Some(block.motor_torque_nm.clone()),
         (1, Some(g)) => {

@@ -3,8 +3,8 @@
 //! drag and a loop's locked-in torque, the motor giving what they take. At 0 rev/min and
 //! no load this is the rig at rest, a loop still carrying its locked torque.
 //!
-//! With the meshes on given flanks the twists solve K θ = f + T_m e_motor (one angle
-//! held: the rigid rotation is free), T_m from the balance of power Σ s_i f_i + T_m = 0.
+//! With the meshes on given flanks the twists (and the translations of bodies on
+//! bearings) solve K q = f + T_m e_motor (one angle held: the rigid rotation is free), T_m from the balance of power Σ s_i f_i + T_m = 0.
 //! The meshes' flanks are tried in turn (each drive, back, then apart) until every mesh
 //! is consistent: pressing its flank, or apart within its backlash; a mesh carrying
 //! nothing rests on its drive flank. A loop without locked torque rests with a mesh
@@ -17,6 +17,7 @@ use crate::mode::PairZone;
 use crate::topology::RigTopology;
 use crate::topology::add_coupling;
 
+use super::mesh_model::MeshModel;
 use super::mode::{Contact, MeshState};
 use super::model::NetworkModel;
 
@@ -26,7 +27,8 @@ const FLANK_TOLERANCE_N: f64 = 1e-6;
 /// A steady state.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Equilibrium {
-    /// Each body's angle (rad), the first mesh's driver (or the motor's body) at 0.
+    /// Each coordinate (`NetLayout`): each body's angle (rad), the first mesh's driver
+    /// (or the motor's body) at 0, then the translations (m).
     pub angles_rad: Vec<f64>,
     /// Each mesh's state.
     pub meshes: Vec<MeshState>,
@@ -74,7 +76,7 @@ fn rests(model: &NetworkModel, i: usize, state: MeshState, angles: &[f64]) -> bo
         Contact::Drive => force >= -FLANK_TOLERANCE_N,
         Contact::Back => force <= FLANK_TOLERANCE_N,
         Contact::Apart => {
-            let delta = m.radii_m[0] * angles[m.gears[0]] + m.radii_m[1] * angles[m.gears[1]];
+            let delta = deflection_m(m, angles);
             delta + m.start_offset_m(1.0) <= 0.0 && delta + m.start_offset_m(-1.0) >= 0.0
         }
     }
@@ -83,14 +85,18 @@ fn rests(model: &NetworkModel, i: usize, state: MeshState, angles: &[f64]) -> bo
 /// The spring force (N) of mesh `i` on its flank at `angles`.
 fn flank_force(model: &NetworkModel, i: usize, state: MeshState, angles: &[f64]) -> f64 {
     let m = &model.meshes[i];
-    let [a, b] = m.gears;
-    let delta = m.radii_m[0] * angles[a] + m.radii_m[1] * angles[b];
+    let delta = deflection_m(m, angles);
     let (k, _) = m.spring(state);
     match state.contact {
         Contact::Drive => k * (delta + m.start_offset_m(1.0)),
         Contact::Back => k * (delta + m.start_offset_m(-1.0)),
         Contact::Apart => 0.0,
     }
+}
+
+/// A mesh's deflection (m) at the coordinates `angles`.
+fn deflection_m(m: &MeshModel, angles: &[f64]) -> f64 {
+    m.terms.iter().map(|&(j, c)| c * angles[j]).sum()
 }
 
 /// The twists with the meshes on the flanks of `meshes`.
@@ -100,7 +106,7 @@ fn solve(
     load_nm: f64,
     meshes: &[MeshState],
 ) -> Result<Equilibrium, RigError> {
-    let n = model.layout.bodies;
+    let n = model.layout.coordinates;
     let mut k = DMatrix::<f64>::zeros(n, n);
     let mut f = DVector::<f64>::zeros(n);
     for (i, drag) in model.drag_nms_per_rad.iter().enumerate() {
@@ -115,18 +121,18 @@ fn solve(
         f[a] -= s.preload_nm;
         f[b] += s.preload_nm;
     }
+    for s in &model.supports {
+        add_coupling(&mut k, &s.terms, s.stiffness);
+    }
     for (m, state) in model.meshes.iter().zip(meshes) {
-        let [a, b] = m.gears;
-        let r = m.radii_m;
         let (spring, _) = m.spring(*state);
         let offset = match state.contact {
             Contact::Drive => m.start_offset_m(1.0),
             Contact::Back => m.start_offset_m(-1.0),
             Contact::Apart => continue,
         };
-        let terms = [(a, r[0]), (b, r[1])];
-        add_coupling(&mut k, &terms, spring);
-        for (x, rx) in terms {
+        add_coupling(&mut k, &m.terms, spring);
+        for &(x, rx) in &m.terms {
             f[x] -= spring * rx * offset;
         }
     }

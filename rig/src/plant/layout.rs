@@ -1,6 +1,9 @@
-//! The state of a rig of n bodies: x_0..x_{n−1} each body's angle less its share s_i Φ of
-//! the set rotation Φ (rad; twists, bounded however long the rig runs), ω_0..ω_{n−1}
-//! absolute speeds (rad/s), the speed loop's filtered speed and integral, then the
+//! The state of a rig of n coordinates (`topology::RigCoordinates`: each body's rotation,
+//! body i's first as coordinate i, then the translations of bodies that move in the
+//! plane): x_0..x_{n−1} each coordinate less its share s_i Φ of the set rotation Φ (rad
+//! for a rotation, a twist bounded however long the rig runs; m for a translation, whose
+//! share is 0), their absolute rates v_0..v_{n−1} (rad/s, m/s), the speed loop's filtered
+//! speed and integral, then the
 //! forcing states: 1, the motor body's set speed Ω (rad/s) and its rate (rad/s²), the
 //! brake's load (N m) and its rate (N m/s), the oscillating load (A cos ψ, A sin ψ) (N m),
 //! and the set rotation Φ (rad; Φ' = Ω, read only by the switching functions of tooth
@@ -11,13 +14,15 @@
 //! (C3), (cos 2θ, sin 2θ); and for each mesh with spacing errors, the
 //! error e of the pair in mesh (m along the line of action, e' = 0, set as pairs change).
 
-use crate::topology::{MAX_MESHES, RigTopology};
+use crate::topology::{MAX_MESHES, RigCoordinates, RigTopology};
 
 /// Where each state sits for a rig of `bodies` bodies.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct NetLayout {
-    /// Number of bodies n.
+    /// Number of bodies (their rotations are the first coordinates).
     pub bodies: usize,
+    /// Number of coordinates n: the bodies' rotations, then translations.
+    pub coordinates: usize,
     /// Per mesh: where cos θ of its driver's share of the set rotation sits (sin θ
     /// follows), if the mesh is excited.
     pub revolution: [Option<usize>; MAX_MESHES],
@@ -43,7 +48,8 @@ impl NetLayout {
     /// The layout of `rig`.
     pub fn new(rig: &RigTopology) -> Self {
         let bodies = rig.bodies.len();
-        let mut len = 2 * bodies + 2 + 8;
+        let coordinates = RigCoordinates::of(rig).len();
+        let mut len = 2 * coordinates + 2 + 8;
         let mut revolution = [None; MAX_MESHES];
         let mut tooth = [None; MAX_MESHES];
         let mut second = [None; MAX_MESHES];
@@ -77,6 +83,7 @@ impl NetLayout {
         }
         Self {
             bodies,
+            coordinates,
             revolution,
             tooth,
             second,
@@ -114,25 +121,26 @@ impl NetLayout {
         pairs
     }
 
-    /// Angle of body `i` less its share of the set rotation, x_i = θ_i − s_i Φ.
+    /// Coordinate `i` less its share of the set rotation, x_i = q_i − s_i Φ (body `i`'s
+    /// angle for i < bodies).
     pub fn angle(&self, i: usize) -> usize {
         i
     }
-    /// Speed of body `i`.
+    /// Rate of coordinate `i` (body `i`'s speed for i < bodies).
     pub fn speed(&self, i: usize) -> usize {
-        self.bodies + i
+        self.coordinates + i
     }
     /// The filtered motor speed (rad/s).
     pub fn filtered(&self) -> usize {
-        2 * self.bodies
+        2 * self.coordinates
     }
     /// The speed error's integral (rad).
     pub fn integral(&self) -> usize {
-        2 * self.bodies + 1
+        2 * self.coordinates + 1
     }
     /// The mechanical and controller states (the rest are forcing).
     pub fn mechanical(&self) -> usize {
-        2 * self.bodies + 2
+        2 * self.coordinates + 2
     }
     /// The constant 1.
     pub fn unit(&self) -> usize {

@@ -21,6 +21,10 @@ pub struct MeshModel {
     /// that δ = r_a θa + r_b θb > 0 presses the driver's drive flank whichever way the
     /// pair turns.
     pub radii_m: [f64; 2],
+    /// The deflection δ along the line of action as terms (coordinate, m per unit of
+    /// it), negated with the radii: r_a θa + r_b θb and, where a gear moves in the plane,
+    /// its translations along the line (`topology::RigCoordinates::mesh_terms`).
+    pub terms: Vec<(usize, f64)>,
     /// One pair's stiffness along the line of action (N/m).
     pub stiffness_n_per_m: f64,
     /// One pair's damping along the line of action (N s/m).
@@ -73,8 +77,10 @@ pub struct MeshModel {
 }
 
 impl MeshModel {
-    /// The constants of mesh `m`, each body's speed per unit motor speed `speed_ratio`.
-    pub fn of(m: &Mesh, speed_ratio: &[f64]) -> Self {
+    /// The constants of mesh `m`, each body's speed per unit motor speed `speed_ratio`,
+    /// its deflection's `terms` for a driver turning positive.
+    pub fn of(m: &Mesh, speed_ratio: &[f64], terms: Vec<(usize, f64)>) -> Self {
+        let sense = speed_ratio[m.gears[0]].signum();
         let (single, whole): (Vec<ToothFault>, Vec<ToothFault>) = m
             .faults
             .iter()
@@ -89,9 +95,8 @@ impl MeshModel {
             .any(|&f| f != 1.0);
         MeshModel {
             gears: m.gears,
-            radii_m: m
-                .base_radii_m()
-                .map(|r| r * speed_ratio[m.gears[0]].signum()),
+            radii_m: m.base_radii_m().map(|r| r * sense),
+            terms: terms.into_iter().map(|(j, c)| (j, c * sense)).collect(),
             stiffness_n_per_m: m.stiffness_n_per_m,
             damping_ns_per_m: m.damping_ns_per_m,
             half_backlash_m: m.half_backlash_m(),

@@ -4,13 +4,17 @@
 //! Each body turns about its own axis (a driven gear of an external pair turns the other
 //! way); its angle is kept as x = θ − sΦ, less its share of the set rotation, so that
 //! twists keep their precision however far the rig has turned (twists and deflections
-//! are the same in x as in θ: the shares s make every shaft and mesh turn rigidly). A shaft carries k(θa − θb) + c(ωa − ωb) + T0 from a to b (T0 the
+//! are the same in x as in θ: the shares s make every shaft and mesh turn rigidly). A
+//! body on a bearing in the plane also moves in x and y (share 0), its isotropic bearing
+//! a spring-damper to the frame on each (`topology::RigCoordinates::supports`); a mesh
+//! between gears that move then deflects along its line of action with their
+//! translations too (`RigCoordinates::mesh_terms`), and its force acts on them. A shaft carries k(θa − θb) + c(ωa − ωb) + T0 from a to b (T0 the
 //! torque locked into a loop's shaft, 0 elsewhere). A mesh's deflection along the line of
 //! action is δ = r_a θa + r_b θb (both radii negated where the driver turns against the
 //! motor, so that δ > 0 always presses its drive flank); on its drive flank (δ > b, b half the free play) it
 //! pushes with F = k(δ − b) + c δ', on its back flank (δ < −b) with F = k(δ + b) + c δ'
 //! (thesis eq. 5.6: the spring-damper acts on the overlap), −r_a F on the driver and
-//! −r_b F on the driven gear; two pairs multiply k and c by the mesh's double-pair ratio.
+//! −r_b F on the driven gear (−g F on each coordinate of δ's terms g); two pairs multiply k and c by the mesh's double-pair ratio.
 //! A mesh's gear-error torques −C2 cos θ − C3 cos 2θ (θ its driver's share of the set
 //! rotation) act on both its gears, each in its own sense of rotation, touching or not.
 //! The motor's PI loop on the first-order filtered speed gives kp(Ω − ω_f) + ki z,
@@ -21,7 +25,7 @@
 use nalgebra::DMatrix;
 
 use crate::mode::MotorMode;
-use crate::topology::RigTopology;
+use crate::topology::{Coupling, RigCoordinates, RigTopology};
 
 use super::drive_model::{BrakeModel, MotorModel};
 use super::layout::NetLayout;
@@ -60,14 +64,18 @@ pub struct SegmentRates {
 pub struct NetworkModel {
     /// Where the states sit.
     pub layout: NetLayout,
-    /// Each body's inertia (kg m²).
-    pub inertia_kgm2: Vec<f64>,
-    /// Each body's drag (N m s/rad).
+    /// Each coordinate's inertia: kg m² for a rotation (body i's is coordinate i), kg for
+    /// a translation.
+    pub inertia: Vec<f64>,
+    /// Each coordinate's drag (N m s/rad on a body's rotation; 0 on a translation).
     pub drag_nms_per_rad: Vec<f64>,
-    /// Each body's speed per unit speed of the motor's body (signed).
+    /// Each coordinate's speed per unit speed of the motor's body (signed; 0 for a
+    /// translation).
     pub speed_ratio: Vec<f64>,
     /// The shafts.
     pub shafts: Vec<ShaftModel>,
+    /// What holds coordinates to the frame: bearings on translations.
+    pub supports: Vec<Coupling>,
     /// The meshes.
     pub meshes: Vec<MeshModel>,
     /// The motor, if the rig has one.
@@ -83,8 +91,14 @@ impl NetworkModel {
         let reference = rig.motor.unwrap_or(0);
         let speeds = rig.relative_speeds();
         let base = speeds[reference].unwrap_or(1.0);
-        let speed_ratio: Vec<f64> = speeds.iter().map(|s| s.unwrap_or(0.0) / base).collect();
-        let inertia_kgm2: Vec<f64> = rig.bodies.iter().map(|b| b.inertia_kgm2).collect();
+        let coordinates = RigCoordinates::of(rig);
+        // Translations turn with nothing: their share of the set rotation is 0.
+        let mut speed_ratio: Vec<f64> = speeds.iter().map(|s| s.unwrap_or(0.0) / base).collect();
+        speed_ratio.resize(coordinates.len(), 0.0);
+        let inertia = coordinates.masses();
+        let mut drag_nms_per_rad: Vec<f64> =
+            rig.bodies.iter().map(|b| b.drag_nms_per_rad).collect();
+        drag_nms_per_rad.resize(coordinates.len(), 0.0);
         let shafts = rig
             .shafts
             .iter()
@@ -103,11 +117,12 @@ impl NetworkModel {
         let meshes = rig
             .meshes
             .iter()
-            .map(|m| MeshModel::of(m, &speed_ratio))
+            .enumerate()
+            .map(|(i, m)| MeshModel::of(m, &speed_ratio, coordinates.mesh_terms(rig, i)))
             .collect();
         // The speed loop on the rig's inertia seen at the motor, Σ J s² (as the 1983
         // preset's on the sum of its five inertias).
-        let seen: f64 = inertia_kgm2
+        let seen: f64 = inertia
             .iter()
             .zip(&speed_ratio)
             .map(|(j, s)| j * s * s)
@@ -131,10 +146,11 @@ impl NetworkModel {
         });
         Self {
             layout: NetLayout::new(rig),
-            inertia_kgm2,
-            drag_nms_per_rad: rig.bodies.iter().map(|b| b.drag_nms_per_rad).collect(),
+            inertia,
+            drag_nms_per_rad,
             speed_ratio,
             shafts,
+            supports: coordinates.supports(rig),
             meshes,
             motor,
             brake,
@@ -158,13 +174,11 @@ impl NetworkModel {
 
     /// A mesh's deflection δ (m) and its rate (m/s) at state `u`.
     pub fn deflection(&self, mesh: usize, u: &[f64]) -> (f64, f64) {
-        let m = &self.meshes[mesh];
         let l = &self.layout;
-        let [a, b] = m.gears;
-        let [ra, rb] = m.radii_m;
+        let terms = &self.meshes[mesh].terms;
         (
-            ra * u[l.angle(a)] + rb * u[l.angle(b)],
-            ra * u[l.speed(a)] + rb * u[l.speed(b)],
+            terms.iter().map(|&(j, c)| c * u[l.angle(j)]).sum(),
+            terms.iter().map(|&(j, c)| c * u[l.speed(j)]).sum(),
         )
     }
 
@@ -241,13 +255,16 @@ impl NetworkModel {
         let speed_rad_s = rates.harmonic_rad_s;
         let oscillating_rad_s = rates.oscillating_rad_s;
         let mut a = DMatrix::zeros(l.len(), l.len());
-        for i in 0..l.bodies {
+        for i in 0..l.coordinates {
             a[(l.angle(i), l.speed(i))] = 1.0;
             a[(l.angle(i), l.set_speed())] = -self.speed_ratio[i];
-            a[(l.speed(i), l.speed(i))] -= self.drag_nms_per_rad[i] / self.inertia_kgm2[i];
+            a[(l.speed(i), l.speed(i))] -= self.drag_nms_per_rad[i] / self.inertia[i];
         }
         for s in &self.shafts {
             self.add_shaft(&mut a, s);
+        }
+        for s in &self.supports {
+            self.add_support(&mut a, s);
         }
         for i in 0..self.meshes.len() {
             self.add_mesh(&mut a, i, mode.meshes[i], speed_rad_s);
@@ -268,11 +285,31 @@ impl NetworkModel {
         a
     }
 
-    /// Adds `torque` · (coefficient of each state in `terms`) / J to body `body`'s row.
+    /// Adds a generalised force (a torque on a rotation, a force on a translation) with
+    /// `terms`' coefficient of each state, over the coordinate's inertia, to coordinate
+    /// `body`'s row.
     fn add_torque(&self, a: &mut DMatrix<f64>, body: usize, terms: &[(usize, f64)]) {
         let row = self.layout.speed(body);
         for &(col, c) in terms {
-            a[(row, col)] += c / self.inertia_kgm2[body];
+            a[(row, col)] += c / self.inertia[body];
+        }
+    }
+
+    /// A support's force −k g·x − c g·v on each coordinate it reads, times its coefficient.
+    fn add_support(&self, a: &mut DMatrix<f64>, s: &Coupling) {
+        let l = &self.layout;
+        for &(j, gj) in &s.terms {
+            let terms: Vec<(usize, f64)> = s
+                .terms
+                .iter()
+                .flat_map(|&(i, gi)| {
+                    [
+                        (l.angle(i), -gj * s.stiffness * gi),
+                        (l.speed(i), -gj * s.damping * gi),
+                    ]
+                })
+                .collect();
+            self.add_torque(a, j, &terms);
         }
     }
 
@@ -302,11 +339,9 @@ impl NetworkModel {
             return;
         };
         let force = self.force_terms(mesh, state, flank, speed_rad_s);
-        let m = &self.meshes[mesh];
-        let [ga, gb] = m.gears;
-        for (body, r) in [(ga, m.radii_m[0]), (gb, m.radii_m[1])] {
-            let terms: Vec<(usize, f64)> = force.iter().map(|&(col, f)| (col, -r * f)).collect();
-            self.add_torque(a, body, &terms);
+        for &(j, g) in &self.meshes[mesh].terms {
+            let terms: Vec<(usize, f64)> = force.iter().map(|&(col, f)| (col, -g * f)).collect();
+            self.add_torque(a, j, &terms);
         }
     }
 
@@ -344,15 +379,13 @@ impl NetworkModel {
     ) -> Vec<(usize, f64, f64)> {
         let l = &self.layout;
         let m = &self.meshes[mesh];
-        let [ga, gb] = m.gears;
-        let [ra, rb] = m.radii_m;
-        let mut terms = vec![
-            (l.angle(ga), ra, 0.0),
-            (l.angle(gb), rb, 0.0),
-            (l.speed(ga), 0.0, ra),
-            (l.speed(gb), 0.0, rb),
-            (l.unit(), -flank * m.half_backlash_m, 0.0),
-        ];
+        let mut terms: Vec<(usize, f64, f64)> = m
+            .terms
+            .iter()
+            .map(|&(j, c)| (l.angle(j), c, 0.0))
+            .chain(m.terms.iter().map(|&(j, c)| (l.speed(j), 0.0, c)))
+            .collect();
+        terms.push((l.unit(), -flank * m.half_backlash_m, 0.0));
         let w = m.share * speed_rad_s;
         if let Some(rev) = l.revolution[mesh] {
             let amplitude = m.te_once_m + flank * m.variation_m;

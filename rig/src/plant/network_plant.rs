@@ -202,7 +202,7 @@ impl NetworkPlant {
         let mut levels = vec![PairZone::ONE; self.model.meshes.len()];
         let mut state = equilibrium(&self.model, speed_rad_s, load_nm, &levels)?;
         for _ in 0..3 {
-            self.u[..l.bodies].copy_from_slice(&state.angles_rad);
+            self.u[..l.coordinates].copy_from_slice(&state.angles_rad);
             self.set_zones_from_angles();
             let now: Vec<PairZone> = (0..levels.len())
                 .map(|i| self.model.meshes[i].level(self.zones[i]))
@@ -213,8 +213,8 @@ impl NetworkPlant {
             levels = now;
             state = equilibrium(&self.model, speed_rad_s, load_nm, &levels)?;
         }
-        self.u[..l.bodies].copy_from_slice(&state.angles_rad);
-        for i in 0..l.bodies {
+        self.u[..l.coordinates].copy_from_slice(&state.angles_rad);
+        for i in 0..l.coordinates {
             self.u[l.speed(i)] = self.model.speed_ratio[i] * speed_rad_s;
         }
         for (i, s) in state.meshes.iter().enumerate() {
@@ -357,10 +357,12 @@ impl NetworkPlant {
 
     /// An empty block shaped for this plant's rig.
     pub fn block(&self) -> NetworkBlock {
-        NetworkBlock::new(
-            self.model.layout.bodies,
+        let l = &self.model.layout;
+        NetworkBlock::shaped(
+            l.bodies,
             self.model.shafts.len(),
             self.model.meshes.len(),
+            l.coordinates - l.bodies,
         )
     }
 
@@ -384,7 +386,8 @@ impl NetworkPlant {
         self.substeps
     }
 
-    /// Each body's speed per unit speed of the motor's body (signed).
+    /// Each coordinate's speed per unit speed of the motor's body (signed): each body's,
+    /// then 0 for each translation.
     pub fn speed_ratios(&self) -> &[f64] {
         &self.model.speed_ratio
     }
@@ -406,27 +409,39 @@ impl NetworkPlant {
         std::mem::take(&mut self.revolutions_s)
     }
 
-    /// The mechanical state: the bodies' angles less their share of the set rotation
-    /// (rad; absolute while the set rotation is 0, as at the start), their absolute speeds
-    /// (rad/s; each about its own axis, signed), the speed loop's two states.
+    /// The mechanical state: the coordinates (`topology::RigCoordinates`: the bodies'
+    /// angles less their share of the set rotation, rad, absolute while the set rotation
+    /// is 0, as at the start; then translations, m), their absolute rates (rad/s, each
+    /// about its own axis, signed; m/s), the speed loop's two states.
     pub fn state_rad(&self) -> &[f64] {
         &self.u[..self.model.layout.mechanical()]
     }
 
-    /// Adds `delta_rad_s` to body `body`'s speed (a kick, as a hammer blow).
-    pub fn kick(&mut self, body: usize, delta_rad_s: f64) {
+    /// Adds `delta_rad_s` to coordinate `coordinate`'s rate (a kick, as a hammer blow):
+    /// body i's speed for i below the bodies, else a translation's velocity (m/s;
+    /// `topology::RigCoordinates` orders them).
+    pub fn kick(&mut self, coordinate: usize, delta_rad_s: f64) {
         let l = &self.model.layout;
-        self.u[l.speed(body)] += delta_rad_s;
+        self.u[l.speed(coordinate)] += delta_rad_s;
         self.edge.clear();
     }
 
-    /// The mechanical energy (J): kinetic, shafts' k·twist²/2 + T0·twist, meshes'
-    /// k·overlap²/2 on their flank.
+    /// The mechanical energy (J): kinetic, shafts' k·twist²/2 + T0·twist, bearings'
+    /// k·deflection²/2, meshes' k·overlap²/2 on their flank.
     pub fn energy_j(&self) -> f64 {
         let l = &self.model.layout;
         let u = &self.u;
-        let kinetic: f64 = (0..l.bodies)
-            .map(|i| 0.5 * self.model.inertia_kgm2[i] * u[l.speed(i)].powi(2))
+        let kinetic: f64 = (0..l.coordinates)
+            .map(|i| 0.5 * self.model.inertia[i] * u[l.speed(i)].powi(2))
+            .sum();
+        let supports: f64 = self
+            .model
+            .supports
+            .iter()
+            .map(|c| {
+                let deflection: f64 = c.terms.iter().map(|&(j, g)| g * u[l.angle(j)]).sum();
+                0.5 * c.stiffness * deflection * deflection
+            })
             .sum();
         let shafts: f64 = self
             .model
@@ -448,6 +463,6 @@ impl NetworkPlant {
                 0.5 * k * overlap * overlap
             })
             .sum();
-        kinetic + shafts + meshes
+        kinetic + shafts + supports + meshes
     }
 }

@@ -27,6 +27,8 @@ pub struct OutputForms {
     pub contact: Vec<i8>,
     /// The motor's torque (N m): its loop's command, or the limit it is held at.
     pub motor_torque: Vec<(usize, f64)>,
+    /// x then y (m) of each body that moves in the plane.
+    pub translation: Vec<Vec<(usize, f64)>>,
 }
 
 impl OutputForms {
@@ -70,6 +72,10 @@ impl OutputForms {
         let contact = (0..model.meshes.len())
             .map(|i| mode.meshes[i].contact.sign())
             .collect();
+        // Translations are the coordinates past the bodies' rotations, x then y.
+        let translation = (l.bodies..l.coordinates)
+            .map(|j| vec![(l.angle(j), 1.0)])
+            .collect();
         Self {
             angle,
             speed,
@@ -77,6 +83,7 @@ impl OutputForms {
             mesh_force,
             contact,
             motor_torque: model.motor_torque_terms(mode.motor),
+            translation,
         }
     }
 }
@@ -166,6 +173,9 @@ impl SampleChunk {
             append(terms, column);
         }
         for (terms, column) in forms.mesh_force.iter().zip(&mut block.mesh_force_n) {
+            append(terms, column);
+        }
+        for (terms, column) in forms.translation.iter().zip(&mut block.translation_m) {
             append(terms, column);
         }
         append(&forms.motor_torque, &mut block.motor_torque_nm);

@@ -30,7 +30,7 @@ impl NetworkModel {
                 .map(|(x, s)| x * s * s)
                 .sum()
         };
-        let inertia = seen(&self.inertia_kgm2);
+        let inertia = seen(&self.inertia);
         let drag = seen(&self.drag_nms_per_rad);
         let omega = rpm.abs() * std::f64::consts::PI / 30.0;
         Some(run_up_time_s(inertia, drag, spare_nm, omega))

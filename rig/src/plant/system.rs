@@ -194,7 +194,7 @@ fn exp_spans(
     let rho = rho.max(1.0);
     let mechanical: Vec<f64> = (0..l.mechanical())
         .map(|i| {
-            if (l.speed(0)..l.speed(0) + l.bodies).contains(&i) || i == l.filtered() {
+            if (l.speed(0)..l.speed(0) + l.coordinates).contains(&i) || i == l.filtered() {
                 rho
             } else {
                 1.0

@@ -39,9 +39,8 @@ impl RigTopology {
 }
 
 impl RigTopology {
-    /// Refuses what the time-domain plant does not step yet: bodies that move in the
-    /// plane, shafts to the frame and planetary stages (their natural modes are
-    /// computed, `modes.rs`).
+    /// Refuses what the time-domain plant does not step yet: planetary stages and shafts
+    /// to the frame (their natural modes are computed, `modes.rs`).
     pub fn check_steppable(&self) -> Result<(), TopologyError> {
         let pending = "the time-domain plant does not step it yet (docs/planetary.md): `modes` gives the rig's natural frequencies, while simulate, run, sweep, calibrate, the panel, SCPI, Python and the FMU refuse it";
         if let Some(s) = self.planetary.first() {
@@ -50,17 +49,6 @@ impl RigTopology {
                 0,
                 "name",
                 format!("planetary stage `{}`: {pending}", s.name),
-            ));
-        }
-        if let Some(i) = self.bodies.iter().position(|b| b.planar.is_some()) {
-            return Err(fault(
-                "body",
-                i,
-                "mass_kg",
-                format!(
-                    "body `{}` moves in the plane (mass_kg): {pending}",
-                    self.bodies[i].name
-                ),
             ));
         }
         if let Some(s) = self.frame_shafts.first() {

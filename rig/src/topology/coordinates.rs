@@ -15,10 +15,12 @@
 //!   d_r)·n_r (`PlanetaryStage::sun_line`, `ring_line`): Lin & Parker's δ_sn, δ_rn with
 //!   u = r θ.
 //!
-//! A torsional rig's coordinates are its bodies' rotations, in order, and its meshes'
-//! deflections the torsional r_a θ_a + r_b θ_b, as before planar bodies.
+//! The coordinates are every body's rotation, in the bodies' order (body i's is
+//! coordinate i), then the translations of the bodies that move in the plane, then each
+//! stage's planets': a torsional rig's are its bodies' rotations and its meshes'
+//! deflections the torsional r_a θ_a + r_b θ_b.
 
-use super::planetary::PlanetaryStage;
+use super::planetary::{PlanarBearing, PlanetaryStage};
 use super::rig_topology::RigTopology;
 
 /// What a coordinate measures.
@@ -93,49 +95,40 @@ impl RigCoordinates {
     /// The coordinates of `rig`.
     pub fn of(rig: &RigTopology) -> Self {
         let mut coordinates = Vec::new();
-        let mut place = |name: &str, inertia: f64, mass: Option<f64>| {
-            let mut add = |kind, mass| {
-                coordinates.push(Coordinate {
-                    body: name.to_string(),
-                    kind,
-                    mass,
-                });
-                coordinates.len() - 1
-            };
-            let rotation = add(CoordinateKind::Rotation, inertia);
-            let translation = mass.map(|m| {
-                let x = add(CoordinateKind::X, m);
-                add(CoordinateKind::Y, m);
-                x
-            });
-            Place {
-                rotation,
-                translation,
-            }
-        };
+        let c = &mut coordinates;
+        // Every body's rotation first: body i's is coordinate i, as in a torsional rig.
+        let rotations: Vec<usize> = rig
+            .bodies
+            .iter()
+            .map(|b| push(c, &b.name, CoordinateKind::Rotation, b.inertia_kgm2))
+            .collect();
         let bodies = rig
             .bodies
             .iter()
-            .map(|b| {
-                place(
-                    &b.name,
-                    b.inertia_kgm2,
-                    b.planar.as_ref().map(|p| p.mass_kg),
-                )
+            .zip(rotations)
+            .map(|(b, rotation)| Place {
+                rotation,
+                translation: push_translation(c, &b.name, b.planar.as_ref()),
             })
             .collect();
-        let first_planet = rig
-            .bodies
-            .iter()
-            .map(|b| if b.planar.is_some() { 3 } else { 1 })
-            .sum();
+        let first_planet = c.len();
         let planets = rig
             .planetary
             .iter()
             .map(|s| {
-                let mass = s.planet_bearing.as_ref().map(|p| p.mass_kg);
                 (0..s.planets())
-                    .map(|k| place(&s.planet_name(k), s.planet_inertia_kgm2, mass))
+                    .map(|k| {
+                        let name = s.planet_name(k);
+                        Place {
+                            rotation: push(
+                                c,
+                                &name,
+                                CoordinateKind::Rotation,
+                                s.planet_inertia_kgm2,
+                            ),
+                            translation: push_translation(c, &name, s.planet_bearing.as_ref()),
+                        }
+                    })
                     .collect()
             })
             .collect();
@@ -175,7 +168,7 @@ impl RigCoordinates {
     }
 
     /// Every spring of `rig` on these coordinates, meshes in contact on their drive
-    /// flanks: shafts, shafts to the frame, bearings, meshes, then each stage's.
+    /// flanks: shafts, [`Self::supports`], meshes, then each stage's.
     pub fn couplings(&self, rig: &RigTopology) -> Vec<Coupling> {
         let mut out = Vec::new();
         for s in &rig.shafts {
@@ -186,6 +179,24 @@ impl RigCoordinates {
                 s.damping_nms_per_rad,
             ));
         }
+        out.extend(self.supports(rig));
+        for (i, m) in rig.meshes.iter().enumerate() {
+            out.push(coupling(
+                self.mesh_terms(rig, i),
+                m.stiffness_n_per_m,
+                m.damping_ns_per_m,
+            ));
+        }
+        for (i, stage) in rig.planetary.iter().enumerate() {
+            self.stage_couplings(i, stage, &mut out);
+        }
+        out
+    }
+
+    /// What holds bodies to the frame: shafts to it on their rotations, bearings on their
+    /// translations.
+    pub fn supports(&self, rig: &RigTopology) -> Vec<Coupling> {
+        let mut out = Vec::new();
         for s in &rig.frame_shafts {
             let theta = self.bodies[s.body].rotation;
             out.push(coupling(
@@ -205,22 +216,25 @@ impl RigCoordinates {
                 }
             }
         }
-        for m in &rig.meshes {
-            let [a, b] = m.gears;
-            let [ra, rb] = m.base_radii_m();
-            let phi = m.centre_line_deg.to_radians();
-            let (s, c) = m.pressure_angle_deg.to_radians().sin_cos();
-            let (er, et) = ([phi.cos(), phi.sin()], [-phi.sin(), phi.cos()]);
-            let n = [c * et[0] + s * er[0], c * et[1] + s * er[1]];
-            let mut terms = vec![(self.bodies[a].rotation, ra), (self.bodies[b].rotation, rb)];
-            terms.extend(along(&self.body_centre(a), n, 1.0));
-            terms.extend(along(&self.body_centre(b), n, -1.0));
-            out.push(coupling(terms, m.stiffness_n_per_m, m.damping_ns_per_m));
-        }
-        for (i, stage) in rig.planetary.iter().enumerate() {
-            self.stage_couplings(i, stage, &mut out);
-        }
         out
+    }
+
+    /// External mesh `i`'s deflection δ = r_a θ_a + r_b θ_b + (d_a − d_b)·n as terms,
+    /// n = cos α e_t + sin α e_r along its centre line (the driver turning positive
+    /// pushes the driven gear along it; translations only where a gear moves in the
+    /// plane).
+    pub fn mesh_terms(&self, rig: &RigTopology, i: usize) -> Vec<(usize, f64)> {
+        let m = &rig.meshes[i];
+        let [a, b] = m.gears;
+        let [ra, rb] = m.base_radii_m();
+        let phi = m.centre_line_deg.to_radians();
+        let (s, c) = m.pressure_angle_deg.to_radians().sin_cos();
+        let (er, et) = ([phi.cos(), phi.sin()], [-phi.sin(), phi.cos()]);
+        let n = [c * et[0] + s * er[0], c * et[1] + s * er[1]];
+        let mut terms = vec![(self.bodies[a].rotation, ra), (self.bodies[b].rotation, rb)];
+        terms.extend(along(&self.body_centre(a), n, 1.0));
+        terms.extend(along(&self.body_centre(b), n, -1.0));
+        terms
     }
 
     /// A stage's springs: per planet its bearing on the pin (where it moves in the
@@ -284,6 +298,28 @@ impl RigCoordinates {
             None => pin,
         }
     }
+}
+
+/// Adds a coordinate of `name`, returning its index.
+fn push(c: &mut Vec<Coordinate>, name: &str, kind: CoordinateKind, mass: f64) -> usize {
+    c.push(Coordinate {
+        body: name.to_string(),
+        kind,
+        mass,
+    });
+    c.len() - 1
+}
+
+/// Adds x and y of `name` on `bearing`, if it has one, returning x's index.
+fn push_translation(
+    c: &mut Vec<Coordinate>,
+    name: &str,
+    bearing: Option<&PlanarBearing>,
+) -> Option<usize> {
+    let p = bearing?;
+    let x = push(c, name, CoordinateKind::X, p.mass_kg);
+    push(c, name, CoordinateKind::Y, p.mass_kg);
+    Some(x)
 }
 
 /// `sign` · d·n as terms, d a centre's displacement.

@@ -22,15 +22,26 @@ pub struct TopologyField {
 }
 
 /// The fields of each table: (field, unit, meaning).
-const BODY: [(&str, &str, &str); 2] = [
+const BODY: [(&str, &str, &str); 5] = [
     ("inertia_kgm2", "kg m^2", "moment of inertia"),
     ("drag_nms_per_rad", "N m s/rad", "bearing and windage drag"),
+    ("mass_kg", "kg", "mass, moving in the plane on its bearing"),
+    (
+        "bearing_stiffness_n_per_m",
+        "N/m",
+        "its bearing's radial stiffness",
+    ),
+    (
+        "bearing_damping_ns_per_m",
+        "N s/m",
+        "its bearing's radial damping",
+    ),
 ];
 const SHAFT: [(&str, &str, &str); 2] = [
     ("stiffness_nm_per_rad", "N m/rad", "torsional stiffness"),
     ("damping_nms_per_rad", "N m s/rad", "torsional damping"),
 ];
-const MESH: [(&str, &str, &str); 17] = [
+const MESH: [(&str, &str, &str); 18] = [
     ("module_m", "m", "module"),
     ("pressure_angle_deg", "deg", "pressure angle"),
     (
@@ -42,6 +53,11 @@ const MESH: [(&str, &str, &str); 17] = [
         "centre_distance_shift_mm",
         "mm",
         "operating centre distance over the standard, for the contact ratio",
+    ),
+    (
+        "centre_line_deg",
+        "deg",
+        "direction from the driver's centre to the driven gear's",
     ),
     (
         "stiffness_n_per_m",
@@ -146,6 +162,9 @@ impl RigTopology {
             add(format!("body.{}", b.name), &BODY);
         }
         for s in &self.shafts {
+            add(format!("shaft.{}", s.name), &SHAFT);
+        }
+        for s in &self.frame_shafts {
             add(format!("shaft.{}", s.name), &SHAFT);
         }
         for m in &self.meshes {
@@ -266,10 +285,24 @@ impl RigTopology {
                 match *field {
                     "inertia_kgm2" => Some(&mut b.inertia_kgm2),
                     "drag_nms_per_rad" => Some(&mut b.drag_nms_per_rad),
+                    "mass_kg" => b.planar.as_mut().map(|p| &mut p.mass_kg),
+                    "bearing_stiffness_n_per_m" => {
+                        b.planar.as_mut().map(|p| &mut p.stiffness_n_per_m)
+                    }
+                    "bearing_damping_ns_per_m" => {
+                        b.planar.as_mut().map(|p| &mut p.damping_ns_per_m)
+                    }
                     _ => None,
                 }
             }
             ["shaft", name, field] => {
+                if let Some(s) = self.frame_shafts.iter_mut().find(|s| s.name == *name) {
+                    return match *field {
+                        "stiffness_nm_per_rad" => Some(&mut s.stiffness_nm_per_rad),
+                        "damping_nms_per_rad" => Some(&mut s.damping_nms_per_rad),
+                        _ => None,
+                    };
+                }
                 let s = self.shafts.iter_mut().find(|s| s.name == *name)?;
                 match *field {
                     "stiffness_nm_per_rad" => Some(&mut s.stiffness_nm_per_rad),
@@ -284,6 +317,7 @@ impl RigTopology {
                     "pressure_angle_deg" => Some(&mut m.pressure_angle_deg),
                     "backlash_mm" => Some(&mut m.backlash_mm),
                     "centre_distance_shift_mm" => Some(&mut m.centre_distance_shift_mm),
+                    "centre_line_deg" => Some(&mut m.centre_line_deg),
                     "stiffness_n_per_m" => Some(&mut m.stiffness_n_per_m),
                     "damping_ns_per_m" => Some(&mut m.damping_ns_per_m),
                     "double_pair_ratio" => Some(&mut m.double_pair_ratio),
