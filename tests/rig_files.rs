@@ -9,7 +9,7 @@ mod common;
 
 use nalgebra::DMatrix;
 
-use common::{folder, json_of, rig_file, testrig};
+use common::{folder, json_of, refused_rig, rig_file};
 
 fn numbers(value: &serde_json::Value) -> Vec<f64> {
     value
@@ -188,17 +188,6 @@ fn modes_field(path: &str, field: &str) -> f64 {
         .unwrap_or_else(|| panic!("no {field} in {path}"))
 }
 
-/// Writes `text` as a rig file in `dir` and runs `modes --rig` on it: its stderr.
-fn refused(dir: &std::path::Path, name: &str, text: &str) -> String {
-    let path = dir.join(format!("{name}.toml"));
-    std::fs::write(&path, text).expect("written");
-    let out = testrig(&["modes", "--rig", path.to_str().expect("utf-8")]);
-    assert!(!out.status.success(), "{name} accepted");
-    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
-    assert!(!stderr.contains("panicked"), "{stderr}");
-    stderr
-}
-
 #[test]
 fn bad_rig_files_are_refused_at_their_line_naming_the_field_and_what_is_allowed() {
     let dir = folder("bad-rigs");
@@ -300,7 +289,7 @@ fn bad_rig_files_are_refused_at_their_line_naming_the_field_and_what_is_allowed(
     for (name, old, new, expected) in cases {
         let at = good.find(old).expect("the line is in the file");
         let line = good[..at].lines().count() + usize::from(good[..at].ends_with('\n'));
-        let stderr = refused(&dir, name, &good.replacen(old, new, 1));
+        let stderr = refused_rig(&dir, name, &good.replacen(old, new, 1));
         let place = format!("{name}.toml:{line}:");
         assert!(stderr.contains(&place), "{name}: `{place}` not in {stderr}");
         for e in expected {
@@ -308,7 +297,7 @@ fn bad_rig_files_are_refused_at_their_line_naming_the_field_and_what_is_allowed(
         }
     }
     // A body joined to nothing (the brake's shaft moved onto another body).
-    let stderr = refused(
+    let stderr = refused_rig(
         &dir,
         "connected-to-nothing",
         &good.replacen(
@@ -323,7 +312,7 @@ fn bad_rig_files_are_refused_at_their_line_naming_the_field_and_what_is_allowed(
     );
     // A back-to-back loop whose two gearboxes differ does not turn as one.
     let loop_rig = std::fs::read_to_string(rig_file("fzg-back-to-back")).expect("rig");
-    let stderr = refused(
+    let stderr = refused_rig(
         &dir,
         "unequal-loop",
         &loop_rig.replacen("teeth = [24, 16]", "teeth = [25, 16]", 1),
@@ -341,7 +330,7 @@ fn bad_rig_files_are_refused_at_their_line_naming_the_field_and_what_is_allowed(
     for i in 0..33 {
         many.push_str(&format!("[[body]]\nname = \"b{i}\"\ninertia_kgm2 = 1.0\n"));
     }
-    let stderr = refused(&dir, "too-many-bodies", &many);
+    let stderr = refused_rig(&dir, "too-many-bodies", &many);
     assert!(
         stderr.contains("33 bodies: a rig has 2 to 32 bodies"),
         "{stderr}"
@@ -352,7 +341,7 @@ fn bad_rig_files_are_refused_at_their_line_naming_the_field_and_what_is_allowed(
             "[[mesh]]\nname = \"extra{i}\"\ndriver = \"pinion1\"\ndriven = \"wheel1\"\nteeth = [20, 60]\nmodule_m = 0.003\nbacklash_mm = 0.2\nstiffness_n_per_m = 2.8e8\n"
         ));
     }
-    let stderr = refused(&dir, "too-many-meshes", &meshes);
+    let stderr = refused_rig(&dir, "too-many-meshes", &meshes);
     assert!(stderr.contains("5 meshes: a rig has at most 4"), "{stderr}");
 }
 

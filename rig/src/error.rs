@@ -55,9 +55,10 @@ pub enum RigError {
         /// The mechanical state when it was seen (`NetworkPlant::state_rad`).
         state: Vec<f64>,
     },
-    /// A rig (from a rig file) the plant cannot run.
+    /// A rig (from a rig file) the plant cannot run (its fault's message, once: not
+    /// also as a source, which a chain of causes would print twice).
     #[error("rig: {0}")]
-    Topology(#[from] TopologyError),
+    Topology(TopologyError),
     /// Contact switches without end inside one step (a Zeno sequence).
     #[error("contact chatter at t = {t_s:.9} s: more than {limit} switches within one step")]
     Chatter {
@@ -66,6 +67,12 @@ pub enum RigError {
         /// The switch limit per step.
         limit: usize,
     },
+}
+
+impl From<TopologyError> for RigError {
+    fn from(e: TopologyError) -> Self {
+        Self::Topology(e)
+    }
 }
 
 /// Where in a rig a fault lies: a table of the rig file (`body`, `shaft`, `mesh`,

@@ -125,9 +125,9 @@ pub use tooth_fault::{FaultKind, FaultedGear, ToothFault};
 pub use topology::TopologyField;
 pub use topology::{
     Body, DriveRatings, DriveSettings, FrameShaft, Gauge, LockedTorque, MAX_BODIES, MAX_MESHES,
-    Mesh, RigTopology, Shaft,
+    MAX_PLANT_MESHES, Mesh, RigTopology, Shaft,
 };
-pub use topology::{Coordinate, CoordinateKind, Coupling, RigCoordinates};
+pub use topology::{Coordinate, CoordinateKind, Coupling, MeshForm, RigCoordinates};
 pub use topology::{
     LineOfAction, MAX_PLANETS, PlanarBearing, PlanetaryStage, StageMesh, StageRadii, StageTeeth,
 };

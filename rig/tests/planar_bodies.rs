@@ -88,6 +88,17 @@ fn planar_rig(driven: bool, mesh_damping: f64) -> RigTopology {
     }
 }
 
+/// The plant of `rig` at rest, its meshes touching without force.
+fn at_rest(rig: &RigTopology) -> NetworkPlant {
+    NetworkPlant::new(
+        rig,
+        Schedule::constant(0.0, 0.0),
+        RATE_HZ,
+        NetworkStart::Steady,
+    )
+    .expect("valid plant")
+}
+
 /// The line of action of the pair: cos α e_t + sin α e_r along its 30° centre line.
 fn line_of_action() -> [f64; 2] {
     let (phi, alpha) = (30f64.to_radians(), 20f64.to_radians());
@@ -103,13 +114,7 @@ fn a_free_translation_rings_at_the_root_of_stiffness_over_mass() {
     // line of action leaves the mesh's deflection as it is, and rings on its bearing
     // alone, its displacement v/ω sin ωt along the knock.
     let rig = planar_rig(false, 0.0);
-    let mut plant = NetworkPlant::new(
-        &rig,
-        Schedule::constant(0.0, 0.0),
-        RATE_HZ,
-        NetworkStart::Steady,
-    )
-    .expect("valid plant");
+    let mut plant = at_rest(&rig);
     // Coordinates: motor, pinion, wheel rotations; pinion x, y; wheel x, y.
     let (wheel_x, n) = (5, 7);
     let line = line_of_action();
@@ -133,7 +138,11 @@ fn a_free_translation_rings_at_the_root_of_stiffness_over_mass() {
     }
     eprintln!("MEASURED free translation: worst {worst:e} of the amplitude");
     assert!(worst < 1e-9, "{worst:e}");
-    assert!(plant.take_impacts().is_empty());
+    // The teeth stay touching without force: any touch the rounding of the deflection
+    // makes is at no speed.
+    for impact in plant.take_impacts() {
+        assert!(impact.approach_m_s.abs() < 1e-9 * v, "{impact:?}");
+    }
 }
 
 #[test]
@@ -176,13 +185,7 @@ fn loaded_bearings_carry_the_mesh_force_along_its_line_of_action() {
 #[test]
 fn energy_is_conserved_through_impacts_with_the_gears_moving_in_the_plane() {
     let rig = planar_rig(false, 0.0);
-    let mut plant = NetworkPlant::new(
-        &rig,
-        Schedule::constant(0.0, 0.0),
-        RATE_HZ,
-        NetworkStart::Steady,
-    )
-    .expect("valid plant");
+    let mut plant = at_rest(&rig);
     // The pinion turned against the wheel and both gears knocked sideways: the teeth
     // rattle, the bearings ring.
     plant.kick(1, 2.0);

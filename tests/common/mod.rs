@@ -234,3 +234,15 @@ pub fn json_of(args: &[&str]) -> serde_json::Value {
     );
     serde_json::from_slice(&out.stdout).expect("JSON")
 }
+
+/// Writes `text` as the rig file `name.toml` in `dir` and runs `modes --rig` on it: the
+/// stderr of its refusal (fails if it was accepted or panicked).
+pub fn refused_rig(dir: &Path, name: &str, text: &str) -> String {
+    let path = dir.join(format!("{name}.toml"));
+    std::fs::write(&path, text).expect("written");
+    let out = testrig(&["modes", "--rig", path.to_str().expect("utf-8")]);
+    assert!(!out.status.success(), "{name} accepted");
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    stderr
+}

@@ -13,13 +13,15 @@ use crate::topology::RigTopology;
 pub struct NetworkBlock {
     /// Sample times (s).
     pub time_s: Vec<f64>,
-    /// Each body's angle in its sense of rotation (rad), `[body][sample]`.
+    /// Each turning part's angle in its sense of rotation (rad), `[part][sample]`: the
+    /// bodies, then the planets (`RigTopology::turning_names`).
     pub angle_rad: Vec<Vec<f64>>,
-    /// Each body's speed in its sense of rotation (rad/s), `[body][sample]`.
+    /// Each turning part's speed in its sense of rotation (rad/s), `[part][sample]`.
     pub speed_rad_s: Vec<Vec<f64>>,
     /// Each shaft's elastic torque k·twist + locked torque (N m), `[shaft][sample]`.
     pub shaft_torque_nm: Vec<Vec<f64>>,
-    /// Each mesh's force along the line of action (N), `[mesh][sample]`.
+    /// Each mesh's force along the line of action (N), `[mesh][sample]`, in
+    /// `RigTopology::mesh_names`' order.
     pub mesh_force_n: Vec<Vec<f64>>,
     /// Each mesh's contact, +1 drive flank, −1 back flank, 0 apart, `[mesh][sample]`.
     pub contact: Vec<Vec<i8>>,
@@ -32,14 +34,15 @@ pub struct NetworkBlock {
 }
 
 impl NetworkBlock {
-    /// An empty block shaped for `rig`: a column per body, shaft and mesh, and x and y
-    /// per body that moves in the plane.
+    /// An empty block shaped for `rig`: a column per turning part (bodies, then planets),
+    /// shaft and mesh (external, then the stages'), and x and y per body that moves in
+    /// the plane.
     pub fn new(rig: &RigTopology) -> Self {
         let planar = rig.bodies.iter().filter(|b| b.planar.is_some()).count();
         Self::shaped(
-            rig.bodies.len(),
+            rig.turning_names().len(),
             rig.shafts.len(),
-            rig.meshes.len(),
+            rig.mesh_names().len(),
             2 * planar,
         )
     }

@@ -32,29 +32,31 @@ pub fn column_specs(rig: &RigTopology) -> Vec<Column> {
         discrete: false,
     };
     let mut out = vec![column("time_s".into(), "s", "time".into())];
-    for b in &rig.bodies {
-        let meaning = format!("speed of body {} in its sense of rotation", b.name);
-        out.push(column(format!("speed_{}_rpm", b.name), "rev/min", meaning));
+    let turning = rig.turning_names();
+    for b in &turning {
+        let meaning = format!("speed of {b} in its sense of rotation");
+        out.push(column(format!("speed_{b}_rpm"), "rev/min", meaning));
     }
-    for b in &rig.bodies {
-        let meaning = format!("angle turned by body {} in its sense of rotation", b.name);
-        out.push(column(format!("angle_{}_rad", b.name), "rad", meaning));
+    for b in &turning {
+        let meaning = format!("angle turned by {b} in its sense of rotation");
+        out.push(column(format!("angle_{b}_rad"), "rad", meaning));
     }
     for s in &rig.shafts {
         let meaning = format!("torque in shaft {}", s.name);
         out.push(column(format!("torque_{}_nm", s.name), "N m", meaning));
     }
-    for m in &rig.meshes {
+    let meshes = rig.mesh_names();
+    for m in &meshes {
         out.push(Column {
-            name: format!("contact_{}", m.name),
+            name: format!("contact_{m}"),
             unit: "",
-            meaning: format!("mesh {}: +1 drive flank, -1 back flank, 0 apart", m.name),
+            meaning: format!("mesh {m}: +1 drive flank, -1 back flank, 0 apart"),
             discrete: true,
         });
     }
-    for m in &rig.meshes {
-        let meaning = format!("mesh {}: force along the line of action", m.name);
-        out.push(column(format!("force_{}_n", m.name), "N", meaning));
+    for m in &meshes {
+        let meaning = format!("mesh {m}: force along the line of action");
+        out.push(column(format!("force_{m}_n"), "N", meaning));
     }
     for b in rig.bodies.iter().filter(|b| b.planar.is_some()) {
         for axis in ["x", "y"] {
@@ -89,7 +91,11 @@ pub fn columns(rig: &RigTopology, block: &NetworkBlock) -> Vec<Vec<f64>> {
 /// Column `k` of `block` in the order of [`column_specs`] (speeds in rev/min, strain in
 /// µε), alone: a run computes only the columns it reads. `None` past the last.
 pub fn column(rig: &RigTopology, block: &NetworkBlock, k: usize) -> Option<Vec<f64>> {
-    let (bodies, shafts, meshes) = (rig.bodies.len(), rig.shafts.len(), rig.meshes.len());
+    let (bodies, shafts, meshes) = (
+        rig.turning_names().len(),
+        rig.shafts.len(),
+        rig.mesh_names().len(),
+    );
     let mut k = k;
     if k == 0 {
         return Some(block.time_s.clone());

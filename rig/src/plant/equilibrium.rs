@@ -76,8 +76,8 @@ fn rests(model: &NetworkModel, i: usize, state: MeshState, angles: &[f64]) -> bo
         Contact::Drive => force >= -FLANK_TOLERANCE_N,
         Contact::Back => force <= FLANK_TOLERANCE_N,
         Contact::Apart => {
-            let delta = deflection_m(m, angles);
-            delta + m.start_offset_m(1.0) <= 0.0 && delta + m.start_offset_m(-1.0) >= 0.0
+            deflection_m(m, 1.0, angles) + m.start_offset_m(1.0) <= 0.0
+                && deflection_m(m, -1.0, angles) + m.start_offset_m(-1.0) >= 0.0
         }
     }
 }
@@ -85,18 +85,17 @@ fn rests(model: &NetworkModel, i: usize, state: MeshState, angles: &[f64]) -> bo
 /// The spring force (N) of mesh `i` on its flank at `angles`.
 fn flank_force(model: &NetworkModel, i: usize, state: MeshState, angles: &[f64]) -> f64 {
     let m = &model.meshes[i];
-    let delta = deflection_m(m, angles);
     let (k, _) = m.spring(state);
     match state.contact {
-        Contact::Drive => k * (delta + m.start_offset_m(1.0)),
-        Contact::Back => k * (delta + m.start_offset_m(-1.0)),
+        Contact::Drive => k * (deflection_m(m, 1.0, angles) + m.start_offset_m(1.0)),
+        Contact::Back => k * (deflection_m(m, -1.0, angles) + m.start_offset_m(-1.0)),
         Contact::Apart => 0.0,
     }
 }
 
-/// A mesh's deflection (m) at the coordinates `angles`.
-fn deflection_m(m: &MeshModel, angles: &[f64]) -> f64 {
-    m.terms.iter().map(|&(j, c)| c * angles[j]).sum()
+/// A mesh's deflection (m) on `flank` at the coordinates `angles`.
+fn deflection_m(m: &MeshModel, flank: f64, angles: &[f64]) -> f64 {
+    m.terms(flank).map(|(j, c)| c * angles[j]).sum()
 }
 
 /// The twists with the meshes on the flanks of `meshes`.
@@ -126,13 +125,15 @@ fn solve(
     }
     for (m, state) in model.meshes.iter().zip(meshes) {
         let (spring, _) = m.spring(*state);
-        let offset = match state.contact {
-            Contact::Drive => m.start_offset_m(1.0),
-            Contact::Back => m.start_offset_m(-1.0),
+        let flank = match state.contact {
+            Contact::Drive => 1.0,
+            Contact::Back => -1.0,
             Contact::Apart => continue,
         };
-        add_coupling(&mut k, &m.terms, spring);
-        for &(x, rx) in &m.terms {
+        let offset = m.start_offset_m(flank);
+        let terms: Vec<(usize, f64)> = m.terms(flank).collect();
+        add_coupling(&mut k, &terms, spring);
+        for &(x, rx) in &terms {
             f[x] -= spring * rx * offset;
         }
     }

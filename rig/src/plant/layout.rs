@@ -1,6 +1,6 @@
 //! The state of a rig of n coordinates (`topology::RigCoordinates`: each body's rotation,
 //! body i's first as coordinate i, then the translations of bodies that move in the
-//! plane): x_0..x_{n−1} each coordinate less its share s_i Φ of the set rotation Φ (rad
+//! plane, then the planets' rotations): x_0..x_{n−1} each coordinate less its share s_i Φ of the set rotation Φ (rad
 //! for a rotation, a twist bounded however long the rig runs; m for a translation, whose
 //! share is 0), their absolute rates v_0..v_{n−1} (rad/s, m/s), the speed loop's filtered
 //! speed and integral, then the
@@ -14,33 +14,37 @@
 //! (C3), (cos 2θ, sin 2θ); and for each mesh with spacing errors, the
 //! error e of the pair in mesh (m along the line of action, e' = 0, set as pairs change).
 
-use crate::topology::{MAX_MESHES, RigCoordinates, RigTopology};
+use crate::topology::{MAX_PLANT_MESHES, RigCoordinates, RigTopology};
 
 /// Where each state sits for a rig of `bodies` bodies.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct NetLayout {
     /// Number of bodies (their rotations are the first coordinates).
     pub bodies: usize,
-    /// Number of coordinates n: the bodies' rotations, then translations.
+    /// Number of coordinates n: the bodies' rotations, then their translations, then the
+    /// planets' rotations.
     pub coordinates: usize,
+    /// The end of the bodies' translations (they start at `bodies`); the planets'
+    /// rotations run from here to `coordinates`.
+    pub translations_end: usize,
     /// Per mesh: where cos θ of its driver's share of the set rotation sits (sin θ
     /// follows), if the mesh is excited.
-    pub revolution: [Option<usize>; MAX_MESHES],
+    pub revolution: [Option<usize>; MAX_PLANT_MESHES],
     /// Per mesh: where cos zθ sits (sin zθ follows), if it has a mesh-frequency error.
-    pub tooth: [Option<usize>; MAX_MESHES],
+    pub tooth: [Option<usize>; MAX_PLANT_MESHES],
     /// Per mesh: where cos 2θ sits (sin 2θ follows), if it has a gear-error torque twice
     /// per revolution (C3).
-    pub second: [Option<usize>; MAX_MESHES],
+    pub second: [Option<usize>; MAX_PLANT_MESHES],
     /// Per mesh: where cos θ₂ of its driven gear's turn sits (sin θ₂ follows), if the
     /// driven gear has run-out.
-    pub run_out: [Option<usize>; MAX_MESHES],
+    pub run_out: [Option<usize>; MAX_PLANT_MESHES],
     /// Per mesh: where the spacing error of the pair in mesh sits, if the mesh has
     /// spacing errors.
-    pub spacing: [Option<usize>; MAX_MESHES],
+    pub spacing: [Option<usize>; MAX_PLANT_MESHES],
     /// Per mesh: its driver's teeth z (the harmonic of the mesh-frequency pair).
-    driver_teeth: [u32; MAX_MESHES],
+    driver_teeth: [u32; MAX_PLANT_MESHES],
     /// Per mesh: its driven gear's teeth (its turn is z/z₂ of the driver's).
-    driven_teeth: [u32; MAX_MESHES],
+    driven_teeth: [u32; MAX_PLANT_MESHES],
     len: usize,
 }
 
@@ -48,15 +52,17 @@ impl NetLayout {
     /// The layout of `rig`.
     pub fn new(rig: &RigTopology) -> Self {
         let bodies = rig.bodies.len();
-        let coordinates = RigCoordinates::of(rig).len();
+        let all = RigCoordinates::of(rig);
+        let coordinates = all.len();
+        let translations_end = all.body_translations().end;
         let mut len = 2 * coordinates + 2 + 8;
-        let mut revolution = [None; MAX_MESHES];
-        let mut tooth = [None; MAX_MESHES];
-        let mut second = [None; MAX_MESHES];
-        let mut run_out = [None; MAX_MESHES];
-        let mut spacing = [None; MAX_MESHES];
-        let mut driven_teeth = [0; MAX_MESHES];
-        let mut driver_teeth = [0; MAX_MESHES];
+        let mut revolution = [None; MAX_PLANT_MESHES];
+        let mut tooth = [None; MAX_PLANT_MESHES];
+        let mut second = [None; MAX_PLANT_MESHES];
+        let mut run_out = [None; MAX_PLANT_MESHES];
+        let mut spacing = [None; MAX_PLANT_MESHES];
+        let mut driven_teeth = [0; MAX_PLANT_MESHES];
+        let mut driver_teeth = [0; MAX_PLANT_MESHES];
         for (i, m) in rig.meshes.iter().enumerate() {
             driver_teeth[i] = m.teeth[0];
             if m.excited() {
@@ -84,6 +90,7 @@ impl NetLayout {
         Self {
             bodies,
             coordinates,
+            translations_end,
             revolution,
             tooth,
             second,
@@ -103,7 +110,7 @@ impl NetLayout {
     /// The harmonic pairs: (index of the cos state, mesh, harmonic of the driver's turn).
     pub fn harmonics(&self) -> Vec<(usize, usize, f64)> {
         let mut pairs = Vec::new();
-        for i in 0..MAX_MESHES {
+        for i in 0..MAX_PLANT_MESHES {
             if let Some(index) = self.revolution[i] {
                 pairs.push((index, i, 1.0));
             }
@@ -169,6 +176,10 @@ impl NetLayout {
     /// The set rotation Φ (rad).
     pub fn phase(&self) -> usize {
         self.mechanical() + 7
+    }
+    /// The turning parts' rotation coordinates: the bodies', then the planets'.
+    pub fn turning(&self) -> impl Iterator<Item = usize> + '_ {
+        (0..self.bodies).chain(self.translations_end..self.coordinates)
     }
     /// Length of the state.
     pub fn len(&self) -> usize {

@@ -8,7 +8,7 @@ use crate::options::MeshPairs;
 use crate::pair_zones::PairZones;
 use crate::spacing::mesh_spacing_m;
 use crate::tooth_fault::{FaultedGear, ToothFault, tooth_factors};
-use crate::topology::Mesh;
+use crate::topology::{Mesh, MeshForm, PlanetaryStage};
 
 use super::mode::MeshState;
 
@@ -21,10 +21,12 @@ pub struct MeshModel {
     /// that δ = r_a θa + r_b θb > 0 presses the driver's drive flank whichever way the
     /// pair turns.
     pub radii_m: [f64; 2],
-    /// The deflection δ along the line of action as terms (coordinate, m per unit of
+    /// The deflection's part whose sign follows the flank (coordinate, m per unit of
     /// it), negated with the radii: r_a θa + r_b θb and, where a gear moves in the plane,
-    /// its translations along the line (`topology::RigCoordinates::mesh_terms`).
-    pub terms: Vec<(usize, f64)>,
+    /// its translations along the tangent (`topology::MeshForm`).
+    pub turning: Vec<(usize, f64)>,
+    /// The translations along the centre line, which part the gears on either flank.
+    pub radial: Vec<(usize, f64)>,
     /// One pair's stiffness along the line of action (N/m).
     pub stiffness_n_per_m: f64,
     /// One pair's damping along the line of action (N s/m).
@@ -78,8 +80,8 @@ pub struct MeshModel {
 
 impl MeshModel {
     /// The constants of mesh `m`, each body's speed per unit motor speed `speed_ratio`,
-    /// its deflection's `terms` for a driver turning positive.
-    pub fn of(m: &Mesh, speed_ratio: &[f64], terms: Vec<(usize, f64)>) -> Self {
+    /// its deflection's `form` for a driver turning positive.
+    pub fn of(m: &Mesh, speed_ratio: &[f64], form: MeshForm) -> Self {
         let sense = speed_ratio[m.gears[0]].signum();
         let (single, whole): (Vec<ToothFault>, Vec<ToothFault>) = m
             .faults
@@ -96,7 +98,12 @@ impl MeshModel {
         MeshModel {
             gears: m.gears,
             radii_m: m.base_radii_m().map(|r| r * sense),
-            terms: terms.into_iter().map(|(j, c)| (j, c * sense)).collect(),
+            turning: form
+                .turning
+                .into_iter()
+                .map(|(j, c)| (j, c * sense))
+                .collect(),
+            radial: form.radial,
             stiffness_n_per_m: m.stiffness_n_per_m,
             damping_ns_per_m: m.damping_ns_per_m,
             half_backlash_m: m.half_backlash_m(),
@@ -123,6 +130,74 @@ impl MeshModel {
             faulted,
             spacing_m: mesh_spacing_m(m),
         }
+    }
+
+    /// A planetary stage's mesh between a planet and the sun (`ring` false) or the
+    /// ring: one pair always, healthy, its deflection's `form` for the sun turning
+    /// forward against the carrier, negated by `sense` (−1 where it turns back), its
+    /// gears the sun and the planet's rotation coordinate `planet` (or the planet and the
+    /// ring) with their shares in `speed_ratio`.
+    pub fn of_stage(
+        stage: &PlanetaryStage,
+        ring: bool,
+        planet: usize,
+        form: MeshForm,
+        sense: f64,
+        speed_ratio: &[f64],
+    ) -> Self {
+        let r = stage.radii_m();
+        let (mesh, gears, radii, teeth) = if ring {
+            let t = [stage.teeth.planet, stage.teeth.ring];
+            (
+                &stage.ring_planet,
+                [planet, stage.ring],
+                [-r.planet, r.ring],
+                t,
+            )
+        } else {
+            let t = [stage.teeth.sun, stage.teeth.planet];
+            (&stage.sun_planet, [stage.sun, planet], [r.sun, r.planet], t)
+        };
+        let half_backlash_m =
+            0.5 * mesh.backlash_mm * 1e-3 * stage.pressure_angle_deg.to_radians().cos();
+        MeshModel {
+            gears,
+            radii_m: radii.map(|x| x * sense),
+            turning: form
+                .turning
+                .into_iter()
+                .map(|(j, c)| (j, c * sense))
+                .collect(),
+            radial: form.radial,
+            stiffness_n_per_m: mesh.stiffness_n_per_m,
+            damping_ns_per_m: mesh.damping_ns_per_m,
+            half_backlash_m,
+            alternating: false,
+            double_pair_ratio: 1.0,
+            pitch_rad: 2.0 * std::f64::consts::PI / f64::from(teeth[0]),
+            zones: PairZones::new(0.0, 0.0),
+            teeth: f64::from(teeth[0]),
+            share: speed_ratio[gears[0]],
+            variation_m: 0.0,
+            te_once_m: 0.0,
+            run_out_driven_m: 0.0,
+            driven_turns: f64::from(teeth[0]) / f64::from(teeth[1]),
+            te_mesh_m: 0.0,
+            tooth_shifting: false,
+            no_pull: false,
+            gear_error_c2_nm: 0.0,
+            gear_error_c3_nm: 0.0,
+            tooth_factors: teeth.map(|z| vec![1.0; z as usize]),
+            single_stretch_factors: teeth.map(|z| vec![1.0; z as usize]),
+            faulted: false,
+            spacing_m: [Vec::new(), Vec::new()],
+        }
+    }
+
+    /// The deflection's terms on `flank` (+1 drive, −1 back): turning + flank · radial.
+    pub fn terms(&self, flank: f64) -> impl Iterator<Item = (usize, f64)> + '_ {
+        let radial = self.radial.iter().map(move |&(j, c)| (j, flank * c));
+        self.turning.iter().copied().chain(radial)
     }
 
     /// The constant part of the overlap of `flank` (+1 drive, −1 back) with the driver

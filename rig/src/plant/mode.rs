@@ -3,7 +3,7 @@
 //! or held at a torque limit.
 
 use crate::mode::{MotorMode, PairZone};
-use crate::topology::MAX_MESHES;
+use crate::topology::MAX_PLANT_MESHES;
 
 /// How a mesh's teeth meet.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -81,21 +81,45 @@ impl MeshState {
     }
 }
 
-/// The discrete state of the whole rig.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+/// The discrete state of the whole rig. Equal and hashed by the meshes the rig has (the
+/// rest stay apart): a rig of one mesh compares one, not [`MAX_PLANT_MESHES`].
+#[derive(Clone, Copy, Debug)]
 pub struct NetMode {
-    /// Each mesh's state (the first `meshes` are used).
-    pub meshes: [MeshState; MAX_MESHES],
+    /// Each mesh's state (the first `used` are the rig's).
+    pub meshes: [MeshState; MAX_PLANT_MESHES],
+    /// How many meshes the rig has.
+    used: u8,
     /// The motor.
     pub motor: MotorMode,
 }
 
 impl NetMode {
-    /// Every mesh apart with one pair, the motor linear.
-    pub fn apart() -> Self {
+    /// Every one of a rig's `meshes` meshes apart with one pair, the motor linear.
+    pub fn apart(meshes: usize) -> Self {
         Self {
-            meshes: [MeshState::APART; MAX_MESHES],
+            meshes: [MeshState::APART; MAX_PLANT_MESHES],
+            used: meshes.min(MAX_PLANT_MESHES) as u8,
             motor: MotorMode::Linear,
         }
+    }
+
+    /// The rig's meshes' states.
+    pub fn used(&self) -> &[MeshState] {
+        &self.meshes[..usize::from(self.used)]
+    }
+}
+
+impl PartialEq for NetMode {
+    fn eq(&self, other: &Self) -> bool {
+        self.motor == other.motor && self.used() == other.used()
+    }
+}
+
+impl Eq for NetMode {}
+
+impl std::hash::Hash for NetMode {
+    fn hash<H: std::hash::Hasher>(&self, state: &mut H) {
+        self.used().hash(state);
+        self.motor.hash(state);
     }
 }

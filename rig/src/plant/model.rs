@@ -8,7 +8,8 @@
 //! body on a bearing in the plane also moves in x and y (share 0), its isotropic bearing
 //! a spring-damper to the frame on each (`topology::RigCoordinates::supports`); a mesh
 //! between gears that move then deflects along its line of action with their
-//! translations too (`RigCoordinates::mesh_terms`), and its force acts on them. A shaft carries k(θa − θb) + c(ωa − ωb) + T0 from a to b (T0 the
+//! translations too (`RigCoordinates::mesh_form`: the two flanks' lines mirror each
+//! other about the centre line), and its force acts on them. A shaft carries k(θa − θb) + c(ωa − ωb) + T0 from a to b (T0 the
 //! torque locked into a loop's shaft, 0 elsewhere). A mesh's deflection along the line of
 //! action is δ = r_a θa + r_b θb (both radii negated where the driver turns against the
 //! motor, so that δ > 0 always presses its drive flank); on its drive flank (δ > b, b half the free play) it
@@ -31,6 +32,36 @@ use super::drive_model::{BrakeModel, MotorModel};
 use super::layout::NetLayout;
 use super::mesh_model::MeshModel;
 use super::mode::{MeshState, NetMode};
+
+/// Each stage's meshes in the plant's order (`RigTopology::mesh_names`): its sun–planet
+/// meshes, then its ring–planet meshes, each drive flank the one the sun turning forward
+/// against the carrier presses.
+fn stage_meshes(
+    rig: &RigTopology,
+    coordinates: &RigCoordinates,
+    speed_ratio: &[f64],
+) -> Vec<MeshModel> {
+    let mut out = Vec::new();
+    for (i, stage) in rig.planetary.iter().enumerate() {
+        let relative = speed_ratio[stage.sun] - speed_ratio[stage.carrier];
+        let sense = if relative < 0.0 { -1.0 } else { 1.0 };
+        for ring in [false, true] {
+            for k in 0..stage.planets() {
+                let form = coordinates.stage_mesh_form(i, stage, k, ring);
+                let planet = coordinates.planet_rotation(i, k);
+                out.push(MeshModel::of_stage(
+                    stage,
+                    ring,
+                    planet,
+                    form,
+                    sense,
+                    speed_ratio,
+                ));
+            }
+        }
+    }
+    out
+}
 
 /// A shaft's constants.
 #[derive(Clone, Debug, PartialEq)]
@@ -74,7 +105,8 @@ pub struct NetworkModel {
     pub speed_ratio: Vec<f64>,
     /// The shafts.
     pub shafts: Vec<ShaftModel>,
-    /// What holds coordinates to the frame: bearings on translations.
+    /// What holds coordinates to the frame: shafts to the frame on rotations, bearings on
+    /// translations.
     pub supports: Vec<Coupling>,
     /// The meshes.
     pub meshes: Vec<MeshModel>,
@@ -95,6 +127,13 @@ impl NetworkModel {
         // Translations turn with nothing: their share of the set rotation is 0.
         let mut speed_ratio: Vec<f64> = speeds.iter().map(|s| s.unwrap_or(0.0) / base).collect();
         speed_ratio.resize(coordinates.len(), 0.0);
+        // Each planet rolls on its sun (`PlanetaryStage::planet_speed`).
+        for (i, stage) in rig.planetary.iter().enumerate() {
+            let planet = stage.planet_speed(speed_ratio[stage.sun], speed_ratio[stage.carrier]);
+            for k in 0..stage.planets() {
+                speed_ratio[coordinates.planet_rotation(i, k)] = planet;
+            }
+        }
         let inertia = coordinates.masses();
         let mut drag_nms_per_rad: Vec<f64> =
             rig.bodies.iter().map(|b| b.drag_nms_per_rad).collect();
@@ -114,12 +153,13 @@ impl NetworkModel {
                     .map_or(0.0, |l| l.torque_nm),
             })
             .collect();
-        let meshes = rig
+        let mut meshes: Vec<MeshModel> = rig
             .meshes
             .iter()
             .enumerate()
-            .map(|(i, m)| MeshModel::of(m, &speed_ratio, coordinates.mesh_terms(rig, i)))
+            .map(|(i, m)| MeshModel::of(m, &speed_ratio, coordinates.mesh_form(rig, i)))
             .collect();
+        meshes.extend(stage_meshes(rig, &coordinates, &speed_ratio));
         // The speed loop on the rig's inertia seen at the motor, Σ J s² (as the 1983
         // preset's on the sum of its five inertias).
         let seen: f64 = inertia
@@ -172,13 +212,14 @@ impl NetworkModel {
         u[l.angle(body)] + self.speed_ratio[body] * u[l.phase()]
     }
 
-    /// A mesh's deflection δ (m) and its rate (m/s) at state `u`.
-    pub fn deflection(&self, mesh: usize, u: &[f64]) -> (f64, f64) {
+    /// A mesh's deflection δ (m) on `flank` (+1 drive, −1 back) and its rate (m/s) at
+    /// state `u`.
+    pub fn deflection(&self, mesh: usize, flank: f64, u: &[f64]) -> (f64, f64) {
         let l = &self.layout;
-        let terms = &self.meshes[mesh].terms;
+        let m = &self.meshes[mesh];
         (
-            terms.iter().map(|&(j, c)| c * u[l.angle(j)]).sum(),
-            terms.iter().map(|&(j, c)| c * u[l.speed(j)]).sum(),
+            m.terms(flank).map(|(j, c)| c * u[l.angle(j)]).sum(),
+            m.terms(flank).map(|(j, c)| c * u[l.speed(j)]).sum(),
         )
     }
 
@@ -187,7 +228,7 @@ impl NetworkModel {
     pub fn overlap(&self, mesh: usize, flank: f64, u: &[f64], speed_rad_s: f64) -> (f64, f64) {
         let l = &self.layout;
         let m = &self.meshes[mesh];
-        let (delta, rate) = self.deflection(mesh, u);
+        let (delta, rate) = self.deflection(mesh, flank, u);
         let mut overlap = delta - flank * m.half_backlash_m;
         let mut overlap_rate = rate;
         let w = m.share * speed_rad_s;
@@ -333,13 +374,14 @@ impl NetworkModel {
 
     /// The mesh's force terms F = k(δ + e − f b + f b C1 cos θ) + c(δ' + e' + f b C1
     /// (cos θ)') (f = +1 on the drive flank, −1 on the back flank), −r_a F on its driver
-    /// and −r_b F on its driven gear.
+    /// and −r_b F on its driven gear (−g F on each coordinate of the flank's δ, g its
+    /// coefficient: translations too where a gear moves in the plane).
     fn add_mesh(&self, a: &mut DMatrix<f64>, mesh: usize, state: MeshState, speed_rad_s: f64) {
         let Some(flank) = state.pushing_flank() else {
             return;
         };
         let force = self.force_terms(mesh, state, flank, speed_rad_s);
-        for &(j, g) in &self.meshes[mesh].terms {
+        for (j, g) in self.meshes[mesh].terms(flank) {
             let terms: Vec<(usize, f64)> = force.iter().map(|&(col, f)| (col, -g * f)).collect();
             self.add_torque(a, j, &terms);
         }
@@ -380,10 +422,9 @@ impl NetworkModel {
         let l = &self.layout;
         let m = &self.meshes[mesh];
         let mut terms: Vec<(usize, f64, f64)> = m
-            .terms
-            .iter()
-            .map(|&(j, c)| (l.angle(j), c, 0.0))
-            .chain(m.terms.iter().map(|&(j, c)| (l.speed(j), 0.0, c)))
+            .terms(flank)
+            .map(|(j, c)| (l.angle(j), c, 0.0))
+            .chain(m.terms(flank).map(|(j, c)| (l.speed(j), 0.0, c)))
             .collect();
         terms.push((l.unit(), -flank * m.half_backlash_m, 0.0));
         let w = m.share * speed_rad_s;

@@ -165,7 +165,7 @@ impl NetworkPlant {
             step_s,
             cache: Some(Box::new(SystemCache::new(step_s, substeps, rho))),
             u: vec![0.0; len],
-            mode: NetMode::apart(),
+            mode: NetMode::apart(meshes),
             sample: 0,
             segment_end: Some(0),
             zones: vec![1; meshes],
@@ -359,10 +359,10 @@ impl NetworkPlant {
     pub fn block(&self) -> NetworkBlock {
         let l = &self.model.layout;
         NetworkBlock::shaped(
-            l.bodies,
+            l.turning().count(),
             self.model.shafts.len(),
             self.model.meshes.len(),
-            l.coordinates - l.bodies,
+            l.translations_end - l.bodies,
         )
     }
 

@@ -15,9 +15,10 @@ pub const CHUNK: usize = 128;
 /// A mode's signals as linear forms of the state (index, coefficient).
 #[derive(Clone, Debug, Default)]
 pub struct OutputForms {
-    /// Each body's angle in its sense of rotation (rad).
+    /// Each turning part's angle in its sense of rotation (rad): the bodies', then the
+    /// planets'.
     pub angle: Vec<Vec<(usize, f64)>>,
-    /// Each body's speed in its sense of rotation (rad/s).
+    /// Each turning part's speed in its sense of rotation (rad/s).
     pub speed: Vec<Vec<(usize, f64)>>,
     /// Each shaft's torque (N m), in its first body's sense of rotation.
     pub shaft_torque: Vec<Vec<(usize, f64)>>,
@@ -37,7 +38,8 @@ impl OutputForms {
     pub fn of(model: &NetworkModel, mode: &NetMode, speed_rad_s: f64) -> Self {
         let l = &model.layout;
         let sense = |body: usize| model.speed_ratio[body].signum();
-        let angle = (0..l.bodies)
+        let angle = l
+            .turning()
             .map(|i| {
                 vec![
                     (l.angle(i), sense(i)),
@@ -45,9 +47,7 @@ impl OutputForms {
                 ]
             })
             .collect();
-        let speed = (0..l.bodies)
-            .map(|i| vec![(l.speed(i), sense(i))])
-            .collect();
+        let speed = l.turning().map(|i| vec![(l.speed(i), sense(i))]).collect();
         let shaft_torque = model
             .shafts
             .iter()
@@ -72,8 +72,8 @@ impl OutputForms {
         let contact = (0..model.meshes.len())
             .map(|i| mode.meshes[i].contact.sign())
             .collect();
-        // Translations are the coordinates past the bodies' rotations, x then y.
-        let translation = (l.bodies..l.coordinates)
+        // The bodies' translations follow their rotations, x then y.
+        let translation = (l.bodies..l.translations_end)
             .map(|j| vec![(l.angle(j), 1.0)])
             .collect();
         Self {
@@ -108,7 +108,7 @@ impl SampleChunk {
             len,
             count: 0,
             first_sample: 0,
-            mode: NetMode::apart(),
+            mode: NetMode::apart(0),
         }
     }
 

@@ -194,7 +194,7 @@ impl NetworkPlant {
         state.contact = flank;
         state.toothless = false;
         state.clipped = false;
-        let (_, approach_m_s) = self.model.deflection(i, &self.u);
+        let (_, approach_m_s) = self.model.deflection(i, f64::from(flank.sign()), &self.u);
         // The pair that strikes: the one coming into mesh in a double-pair stretch.
         let m = &self.model.meshes[i];
         let teeth = m.pair_teeth(m.pair_of_zone(zone));

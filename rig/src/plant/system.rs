@@ -221,7 +221,7 @@ fn exp_spans(
 /// The fastest rate (rad/s) of `model`: A's spectral radius with every mesh on its drive
 /// flank with two pairs where pairs alternate (the stiffest mode).
 pub fn fastest_rate(model: &NetworkModel) -> f64 {
-    let mut mode = NetMode::apart();
+    let mut mode = NetMode::apart(model.meshes.len());
     for (state, m) in mode.meshes.iter_mut().zip(&model.meshes) {
         state.contact = super::mode::Contact::Drive;
         state.level = if m.alternating {

@@ -389,10 +389,19 @@ impl RigTopology {
         for s in &self.frame_shafts {
             speed[s.body] = Some(0.0);
         }
+        // What the frame holds still first, then the first body left turns at 1.
+        self.propagate_speeds(&mut speed);
         let Some(reference) = speed.iter().position(Option::is_none) else {
             return speed;
         };
         speed[reference] = Some(1.0);
+        self.propagate_speeds(&mut speed);
+        speed
+    }
+
+    /// Spreads the known speeds in `speed` through every joint and stage until none
+    /// changes.
+    fn propagate_speeds(&self, speed: &mut [Option<f64>]) {
         loop {
             let mut changed = false;
             for (a, b, ratio) in self.joints() {
@@ -421,7 +430,7 @@ impl RigTopology {
                 }
             }
             if !changed {
-                return speed;
+                return;
             }
         }
     }

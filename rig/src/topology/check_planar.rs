@@ -4,9 +4,10 @@
 
 use std::f64::consts::PI;
 
-use super::check::{fault, non_negative, positive};
+use super::check::{fault, finite, non_negative, positive};
+use super::coordinates::RigCoordinates;
 use super::planetary::{MAX_PLANETS, PlanarBearing, PlanetaryStage, StageMesh};
-use super::rig_topology::RigTopology;
+use super::rig_topology::{MAX_PLANT_MESHES, RigTopology};
 use crate::error::TopologyError;
 
 impl RigTopology {
@@ -31,32 +32,81 @@ impl RigTopology {
                 ("frame_shaft", i, "damping_nms_per_rad"),
             )?;
         }
+        for (i, m) in self.meshes.iter().enumerate() {
+            finite(m.centre_line_deg, ("mesh", i, "centre_line_deg"))?;
+        }
         for (i, stage) in self.planetary.iter().enumerate() {
             check_stage(stage, i)?;
+            self.check_planet_names(stage, i)?;
+        }
+        self.check_mesh_count()
+    }
+
+    /// A stage's planets' names are not the rig's bodies'.
+    fn check_planet_names(&self, stage: &PlanetaryStage, i: usize) -> Result<(), TopologyError> {
+        for k in 0..stage.planets() {
+            let name = stage.planet_name(k);
+            if self.bodies.iter().any(|b| b.name == name) {
+                return Err(fault(
+                    "planetary",
+                    i,
+                    "name",
+                    format!(
+                        "its planet {} is `{name}`, the name of a body: rename the stage or the body",
+                        k + 1
+                    ),
+                ));
+            }
         }
         Ok(())
+    }
+
+    /// Every mesh, external and of the stages, within [`MAX_PLANT_MESHES`].
+    fn check_mesh_count(&self) -> Result<(), TopologyError> {
+        let count = self.mesh_names().len();
+        if count <= MAX_PLANT_MESHES {
+            return Ok(());
+        }
+        Err(fault(
+            "planetary",
+            self.planetary.len().saturating_sub(1),
+            "planets",
+            format!(
+                "{count} meshes (the external ones and two per planet): a rig has at most {MAX_PLANT_MESHES}"
+            ),
+        ))
     }
 }
 
 impl RigTopology {
-    /// Refuses what the time-domain plant does not step yet: planetary stages and shafts
-    /// to the frame (their natural modes are computed, `modes.rs`).
+    /// Refuses what the time-domain plant does not step yet, a planetary stage that moves
+    /// in the plane (its members on bearings or its planets on their pins' bearings; its
+    /// modes are computed, `modes.rs`), and a motor whose body the frame holds still.
     pub fn check_steppable(&self) -> Result<(), TopologyError> {
-        let pending = "the time-domain plant does not step it yet (docs/planetary.md): `modes` gives the rig's natural frequencies, while simulate, run, sweep, calibrate, the panel, SCPI, Python and the FMU refuse it";
-        if let Some(s) = self.planetary.first() {
+        let coordinates = RigCoordinates::of(self);
+        if let Some(i) = (0..self.planetary.len()).find(|&i| coordinates.stage_translates(self, i))
+        {
             return Err(fault(
                 "planetary",
-                0,
+                i,
                 "name",
-                format!("planetary stage `{}`: {pending}", s.name),
+                format!(
+                    "planetary stage `{}` moves in the plane (its sun, ring or carrier on bearings, or its planets on their pins' bearings): the time-domain plant steps stages turning about fixed axes so far (docs/planetary.md); `modes` gives this rig's planar natural frequencies",
+                    self.planetary[i].name
+                ),
             ));
         }
-        if let Some(s) = self.frame_shafts.first() {
+        if let Some(motor) = self.motor
+            && self.relative_speeds()[motor] == Some(0.0)
+        {
             return Err(fault(
-                "frame_shaft",
+                "motor",
                 0,
-                "between",
-                format!("shaft `{}` holds a body to the frame: {pending}", s.name),
+                "body",
+                format!(
+                    "the motor's body `{}` is held still by a shaft to the frame: drive a body that turns",
+                    self.bodies[motor].name
+                ),
             ));
         }
         Ok(())
@@ -151,8 +201,8 @@ fn check_teeth(s: &PlanetaryStage, i: usize) -> Result<(), TopologyError> {
             ),
         ));
     }
-    let standard = t.sun + 2 * t.planet;
-    if s.base_radii_m.is_none() && t.ring != standard {
+    let standard = u64::from(t.sun) + 2 * u64::from(t.planet);
+    if s.base_radii_m.is_none() && u64::from(t.ring) != standard {
         return Err(fault(
             "planetary",
             i,
@@ -184,7 +234,20 @@ fn check_angles(s: &PlanetaryStage, i: usize) -> Result<(), TopologyError> {
             ));
         }
     }
-    let step_deg = 360.0 / f64::from(s.teeth.sun + s.teeth.ring);
+    let step_deg = 360.0 / (f64::from(s.teeth.sun) + f64::from(s.teeth.ring));
+    let mut sorted = s.planet_angles_rad.clone();
+    sorted.sort_by(f64::total_cmp);
+    if let Some(w) = sorted.windows(2).find(|w| w[0] == w[1]) {
+        return Err(fault(
+            "planetary",
+            i,
+            field,
+            format!(
+                "two planets at {}°: each planet its own angle",
+                w[0].to_degrees()
+            ),
+        ));
+    }
     if let Some((k, deg)) = s.unassemblable() {
         return Err(fault(
             "planetary",

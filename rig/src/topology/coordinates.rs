@@ -1,5 +1,5 @@
 //! The rig's coordinates and every spring on them, in the planar lumped model of Lin &
-//! Parker (J. Sound Vib. 222(1), 1999) at zero carrier speed. Each body has its rotation
+//! Parker (J. Vib. Acoust. 121(3), 1999) at zero carrier speed. Each body has its rotation
 //! θ (rad, absolute); a body with a bearing in the plane has x and y (m) beside it; each
 //! planet of a stage has its rotation (absolute) and, on a bearing, x and y. A body or a
 //! planet without one keeps its centre where its axis holds it: a body's still, a
@@ -65,6 +65,26 @@ pub struct Coupling {
     pub stiffness: f64,
     /// Damping on its rate (N m s/rad or N s/m).
     pub damping: f64,
+}
+
+/// A mesh's deflection δ along its line of action on either flank, as terms of the
+/// coordinates: on flank f (+1 drive, −1 back) δ_f = `turning` + f · `radial`. The
+/// rotations and the translations along the tangent (cos α e_t) turn the flank's sense
+/// with it; the translations along sin α e_r part the gears on either flank (the two
+/// flanks' lines of action are mirror images about the centre line, both separating).
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct MeshForm {
+    /// The part whose sign follows the flank (m per unit coordinate).
+    pub turning: Vec<(usize, f64)>,
+    /// The part that parts the gears on either flank (m per unit coordinate).
+    pub radial: Vec<(usize, f64)>,
+}
+
+impl MeshForm {
+    /// δ on the drive flank: `turning` + `radial`, each coordinate once.
+    pub fn drive(&self) -> Vec<(usize, f64)> {
+        merged(self.turning.iter().chain(&self.radial).copied().collect())
+    }
 }
 
 /// Where a gear's coordinates sit.
@@ -182,7 +202,7 @@ impl RigCoordinates {
         out.extend(self.supports(rig));
         for (i, m) in rig.meshes.iter().enumerate() {
             out.push(coupling(
-                self.mesh_terms(rig, i),
+                self.mesh_form(rig, i).drive(),
                 m.stiffness_n_per_m,
                 m.damping_ns_per_m,
             ));
@@ -219,30 +239,32 @@ impl RigCoordinates {
         out
     }
 
-    /// External mesh `i`'s deflection δ = r_a θ_a + r_b θ_b + (d_a − d_b)·n as terms,
-    /// n = cos α e_t + sin α e_r along its centre line (the driver turning positive
-    /// pushes the driven gear along it; translations only where a gear moves in the
-    /// plane).
-    pub fn mesh_terms(&self, rig: &RigTopology, i: usize) -> Vec<(usize, f64)> {
+    /// External mesh `i`'s deflection δ = r_a θ_a + r_b θ_b + (d_a − d_b)·n, with
+    /// n = cos α e_t + sin α e_r along its centre line on the drive flank (the driver
+    /// turning positive pushes the driven gear along it; translations only where a gear
+    /// moves in the plane), as a [`MeshForm`].
+    pub fn mesh_form(&self, rig: &RigTopology, i: usize) -> MeshForm {
         let m = &rig.meshes[i];
         let [a, b] = m.gears;
         let [ra, rb] = m.base_radii_m();
         let phi = m.centre_line_deg.to_radians();
         let (s, c) = m.pressure_angle_deg.to_radians().sin_cos();
         let (er, et) = ([phi.cos(), phi.sin()], [-phi.sin(), phi.cos()]);
-        let n = [c * et[0] + s * er[0], c * et[1] + s * er[1]];
-        let mut terms = vec![(self.bodies[a].rotation, ra), (self.bodies[b].rotation, rb)];
-        terms.extend(along(&self.body_centre(a), n, 1.0));
-        terms.extend(along(&self.body_centre(b), n, -1.0));
-        terms
+        let (tangent, radial) = ([c * et[0], c * et[1]], [s * er[0], s * er[1]]);
+        let mut turning = vec![(self.bodies[a].rotation, ra), (self.bodies[b].rotation, rb)];
+        turning.extend(along(&self.body_centre(a), tangent, 1.0));
+        turning.extend(along(&self.body_centre(b), tangent, -1.0));
+        let mut parting = along(&self.body_centre(a), radial, 1.0);
+        parting.extend(along(&self.body_centre(b), radial, -1.0));
+        MeshForm {
+            turning: merged(turning),
+            radial: merged(parting),
+        }
     }
 
     /// A stage's springs: per planet its bearing on the pin (where it moves in the
     /// plane), its sun–planet and its ring–planet mesh.
     fn stage_couplings(&self, i: usize, stage: &PlanetaryStage, out: &mut Vec<Coupling>) {
-        let r = stage.radii_m();
-        let sun = self.bodies[stage.sun];
-        let ring = self.bodies[stage.ring];
         for (k, planet) in self.planets[i].iter().enumerate() {
             let pin = self.pin_centre(stage, k);
             if let (Some(bearing), Some(x)) = (&stage.planet_bearing, planet.translation) {
@@ -256,20 +278,83 @@ impl RigCoordinates {
                     ));
                 }
             }
-            let centre = self.planet_centre(planet, pin);
-            let n = stage.sun_line(k).n;
-            let mut terms = vec![(sun.rotation, r.sun), (planet.rotation, r.planet)];
-            terms.extend(along(&self.body_centre(stage.sun), n, 1.0));
-            terms.extend(along(&centre, n, -1.0));
-            let m = &stage.sun_planet;
-            out.push(coupling(terms, m.stiffness_n_per_m, m.damping_ns_per_m));
-            let n = stage.ring_line(k).n;
-            let mut terms = vec![(ring.rotation, r.ring), (planet.rotation, -r.planet)];
-            terms.extend(along(&centre, n, 1.0));
-            terms.extend(along(&self.body_centre(stage.ring), n, -1.0));
-            let m = &stage.ring_planet;
-            out.push(coupling(terms, m.stiffness_n_per_m, m.damping_ns_per_m));
+            for (ring, m) in [(false, &stage.sun_planet), (true, &stage.ring_planet)] {
+                out.push(coupling(
+                    self.stage_mesh_form(i, stage, k, ring).drive(),
+                    m.stiffness_n_per_m,
+                    m.damping_ns_per_m,
+                ));
+            }
         }
+    }
+
+    /// Stage `i`'s mesh of planet `k` with the sun (`ring` false) or the ring: δ_sp =
+    /// r_s θ_s + r_p θ_p + (d_s − d_p)·n_s, or δ_rp = r_r θ_r − r_p θ_p + (d_p − d_r)·n_r,
+    /// as a [`MeshForm`] (a pinned planet's centre its pin's, (x_c, y_c) + r_c θ_c e_t).
+    pub fn stage_mesh_form(
+        &self,
+        i: usize,
+        stage: &PlanetaryStage,
+        k: usize,
+        ring: bool,
+    ) -> MeshForm {
+        let r = stage.radii_m();
+        let planet = &self.planets[i][k];
+        let centre = self.planet_centre(planet, self.pin_centre(stage, k));
+        let n = if ring {
+            stage.ring_line(k).n
+        } else {
+            stage.sun_line(k).n
+        };
+        let (er, _) = stage.axes(k);
+        let s = stage.pressure_angle_deg.to_radians().sin();
+        let radial = [s * er[0], s * er[1]];
+        let tangent = [n[0] - radial[0], n[1] - radial[1]];
+        // The gear that pushes along n, and the one pushed.
+        let (pusher, pushed) = if ring {
+            (centre, self.body_centre(stage.ring))
+        } else {
+            (self.body_centre(stage.sun), centre)
+        };
+        let mut turning = if ring {
+            vec![
+                (self.bodies[stage.ring].rotation, r.ring),
+                (planet.rotation, -r.planet),
+            ]
+        } else {
+            vec![
+                (self.bodies[stage.sun].rotation, r.sun),
+                (planet.rotation, r.planet),
+            ]
+        };
+        turning.extend(along(&pusher, tangent, 1.0));
+        turning.extend(along(&pushed, tangent, -1.0));
+        let mut parting = along(&pusher, radial, 1.0);
+        parting.extend(along(&pushed, radial, -1.0));
+        MeshForm {
+            turning: merged(turning),
+            radial: merged(parting),
+        }
+    }
+
+    /// Planet `k` of stage `i`'s rotation coordinate.
+    pub fn planet_rotation(&self, i: usize, k: usize) -> usize {
+        self.planets[i][k].rotation
+    }
+
+    /// Whether stage `i`'s sun, ring or carrier, or a planet, moves in the plane.
+    pub fn stage_translates(&self, rig: &RigTopology, i: usize) -> bool {
+        let s = &rig.planetary[i];
+        [s.sun, s.ring, s.carrier]
+            .iter()
+            .any(|&b| self.bodies[b].translation.is_some())
+            || self.planets[i].iter().any(|p| p.translation.is_some())
+    }
+
+    /// The coordinates past the bodies' rotations that are translations of bodies (the
+    /// planets' come after them).
+    pub fn body_translations(&self) -> std::ops::Range<usize> {
+        self.bodies.len()..self.first_planet
     }
 
     /// A body's centre: its x and y where it moves in the plane, else still.
@@ -334,16 +419,21 @@ fn along(centre: &Centre, n: [f64; 2], sign: f64) -> Vec<(usize, f64)> {
 
 /// A coupling on `terms`, those of one coordinate summed.
 fn coupling(terms: Vec<(usize, f64)>, stiffness: f64, damping: f64) -> Coupling {
-    let mut merged: Vec<(usize, f64)> = Vec::with_capacity(terms.len());
-    for (j, v) in terms {
-        match merged.iter_mut().find(|(i, _)| *i == j) {
-            Some(t) => t.1 += v,
-            None => merged.push((j, v)),
-        }
-    }
     Coupling {
-        terms: merged,
+        terms: merged(terms),
         stiffness,
         damping,
     }
+}
+
+/// `terms` with those of one coordinate summed, in the order each first appears.
+fn merged(terms: Vec<(usize, f64)>) -> Vec<(usize, f64)> {
+    let mut out: Vec<(usize, f64)> = Vec::with_capacity(terms.len());
+    for (j, v) in terms {
+        match out.iter_mut().find(|(i, _)| *i == j) {
+            Some(t) => t.1 += v,
+            None => out.push((j, v)),
+        }
+    }
+    out
 }

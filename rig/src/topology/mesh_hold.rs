@@ -54,7 +54,8 @@ impl RigTopology {
 
     /// The rig's flexible modes with its meshes held as `hold` says: one part in contact
     /// or rigid (a checked rig is connected), the parts the shafts join when apart (a
-    /// part of one body has no flexible mode and is left out). Rigid and apart give no
+    /// part of one body is left out: it has no flexible mode, or held to the frame only
+    /// its own on that shaft). Rigid and apart give no
     /// part for a rig that is not torsional ([`Self::is_torsional`]).
     pub fn modal_parts(&self, hold: MeshHold) -> Vec<ModalPart> {
         if hold != MeshHold::Contact && !self.is_torsional() {

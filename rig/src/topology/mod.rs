@@ -18,7 +18,7 @@ mod modes;
 mod planetary;
 mod rig_topology;
 
-pub use coordinates::{Coordinate, CoordinateKind, Coupling, RigCoordinates};
+pub use coordinates::{Coordinate, CoordinateKind, Coupling, MeshForm, RigCoordinates};
 pub use fields::TopologyField;
 pub use mesh_hold::{MeshHold, ModalPart};
 pub use mode_kind::{ModeKind, STILL_SHARE};
@@ -28,5 +28,5 @@ pub use planetary::{
 };
 pub use rig_topology::{
     Body, DriveRatings, DriveSettings, FrameShaft, Gauge, LockedTorque, MAX_BODIES, MAX_MESHES,
-    Mesh, RigTopology, Shaft,
+    MAX_PLANT_MESHES, Mesh, RigTopology, Shaft,
 };

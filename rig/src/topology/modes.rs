@@ -36,7 +36,7 @@ impl RigTopology {
         )
     }
 
-    /// The undamped natural frequencies (Hz), ascending, rigid-body mode left out.
+    /// The undamped natural frequencies (Hz), ascending, rigid-body modes left out.
     pub fn natural_frequencies_hz(&self) -> Vec<f64> {
         self.natural_modes()
             .iter()
@@ -66,9 +66,9 @@ pub(crate) fn rigid_motions(coordinates: &RigCoordinates, couplings: &[Coupling]
     n - singular.iter().filter(|&&s| s > 1e-9 * largest).count()
 }
 
-/// Adds a spring `spring` on the deflection Σ c_i θ_i of `terms` (body, c_i) to the
-/// stiffness matrix `k`: spring·c_i·c_j at (i, j). A shaft is [(a, 1), (b, −1)], a mesh
-/// [(driver, r_b1), (driven, r_b2)].
+/// Adds a spring `spring` on the deflection Σ c_i q_i of `terms` (coordinate, c_i) to
+/// the stiffness matrix `k`: spring·c_i·c_j at (i, j). A shaft is [(a, 1), (b, −1)], a
+/// torsional mesh [(driver, r_b1), (driven, r_b2)].
 pub(crate) fn add_coupling(k: &mut DMatrix<f64>, terms: &[(usize, f64)], spring: f64) {
     for &(x, cx) in terms {
         for &(y, cy) in terms {

@@ -1,9 +1,10 @@
 //! A planetary stage: a sun, a ring and a carrier (bodies of the rig) and N planets on the
 //! carrier's pins, each planet in mesh with the sun (an external pair) and the ring (an
-//! internal pair). The geometry the planar model needs (Lin & Parker, J. Sound Vib.
-//! 222(1), 1999): base radii, the carrier's radius to the planet centres, the planets'
-//! angles ψ_k, the pressure angle α, and each mesh's line of action. Speeds by Willis's
-//! equation ω_s − ω_c = −(z_r/z_s)(ω_r − ω_c). Planets are named `<stage>_planet<k>`,
+//! internal pair). The geometry the planar model needs (Lin & Parker, J. Vib. Acoust.
+//! 121(3), 1999): base radii, the carrier's radius to the planet centres, the planets'
+//! angles ψ_k, the pressure angle α, and each mesh's line of action. Speeds by rolling on
+//! the base circles, r_s ω_s + r_r ω_r = 2 r_c cos α ω_c: Willis's equation
+//! ω_s − ω_c = −(z_r/z_s)(ω_r − ω_c) for standard gears. Planets are named `<stage>_planet<k>`,
 //! k from 1.
 
 use std::f64::consts::PI;
@@ -70,7 +71,7 @@ pub struct PlanetaryStage {
     pub ring: usize,
     /// The carrier's body.
     pub carrier: usize,
-    /// Each planet's angle ψ_k on the carrier (rad), the first at 0.
+    /// Each planet's angle ψ_k on the carrier (rad).
     pub planet_angles_rad: Vec<f64>,
     /// Each planet's moment of inertia about its pin (kg m²).
     pub planet_inertia_kgm2: f64,
@@ -127,8 +128,9 @@ impl PlanetaryStage {
 
     /// Radius of the planets' centres (m): as given, else m(z_s + z_p)/2.
     pub fn carrier_radius_m(&self) -> f64 {
-        self.carrier_radius_given_m
-            .unwrap_or_else(|| self.module_m * f64::from(self.teeth.sun + self.teeth.planet) / 2.0)
+        self.carrier_radius_given_m.unwrap_or_else(|| {
+            self.module_m * (f64::from(self.teeth.sun) + f64::from(self.teeth.planet)) / 2.0
+        })
     }
 
     /// Equally spaced planet angles 2π k/N (rad).
@@ -165,48 +167,58 @@ impl PlanetaryStage {
         ([c, s], [-s, c])
     }
 
-    /// Willis's ratio with the ring held: the carrier's speed per unit speed of the sun,
-    /// z_s / (z_s + z_r).
+    /// The carrier's speed per unit speed of the sun with the ring held.
     pub fn carrier_per_sun(&self) -> f64 {
-        let (zs, zr) = (f64::from(self.teeth.sun), f64::from(self.teeth.ring));
-        zs / (zs + zr)
+        let r = self.radii_m();
+        r.sun / self.rolling_m()
     }
 
-    /// The third of sun, ring and carrier speeds from two (rad/s), by Willis's equation
-    /// ω_s − ω_c = −(z_r/z_s)(ω_r − ω_c); `None` where fewer than two are known.
+    /// 2 r_c cos α (m): the planets roll on the sun's and the ring's base circles, so
+    /// that r_s ω_s + r_r ω_r = 2 r_c cos α ω_c (Willis's equation: for standard gears
+    /// 2 r_c cos α = r_s + r_r, and ω_s − ω_c = −(z_r/z_s)(ω_r − ω_c)). From the radii,
+    /// so that a published model's numbers turn its meshes rigidly too.
+    fn rolling_m(&self) -> f64 {
+        2.0 * self.carrier_radius_m() * self.pressure_angle_deg.to_radians().cos()
+    }
+
+    /// The third of sun, ring and carrier speeds from two (rad/s), by rolling
+    /// (Willis's equation, [`Self::rolling_m`]); `None` where fewer than two are known.
     pub fn willis(
         &self,
         sun: Option<f64>,
         ring: Option<f64>,
         carrier: Option<f64>,
     ) -> Option<[f64; 3]> {
-        let q = f64::from(self.teeth.ring) / f64::from(self.teeth.sun);
+        let r = self.radii_m();
+        let (a, b, c) = (r.sun, r.ring, self.rolling_m());
         match (sun, ring, carrier) {
-            (Some(s), Some(r), Some(c)) => Some([s, r, c]),
-            (Some(s), Some(r), None) => Some([s, r, (s + q * r) / (1.0 + q)]),
-            (Some(s), None, Some(c)) => Some([s, c - (s - c) / q, c]),
-            (None, Some(r), Some(c)) => Some([c - q * (r - c), r, c]),
+            (Some(s), Some(r), Some(w)) => Some([s, r, w]),
+            (Some(s), Some(r), None) => Some([s, r, (a * s + b * r) / c]),
+            (Some(s), None, Some(w)) => Some([s, (c * w - a * s) / b, w]),
+            (None, Some(r), Some(w)) => Some([(c * w - b * r) / a, r, w]),
             _ => None,
         }
     }
 
-    /// A planet's speed (rad/s) from the sun's and the carrier's: the planet turns
-    /// against the sun relative to the carrier, ω_p − ω_c = −(z_s/z_p)(ω_s − ω_c).
+    /// A planet's absolute speed (rad/s) from the sun's and the carrier's: it rolls on
+    /// the sun, r_s ω_s + r_p ω_p = r_c cos α ω_c.
     pub fn planet_speed(&self, sun: f64, carrier: f64) -> f64 {
-        let ratio = f64::from(self.teeth.sun) / f64::from(self.teeth.planet);
-        carrier - ratio * (sun - carrier)
+        let r = self.radii_m();
+        let rc = self.carrier_radius_m() * self.pressure_angle_deg.to_radians().cos();
+        (rc * carrier - r.sun * sun) / r.planet
     }
 
     /// The planet angle (degrees, from the first) nearest to which planet `k` cannot be
     /// assembled, if it cannot: equal tooth phasing needs (z_s + z_r) ψ_k / 2π whole
     /// (Parker & Lin 2004), within 1e-6 of a tooth.
     pub fn unassemblable(&self) -> Option<(usize, f64)> {
-        let teeth = f64::from(self.teeth.sun + self.teeth.ring);
+        let teeth = f64::from(self.teeth.sun) + f64::from(self.teeth.ring);
+        let first = *self.planet_angles_rad.first()?;
         self.planet_angles_rad
             .iter()
             .enumerate()
             .find_map(|(k, &psi)| {
-                let phase = teeth * psi / (2.0 * PI);
+                let phase = teeth * (psi - first) / (2.0 * PI);
                 ((phase - phase.round()).abs() > 1e-6).then_some((k, psi.to_degrees()))
             })
     }
@@ -278,7 +290,7 @@ mod tests {
         let [_, ring, _] = s.willis(Some(1.0), None, Some(carrier)).unwrap();
         assert!(ring.abs() < 1e-14);
         // Rigid rotation: all three at one speed.
-        assert_eq!(s.willis(Some(2.0), Some(2.0), None).unwrap()[2], 2.0);
+        assert!((s.willis(Some(2.0), Some(2.0), None).unwrap()[2] - 2.0).abs() < 1e-15);
     }
 
     /// With the ring held a planet rolls on it: its pitch point on the ring is still,
@@ -329,5 +341,8 @@ mod tests {
         let mut s = stage(3);
         s.planet_angles_rad[2] = 241f64.to_radians();
         assert_eq!(s.unassemblable().map(|(k, _)| k), Some(2));
+        // Turned as a whole, a good arrangement stays good.
+        s.planet_angles_rad = [10.0, 130.0, 250.0].map(f64::to_radians).to_vec();
+        assert_eq!(s.unassemblable(), None);
     }
 }

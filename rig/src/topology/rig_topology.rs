@@ -16,8 +16,11 @@ use super::planetary::{PlanarBearing, PlanetaryStage};
 
 /// Most bodies a rig may have.
 pub const MAX_BODIES: usize = 32;
-/// Most meshes a rig may have.
+/// Most external meshes a rig may have.
 pub const MAX_MESHES: usize = 4;
+/// Most meshes of every kind a rig may have: external meshes and each planetary stage's
+/// sun–planet and ring–planet meshes.
+pub const MAX_PLANT_MESHES: usize = 20;
 
 /// One rotating inertia.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -367,6 +370,28 @@ pub struct RigTopology {
 }
 
 impl RigTopology {
+    /// Every mesh's name as the plant orders them: the external meshes, then each
+    /// stage's `<stage>_sun_planet<k>` and `<stage>_ring_planet<k>`, k from 1.
+    pub fn mesh_names(&self) -> Vec<String> {
+        let mut names: Vec<String> = self.meshes.iter().map(|m| m.name.clone()).collect();
+        for s in &self.planetary {
+            for kind in ["sun", "ring"] {
+                names.extend((1..=s.planets()).map(|k| format!("{}_{kind}_planet{k}", s.name)));
+            }
+        }
+        names
+    }
+
+    /// Every turning part's name as the plant orders them: the bodies, then each stage's
+    /// planets.
+    pub fn turning_names(&self) -> Vec<String> {
+        let mut names: Vec<String> = self.bodies.iter().map(|b| b.name.clone()).collect();
+        for s in &self.planetary {
+            names.extend((0..s.planets()).map(|k| s.planet_name(k)));
+        }
+        names
+    }
+
     /// F. Basmaji's rig (PhD thesis, The City University, London, 1983), whose ch. IV
     /// findings its sweeps are held against.
     pub const BASMAJI_1983: &'static str = "basmaji-1983";
