@@ -414,3 +414,63 @@ fn a_planetary_stage_conserves_energy_through_impacts_without_damping() {
     assert!(impacts > 50, "only {impacts} impacts");
     assert!(worst < 1e-9, "energy drifts by {worst:e}");
 }
+
+#[test]
+fn a_pin_error_shares_the_load_unequally_as_the_static_solution_says() {
+    // Planet 1's pin 0.1 µm ahead: both its meshes relax by e cos α. The central members
+    // are rigid rotations, so every planet's two meshes in series (k_sp k_rp/(k_sp +
+    // k_rp)) close the same gap less their own 2 e cos α: F_k = T_s/(N r_s) − 2 k_path
+    // cos α (e_k − ē), the sum still T_s / r_s.
+    let text = std::fs::read_to_string(bench_path())
+        .expect("shipped bench")
+        .replacen(
+            "planet_inertia_kgm2 = 0.0015\n",
+            "planet_inertia_kgm2 = 0.0015\nplanet_pin_errors_um = [0.1, 0.0, 0.0]\n",
+            1,
+        );
+    let dir = folder("planetary-pin-error");
+    let rig = dir.join("pin.toml");
+    std::fs::write(&rig, text).expect("written");
+    let out = dir.join("out");
+    let run = testrig(&[
+        "simulate",
+        "--rig",
+        rig.to_str().expect("utf-8"),
+        "--rpm",
+        "1500",
+        "--load",
+        "50",
+        "--settle",
+        "2",
+        "--duration",
+        "0.5",
+        "--out",
+        out.to_str().expect("utf-8"),
+    ]);
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    let at = last_sample(&out);
+    let cos = 20f64.to_radians().cos();
+    let rs = 0.003 * 24.0 * cos / 2.0;
+    let path = 4.0e8 * 4.5e8 / (4.0e8 + 4.5e8);
+    let errors = [0.1e-6, 0.0, 0.0];
+    let mean = errors.iter().sum::<f64>() / 3.0;
+    let input = at("torque_input_nm");
+    for (k, e) in errors.iter().enumerate() {
+        let expected = input / (3.0 * rs) - 2.0 * path * cos * (e - mean);
+        for kind in ["sun", "ring"] {
+            let force = at(&format!("force_epi_{kind}_planet{}_n", k + 1));
+            assert!(
+                (force - expected).abs() < 1e-9 * expected,
+                "{kind} mesh of planet {}: {force} N, the static solution {expected} N",
+                k + 1
+            );
+        }
+    }
+    // The planet ahead carries less: about 26 N of the 98.5 N share.
+    let first = at("force_epi_sun_planet1_n");
+    assert!(first < 75.0 && first > 70.0, "{first}");
+}

@@ -389,6 +389,7 @@ fn planetary_span(p: &PlanetaryToml, field: &str) -> Range<usize> {
             .as_ref()
             .map_or(Some(p.planets.span()), |a| Some(a.span())),
         "planet_inertia_kgm2" => Some(p.planet_inertia_kgm2.span()),
+        "planet_pin_errors_um" => p.planet_pin_errors_um.as_ref().map(Spanned::span),
         "planet_mass_kg" => given(&p.planet_mass_kg),
         "planet_bearing_stiffness_n_per_m" => given(&p.planet_bearing_stiffness_n_per_m),
         "planet_bearing_damping_ns_per_m" => given(&p.planet_bearing_damping_ns_per_m),

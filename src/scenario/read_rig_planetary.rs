@@ -36,6 +36,7 @@ pub(super) fn planetary_stage(
         carrier: body(&p.carrier, &field("carrier"))?,
         planet_angles_rad: planet_angles(src, p, &field("planet_angles_deg"))?,
         planet_inertia_kgm2: *p.planet_inertia_kgm2.get_ref(),
+        planet_pin_errors_um: pin_errors(src, p, &field("planet_pin_errors_um"))?,
         planet_bearing: planar_bearing(
             src,
             [&p.planet_mass_kg, &p.planet_bearing_stiffness_n_per_m],
@@ -87,6 +88,25 @@ fn planet_angles(src: &ScenarioSource, p: &PlanetaryToml, field: &str) -> anyhow
         ));
     }
     Ok(given.get_ref().iter().map(|d| d.to_radians()).collect())
+}
+
+/// The planets' pin errors (µm): one per planet, or none.
+fn pin_errors(src: &ScenarioSource, p: &PlanetaryToml, field: &str) -> anyhow::Result<Vec<f64>> {
+    let Some(given) = &p.planet_pin_errors_um else {
+        return Ok(Vec::new());
+    };
+    let planets = *p.planets.get_ref() as usize;
+    if given.get_ref().len() != planets {
+        return Err(src.error(
+            given.span(),
+            field,
+            format!(
+                "{} errors for {planets} planets: one pin error (µm) per planet",
+                given.get_ref().len()
+            ),
+        ));
+    }
+    Ok(given.get_ref().clone())
 }
 
 /// A bearing in the plane from its mass and stiffness (both, or neither: `None`) and

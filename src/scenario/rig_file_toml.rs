@@ -229,6 +229,9 @@ pub struct PlanetaryToml {
     pub planet_angles_deg: Option<Spanned<Vec<f64>>>,
     /// Each planet's moment of inertia (kg m²).
     pub planet_inertia_kgm2: Spanned<f64>,
+    /// Each planet's tangential pin position error (µm); none when left out.
+    #[serde(default)]
+    pub planet_pin_errors_um: Option<Spanned<Vec<f64>>>,
     /// Each planet's mass (kg): with `planet_bearing_stiffness_n_per_m`, planets move on
     /// their pins' bearings.
     #[serde(default)]

@@ -27,6 +27,9 @@ pub struct MeshModel {
     pub turning: Vec<(usize, f64)>,
     /// The translations along the centre line, which part the gears on either flank.
     pub radial: Vec<(usize, f64)>,
+    /// A constant displacement along the line of action (m; a planet's pin error, −e cos α
+    /// on both its meshes, negated with the radii; 0 for an external mesh).
+    pub offset_m: f64,
     /// One pair's stiffness along the line of action (N/m).
     pub stiffness_n_per_m: f64,
     /// One pair's damping along the line of action (N s/m).
@@ -104,6 +107,7 @@ impl MeshModel {
                 .map(|(j, c)| (j, c * sense))
                 .collect(),
             radial: form.radial,
+            offset_m: 0.0,
             stiffness_n_per_m: m.stiffness_n_per_m,
             damping_ns_per_m: m.damping_ns_per_m,
             half_backlash_m: m.half_backlash_m(),
@@ -132,20 +136,23 @@ impl MeshModel {
         }
     }
 
-    /// A planetary stage's mesh between a planet and the sun (`ring` false) or the
+    /// A planetary stage's mesh between planet `k` and the sun (`ring` false) or the
     /// ring: one pair always, healthy, its deflection's `form` for the sun turning
     /// forward against the carrier, negated by `sense` (−1 where it turns back), its
     /// gears the sun and the planet's rotation coordinate `planet` (or the planet and the
-    /// ring) with their shares in `speed_ratio`.
+    /// ring) with their shares in `speed_ratio`, the planet's pin error along both lines.
     pub fn of_stage(
         stage: &PlanetaryStage,
         ring: bool,
-        planet: usize,
+        (k, planet): (usize, usize),
         form: MeshForm,
         sense: f64,
         speed_ratio: &[f64],
     ) -> Self {
         let r = stage.radii_m();
+        // The pin e ahead along e_t: the planet's centre's e cos α along both lines.
+        let pin_error_m = stage.planet_pin_errors_um.get(k).copied().unwrap_or(0.0) * 1e-6;
+        let offset_m = -sense * pin_error_m * stage.pressure_angle_deg.to_radians().cos();
         let (mesh, gears, radii, teeth) = if ring {
             let t = [stage.teeth.planet, stage.teeth.ring];
             (
@@ -169,6 +176,7 @@ impl MeshModel {
                 .map(|(j, c)| (j, c * sense))
                 .collect(),
             radial: form.radial,
+            offset_m,
             stiffness_n_per_m: mesh.stiffness_n_per_m,
             damping_ns_per_m: mesh.damping_ns_per_m,
             half_backlash_m,
@@ -205,6 +213,7 @@ impl MeshModel {
     /// the spacing error of the pair in mesh there.
     pub fn start_offset_m(&self, flank: f64) -> f64 {
         -flank * (self.half_backlash_m - self.variation_m)
+            + self.offset_m
             + self.te_once_m
             + self.te_mesh_m
             + self.run_out_driven_m

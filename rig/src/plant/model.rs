@@ -52,7 +52,7 @@ fn stage_meshes(
                 out.push(MeshModel::of_stage(
                     stage,
                     ring,
-                    planet,
+                    (k, planet),
                     form,
                     sense,
                     speed_ratio,
@@ -229,7 +229,7 @@ impl NetworkModel {
         let l = &self.layout;
         let m = &self.meshes[mesh];
         let (delta, rate) = self.deflection(mesh, flank, u);
-        let mut overlap = delta - flank * m.half_backlash_m;
+        let mut overlap = delta - flank * m.half_backlash_m + m.offset_m;
         let mut overlap_rate = rate;
         let w = m.share * speed_rad_s;
         if let Some(rev) = l.revolution[mesh] {
@@ -426,7 +426,7 @@ impl NetworkModel {
             .map(|(j, c)| (l.angle(j), c, 0.0))
             .chain(m.terms(flank).map(|(j, c)| (l.speed(j), 0.0, c)))
             .collect();
-        terms.push((l.unit(), -flank * m.half_backlash_m, 0.0));
+        terms.push((l.unit(), -flank * m.half_backlash_m + m.offset_m, 0.0));
         let w = m.share * speed_rad_s;
         if let Some(rev) = l.revolution[mesh] {
             let amplitude = m.te_once_m + flank * m.variation_m;

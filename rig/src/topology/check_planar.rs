@@ -148,6 +148,20 @@ fn check_stage(s: &PlanetaryStage, i: usize) -> Result<(), TopologyError> {
         s.planet_inertia_kgm2,
         ("planetary", i, "planet_inertia_kgm2"),
     )?;
+    for &e in &s.planet_pin_errors_um {
+        // Within a tenth of a module: an error of position, not another geometry.
+        if !(e.is_finite() && e.abs() <= s.module_m * 1e5) {
+            return Err(fault(
+                "planetary",
+                i,
+                "planet_pin_errors_um",
+                format!(
+                    "{e}: a pin error lies within a tenth of the module, ±{} µm",
+                    s.module_m * 1e5
+                ),
+            ));
+        }
+    }
     if let Some(bearing) = &s.planet_bearing {
         check_bearing(
             bearing,

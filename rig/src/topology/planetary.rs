@@ -75,6 +75,10 @@ pub struct PlanetaryStage {
     pub planet_angles_rad: Vec<f64>,
     /// Each planet's moment of inertia about its pin (kg m²).
     pub planet_inertia_kgm2: f64,
+    /// Each planet's pin position error (µm, tangential: positive ahead of its place in
+    /// the carrier's turning sense); empty: none.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub planet_pin_errors_um: Vec<f64>,
     /// Each planet's translation on its pin's bearing; `None`: planets held rigidly on
     /// their pins (they move with the carrier).
     pub planet_bearing: Option<PlanarBearing>,
@@ -261,6 +265,7 @@ mod tests {
             carrier: 2,
             planet_angles_rad: PlanetaryStage::equally_spaced_rad(planets),
             planet_inertia_kgm2: 1e-3,
+            planet_pin_errors_um: Vec::new(),
             planet_bearing: None,
             teeth: StageTeeth {
                 sun: 24,
