@@ -302,6 +302,36 @@ fn a_pair_on_bearings_runs_through_simulate_with_its_translations_as_signals() {
     assert!(head.contains(&"y_pinion1_m"));
 }
 
+/// Runs `simulate --rig rig` at `rpm` and `load` N m, settled `settle` s, for `seconds`,
+/// its signals into `out` (fails with its stderr if refused).
+fn simulate(
+    rig: &str,
+    (rpm, load): (&str, &str),
+    (settle, seconds): (&str, &str),
+    out: &std::path::Path,
+) {
+    let run = testrig(&[
+        "simulate",
+        "--rig",
+        rig,
+        "--rpm",
+        rpm,
+        "--load",
+        load,
+        "--settle",
+        settle,
+        "--duration",
+        seconds,
+        "--out",
+        out.to_str().expect("utf-8"),
+    ]);
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+}
+
 fn bench_path() -> &'static str {
     concat!(
         env!("CARGO_MANIFEST_DIR"),
@@ -332,26 +362,7 @@ fn last_sample(dir: &std::path::Path) -> impl Fn(&str) -> f64 {
 fn a_planetary_bench_turns_by_willis_balances_its_torques_and_shares_its_load_equally() {
     let dir = folder("planetary-bench");
     let out = dir.join("out");
-    let run = testrig(&[
-        "simulate",
-        "--rig",
-        bench_path(),
-        "--rpm",
-        "1500",
-        "--load",
-        "50",
-        "--settle",
-        "2",
-        "--duration",
-        "1",
-        "--out",
-        out.to_str().expect("utf-8"),
-    ]);
-    assert!(
-        run.status.success(),
-        "{}",
-        String::from_utf8_lossy(&run.stderr)
-    );
+    simulate(bench_path(), ("1500", "50"), ("2", "1"), &out);
     let at = last_sample(&out);
     // Willis with the ring held: the carrier at z_s/(z_s + z_r) = 1/5 of the sun, each
     // planet at r_s/(2 r_p) = 1/3 of it the other way (in its own sense, positive).
@@ -432,25 +443,11 @@ fn a_pin_error_shares_the_load_unequally_as_the_static_solution_says() {
     let rig = dir.join("pin.toml");
     std::fs::write(&rig, text).expect("written");
     let out = dir.join("out");
-    let run = testrig(&[
-        "simulate",
-        "--rig",
+    simulate(
         rig.to_str().expect("utf-8"),
-        "--rpm",
-        "1500",
-        "--load",
-        "50",
-        "--settle",
-        "2",
-        "--duration",
-        "0.5",
-        "--out",
-        out.to_str().expect("utf-8"),
-    ]);
-    assert!(
-        run.status.success(),
-        "{}",
-        String::from_utf8_lossy(&run.stderr)
+        ("1500", "50"),
+        ("2", "0.5"),
+        &out,
     );
     let at = last_sample(&out);
     let cos = 20f64.to_radians().cos();

@@ -101,11 +101,7 @@ impl MeshModel {
         MeshModel {
             gears: m.gears,
             radii_m: m.base_radii_m().map(|r| r * sense),
-            turning: form
-                .turning
-                .into_iter()
-                .map(|(j, c)| (j, c * sense))
-                .collect(),
+            turning: form.sensed(sense),
             radial: form.radial,
             offset_m: 0.0,
             stiffness_n_per_m: m.stiffness_n_per_m,
@@ -170,11 +166,7 @@ impl MeshModel {
         MeshModel {
             gears,
             radii_m: radii.map(|x| x * sense),
-            turning: form
-                .turning
-                .into_iter()
-                .map(|(j, c)| (j, c * sense))
-                .collect(),
+            turning: form.sensed(sense),
             radial: form.radial,
             offset_m,
             stiffness_n_per_m: mesh.stiffness_n_per_m,

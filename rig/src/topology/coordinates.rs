@@ -81,6 +81,12 @@ pub struct MeshForm {
 }
 
 impl MeshForm {
+    /// The turning part times `sense` (−1 where the driver turns against the motor, so
+    /// that the drive flank is the one forward motion presses).
+    pub fn sensed(&self, sense: f64) -> Vec<(usize, f64)> {
+        self.turning.iter().map(|&(j, c)| (j, c * sense)).collect()
+    }
+
     /// δ on the drive flank: `turning` + `radial`, each coordinate once.
     pub fn drive(&self) -> Vec<(usize, f64)> {
         merged(self.turning.iter().chain(&self.radial).copied().collect())
