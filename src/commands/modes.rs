@@ -16,7 +16,7 @@ pub fn run(args: &ModesArgs) -> anyhow::Result<()> {
     )?;
     let contact = first_part(&rig, MeshHold::Contact);
     // Lin & Parker's kinds, for a rig that moves in the plane.
-    let kinds = (!rig.is_torsional()).then(|| rig.mode_kinds());
+    let kinds = (!rig.is_torsional()).then(|| rig.mode_kinds(&contact.modes));
     let rigid = rig.modal_parts(MeshHold::Rigid).into_iter().next();
     let apart = rig.modal_parts(MeshHold::Apart);
     if args.json {

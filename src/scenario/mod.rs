@@ -11,7 +11,7 @@
 //! `read_instrument.rs` (a filter's or meter's settings from its table); `preset_file.rs`
 //! presets from files and `preset_with_overrides` (every command's `--preset` and `--set`);
 //! `builtin_rigs.rs` presets that are rig files, built in; `read_rig_file.rs` a rig file
-//! to a checked `rig::RigTopology`, `rig_overrides.rs` its values set by path, `read_rig_mesh.rs` its meshes and their faults, `read_rig_planetary.rs` its planetary stages, bearings in the plane and shafts to the frame; `run_plan.rs` the result; `build.rs` it all together; `coverage.rs` whether each
+//! to a checked `rig::RigTopology`, `rig_overrides.rs` its values set by path, `read_rig_mesh.rs` its meshes and their faults, `read_rig_planetary.rs` its planetary stages, bearings in the plane and shafts to the frame, `rig_fault_place.rs` where a check's fault lies in it; `run_plan.rs` the result; `build.rs` it all together; `coverage.rs` whether each
 //! measurement fits the run
 
 pub(crate) mod build;
@@ -30,6 +30,7 @@ pub(crate) mod read_rig_mesh;
 pub(crate) mod read_rig_planetary;
 pub(crate) mod read_stages;
 pub(crate) mod rig_chain;
+pub(crate) mod rig_fault_place;
 pub(crate) mod rig_file_toml;
 pub(crate) mod rig_overrides;
 pub(crate) mod run_plan;

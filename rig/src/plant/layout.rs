@@ -49,10 +49,9 @@ pub struct NetLayout {
 }
 
 impl NetLayout {
-    /// The layout of `rig`.
-    pub fn new(rig: &RigTopology) -> Self {
+    /// The layout of `rig`, whose coordinates are `all`.
+    pub fn new(rig: &RigTopology, all: &RigCoordinates) -> Self {
         let bodies = rig.bodies.len();
-        let all = RigCoordinates::of(rig);
         let coordinates = all.len();
         let translations_end = all.body_translations().end;
         let mut len = 2 * coordinates + 2 + 8;

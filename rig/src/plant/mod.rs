@@ -8,8 +8,8 @@
 //! pair, the set rotation, the meshes' harmonic pairs and spacing errors). `mode.rs` the
 //! discrete state (each mesh apart / drive / back, clipped under the no-pull law, its
 //! pairs one, two or a step of a smoothed change; the motor linear or at a limit).
-//! `model.rs` the constants of a topology (the gear errors included) and A of u' = A u
-//! per mode, `drive_model.rs` the motor's and the brake's (drag, characteristic), `mesh_model.rs` a mesh's constants (its pair zones,
+//! `model.rs` the constants of a topology (the gear errors included) and its forms,
+//! `system_matrix.rs` A of u' = A u per mode, `drive_model.rs` the motor's and the brake's (drag, characteristic), `mesh_model.rs` a mesh's constants (its pair zones,
 //! its faulted teeth's factors). `events.rs` the switching functions of a mode.
 //! `system.rs` per mode the fused step (e^{A h}'s mechanical rows with the fixed-target
 //! functions' values and rates) and the events, `system_cache.rs` them built on first
@@ -44,6 +44,7 @@ mod segment;
 mod stepping;
 mod system;
 mod system_cache;
+mod system_matrix;
 mod teeth;
 
 pub use block::{NetworkBlock, NetworkImpact};

@@ -3,7 +3,8 @@
 //! describes it (bodies, shafts, meshes, motor, brake, drive); `check.rs` what makes it one
 //! the plant can run, each fault at its item and field (`check_planar.rs` for bearings,
 //! shafts to the frame and planetary stages); `fields.rs` every number by its
-//! path, with unit and meaning; `planetary.rs` a planetary stage's geometry and speeds;
+//! path, with unit and meaning; `planetary.rs` a planetary stage's geometry and speeds; `speeds.rs` each body's share
+//! of the motor's speed;
 //! `coordinates.rs` the rig's coordinates in the plane and its stiffness on them;
 //! `modes.rs` its undamped natural modes, `mode_kind.rs` their kinds in a planetary stage; `mesh_hold.rs` those with its meshes in
 //! contact, rigid or apart.
@@ -17,6 +18,7 @@ mod mode_kind;
 mod modes;
 mod planetary;
 mod rig_topology;
+mod speeds;
 
 pub use coordinates::{Coordinate, CoordinateKind, Coupling, MeshForm, RigCoordinates};
 pub use fields::TopologyField;

@@ -30,13 +30,11 @@ pub enum ModeKind {
 }
 
 impl RigTopology {
-    /// The kind of each flexible mode ([`Self::natural_modes`]), in the same order.
-    pub fn mode_kinds(&self) -> Vec<ModeKind> {
+    /// The kind of each of `modes`, the rig's flexible modes ([`Self::natural_modes`]),
+    /// in the same order.
+    pub fn mode_kinds(&self, modes: &[NaturalMode]) -> Vec<ModeKind> {
         let coordinates = RigCoordinates::of(self);
-        self.natural_modes()
-            .iter()
-            .map(|m| kind_of(&coordinates, m))
-            .collect()
+        modes.iter().map(|m| kind_of(&coordinates, m)).collect()
     }
 }
 

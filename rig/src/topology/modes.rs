@@ -17,22 +17,18 @@ impl RigTopology {
     /// contact (N m/rad, N/m).
     pub fn stiffness_matrix(&self) -> DMatrix<f64> {
         let coordinates = RigCoordinates::of(self);
-        let n = coordinates.len();
-        let mut k = DMatrix::zeros(n, n);
-        for c in coordinates.couplings(self) {
-            add_coupling(&mut k, &c.terms, c.stiffness);
-        }
-        k
+        stiffness_of(coordinates.len(), &coordinates.couplings(self))
     }
 
     /// The flexible modes in ascending frequency, each shape over the rig's coordinates
     /// (rad for rotations, m for translations).
     pub fn natural_modes(&self) -> Vec<NaturalMode> {
         let coordinates = RigCoordinates::of(self);
+        let couplings = coordinates.couplings(self);
         free_modes(
-            &self.stiffness_matrix(),
+            &stiffness_of(coordinates.len(), &couplings),
             &coordinates.masses(),
-            rigid_motions(&coordinates, &coordinates.couplings(self)),
+            rigid_motions(&coordinates, &couplings),
         )
     }
 
@@ -43,6 +39,15 @@ impl RigTopology {
             .map(|m| m.frequency_hz)
             .collect()
     }
+}
+
+/// The stiffness matrix of `couplings` on `n` coordinates: Σ k g gᵀ.
+fn stiffness_of(n: usize, couplings: &[Coupling]) -> DMatrix<f64> {
+    let mut k = DMatrix::zeros(n, n);
+    for c in couplings {
+        add_coupling(&mut k, &c.terms, c.stiffness);
+    }
+    k
 }
 
 /// How many independent motions of the coordinates no spring resists (the rigid-body
