@@ -100,6 +100,36 @@ fn bad_stages_are_refused_at_their_line_naming_the_field_and_what_is_allowed() {
             "ring_planet",
             vec!["planetary `epi`.ring_planet", "> 0"],
         ),
+        (
+            "fault-on-a-planet-not-there",
+            "ring_planet = { stiffness_n_per_m = 5.0e8, backlash_mm = 0.1 }\n",
+            "ring_planet = { stiffness_n_per_m = 5.0e8, backlash_mm = 0.1 }\n\n[[planetary.fault]]\ngear = \"planet4\"\ntooth = 1\nkind = \"crack\"\nseverity = 0.2\n",
+            "gear = ",
+            vec![
+                "planetary.fault.gear",
+                "`sun`, `ring` or `planet1` to `planet3`",
+            ],
+        ),
+        (
+            "fault-past-the-ring-teeth",
+            "ring_planet = { stiffness_n_per_m = 5.0e8, backlash_mm = 0.1 }\n",
+            "ring_planet = { stiffness_n_per_m = 5.0e8, backlash_mm = 0.1 }\n\n[[planetary.fault]]\ngear = \"ring\"\ntooth = 97\nkind = \"pit\"\nseverity = 0.2\n",
+            "tooth = ",
+            vec![
+                "planetary.fault.tooth",
+                "97: the ring gear has teeth 1 to 96",
+            ],
+        ),
+        (
+            "pairs-misspelt",
+            "sun_planet = { stiffness_n_per_m = 5.0e8, backlash_mm = 0.1 }",
+            "sun_planet = { stiffness_n_per_m = 5.0e8, backlash_mm = 0.1, pairs = \"two\" }",
+            "sun_planet",
+            vec![
+                "planetary `epi`.sun_planet.pairs",
+                "one of single, alternating",
+            ],
+        ),
     ];
     for (name, from, to, line_start, says) in cases {
         assert!(good.contains(from), "{name}: {from:?} not in the file");
@@ -332,11 +362,23 @@ fn simulate(
     );
 }
 
-fn bench_path() -> &'static str {
-    concat!(
+/// The shipped bench with one pair always in each mesh (its static solutions and its
+/// energy need a stiffness that does not change in contact).
+fn single_pair_bench() -> String {
+    let path = concat!(
         env!("CARGO_MANIFEST_DIR"),
         "/scenarios/rigs/planetary-bench.toml"
-    )
+    );
+    let text = std::fs::read_to_string(path).expect("shipped bench");
+    assert!(text.contains(", pairs = \"alternating\""));
+    text.replace(", pairs = \"alternating\"", "")
+}
+
+/// `text` written as `name`.toml in `dir`: its path.
+fn written(dir: &std::path::Path, name: &str, text: &str) -> String {
+    let path = dir.join(format!("{name}.toml"));
+    std::fs::write(&path, text).expect("written");
+    path.to_str().expect("utf-8").to_string()
 }
 
 /// The last sample of `signals.csv` in `dir`, by column name.
@@ -362,7 +404,8 @@ fn last_sample(dir: &std::path::Path) -> impl Fn(&str) -> f64 {
 fn a_planetary_bench_turns_by_willis_balances_its_torques_and_shares_its_load_equally() {
     let dir = folder("planetary-bench");
     let out = dir.join("out");
-    simulate(bench_path(), ("1500", "50"), ("2", "1"), &out);
+    let rig = written(&dir, "bench", &single_pair_bench());
+    simulate(&rig, ("1500", "50"), ("2", "1"), &out);
     let at = last_sample(&out);
     // Willis with the ring held: the carrier at z_s/(z_s + z_r) = 1/5 of the sun, each
     // planet at r_s/(2 r_p) = 1/3 of it the other way (in its own sense, positive).
@@ -390,7 +433,7 @@ fn a_planetary_bench_turns_by_willis_balances_its_torques_and_shares_its_load_eq
 
 #[test]
 fn a_planetary_stage_conserves_energy_through_impacts_without_damping() {
-    let text = std::fs::read_to_string(bench_path()).expect("shipped bench");
+    let text = single_pair_bench();
     // No damping, no motor, no brake: the stage knocked at rest rattles in its backlash.
     let cut = text.find("[motor]").expect("the motor's table");
     let free = text[..cut]
@@ -432,19 +475,15 @@ fn a_pin_error_shares_the_load_unequally_as_the_static_solution_says() {
     // are rigid rotations, so every planet's two meshes in series (k_sp k_rp/(k_sp +
     // k_rp)) close the same gap less their own 2 e cos α: F_k = T_s/(N r_s) − 2 k_path
     // cos α (e_k − ē), the sum still T_s / r_s.
-    let text = std::fs::read_to_string(bench_path())
-        .expect("shipped bench")
-        .replacen(
-            "planet_inertia_kgm2 = 0.0015\n",
-            "planet_inertia_kgm2 = 0.0015\nplanet_pin_errors_um = [0.1, 0.0, 0.0]\n",
-            1,
-        );
+    let text = single_pair_bench().replacen(
+        "planet_inertia_kgm2 = 0.0015\n",
+        "planet_inertia_kgm2 = 0.0015\nplanet_pin_errors_um = [0.1, 0.0, 0.0]\n",
+        1,
+    );
     let dir = folder("planetary-pin-error");
-    let rig = dir.join("pin.toml");
-    std::fs::write(&rig, text).expect("written");
     let out = dir.join("out");
     simulate(
-        rig.to_str().expect("utf-8"),
+        &written(&dir, "pin", &text),
         ("1500", "50"),
         ("2", "0.5"),
         &out,

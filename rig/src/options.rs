@@ -16,10 +16,11 @@ pub enum ContactLaw {
 }
 
 /// How many tooth pairs share the load while the teeth are in contact.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum MeshPairs {
     /// One pair always (the thesis: contact ratio taken as 1).
+    #[default]
     Single,
     /// One or two pairs alternating within each tooth period as the contact ratio
     /// computed from the gear geometry says (thesis recommendation 4).

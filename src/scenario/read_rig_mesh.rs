@@ -243,16 +243,35 @@ fn checked_fault(
     teeth: [u32; 2],
     table: &str,
 ) -> anyhow::Result<ToothFault> {
-    let (gear, z) = match f.gear.get_ref().as_str() {
-        "driver" => (FaultedGear::Driver, teeth[0]),
-        "driven" => (FaultedGear::Driven, teeth[1]),
-        other => {
-            return Err(src.error(
-                f.gear.span(),
-                &format!("{table}.gear"),
-                format!("`{other}`: the fault's gear is `driver` or `driven`"),
-            ));
-        }
+    let gear = |name: &str| match name {
+        "driver" => Some((FaultedGear::Driver, teeth[0])),
+        "driven" => Some((FaultedGear::Driven, teeth[1])),
+        _ => None,
+    };
+    let (gear, tooth, kind, severity) = fault_fields(src, f, table, gear, "`driver` or `driven`")?;
+    Ok(ToothFault {
+        gear,
+        tooth,
+        kind,
+        severity,
+    })
+}
+
+/// A fault's gear (`gear` names it and its teeth, else it is not one of `gears`), tooth,
+/// kind and severity, each refused at its place (`table` names it).
+pub(super) fn fault_fields<G>(
+    src: &ScenarioSource,
+    f: &FaultToml,
+    table: &str,
+    gear: impl Fn(&str) -> Option<(G, u32)>,
+    gears: &str,
+) -> anyhow::Result<(G, u32, FaultKind, f64)> {
+    let Some((gear, z)) = gear(f.gear.get_ref()) else {
+        return Err(src.error(
+            f.gear.span(),
+            &format!("{table}.gear"),
+            format!("`{}`: the fault's gear is {gears}", f.gear.get_ref()),
+        ));
     };
     let kind = FaultKind::parse(f.kind.get_ref()).ok_or_else(|| {
         src.error(
@@ -281,12 +300,7 @@ fn checked_fault(
             format!("{severity}: a share of the tooth, 0 to 1"),
         ));
     }
-    Ok(ToothFault {
-        gear,
-        tooth,
-        kind,
-        severity,
-    })
+    Ok((gear, tooth, kind, severity))
 }
 
 /// A mesh's `pairs`: single (the thesis's) when left out.

@@ -2,11 +2,14 @@
 //! planets' bearing in the plane, and a shaft to the frame (`between = [body, "frame"]`);
 //! every fault at its place with what is allowed.
 
-use rig::{MAX_PLANETS, PlanarBearing, PlanetaryStage, StageMesh, StageRadii, StageTeeth};
+use rig::{
+    MAX_PLANETS, MeshPairs, PlanarBearing, PlanetaryStage, StageFault, StageMember, StageMesh,
+    StageRadii, StageTeeth,
+};
 use toml::Spanned;
 
-use super::read_rig_mesh::or;
-use super::rig_file_toml::{PlanetaryToml, StageMeshToml};
+use super::read_rig_mesh::{fault_fields, or};
+use super::rig_file_toml::{FaultToml, PlanetaryToml, StageMeshToml};
 use super::source::ScenarioSource;
 
 /// The reserved body name of the housing: a shaft to it holds a body's rotation.
@@ -24,11 +27,7 @@ pub(super) fn planetary_stage(
     let name = p.name.get_ref();
     let field = |f: &str| format!("planetary `{name}`.{f}");
     let teeth = p.teeth.get_ref();
-    let mesh = |m: &Spanned<StageMeshToml>| StageMesh {
-        stiffness_n_per_m: m.get_ref().stiffness_n_per_m,
-        damping_ns_per_m: m.get_ref().damping_ns_per_m,
-        backlash_mm: m.get_ref().backlash_mm,
-    };
+    let mesh = |m: &Spanned<StageMeshToml>, f: &str| stage_mesh(src, m.get_ref(), &field(f));
     Ok(PlanetaryStage {
         name: name.clone(),
         sun: body(&p.sun, &field("sun"))?,
@@ -59,8 +58,70 @@ pub(super) fn planetary_stage(
             }
         }),
         carrier_radius_given_m: p.carrier_radius_m.as_ref().map(|r| *r.get_ref()),
-        sun_planet: mesh(&p.sun_planet),
-        ring_planet: mesh(&p.ring_planet),
+        sun_planet: mesh(&p.sun_planet, "sun_planet")?,
+        ring_planet: mesh(&p.ring_planet, "ring_planet")?,
+        faults: p
+            .fault
+            .iter()
+            .map(|f| stage_fault(src, p, f))
+            .collect::<anyhow::Result<_>>()?,
+    })
+}
+
+/// A stage's mesh table, its `pairs` refused at its place (`field` names the table).
+fn stage_mesh(src: &ScenarioSource, m: &StageMeshToml, field: &str) -> anyhow::Result<StageMesh> {
+    let pairs = match &m.pairs {
+        None => MeshPairs::Single,
+        Some(text) => MeshPairs::parse(text.get_ref()).ok_or_else(|| {
+            src.error(
+                text.span(),
+                &format!("{field}.pairs"),
+                format!("`{}`: one of {}", text.get_ref(), MeshPairs::NAMES),
+            )
+        })?,
+    };
+    Ok(StageMesh {
+        stiffness_n_per_m: m.stiffness_n_per_m,
+        damping_ns_per_m: m.damping_ns_per_m,
+        backlash_mm: m.backlash_mm,
+        pairs,
+        double_pair_ratio: or(&m.double_pair_ratio, 2.0),
+        stiffness_smoothing: or(&m.stiffness_smoothing, 0.0),
+    })
+}
+
+/// A `[[planetary.fault]]` on the sun, the ring or `planet<k>` of stage `p`.
+fn stage_fault(
+    src: &ScenarioSource,
+    p: &PlanetaryToml,
+    f: &FaultToml,
+) -> anyhow::Result<StageFault> {
+    let table = "planetary.fault";
+    if let Some(mesh) = &f.mesh {
+        return Err(src.error(
+            mesh.span(),
+            &format!("{table}.mesh"),
+            "a stage's fault belongs to the [[planetary]] above it: leave out `mesh`",
+        ));
+    }
+    let teeth = p.teeth.get_ref();
+    let planets = *p.planets.get_ref() as usize;
+    let gear = |name: &str| match name {
+        "sun" => Some((StageMember::Sun, teeth.sun)),
+        "ring" => Some((StageMember::Ring, teeth.ring)),
+        _ => name
+            .strip_prefix("planet")
+            .and_then(|k| k.parse::<usize>().ok())
+            .filter(|k| (1..=planets).contains(k))
+            .map(|k| (StageMember::Planet(k - 1), teeth.planet)),
+    };
+    let gears = format!("`sun`, `ring` or `planet1` to `planet{planets}`");
+    let (member, tooth, kind, severity) = fault_fields(src, f, table, gear, &gears)?;
+    Ok(StageFault {
+        member,
+        tooth,
+        kind,
+        severity,
     })
 }
 

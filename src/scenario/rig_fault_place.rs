@@ -47,6 +47,7 @@ fn planetary_span(p: &PlanetaryToml, field: &str) -> Range<usize> {
         "carrier_radius_m" => given(&p.carrier_radius_m),
         "sun_planet" => Some(p.sun_planet.span()),
         "ring_planet" => Some(p.ring_planet.span()),
+        "fault" => p.fault.first().map(|f| f.gear.span()),
         _ => None,
     }
     .unwrap_or(p.name.span())

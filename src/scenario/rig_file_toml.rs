@@ -259,6 +259,10 @@ pub struct PlanetaryToml {
     pub sun_planet: Spanned<StageMeshToml>,
     /// The ring–planet meshes.
     pub ring_planet: Spanned<StageMeshToml>,
+    /// `[[planetary.fault]]`: faults seeded on single teeth of the sun, a planet or the
+    /// ring (`gear = "sun" | "ring" | "planet<k>"`).
+    #[serde(default)]
+    pub fault: Vec<FaultToml>,
 }
 
 /// `teeth = { sun = 24, planet = 36, ring = 96 }`.
@@ -296,6 +300,15 @@ pub struct StageMeshToml {
     pub damping_ns_per_m: f64,
     /// Total circular backlash at the pitch circles (mm).
     pub backlash_mm: f64,
+    /// `single` or `alternating`; single when left out.
+    #[serde(default)]
+    pub pairs: Option<Spanned<String>>,
+    /// Two pairs' stiffness over one's; 2 when left out.
+    #[serde(default)]
+    pub double_pair_ratio: Option<Spanned<f64>>,
+    /// Width of each change between one and two pairs over the pitch; 0 when left out.
+    #[serde(default)]
+    pub stiffness_smoothing: Option<Spanned<f64>>,
 }
 
 /// `[[mesh.fault]]`: a fault on one tooth of the mesh above it (a sweep's

@@ -41,7 +41,7 @@ impl NetworkBlock {
         let planar = rig.bodies.iter().filter(|b| b.planar.is_some()).count();
         Self::shaped(
             rig.turning_names().len(),
-            rig.shafts.len(),
+            rig.shafts.len() + rig.frame_shafts.len(),
             rig.mesh_names().len(),
             2 * planar,
         )

@@ -21,7 +21,7 @@ pub struct Column {
 }
 
 /// The signals' columns, after the rig: `time_s`, `speed_<body>_rpm`, `angle_<body>_rad`,
-/// `torque_<shaft>_nm`, `contact_<mesh>` (+1 drive flank, −1 back flank, 0 apart),
+/// `torque_<shaft>_nm` (shafts, then shafts to the frame), `contact_<mesh>` (+1 drive flank, −1 back flank, 0 apart),
 /// `force_<mesh>_n`, `x_<body>_m` and `y_<body>_m` for each body that moves in the plane,
 /// `motor_torque_nm`, and `strain_<shaft>_ue` where the rig has gauges.
 pub fn column_specs(rig: &RigTopology) -> Vec<Column> {
@@ -43,6 +43,11 @@ pub fn column_specs(rig: &RigTopology) -> Vec<Column> {
     }
     for s in &rig.shafts {
         let meaning = format!("torque in shaft {}", s.name);
+        out.push(column(format!("torque_{}_nm", s.name), "N m", meaning));
+    }
+    for s in &rig.frame_shafts {
+        let body = &rig.bodies[s.body].name;
+        let meaning = format!("torque in shaft {} holding {body} to the frame", s.name);
         out.push(column(format!("torque_{}_nm", s.name), "N m", meaning));
     }
     let meshes = rig.mesh_names();
@@ -93,7 +98,7 @@ pub fn columns(rig: &RigTopology, block: &NetworkBlock) -> Vec<Vec<f64>> {
 pub fn column(rig: &RigTopology, block: &NetworkBlock, k: usize) -> Option<Vec<f64>> {
     let (bodies, shafts, meshes) = (
         rig.turning_names().len(),
-        rig.shafts.len(),
+        rig.shafts.len() + rig.frame_shafts.len(),
         rig.mesh_names().len(),
     );
     let mut k = k;

@@ -117,7 +117,6 @@ pub fn event_forms(
     };
     let l = &model.layout;
     for (i, m) in model.meshes.iter().enumerate() {
-        let ga = m.gears[0];
         // The overlap of a flank: its value terms (the rate is A's business).
         let overlap = |flank: f64, sign: f64| -> Vec<(usize, f64)> {
             model
@@ -165,27 +164,22 @@ pub fn event_forms(
             push(event, force, Target::Fixed);
         }
         if m.tooth_shifting && mode.meshes[i].contact != Contact::Apart {
-            let sense = m.share.signum();
+            let sense = m.zone_share.signum();
+            let angle = model.zone_angle_terms(i);
             push(
                 NetEvent::ToothPass(i),
-                vec![(l.angle(ga), sense), (l.phase(), sense * m.share)],
+                angle.into_iter().map(|(j, c)| (j, sense * c)).collect(),
                 Target::Tooth(i),
             );
         }
         // Spaced pairs are followed apart too: the gap depends on the pair in mesh.
         let follows_zones = m.alternating || m.faulted || m.spaced();
         if follows_zones && (state.contact != Contact::Apart || state.toothless || m.spaced()) {
-            // The driver's absolute angle x + sΦ against the zone's bounds.
-            push(
-                NetEvent::ZoneEnd(i),
-                vec![(l.angle(ga), 1.0), (l.phase(), m.share)],
-                Target::ZoneEnd(i),
-            );
-            push(
-                NetEvent::ZoneStart(i),
-                vec![(l.angle(ga), -1.0), (l.phase(), -m.share)],
-                Target::ZoneStartNegated(i),
-            );
+            // The angle the tooth periods follow against the zone's bounds.
+            let angle = model.zone_angle_terms(i);
+            let negated = angle.iter().map(|&(j, c)| (j, -c)).collect();
+            push(NetEvent::ZoneEnd(i), angle, Target::ZoneEnd(i));
+            push(NetEvent::ZoneStart(i), negated, Target::ZoneStartNegated(i));
         }
     }
     if let Some(m) = &model.motor {

@@ -45,6 +45,17 @@ pub struct MeshModel {
     /// The pair zones of a tooth period: two pairs over the first ε − 1 of it (each
     /// change a staircase where the stiffness is smoothed), one pair over the rest.
     pub zones: PairZones,
+    /// The angle the tooth periods follow (rad of the driver; period p from p pitches):
+    /// Σ c θ_j over these (coordinate, c), plus `zone_offset_rad`. An external mesh's
+    /// driver's angle; a stage mesh's driver's turn against the carrier, phased by the
+    /// planet's place (`topology::StageMeshPhase`).
+    pub zone_angle: Vec<(usize, f64)>,
+    /// That angle's speed per unit set speed (signed).
+    pub zone_share: f64,
+    /// That angle's constant part (rad).
+    pub zone_offset_rad: f64,
+    /// The driver's and the driven gear's tooth in mesh in period 0, less one.
+    pub tooth_offsets: [i64; 2],
     /// The driver's teeth z.
     pub teeth: f64,
     /// The driver's speed per unit set speed (signed).
@@ -86,18 +97,13 @@ impl MeshModel {
     /// its deflection's `form` for a driver turning positive.
     pub fn of(m: &Mesh, speed_ratio: &[f64], form: MeshForm) -> Self {
         let sense = speed_ratio[m.gears[0]].signum();
-        let (single, whole): (Vec<ToothFault>, Vec<ToothFault>) = m
-            .faults
-            .iter()
-            .cloned()
-            .partition(ToothFault::single_stretch_only);
-        let tooth_factors = tooth_factor_pair(m, &whole);
-        let single_stretch_factors = tooth_factor_pair(m, &single);
-        let faulted = tooth_factors
-            .iter()
-            .chain(&single_stretch_factors)
-            .flatten()
-            .any(|&f| f != 1.0);
+        let geometry = CrackGeometry {
+            teeth: m.teeth,
+            module_m: m.module_m,
+            pressure_angle_deg: m.pressure_angle_deg,
+            addendum_coefficient: m.addendum_coefficient,
+        };
+        let faults = FaultFactors::of(&m.faults, &geometry);
         MeshModel {
             gears: m.gears,
             radii_m: m.base_radii_m().map(|r| r * sense),
@@ -114,6 +120,10 @@ impl MeshModel {
                 (m.contact_ratio() - 1.0).clamp(0.0, 1.0),
                 m.stiffness_smoothing,
             ),
+            zone_angle: vec![(m.gears[0], 1.0)],
+            zone_share: speed_ratio[m.gears[0]],
+            zone_offset_rad: 0.0,
+            tooth_offsets: [0, 0],
             teeth: f64::from(m.teeth[0]),
             share: speed_ratio[m.gears[0]],
             variation_m: m.half_backlash_m() * m.backlash_variation,
@@ -125,18 +135,20 @@ impl MeshModel {
             no_pull: m.contact_law == crate::options::ContactLaw::NoPull,
             gear_error_c2_nm: m.gear_error_c2_nm,
             gear_error_c3_nm: m.gear_error_c3_nm,
-            tooth_factors,
-            single_stretch_factors,
-            faulted,
+            tooth_factors: faults.whole,
+            single_stretch_factors: faults.single_stretch,
+            faulted: faults.any,
             spacing_m: mesh_spacing_m(m),
         }
     }
 
     /// A planetary stage's mesh between planet `k` and the sun (`ring` false) or the
-    /// ring: one pair always, healthy, its deflection's `form` for the sun turning
-    /// forward against the carrier, negated by `sense` (−1 where it turns back), its
-    /// gears the sun and the planet's rotation coordinate `planet` (or the planet and the
-    /// ring) with their shares in `speed_ratio`, the planet's pin error along both lines.
+    /// ring: its deflection's `form` for the sun turning forward against the carrier,
+    /// negated by `sense` (−1 where it turns back), its gears the sun and the planet's
+    /// rotation coordinate `planet` (or the planet and the ring) with their shares in
+    /// `speed_ratio`, the planet's pin error along both lines; its tooth periods follow
+    /// the sun's (or the planet's) turn against the carrier, phased by the planet's place,
+    /// and its teeth carry the stage's faults on the teeth it brings together.
     pub fn of_stage(
         stage: &PlanetaryStage,
         ring: bool,
@@ -149,18 +161,37 @@ impl MeshModel {
         // The pin e ahead along e_t: the planet's centre's e cos α along both lines.
         let pin_error_m = stage.planet_pin_errors_um.get(k).copied().unwrap_or(0.0) * 1e-6;
         let offset_m = -sense * pin_error_m * stage.pressure_angle_deg.to_radians().cos();
-        let (mesh, gears, radii, teeth) = if ring {
+        let carrier = stage.carrier;
+        let (mesh, gears, radii, teeth, zone_angle) = if ring {
             let t = [stage.teeth.planet, stage.teeth.ring];
+            let angle = vec![(planet, -1.0), (carrier, 1.0)];
             (
                 &stage.ring_planet,
                 [planet, stage.ring],
                 [-r.planet, r.ring],
                 t,
+                angle,
             )
         } else {
             let t = [stage.teeth.sun, stage.teeth.planet];
-            (&stage.sun_planet, [stage.sun, planet], [r.sun, r.planet], t)
+            let angle = vec![(stage.sun, 1.0), (carrier, -1.0)];
+            (
+                &stage.sun_planet,
+                [stage.sun, planet],
+                [r.sun, r.planet],
+                t,
+                angle,
+            )
         };
+        let phase = stage.mesh_phase(k, ring);
+        let pitch_rad = 2.0 * std::f64::consts::PI / f64::from(teeth[0]);
+        let geometry = CrackGeometry {
+            teeth,
+            module_m: stage.module_m,
+            pressure_angle_deg: stage.pressure_angle_deg,
+            addendum_coefficient: 1.0,
+        };
+        let faults = FaultFactors::of(&stage.mesh_faults(k, ring), &geometry);
         let half_backlash_m =
             0.5 * mesh.backlash_mm * 1e-3 * stage.pressure_angle_deg.to_radians().cos();
         MeshModel {
@@ -172,10 +203,17 @@ impl MeshModel {
             stiffness_n_per_m: mesh.stiffness_n_per_m,
             damping_ns_per_m: mesh.damping_ns_per_m,
             half_backlash_m,
-            alternating: false,
-            double_pair_ratio: 1.0,
-            pitch_rad: 2.0 * std::f64::consts::PI / f64::from(teeth[0]),
-            zones: PairZones::new(0.0, 0.0),
+            alternating: mesh.pairs == MeshPairs::Alternating,
+            double_pair_ratio: mesh.double_pair_ratio,
+            pitch_rad,
+            zones: PairZones::new(
+                (phase.contact_ratio - 1.0).clamp(0.0, 1.0),
+                mesh.stiffness_smoothing,
+            ),
+            zone_share: zone_angle.iter().map(|&(j, c)| c * speed_ratio[j]).sum(),
+            zone_angle,
+            zone_offset_rad: -phase.start_periods * pitch_rad,
+            tooth_offsets: phase.tooth_offsets,
             teeth: f64::from(teeth[0]),
             share: speed_ratio[gears[0]],
             variation_m: 0.0,
@@ -187,9 +225,9 @@ impl MeshModel {
             no_pull: false,
             gear_error_c2_nm: 0.0,
             gear_error_c3_nm: 0.0,
-            tooth_factors: teeth.map(|z| vec![1.0; z as usize]),
-            single_stretch_factors: teeth.map(|z| vec![1.0; z as usize]),
-            faulted: false,
+            tooth_factors: faults.whole,
+            single_stretch_factors: faults.single_stretch,
+            faulted: faults.any,
             spacing_m: [Vec::new(), Vec::new()],
         }
     }
@@ -242,7 +280,7 @@ impl MeshModel {
     /// the driver's tooth period `pair`) over its whole time in mesh: its driver tooth's
     /// times its driven tooth's.
     pub fn pair_factor(&self, pair: i64) -> f64 {
-        factor_of(&self.tooth_factors, pair)
+        self.factor_of(&self.tooth_factors, pair)
     }
 
     /// Whether the pairs differ in spacing (the pair zones are then followed apart too).
@@ -280,7 +318,9 @@ impl MeshModel {
     /// The teeth (1..=z, driver's and driven's) of pair `pair`.
     pub fn pair_teeth(&self, pair: i64) -> [u32; 2] {
         let [driver, driven] = &self.tooth_factors;
-        [driver.len(), driven.len()].map(|z| pair.rem_euclid(z as i64) as u32 + 1)
+        let [a, b] = self.tooth_offsets;
+        [(driver.len(), a), (driven.len(), b)]
+            .map(|(z, offset)| (pair + offset).rem_euclid(z as i64) as u32 + 1)
     }
 
     /// The stiffness factor in pair zone `zone`, by the sharp zone holding it (2p: pairs
@@ -292,51 +332,95 @@ impl MeshModel {
         let zone = self.zones.sharp(zone);
         let pair = zone.div_euclid(2);
         if zone.rem_euclid(2) == 1 {
-            self.pair_factor(pair) * factor_of(&self.single_stretch_factors, pair)
+            self.pair_factor(pair) * self.factor_of(&self.single_stretch_factors, pair)
         } else if self.alternating {
             0.5 * (self.pair_factor(pair - 1) + self.pair_factor(pair))
         } else {
             self.pair_factor(pair)
         }
     }
+
+    /// Pair `pair`'s factor in `factors` (the driver's and the driven gear's teeth): the
+    /// product of its two teeth's.
+    fn factor_of(&self, factors: &[Vec<f64>; 2], pair: i64) -> f64 {
+        let [driver, driven] = factors;
+        let [a, b] = self.tooth_offsets;
+        driver[(pair + a).rem_euclid(driver.len() as i64) as usize]
+            * driven[(pair + b).rem_euclid(driven.len() as i64) as usize]
+    }
 }
 
-/// Pair `pair`'s factor in `factors` (driver's and driven gear's teeth): the product of
-/// its two teeth's.
-fn factor_of(factors: &[Vec<f64>; 2], pair: i64) -> f64 {
-    let [driver, driven] = factors;
-    driver[pair.rem_euclid(driver.len() as i64) as usize]
-        * driven[pair.rem_euclid(driven.len() as i64) as usize]
+/// What a pair's faults need of its gears for a crack's stiffness factor.
+struct CrackGeometry {
+    /// The driver's and the driven gear's teeth.
+    teeth: [u32; 2],
+    /// Module (m).
+    module_m: f64,
+    /// Pressure angle (degrees).
+    pressure_angle_deg: f64,
+    /// Addendum over the module.
+    addendum_coefficient: f64,
 }
 
-/// Each tooth's stiffness factor by `faults` on mesh `m`'s driver and driven gear.
-fn tooth_factor_pair(m: &Mesh, faults: &[ToothFault]) -> [Vec<f64>; 2] {
-    let crack = crack(m);
-    [
-        tooth_factors(faults, FaultedGear::Driver, m.teeth[0], &crack),
-        tooth_factors(faults, FaultedGear::Driven, m.teeth[1], &crack),
-    ]
+/// Each tooth's stiffness factors on a pair's two gears by its faults.
+struct FaultFactors {
+    /// Over its pair's whole time in mesh (a crack, a broken-off share).
+    whole: [Vec<f64>; 2],
+    /// Over its pair's single-contact stretch only (a pit).
+    single_stretch: [Vec<f64>; 2],
+    /// Whether any tooth is faulted.
+    any: bool,
 }
 
-/// A cracked pair's stiffness factor for mesh `m`: the potential-energy method on its
-/// gears (steel's Poisson's ratio 0.3, a bore of half the base radius; face width and
-/// Young's modulus cancel in the ratio).
-fn crack(m: &Mesh) -> impl Fn(FaultedGear, f64) -> f64 {
-    let geometry = PairGeometry {
-        teeth: m.teeth,
-        module_m: m.module_m,
-        pressure_angle_rad: m.pressure_angle_deg.to_radians(),
-        face_width_m: 1.0,
-        addendum_coefficient: m.addendum_coefficient,
-        youngs_modulus_pa: 206e9,
-        poisson_ratio: 0.3,
-        bore_diameter_m: None,
-    };
-    move |gear, share| {
-        let g = match gear {
-            FaultedGear::Driver => 0,
-            FaultedGear::Driven => 1,
+impl FaultFactors {
+    /// The factors of `faults` on a pair of `geometry`.
+    fn of(faults: &[ToothFault], geometry: &CrackGeometry) -> Self {
+        let (single, whole): (Vec<ToothFault>, Vec<ToothFault>) = faults
+            .iter()
+            .cloned()
+            .partition(ToothFault::single_stretch_only);
+        let crack = geometry.crack();
+        let pair = |faults: &[ToothFault]| {
+            [
+                tooth_factors(faults, FaultedGear::Driver, geometry.teeth[0], &crack),
+                tooth_factors(faults, FaultedGear::Driven, geometry.teeth[1], &crack),
+            ]
         };
-        geometry.crack_factor(g, share)
+        let (whole, single_stretch) = (pair(&whole), pair(&single));
+        let any = whole
+            .iter()
+            .chain(&single_stretch)
+            .flatten()
+            .any(|&f| f != 1.0);
+        Self {
+            whole,
+            single_stretch,
+            any,
+        }
+    }
+}
+
+impl CrackGeometry {
+    /// A cracked pair's stiffness factor: the potential-energy method on its gears
+    /// (steel's Poisson's ratio 0.3, a bore of half the base radius; face width and
+    /// Young's modulus cancel in the ratio).
+    fn crack(&self) -> impl Fn(FaultedGear, f64) -> f64 {
+        let geometry = PairGeometry {
+            teeth: self.teeth,
+            module_m: self.module_m,
+            pressure_angle_rad: self.pressure_angle_deg.to_radians(),
+            face_width_m: 1.0,
+            addendum_coefficient: self.addendum_coefficient,
+            youngs_modulus_pa: 206e9,
+            poisson_ratio: 0.3,
+            bore_diameter_m: None,
+        };
+        move |gear, share| {
+            let g = match gear {
+                FaultedGear::Driver => 0,
+                FaultedGear::Driven => 1,
+            };
+            geometry.crack_factor(g, share)
+        }
     }
 }

@@ -106,6 +106,8 @@ pub struct NetworkModel {
     /// What holds coordinates to the frame: shafts to the frame on rotations, bearings on
     /// translations.
     pub supports: Vec<Coupling>,
+    /// How many of `supports`, first, are the rig's shafts to the frame (in its order).
+    pub frame_shafts: usize,
     /// The meshes.
     pub meshes: Vec<MeshModel>,
     /// The motor, if the rig has one.
@@ -189,6 +191,7 @@ impl NetworkModel {
             speed_ratio,
             shafts,
             supports: coordinates.supports(rig),
+            frame_shafts: rig.frame_shafts.len(),
             meshes,
             motor,
             brake,
@@ -208,6 +211,28 @@ impl NetworkModel {
     pub fn absolute_angle_rad(&self, body: usize, u: &[f64]) -> f64 {
         let l = &self.layout;
         u[l.angle(body)] + self.speed_ratio[body] * u[l.phase()]
+    }
+
+    /// The angle mesh `mesh`'s tooth periods follow (rad of its driver,
+    /// `MeshModel::zone_angle`) as terms on the state: Σ c (x_j + s_j Φ) + offset · 1.
+    pub fn zone_angle_terms(&self, mesh: usize) -> Vec<(usize, f64)> {
+        let l = &self.layout;
+        let m = &self.meshes[mesh];
+        let mut terms: Vec<(usize, f64)> =
+            m.zone_angle.iter().map(|&(j, c)| (l.angle(j), c)).collect();
+        terms.push((l.phase(), m.zone_share));
+        if m.zone_offset_rad != 0.0 {
+            terms.push((l.unit(), m.zone_offset_rad));
+        }
+        terms
+    }
+
+    /// The angle mesh `mesh`'s tooth periods follow (rad of its driver) at `u`.
+    pub fn zone_angle_rad(&self, mesh: usize, u: &[f64]) -> f64 {
+        self.zone_angle_terms(mesh)
+            .iter()
+            .map(|&(j, c)| c * u[j])
+            .sum()
     }
 
     /// A mesh's deflection δ (m) on `flank` (+1 drive, −1 back) and its rate (m/s) at

@@ -199,6 +199,8 @@ impl NetworkPlant {
             NetworkStart::Rest => (0.0, self.schedule.load_nm.value_at(0.0)),
         };
         let l = self.model.layout;
+        // The constant state first: the meshes' tooth periods are phased by it.
+        self.u[l.unit()] = 1.0;
         let mut levels = vec![PairZone::ONE; self.model.meshes.len()];
         let mut state = equilibrium(&self.model, speed_rad_s, load_nm, &levels)?;
         for _ in 0..3 {
@@ -232,7 +234,6 @@ impl NetworkPlant {
                 };
             }
         }
-        self.u[l.unit()] = 1.0;
         self.u[l.set_speed()] = speed_rad_s;
         self.u[l.load()] = load_nm;
         if let Some(m) = &self.model.motor {
@@ -360,7 +361,7 @@ impl NetworkPlant {
         let l = &self.model.layout;
         NetworkBlock::shaped(
             l.turning().count(),
-            self.model.shafts.len(),
+            self.model.shafts.len() + self.model.frame_shafts,
             self.model.meshes.len(),
             l.translations_end - l.bodies,
         )

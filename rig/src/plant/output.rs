@@ -20,7 +20,8 @@ pub struct OutputForms {
     pub angle: Vec<Vec<(usize, f64)>>,
     /// Each turning part's speed in its sense of rotation (rad/s).
     pub speed: Vec<Vec<(usize, f64)>>,
-    /// Each shaft's torque (N m), in its first body's sense of rotation.
+    /// Each shaft's torque (N m), in its first body's sense of rotation, then each shaft
+    /// to the frame's (the torque the housing holds its body with: a held ring's reaction).
     pub shaft_torque: Vec<Vec<(usize, f64)>>,
     /// Each mesh's force along its line of action (N).
     pub mesh_force: Vec<Vec<(usize, f64)>>,
@@ -60,6 +61,15 @@ impl OutputForms {
                     (l.unit(), sign * s.preload_nm),
                 ]
             })
+            .chain(model.supports[..model.frame_shafts].iter().map(|s| {
+                s.terms
+                    .iter()
+                    .flat_map(|&(j, c)| {
+                        let k = c * s.stiffness;
+                        [(l.angle(j), k), (l.phase(), k * model.speed_ratio[j])]
+                    })
+                    .collect()
+            }))
             .collect();
         let mesh_force = (0..model.meshes.len())
             .map(|i| {

@@ -31,7 +31,7 @@ impl NetworkPlant {
     /// pair engaged at its entry: no tooth pass there).
     pub(super) fn pass_tooth_here(&mut self, i: usize) {
         let m = &self.model.meshes[i];
-        let angle = m.share.signum() * self.model.absolute_angle_rad(m.gears[0], &self.u);
+        let angle = m.zone_share.signum() * self.model.zone_angle_rad(i, &self.u);
         self.next_tooth_rad[i] = ((angle / m.pitch_rad).round() + 1.0) * m.pitch_rad;
     }
 
@@ -39,7 +39,7 @@ impl NetworkPlant {
     /// its sense of rotation), never backwards: apart, a tooth pass changes nothing.
     pub(super) fn catch_up_tooth(&mut self, i: usize) {
         let m = &self.model.meshes[i];
-        let angle = m.share.signum() * self.model.absolute_angle_rad(m.gears[0], &self.u);
+        let angle = m.zone_share.signum() * self.model.zone_angle_rad(i, &self.u);
         let ahead = ((angle / m.pitch_rad).floor() + 1.0) * m.pitch_rad;
         self.next_tooth_rad[i] = self.next_tooth_rad[i].max(ahead);
     }
@@ -98,9 +98,9 @@ impl NetworkPlant {
     /// (its driver turning forward), or the last period's single stretch (backward).
     fn zone_after_pass(&self, i: usize) -> i64 {
         let m = &self.model.meshes[i];
-        let period = (self.model.absolute_angle_rad(m.gears[0], &self.u) / m.pitch_rad).round();
+        let period = (self.model.zone_angle_rad(i, &self.u) / m.pitch_rad).round();
         let entering = m.zones.entering(period as i64);
-        if m.share > 0.0 {
+        if m.zone_share > 0.0 {
             entering
         } else {
             entering - 1
@@ -111,7 +111,7 @@ impl NetworkPlant {
     /// over the first ε − 1 of period k, 2k + 1 over the rest).
     pub(super) fn zone_at(&self, i: usize) -> i64 {
         let m = &self.model.meshes[i];
-        let phase = self.model.absolute_angle_rad(m.gears[0], &self.u) / m.pitch_rad;
+        let phase = self.model.zone_angle_rad(i, &self.u) / m.pitch_rad;
         m.zones.zone_at(phase)
     }
 

@@ -6,9 +6,10 @@ use std::f64::consts::PI;
 
 use super::check::{fault, finite, non_negative, positive};
 use super::coordinates::RigCoordinates;
-use super::planetary::{MAX_PLANETS, PlanarBearing, PlanetaryStage, StageMesh};
+use super::planetary::{MAX_PLANETS, PlanarBearing, PlanetaryStage, StageMember, StageMesh};
 use super::rig_topology::{MAX_PLANT_MESHES, RigTopology};
 use crate::error::TopologyError;
+use crate::options::MeshPairs;
 
 impl RigTopology {
     /// Checks planar bearings, shafts to the frame and planetary stages.
@@ -197,7 +198,10 @@ fn check_stage(s: &PlanetaryStage, i: usize) -> Result<(), TopologyError> {
     }
     check_angles(s, i)?;
     check_stage_mesh(&s.sun_planet, s.module_m, i, "sun_planet")?;
-    check_stage_mesh(&s.ring_planet, s.module_m, i, "ring_planet")
+    check_stage_mesh(&s.ring_planet, s.module_m, i, "ring_planet")?;
+    check_stage_pairs(s, i, false, "sun_planet")?;
+    check_stage_pairs(s, i, true, "ring_planet")?;
+    check_stage_faults(s, i)
 }
 
 /// At least 5 teeth each, and a ring of z_s + 2 z_p teeth (standard gears on one centre
@@ -309,6 +313,95 @@ fn check_stage_mesh(
                 m.backlash_mm
             ),
         ));
+    }
+    Ok(())
+}
+
+/// A stage mesh's pairs: two at least as stiff as one, smoothing a share of the pitch
+/// (alternating pairs only), and a contact ratio in [1, 2) where pairs alternate.
+fn check_stage_pairs(
+    s: &PlanetaryStage,
+    i: usize,
+    ring: bool,
+    field: &'static str,
+) -> Result<(), TopologyError> {
+    let m = if ring { &s.ring_planet } else { &s.sun_planet };
+    let alternating = m.pairs == MeshPairs::Alternating;
+    let refuse = |why: String| Err(fault("planetary", i, field, why));
+    if !(m.double_pair_ratio.is_finite() && m.double_pair_ratio >= 1.0) {
+        return refuse(format!(
+            "double_pair_ratio {}: two pairs are at least as stiff as one (≥ 1)",
+            m.double_pair_ratio
+        ));
+    }
+    if !(0.0..=1.0).contains(&m.stiffness_smoothing) {
+        return refuse(format!(
+            "stiffness_smoothing {}: a fraction of the tooth pitch, 0 to 1",
+            m.stiffness_smoothing
+        ));
+    }
+    if m.stiffness_smoothing > 0.0 && !alternating {
+        return refuse(format!(
+            "stiffness_smoothing {}: smooths the changes between one and two pairs, which need pairs = \"alternating\"",
+            m.stiffness_smoothing
+        ));
+    }
+    let ratio = s.mesh_phase(0, ring).contact_ratio;
+    if alternating && !(1.0..2.0).contains(&ratio) {
+        return refuse(format!(
+            "pairs = \"alternating\" with a contact ratio of {ratio:.3}: one and two pairs alternate for 1 ≤ ε < 2"
+        ));
+    }
+    Ok(())
+}
+
+/// A stage's faults: each on a tooth its gear has, of a severity 0 to 1.
+fn check_stage_faults(s: &PlanetaryStage, i: usize) -> Result<(), TopologyError> {
+    for (k, f) in s.faults.iter().enumerate() {
+        let (gear, teeth) = match f.member {
+            StageMember::Sun => ("sun".to_string(), s.teeth.sun),
+            StageMember::Ring => ("ring".to_string(), s.teeth.ring),
+            StageMember::Planet(j) if j < s.planets() => {
+                (format!("planet{}", j + 1), s.teeth.planet)
+            }
+            StageMember::Planet(j) => {
+                return Err(fault(
+                    "planetary",
+                    i,
+                    "fault",
+                    format!(
+                        "fault {}: planet{}, of a stage of {} planets",
+                        k + 1,
+                        j + 1,
+                        s.planets()
+                    ),
+                ));
+            }
+        };
+        if !(1..=teeth).contains(&f.tooth) {
+            return Err(fault(
+                "planetary",
+                i,
+                "fault",
+                format!(
+                    "fault {}: tooth {} of the {gear}, which has teeth 1 to {teeth}",
+                    k + 1,
+                    f.tooth
+                ),
+            ));
+        }
+        if !(0.0..=1.0).contains(&f.severity) {
+            return Err(fault(
+                "planetary",
+                i,
+                "fault",
+                format!(
+                    "fault {}: severity {}: a share of the tooth, 0 to 1",
+                    k + 1,
+                    f.severity
+                ),
+            ));
+        }
     }
     Ok(())
 }

@@ -19,6 +19,7 @@ mod modes;
 mod planetary;
 mod rig_topology;
 mod speeds;
+mod stage_phasing;
 
 pub use coordinates::{Coordinate, CoordinateKind, Coupling, MeshForm, RigCoordinates};
 pub use fields::TopologyField;
@@ -26,9 +27,11 @@ pub use mesh_hold::{MeshHold, ModalPart};
 pub use mode_kind::{ModeKind, STILL_SHARE};
 pub(crate) use modes::add_coupling;
 pub use planetary::{
-    LineOfAction, MAX_PLANETS, PlanarBearing, PlanetaryStage, StageMesh, StageRadii, StageTeeth,
+    LineOfAction, MAX_PLANETS, PlanarBearing, PlanetaryStage, StageFault, StageMember, StageMesh,
+    StageRadii, StageTeeth,
 };
 pub use rig_topology::{
     Body, DriveRatings, DriveSettings, FrameShaft, Gauge, LockedTorque, MAX_BODIES, MAX_MESHES,
     MAX_PLANT_MESHES, Mesh, RigTopology, Shaft,
 };
+pub use stage_phasing::StageMeshPhase;

@@ -11,6 +11,9 @@ use std::f64::consts::PI;
 
 use serde::{Deserialize, Serialize};
 
+use crate::options::MeshPairs;
+use crate::tooth_fault::FaultKind;
+
 /// Most planets a stage may have.
 pub const MAX_PLANETS: usize = 8;
 
@@ -36,6 +39,50 @@ pub struct StageMesh {
     pub damping_ns_per_m: f64,
     /// Total circular backlash at the pitch circles (mm).
     pub backlash_mm: f64,
+    /// One pair always, or one and two pairs as the contact ratio gives them.
+    #[serde(default)]
+    pub pairs: MeshPairs,
+    /// Stiffness and damping of two pairs over one pair's (with `pairs` alternating).
+    #[serde(default = "two")]
+    pub double_pair_ratio: f64,
+    /// Width of each change between one and two pairs as a fraction of the tooth pitch
+    /// (0: sharp), as an external mesh's.
+    #[serde(default)]
+    pub stiffness_smoothing: f64,
+}
+
+/// The default double-pair ratio, 2.
+fn two() -> f64 {
+    2.0
+}
+
+/// A stage's gear: the sun, the ring or planet k (from 0).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum StageMember {
+    /// The sun.
+    Sun,
+    /// The ring.
+    Ring,
+    /// Planet k, from 0 (`<stage>_planet<k + 1>`).
+    Planet(usize),
+}
+
+/// A fault on one tooth of a stage's sun, ring or planet, acting in every mesh that
+/// tooth enters (a sun tooth meets each planet in turn, a planet tooth the sun and the
+/// ring, a ring tooth each planet).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct StageFault {
+    /// The gear whose tooth it is.
+    pub member: StageMember,
+    /// The tooth, 1..=z of that gear: tooth 1 of the sun and the ring is the one in mesh
+    /// with the first planet at angle 0, tooth 1 of a planet the one in mesh with the
+    /// sun there; the others numbered in the order they come into mesh.
+    pub tooth: u32,
+    /// What it is.
+    pub kind: FaultKind,
+    /// How bad, 0..=1 (the share the kind names, as a mesh's fault).
+    pub severity: f64,
 }
 
 /// Teeth of a stage's sun, planets and ring.
@@ -96,6 +143,9 @@ pub struct PlanetaryStage {
     pub sun_planet: StageMesh,
     /// The ring–planet meshes.
     pub ring_planet: StageMesh,
+    /// Faults seeded on single teeth.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub faults: Vec<StageFault>,
 }
 
 /// A mesh's line of action in the plane: the unit vector `n` a positive force pushes
@@ -257,6 +307,9 @@ mod tests {
             stiffness_n_per_m: 5e8,
             damping_ns_per_m: 0.0,
             backlash_mm: 0.1,
+            pairs: MeshPairs::Single,
+            double_pair_ratio: 2.0,
+            stiffness_smoothing: 0.0,
         };
         PlanetaryStage {
             name: "epi".into(),
@@ -278,6 +331,7 @@ mod tests {
             carrier_radius_given_m: None,
             sun_planet: mesh.clone(),
             ring_planet: mesh,
+            faults: Vec::new(),
         }
     }
 

@@ -1,0 +1,152 @@
+//! A planetary stage's meshes in phase, and its tooth faults, in the motion: the shipped
+//! bench (one and two pairs alternating in every mesh), run at 1500 rev/min and 50 N m
+//! and read as spectra of its shaft torques.
+//!
+//! - Mesh phasing (Parker & Lin, J. Mech. Des. 126(2), 2004): the sun's net torque at
+//!   harmonic l of the mesh frequency is the sum over planets of e^{i 2π l z_s k/N}, which
+//!   vanishes unless l z_s/N is whole. With z_s = 24 and 3 planets (in phase) the first
+//!   harmonic adds; with z_s = 25 (sequential) it cancels and the third (75/3 whole)
+//!   remains.
+//! - Tooth faults: a cracked sun tooth meets the N planets in turn, a line at
+//!   N(f_s − f_c); a planet tooth meets the sun and the ring once per planet turn against
+//!   the carrier, (z_r/z_p) f_c with the ring held; a ring tooth is passed by N planets per
+//!   carrier turn, N f_c. A healthy stage has none of them (its motion repeats at the mesh
+//!   period), and each grows with the crack.
+
+use std::f64::consts::PI;
+
+/// Sampling rate of the runs (Hz).
+const RATE_HZ: f64 = 20_480.0;
+
+/// The shipped bench (one and two pairs alternating), its text changed by `edits`
+/// (from, to).
+fn bench(edits: &[(&str, &str)]) -> rig::RigTopology {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenarios/rigs/planetary-bench.toml"
+    );
+    let mut text = std::fs::read_to_string(path).expect("shipped bench");
+    for (from, to) in edits {
+        assert!(text.contains(from), "{from}");
+        text = text.replacen(from, to, 1);
+    }
+    let source = testrig::scenario::ScenarioSource {
+        path: std::path::PathBuf::from("bench.toml"),
+        text,
+    };
+    testrig::scenario::rig_topology(&source).expect("the bench reads")
+}
+
+/// `column` of `rig` run at 1500 rev/min and 50 N m from steady motion, after
+/// `settle_s`, over `window_s`.
+fn run(rig: &rig::RigTopology, column: &str, (settle_s, window_s): (f64, f64)) -> Vec<f64> {
+    let mut plant = rig::NetworkPlant::new(
+        rig,
+        rig::Schedule::constant(1500.0, 50.0),
+        RATE_HZ,
+        rig::NetworkStart::Steady,
+    )
+    .expect("valid plant");
+    plant.skip((settle_s * RATE_HZ) as usize).expect("runs");
+    let mut block = plant.block();
+    plant
+        .run((window_s * RATE_HZ) as usize, &mut block)
+        .expect("runs");
+    let names = rig::column_names(rig);
+    let k = names.iter().position(|n| n == column).expect("the column");
+    rig::column(rig, &block, k).expect("the column")
+}
+
+/// The amplitude of `x`'s line at `hz` (Hann-windowed, the window's gain taken out).
+fn line(x: &[f64], hz: f64) -> f64 {
+    let n = x.len() as f64;
+    let mean = x.iter().sum::<f64>() / n;
+    let (mut re, mut im, mut gain) = (0.0, 0.0, 0.0);
+    for (i, v) in x.iter().enumerate() {
+        let w = 0.5 - 0.5 * (2.0 * PI * i as f64 / n).cos();
+        let phase = 2.0 * PI * hz * i as f64 / RATE_HZ;
+        re += w * (v - mean) * phase.cos();
+        im -= w * (v - mean) * phase.sin();
+        gain += w;
+    }
+    2.0 * re.hypot(im) / gain
+}
+
+/// The sun's speed against the carrier (Hz) with the ring held, at 1500 rev/min.
+fn sun_against_carrier_hz(sun: f64, ring: f64) -> f64 {
+    25.0 * ring / (sun + ring)
+}
+
+#[test]
+fn the_first_mesh_harmonic_of_the_suns_torque_cancels_where_z_s_over_n_is_not_whole() {
+    let window = (1.0, 2.0);
+    let in_phase = bench(&[]);
+    let sequential = bench(&[(
+        "teeth = { sun = 24, planet = 36, ring = 96 }",
+        "teeth = { sun = 25, planet = 35, ring = 95 }",
+    )]);
+    let mesh_in_phase = 24.0 * sun_against_carrier_hz(24.0, 96.0);
+    let mesh_sequential = 25.0 * sun_against_carrier_hz(25.0, 95.0);
+    let x = run(&in_phase, "torque_input_nm", window);
+    let y = run(&sequential, "torque_input_nm", window);
+    let (adds, cancels) = (line(&x, mesh_in_phase), line(&y, mesh_sequential));
+    let third = line(&y, 3.0 * mesh_sequential);
+    eprintln!(
+        "MEASURED input torque at the mesh frequency: z_s = 24 {adds:.3e} N m at {mesh_in_phase:.1} Hz, z_s = 25 {cancels:.3e} N m at {mesh_sequential:.1} Hz; z_s = 25 third harmonic {third:.3e} N m"
+    );
+    assert!(
+        adds > 1e-3,
+        "in phase, the first harmonic adds: {adds:e} N m"
+    );
+    assert!(
+        cancels < 1e-6 * adds,
+        "sequential, the first harmonic cancels: {cancels:e} against {adds:e} N m"
+    );
+    assert!(
+        third > 30.0 * cancels,
+        "sequential, the third harmonic (3 z_s/N whole) stays: {third:e} against {cancels:e} N m"
+    );
+}
+
+/// The line of a fault on `gear`'s tooth 5 at `hz` in the ring's reaction torque (the
+/// housing shaft's), at each of `severities` of a root crack (0: healthy).
+fn fault_lines(gear: &str, hz: f64, severities: &[f64]) -> Vec<f64> {
+    severities
+        .iter()
+        .map(|&severity| {
+            let fault = format!(
+                "\n[[planetary.fault]]\ngear = \"{gear}\"\ntooth = 5\nkind = \"crack\"\nseverity = {severity}\n\n[motor]"
+            );
+            let rig = if severity == 0.0 {
+                bench(&[])
+            } else {
+                bench(&[("\n[motor]", fault.as_str())])
+            };
+            line(&run(&rig, "torque_housing_nm", (1.0, 2.0)), hz)
+        })
+        .collect()
+}
+
+#[test]
+fn a_cracked_sun_planet_or_ring_tooth_gives_its_own_fault_frequency_growing_with_the_crack() {
+    // 1500 rev/min, the ring held: the carrier at 5 Hz, the sun 20 Hz against it.
+    let (sun_hz, carrier_hz) = (25.0, 5.0);
+    let against = sun_hz - carrier_hz;
+    let cases = [
+        ("sun", 3.0 * against),
+        ("planet2", 96.0 / 36.0 * carrier_hz),
+        ("ring", 3.0 * carrier_hz),
+    ];
+    for (gear, hz) in cases {
+        let [healthy, small, large] = fault_lines(gear, hz, &[0.0, 0.2, 0.5])[..] else {
+            unreachable!()
+        };
+        eprintln!(
+            "MEASURED {gear} crack at {hz:.3} Hz in the ring's torque: healthy {healthy:.3e}, 0.2 {small:.3e}, 0.5 {large:.3e} N m"
+        );
+        assert!(
+            small > 100.0 * healthy && large > small,
+            "{gear}: the line at {hz} Hz grows with the crack: {healthy:e}, {small:e}, {large:e} N m"
+        );
+    }
+}
