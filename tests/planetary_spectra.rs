@@ -7,6 +7,10 @@
 //!   vanishes unless l z_s/N is whole. With z_s = 24 and 3 planets (in phase) the first
 //!   harmonic adds; with z_s = 25 (sequential) it cancels and the third (75/3 whole)
 //!   remains.
+//! - A sensor on the ring (McFadden & Smith 1985; Inalpolat & Kahraman 2009): each ring
+//!   mesh force through a window over its planet's passage. Its spectrum holds lines only
+//!   at multiples of the planet-pass frequency N f_c: the mesh frequency z_r f_c itself
+//!   where z_r/N is whole, else sidebands about it at the nearest multiples of N f_c.
 //! - Tooth faults: a cracked sun tooth meets the N planets in turn, a line at
 //!   N(f_s − f_c); a planet tooth meets the sun and the ring once per planet turn against
 //!   the carrier, (z_r/z_p) f_c with the ring held; a ring tooth is passed by N planets per
@@ -149,4 +153,62 @@ fn a_cracked_sun_planet_or_ring_tooth_gives_its_own_fault_frequency_growing_with
             "{gear}: the line at {hz} Hz grows with the crack: {healthy:e}, {small:e}, {large:e} N m"
         );
     }
+}
+
+#[test]
+fn a_ring_sensor_sees_lines_only_at_multiples_of_the_planet_pass_frequency() {
+    let window = (1.0, 2.0);
+    for (teeth, ring) in [
+        ("sun = 24, planet = 36, ring = 96", 96.0),
+        ("sun = 25, planet = 35, ring = 95", 95.0),
+    ] {
+        let rig = bench(&[(
+            "teeth = { sun = 24, planet = 36, ring = 96 }",
+            &format!("teeth = {{ {teeth} }}"),
+        )]);
+        // The ring held: the carrier at z_s/(z_s + z_r) of the sun's 25 Hz.
+        let carrier_hz = 25.0 * sun_teeth(teeth) / (sun_teeth(teeth) + ring);
+        let sensor = run(&rig, "sensor_epi_n", window);
+        let force = run(&rig, "force_epi_ring_planet1_n", window);
+        let at = |x: &[f64], order: f64| line(x, order * carrier_hz);
+        // The lines about the mesh frequency z_r f_c, in orders of the carrier's turn.
+        let orders: Vec<f64> = (-4..=4).map(|j| ring + f64::from(j)).collect();
+        let passes = |order: f64| (order / 3.0 - (order / 3.0).round()).abs() < 1e-9;
+        let strongest = orders.iter().map(|&o| at(&sensor, o)).fold(0.0, f64::max);
+        for &order in &orders {
+            let seen = at(&sensor, order);
+            eprintln!(
+                "MEASURED z_r = {ring}: order {order} ({:.2} Hz): sensor {seen:.3e} N, one ring mesh {:.3e} N",
+                order * carrier_hz,
+                at(&force, order)
+            );
+            if passes(order) {
+                continue;
+            }
+            assert!(
+                seen < 1e-2 * strongest,
+                "z_r = {ring}: order {order} is no multiple of N = 3, yet {seen:e} N against {strongest:e} N"
+            );
+        }
+        let mesh = at(&sensor, ring);
+        if passes(ring) {
+            assert!(
+                mesh > 0.5 * strongest,
+                "z_r/N whole: the mesh line {mesh:e} N leads"
+            );
+        } else {
+            // The mesh line is in each ring mesh's force, but not at the sensor.
+            assert!(
+                at(&force, ring) > 1e2 * mesh,
+                "z_r/N not whole: {mesh:e} N at the mesh order"
+            );
+        }
+    }
+}
+
+/// The sun's teeth in a `teeth` table's text.
+fn sun_teeth(teeth: &str) -> f64 {
+    teeth["sun = ".len()..teeth.find(',').expect("a comma")]
+        .parse()
+        .expect("a number")
 }

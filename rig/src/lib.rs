@@ -129,7 +129,7 @@ pub use topology::{
 };
 pub use topology::{Coordinate, CoordinateKind, Coupling, MeshForm, RigCoordinates};
 pub use topology::{
-    LineOfAction, MAX_PLANETS, PlanarBearing, PlanetaryStage, StageFault, StageMember, StageMesh,
-    StageMeshPhase, StageRadii, StageTeeth,
+    LineOfAction, MAX_PLANETS, PlanarBearing, PlanetaryStage, RingSensor, StageFault, StageMember,
+    StageMesh, StageMeshPhase, StageRadii, StageTeeth,
 };
 pub use topology::{MeshHold, ModalPart, ModeKind, STILL_SHARE};

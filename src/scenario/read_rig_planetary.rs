@@ -3,8 +3,8 @@
 //! every fault at its place with what is allowed.
 
 use rig::{
-    MAX_PLANETS, MeshPairs, PlanarBearing, PlanetaryStage, StageFault, StageMember, StageMesh,
-    StageRadii, StageTeeth,
+    MAX_PLANETS, MeshPairs, PlanarBearing, PlanetaryStage, RingSensor, StageFault, StageMember,
+    StageMesh, StageRadii, StageTeeth,
 };
 use toml::Spanned;
 
@@ -65,6 +65,14 @@ pub(super) fn planetary_stage(
             .iter()
             .map(|f| stage_fault(src, p, f))
             .collect::<anyhow::Result<_>>()?,
+        ring_sensor: p.ring_sensor.as_ref().map(|s| {
+            let s = s.get_ref();
+            let planets = f64::from(*p.planets.get_ref());
+            RingSensor {
+                angle_rad: s.angle_deg.to_radians(),
+                window_rad: s.window_deg.unwrap_or(360.0 / planets).to_radians(),
+            }
+        }),
     })
 }
 

@@ -48,6 +48,7 @@ fn planetary_span(p: &PlanetaryToml, field: &str) -> Range<usize> {
         "sun_planet" => Some(p.sun_planet.span()),
         "ring_planet" => Some(p.ring_planet.span()),
         "fault" => p.fault.first().map(|f| f.gear.span()),
+        "ring_sensor" => p.ring_sensor.as_ref().map(Spanned::span),
         _ => None,
     }
     .unwrap_or(p.name.span())

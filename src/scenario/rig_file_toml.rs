@@ -263,6 +263,21 @@ pub struct PlanetaryToml {
     /// ring (`gear = "sun" | "ring" | "planet<k>"`).
     #[serde(default)]
     pub fault: Vec<FaultToml>,
+    /// A transducer on the ring: its signal `sensor_<stage>_n`.
+    #[serde(default)]
+    pub ring_sensor: Option<Spanned<RingSensorToml>>,
+}
+
+/// `ring_sensor = { angle_deg = 90.0, window_deg = 120.0 }`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RingSensorToml {
+    /// Its place on the ring (degrees from the first planet's place at the start, the way
+    /// the planets' angles are measured).
+    pub angle_deg: f64,
+    /// The window's full width over a planet's passage (degrees); 360/N when left out.
+    #[serde(default)]
+    pub window_deg: Option<f64>,
 }
 
 /// `teeth = { sun = 24, planet = 36, ring = 96 }`.

@@ -6,6 +6,7 @@ use std::f64::consts::PI;
 use crate::topology::RigTopology;
 
 use super::block::NetworkBlock;
+use super::ring_sensor::ring_sensor_n;
 
 /// One column: its name, unit and meaning.
 #[derive(Clone, Debug, PartialEq)]
@@ -23,7 +24,7 @@ pub struct Column {
 /// The signals' columns, after the rig: `time_s`, `speed_<body>_rpm`, `angle_<body>_rad`,
 /// `torque_<shaft>_nm` (shafts, then shafts to the frame), `contact_<mesh>` (+1 drive flank, −1 back flank, 0 apart),
 /// `force_<mesh>_n`, `x_<body>_m` and `y_<body>_m` for each body that moves in the plane,
-/// `motor_torque_nm`, and `strain_<shaft>_ue` where the rig has gauges.
+/// `sensor_<stage>_n` for each planetary stage with a ring sensor, `motor_torque_nm`, and `strain_<shaft>_ue` where the rig has gauges.
 pub fn column_specs(rig: &RigTopology) -> Vec<Column> {
     let column = |name: String, unit, meaning: String| Column {
         name,
@@ -68,6 +69,13 @@ pub fn column_specs(rig: &RigTopology) -> Vec<Column> {
             let meaning = format!("{axis} of body {}'s centre on its bearing", b.name);
             out.push(column(format!("{axis}_{}_m", b.name), "m", meaning));
         }
+    }
+    for s in rig.planetary.iter().filter(|s| s.ring_sensor.is_some()) {
+        let meaning = format!(
+            "stage {}: the ring-planet mesh forces as a sensor on the ring sees them",
+            s.name
+        );
+        out.push(column(format!("sensor_{}_n", s.name), "N", meaning));
     }
     out.push(column(
         "motor_torque_nm".into(),
@@ -131,6 +139,13 @@ pub fn column(rig: &RigTopology, block: &NetworkBlock, k: usize) -> Option<Vec<f
         return Some(block.translation_m[k].clone());
     }
     k -= translations;
+    let sensed: Vec<usize> = (0..rig.planetary.len())
+        .filter(|&i| rig.planetary[i].ring_sensor.is_some())
+        .collect();
+    if let Some(&stage) = sensed.get(k) {
+        return Some(sensor_column(rig, block, stage));
+    }
+    k -= sensed.len();
     match (k, &rig.gauge) {
         (0, _) => Some(block.motor_torque_nm.clone()),
         (1, Some(g)) => {
@@ -144,4 +159,31 @@ pub fn column(rig: &RigTopology, block: &NetworkBlock, k: usize) -> Option<Vec<f
         }
         _ => None,
     }
+}
+
+/// Stage `stage`'s ring sensor's signal over `block` (N): its ring meshes' forces, each
+/// through the window over its planet's passage (`ring_sensor.rs`).
+fn sensor_column(rig: &RigTopology, block: &NetworkBlock, stage: usize) -> Vec<f64> {
+    let s = &rig.planetary[stage];
+    let Some(sensor) = &s.ring_sensor else {
+        return Vec::new();
+    };
+    // The carrier's angle as the coordinates count it (the block's is in its sense).
+    let sense = rig.relative_speeds()[s.carrier].map_or(1.0, |w| if w < 0.0 { -1.0 } else { 1.0 });
+    let carrier: Vec<f64> = block.angle_rad[s.carrier]
+        .iter()
+        .map(|a| sense * a)
+        .collect();
+    // The stage's ring meshes follow every earlier mesh and its own sun meshes.
+    let first = rig.meshes.len()
+        + rig.planetary[..stage]
+            .iter()
+            .map(|p| 2 * p.planets())
+            .sum::<usize>()
+        + s.planets();
+    let forces: Vec<&[f64]> = block.mesh_force_n[first..first + s.planets()]
+        .iter()
+        .map(Vec::as_slice)
+        .collect();
+    ring_sensor_n(s, sensor, &carrier, &forces)
 }

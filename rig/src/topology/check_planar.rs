@@ -201,7 +201,28 @@ fn check_stage(s: &PlanetaryStage, i: usize) -> Result<(), TopologyError> {
     check_stage_mesh(&s.ring_planet, s.module_m, i, "ring_planet")?;
     check_stage_pairs(s, i, false, "sun_planet")?;
     check_stage_pairs(s, i, true, "ring_planet")?;
-    check_stage_faults(s, i)
+    check_stage_faults(s, i)?;
+    check_ring_sensor(s, i)
+}
+
+/// A ring sensor's place finite and its window 0 to 360 degrees wide.
+fn check_ring_sensor(s: &PlanetaryStage, i: usize) -> Result<(), TopologyError> {
+    let Some(sensor) = &s.ring_sensor else {
+        return Ok(());
+    };
+    finite(sensor.angle_rad, ("planetary", i, "ring_sensor"))?;
+    if !(sensor.window_rad > 0.0 && sensor.window_rad <= 2.0 * PI) {
+        return Err(fault(
+            "planetary",
+            i,
+            "ring_sensor",
+            format!(
+                "window_deg {}: a window over the planet's passage, more than 0 and at most 360 degrees wide",
+                sensor.window_rad.to_degrees()
+            ),
+        ));
+    }
+    Ok(())
 }
 
 /// At least 5 teeth each, and a ring of z_s + 2 z_p teeth (standard gears on one centre

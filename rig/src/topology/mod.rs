@@ -27,8 +27,8 @@ pub use mesh_hold::{MeshHold, ModalPart};
 pub use mode_kind::{ModeKind, STILL_SHARE};
 pub(crate) use modes::add_coupling;
 pub use planetary::{
-    LineOfAction, MAX_PLANETS, PlanarBearing, PlanetaryStage, StageFault, StageMember, StageMesh,
-    StageRadii, StageTeeth,
+    LineOfAction, MAX_PLANETS, PlanarBearing, PlanetaryStage, RingSensor, StageFault, StageMember,
+    StageMesh, StageRadii, StageTeeth,
 };
 pub use rig_topology::{
     Body, DriveRatings, DriveSettings, FrameShaft, Gauge, LockedTorque, MAX_BODIES, MAX_MESHES,

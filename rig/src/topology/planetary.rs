@@ -56,6 +56,19 @@ fn two() -> f64 {
     2.0
 }
 
+/// A transducer on the ring (an accelerometer on the housing over it, or a strain gauge
+/// on the ring gear): each ring–planet mesh force reaches it weighted by a window over
+/// the planet's passage (McFadden & Smith 1985; Inalpolat & Kahraman 2009).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct RingSensor {
+    /// Its place on the ring (rad, from the first planet's place with the carrier at 0,
+    /// in the carrier's sense of rotation).
+    pub angle_rad: f64,
+    /// The window's full width (rad): a planet further than half of it from the sensor
+    /// is not seen.
+    pub window_rad: f64,
+}
+
 /// A stage's gear: the sun, the ring or planet k (from 0).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case")]
@@ -146,6 +159,9 @@ pub struct PlanetaryStage {
     /// Faults seeded on single teeth.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub faults: Vec<StageFault>,
+    /// A transducer on the ring, if the stage has one (its signal `sensor_<stage>_n`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ring_sensor: Option<RingSensor>,
 }
 
 /// A mesh's line of action in the plane: the unit vector `n` a positive force pushes
@@ -332,6 +348,7 @@ mod tests {
             sun_planet: mesh.clone(),
             ring_planet: mesh,
             faults: Vec::new(),
+            ring_sensor: None,
         }
     }
 

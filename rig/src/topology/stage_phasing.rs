@@ -163,6 +163,7 @@ mod tests {
             sun_planet: mesh.clone(),
             ring_planet: mesh,
             faults: Vec::new(),
+            ring_sensor: None,
         }
     }
 
