@@ -17,7 +17,7 @@ use rig::{
 };
 use serde::Serialize;
 
-use crate::chain::{GearCondition, GearConditionReport};
+use crate::chain::{GearCondition, GearConditionReport, stage_lines};
 use crate::vocabulary::{InputNames, check_times};
 use crate::vocabulary::{check_load_nm, check_load_within, check_speed_rpm};
 
@@ -143,14 +143,25 @@ pub fn regime_of(motion: Motion) -> Regime {
 }
 
 /// The gear a point's condition indicators watch: the `[keyphasor]`'s gear, else the
-/// first tooth fault's gear, else the first mesh's driven gear; (body, teeth).
+/// first tooth fault's gear, else the first mesh's driven gear, else the first planetary
+/// stage's carrier; (body, teeth). A carrier counts the ring's teeth: with the ring held,
+/// its turn holds z_r mesh periods (carrier-synchronous averaging).
 pub fn watched_gear(rig: &RigTopology) -> Option<(usize, u32)> {
+    let carrier = |body: usize| {
+        rig.planetary
+            .iter()
+            .find(|s| s.carrier == body)
+            .map(|s| (body, s.teeth.ring))
+    };
     let marked = rig.keyphasor.and_then(|body| {
-        rig.meshes.iter().find_map(|m| {
-            (0..2)
-                .find(|&side| m.gears[side] == body)
-                .map(|side| (body, m.teeth[side]))
-        })
+        rig.meshes
+            .iter()
+            .find_map(|m| {
+                (0..2)
+                    .find(|&side| m.gears[side] == body)
+                    .map(|side| (body, m.teeth[side]))
+            })
+            .or_else(|| carrier(body))
     });
     let faulted = || {
         rig.meshes.iter().find_map(|m| {
@@ -163,6 +174,16 @@ pub fn watched_gear(rig: &RigTopology) -> Option<(usize, u32)> {
     marked
         .or_else(faulted)
         .or_else(|| rig.meshes.first().map(|m| (m.gears[1], m.teeth[1])))
+        .or_else(|| rig.planetary.first().and_then(|s| carrier(s.carrier)))
+}
+
+/// The signal a watched carrier's average takes: its stage's ring sensor, if it has one
+/// (the stage's index).
+fn sensed_stage(rig: &RigTopology, watched: Option<(usize, u32)>) -> Option<usize> {
+    let (gear, _) = watched?;
+    rig.planetary
+        .iter()
+        .position(|s| s.carrier == gear && s.ring_sensor.is_some())
 }
 
 /// A point run: the plant as it ended, the window's impacts and summary, and the times.
@@ -230,7 +251,7 @@ pub fn run_rig_point(
     let mut summary = window.summary(rig, spec.rpm, &impacts, &revolutions);
     summary.condition = report
         .as_ref()
-        .map(|r| condition_json(rig, r, window.watched));
+        .map(|r| condition_json(rig, r, &window, spec.rpm));
     Ok(RigPointRun {
         plant,
         impacts,
@@ -309,6 +330,9 @@ pub struct RigWindow {
     judged_torque: Vec<f64>,
     watched: Option<(usize, u32)>,
     condition: GearCondition,
+    /// The rig and the column of its ring sensor, where the average takes that rather
+    /// than the judged shaft's torque.
+    sensor: Option<(RigTopology, usize)>,
 }
 
 impl RigWindow {
@@ -326,6 +350,11 @@ impl RigWindow {
             judged_torque: Vec::new(),
             watched: watched_gear(rig),
             condition: GearCondition::new(rate_hz),
+            sensor: sensed_stage(rig, watched_gear(rig)).and_then(|stage| {
+                let name = format!("sensor_{}_n", rig.planetary[stage].name);
+                let column = rig::column_names(rig).iter().position(|c| *c == name)?;
+                Some((rig.clone(), column))
+            }),
         }
     }
 
@@ -355,8 +384,13 @@ impl RigWindow {
         if let Some(column) = block.shaft_torque_nm.get(self.judged) {
             self.judged_torque.extend_from_slice(column);
             if let Some((gear, _)) = self.watched {
+                let sensed = self
+                    .sensor
+                    .as_ref()
+                    .and_then(|(rig, k)| rig::column(rig, block, *k));
+                let averaged = sensed.as_deref().unwrap_or(column);
                 self.condition
-                    .add_samples(&block.time_s, &block.angle_rad[gear], column);
+                    .add_samples(&block.time_s, &block.angle_rad[gear], averaged);
             }
         }
     }
@@ -467,16 +501,34 @@ impl RigWindow {
     }
 }
 
-/// A condition report as JSON, its gear named.
+/// A condition report as JSON, its gear and averaged signal named; for a rig with
+/// planetary stages, each stage's characteristic lines and the averaged signal's level
+/// at each (`chain::stage_lines`), the motor at `rpm`.
 fn condition_json(
     rig: &RigTopology,
     report: &GearConditionReport,
-    watched: Option<(usize, u32)>,
+    window: &RigWindow,
+    rpm: f64,
 ) -> serde_json::Value {
     let mut json = report.to_json();
-    if let (Some(map), Some((gear, teeth))) = (json.as_object_mut(), watched) {
+    if let (Some(map), Some((gear, teeth))) = (json.as_object_mut(), window.watched) {
         map.insert("gear".into(), rig.bodies[gear].name.clone().into());
         map.insert("teeth".into(), teeth.into());
+        let signal = match &window.sensor {
+            Some((_, k)) => rig::column_names(rig)[*k].clone(),
+            None => rig
+                .shafts
+                .get(window.judged)
+                .map_or(String::new(), |s| format!("torque_{}_nm", s.name)),
+        };
+        map.insert("signal".into(), signal.into());
+        if !rig.planetary.is_empty() {
+            let stages: Vec<serde_json::Value> = stage_lines(rig, rpm)
+                .iter()
+                .map(|s| s.to_json(|hz| window.condition.line_amplitude(hz)))
+                .collect();
+            map.insert("planetary".into(), stages.into());
+        }
     }
     json
 }

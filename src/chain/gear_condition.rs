@@ -78,6 +78,26 @@ impl GearCondition {
         }
     }
 
+    /// The amplitude of the kept signal's line at `hz` (Hann-windowed, the window's gain
+    /// taken out; 0 without samples).
+    pub fn line_amplitude(&self, hz: f64) -> f64 {
+        let x = &self.torque_nm;
+        let n = x.len() as f64;
+        if x.is_empty() {
+            return 0.0;
+        }
+        let mean = x.iter().sum::<f64>() / n;
+        let (mut re, mut im, mut gain) = (0.0, 0.0, 0.0);
+        for (i, v) in x.iter().enumerate() {
+            let w = 0.5 - 0.5 * (std::f64::consts::TAU * i as f64 / n).cos();
+            let phase = std::f64::consts::TAU * hz * i as f64 / self.rate_hz;
+            re += w * (v - mean) * phase.cos();
+            im -= w * (v - mean) * phase.sin();
+            gain += w;
+        }
+        2.0 * re.hypot(im) / gain
+    }
+
     /// The indicators of the window's average revolution for a gear of `teeth` teeth;
     /// `None` with fewer than two whole revolutions kept.
     pub fn report(&self, teeth: usize) -> Option<GearConditionReport> {

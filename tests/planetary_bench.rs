@@ -1,0 +1,249 @@
+//! The shipped planetary bench run through `testrig simulate`: Willis's speeds, the
+//! torque balance and equal load sharing; energy without damping through impacts; a pin
+//! error's unequal sharing against the static solution; and the carrier-synchronous
+//! condition report with the stage's fault lines, a cracked sun tooth's growing.
+
+mod common;
+
+use common::{folder, json, testrig};
+
+/// Runs `simulate --rig rig` at `rpm` and `load` N m, settled `settle` s, for `seconds`,
+/// its signals into `out` (fails with its stderr if refused).
+fn simulate(
+    rig: &str,
+    (rpm, load): (&str, &str),
+    (settle, seconds): (&str, &str),
+    out: &std::path::Path,
+) {
+    let run = testrig(&[
+        "simulate",
+        "--rig",
+        rig,
+        "--rpm",
+        rpm,
+        "--load",
+        load,
+        "--settle",
+        settle,
+        "--duration",
+        seconds,
+        "--out",
+        out.to_str().expect("utf-8"),
+    ]);
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+}
+
+/// The shipped bench with one pair always in each mesh (its static solutions and its
+/// energy need a stiffness that does not change in contact).
+fn single_pair_bench() -> String {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenarios/rigs/planetary-bench.toml"
+    );
+    let text = std::fs::read_to_string(path).expect("shipped bench");
+    assert!(text.contains(", pairs = \"alternating\""));
+    text.replace(", pairs = \"alternating\"", "")
+}
+
+/// `text` written as `name`.toml in `dir`: its path.
+fn written(dir: &std::path::Path, name: &str, text: &str) -> String {
+    let path = dir.join(format!("{name}.toml"));
+    std::fs::write(&path, text).expect("written");
+    path.to_str().expect("utf-8").to_string()
+}
+
+/// The last sample of `signals.csv` in `dir`, by column name.
+fn last_sample(dir: &std::path::Path) -> impl Fn(&str) -> f64 {
+    let csv = std::fs::read_to_string(dir.join("signals.csv")).expect("signals");
+    let mut lines = csv.lines();
+    let head: Vec<String> = lines
+        .next()
+        .expect("header")
+        .split(',')
+        .map(String::from)
+        .collect();
+    let last: Vec<f64> = lines
+        .last()
+        .expect("a sample")
+        .split(',')
+        .map(|v| v.parse().expect("number"))
+        .collect();
+    move |name| last[head.iter().position(|h| h == name).expect(name)]
+}
+
+#[test]
+fn a_planetary_bench_turns_by_willis_balances_its_torques_and_shares_its_load_equally() {
+    let dir = folder("planetary-bench");
+    let out = dir.join("out");
+    let rig = written(&dir, "bench", &single_pair_bench());
+    simulate(&rig, ("1500", "50"), ("2", "1"), &out);
+    let at = last_sample(&out);
+    // Willis with the ring held: the carrier at z_s/(z_s + z_r) = 1/5 of the sun, each
+    // planet at r_s/(2 r_p) = 1/3 of it the other way (in its own sense, positive).
+    assert!((at("speed_carrier_rpm") - 300.0).abs() < 1e-6);
+    assert!(at("speed_ring_rpm").abs() < 1e-6);
+    for k in 1..=3 {
+        assert!((at(&format!("speed_epi_planet{k}_rpm")) - 500.0).abs() < 1e-6);
+    }
+    // Torques: the carrier carries (1 + z_r/z_s) = 5 times the sun's in steady motion.
+    let (input, output) = (at("torque_input_nm"), at("torque_output_nm"));
+    assert!((output - 50.0).abs() < 1e-6 && (input - 10.0).abs() < 1e-6);
+    // Equal sharing: each planet's sun and ring mesh carries T_s / (N r_s).
+    let rs = 0.003 * 24.0 * 20f64.to_radians().cos() / 2.0;
+    let share = input / (3.0 * rs);
+    for kind in ["sun", "ring"] {
+        for k in 1..=3 {
+            let force = at(&format!("force_epi_{kind}_planet{k}_n"));
+            assert!(
+                (force - share).abs() < 1e-9 * share,
+                "{kind} mesh of planet {k}: {force} N against {share} N"
+            );
+        }
+    }
+}
+
+#[test]
+fn a_planetary_stage_conserves_energy_through_impacts_without_damping() {
+    let text = single_pair_bench();
+    // No damping, no motor, no brake: the stage knocked at rest rattles in its backlash.
+    let cut = text.find("[motor]").expect("the motor's table");
+    let free = text[..cut]
+        .replace("damping_nms_per_rad = 0.2", "damping_nms_per_rad = 0.0")
+        .replace("damping_nms_per_rad = 50.0", "damping_nms_per_rad = 0.0")
+        .replace("damping_nms_per_rad = 1.0", "damping_nms_per_rad = 0.0")
+        .replace("damping_ns_per_m = 2000.0", "damping_ns_per_m = 0.0");
+    let source = testrig::scenario::ScenarioSource {
+        path: std::path::PathBuf::from("free-bench.toml"),
+        text: free,
+    };
+    let rig = testrig::scenario::rig_topology(&source).expect("the free bench reads");
+    let mut plant = rig::NetworkPlant::new(
+        &rig,
+        rig::Schedule::constant(0.0, 0.0),
+        51_200.0,
+        rig::NetworkStart::Steady,
+    )
+    .expect("valid plant");
+    // The sun (body 1) and the first planet (the first coordinate after the bodies)
+    // knocked.
+    plant.kick(1, 3.0);
+    plant.kick(5, -1.0);
+    let e0 = plant.energy_j();
+    let mut worst = 0.0_f64;
+    for _ in 0..51_200 {
+        plant.skip(1).expect("runs");
+        worst = worst.max((plant.energy_j() - e0).abs() / e0);
+    }
+    let impacts = plant.take_impacts().len();
+    eprintln!("MEASURED planetary energy drift {worst:e} of {e0} J over {impacts} impacts");
+    assert!(impacts > 50, "only {impacts} impacts");
+    assert!(worst < 1e-9, "energy drifts by {worst:e}");
+}
+
+#[test]
+fn a_pin_error_shares_the_load_unequally_as_the_static_solution_says() {
+    // Planet 1's pin 0.1 µm ahead: both its meshes relax by e cos α. The central members
+    // are rigid rotations, so every planet's two meshes in series (k_sp k_rp/(k_sp +
+    // k_rp)) close the same gap less their own 2 e cos α: F_k = T_s/(N r_s) − 2 k_path
+    // cos α (e_k − ē), the sum still T_s / r_s.
+    let text = single_pair_bench().replacen(
+        "planet_inertia_kgm2 = 0.0015\n",
+        "planet_inertia_kgm2 = 0.0015\nplanet_pin_errors_um = [0.1, 0.0, 0.0]\n",
+        1,
+    );
+    let dir = folder("planetary-pin-error");
+    let out = dir.join("out");
+    simulate(
+        &written(&dir, "pin", &text),
+        ("1500", "50"),
+        ("2", "0.5"),
+        &out,
+    );
+    let at = last_sample(&out);
+    let cos = 20f64.to_radians().cos();
+    let rs = 0.003 * 24.0 * cos / 2.0;
+    let path = 4.0e8 * 4.5e8 / (4.0e8 + 4.5e8);
+    let errors = [0.1e-6, 0.0, 0.0];
+    let mean = errors.iter().sum::<f64>() / 3.0;
+    let input = at("torque_input_nm");
+    for (k, e) in errors.iter().enumerate() {
+        let expected = input / (3.0 * rs) - 2.0 * path * cos * (e - mean);
+        for kind in ["sun", "ring"] {
+            let force = at(&format!("force_epi_{kind}_planet{}_n", k + 1));
+            assert!(
+                (force - expected).abs() < 1e-9 * expected,
+                "{kind} mesh of planet {}: {force} N, the static solution {expected} N",
+                k + 1
+            );
+        }
+    }
+    // The planet ahead carries less: about 26 N of the 98.5 N share.
+    let first = at("force_epi_sun_planet1_n");
+    assert!(first < 75.0 && first > 70.0, "{first}");
+}
+
+#[test]
+fn the_condition_report_averages_the_ring_sensor_over_the_carrier_and_reads_the_fault_lines() {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenarios/rigs/planetary-bench.toml"
+    );
+    let shipped = std::fs::read_to_string(path).expect("shipped bench");
+    let dir = folder("planetary-condition");
+    let cracked = shipped.replacen(
+        "\n[motor]",
+        "\n[[planetary.fault]]\ngear = \"sun\"\ntooth = 5\nkind = \"crack\"\nseverity = 0.4\n\n[motor]",
+        1,
+    );
+    let report = |name: &str, text: &str| {
+        let rig = written(&dir, name, text);
+        let args = [
+            "simulate",
+            "--rig",
+            &rig,
+            "--rpm",
+            "1500",
+            "--load",
+            "50",
+            "--settle",
+            "1",
+            "--duration",
+            "2",
+            "--json",
+        ];
+        json(&testrig(&args))["condition"].clone()
+    };
+    let (healthy, crack) = (report("healthy", &shipped), report("cracked", &cracked));
+    assert_eq!(healthy["gear"], "carrier");
+    assert_eq!(healthy["teeth"], 96);
+    assert_eq!(healthy["signal"], "sensor_epi_n");
+    // Ten carrier turns in 2 s at 5 Hz: whole ones between the first and last pulse.
+    assert!(healthy["revolutions_averaged"].as_u64().expect("a count") >= 8);
+    let line = |c: &serde_json::Value, name: &str| {
+        let l = &c["planetary"][0]["lines"][name];
+        (
+            l["hz"].as_f64().expect("hz"),
+            l["amplitude"].as_f64().expect("amplitude"),
+        )
+    };
+    // 1500 rev/min, the ring held: carrier 5 Hz, the sun 20 Hz against it.
+    let expected = [
+        ("mesh", 480.0),
+        ("planet_pass", 15.0),
+        ("sun_fault", 60.0),
+        ("planet_fault", 96.0 / 36.0 * 5.0),
+        ("ring_fault", 15.0),
+    ];
+    for (name, hz) in expected {
+        assert!((line(&healthy, name).0 - hz).abs() < 1e-9, "{name}");
+    }
+    let (before, after) = (line(&healthy, "sun_fault").1, line(&crack, "sun_fault").1);
+    eprintln!(
+        "MEASURED ring sensor at the sun's fault line, 60 Hz: healthy {before:.3e} N, cracked 0.4 {after:.3e} N"
+    );
+    assert!(after > 100.0 * before, "{before:e} -> {after:e} N");
+}
