@@ -6,6 +6,7 @@ use rig::mesh_stiffness::PairGeometry;
 use rig::{ContactLaw, FaultKind, FaultedGear, Mesh, MeshPairs, RigTopology, ToothFault};
 use toml::Spanned;
 
+use super::read_rig_planetary::checked_stage_fault;
 use super::rig_file_toml::{FaultToml, MeshToml};
 use super::source::ScenarioSource;
 
@@ -194,8 +195,9 @@ fn pair_geometry(
     Ok(geometry)
 }
 
-/// Seeds each of `faults` (a sweep's `[[rig.fault]]`, each naming its mesh) on the mesh
-/// of `rig` it names, after the faults the rig file gives; each refused at its place.
+/// Seeds each of `faults` (a sweep's `[[rig.fault]]`, each naming its mesh, or a
+/// planetary stage with `gear` its sun, ring or planet) on the mesh or stage of `rig` it
+/// names, after the faults the rig file gives; each refused at its place.
 pub(crate) fn seed_faults(
     src: &ScenarioSource,
     rig: &mut RigTopology,
@@ -209,7 +211,18 @@ pub(crate) fn seed_faults(
                 "missing: name the mesh the fault is seeded on",
             ));
         };
-        let known: Vec<&str> = rig.meshes.iter().map(|m| m.name.as_str()).collect();
+        if let Some(stage) = rig.planetary.iter_mut().find(|s| s.name == *name.get_ref()) {
+            let shape = (stage.teeth, stage.planets());
+            let fault = checked_stage_fault(src, f, shape, "rig.fault")?;
+            stage.faults.push(fault);
+            continue;
+        }
+        let known: Vec<&str> = rig
+            .meshes
+            .iter()
+            .map(|m| m.name.as_str())
+            .chain(rig.planetary.iter().map(|s| s.name.as_str()))
+            .collect();
         let known = known.join(", ");
         let Some(mesh) = rig.meshes.iter_mut().find(|m| m.name == *name.get_ref()) else {
             return Err(src.error(

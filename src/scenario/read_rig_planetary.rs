@@ -104,24 +104,44 @@ fn stage_fault(
     p: &PlanetaryToml,
     f: &FaultToml,
 ) -> anyhow::Result<StageFault> {
-    let table = "planetary.fault";
     if let Some(mesh) = &f.mesh {
         return Err(src.error(
             mesh.span(),
-            &format!("{table}.mesh"),
+            "planetary.fault.mesh",
             "a stage's fault belongs to the [[planetary]] above it: leave out `mesh`",
         ));
     }
-    let teeth = p.teeth.get_ref();
-    let planets = *p.planets.get_ref() as usize;
-    let gear = |name: &str| match name {
-        "sun" => Some((StageMember::Sun, teeth.sun)),
-        "ring" => Some((StageMember::Ring, teeth.ring)),
-        _ => name
-            .strip_prefix("planet")
-            .and_then(|k| k.parse::<usize>().ok())
-            .filter(|k| (1..=planets).contains(k))
-            .map(|k| (StageMember::Planet(k - 1), teeth.planet)),
+    let t = p.teeth.get_ref();
+    let teeth = StageTeeth {
+        sun: t.sun,
+        planet: t.planet,
+        ring: t.ring,
+    };
+    checked_stage_fault(
+        src,
+        f,
+        (teeth, *p.planets.get_ref() as usize),
+        "planetary.fault",
+    )
+}
+
+/// A stage fault's gear (`sun`, `ring`, `planet<k>` of a stage of these teeth and
+/// planets), tooth, kind and severity, each refused at its place (`table` names it).
+pub(super) fn checked_stage_fault(
+    src: &ScenarioSource,
+    f: &FaultToml,
+    (teeth, planets): (StageTeeth, usize),
+    table: &str,
+) -> anyhow::Result<StageFault> {
+    let gear = |name: &str| {
+        StageMember::parse(name, planets).map(|member| {
+            let z = match member {
+                StageMember::Sun => teeth.sun,
+                StageMember::Ring => teeth.ring,
+                StageMember::Planet(_) => teeth.planet,
+            };
+            (member, z)
+        })
     };
     let gears = format!("`sun`, `ring` or `planet1` to `planet{planets}`");
     let (member, tooth, kind, severity) = fault_fields(src, f, table, gear, &gears)?;

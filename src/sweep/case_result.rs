@@ -105,9 +105,9 @@ pub struct CaseResult {
 /// One tooth fault of a case's rig, as `labels.csv` names it.
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct FaultLabel {
-    /// The mesh's name.
+    /// The mesh's name, or the planetary stage's.
     pub mesh: String,
-    /// `driver` or `driven`.
+    /// `driver` or `driven`; a stage's `sun`, `ring` or `planet<k>`.
     pub gear: String,
     /// The tooth, 1..=z of that gear.
     pub tooth: u32,
@@ -249,5 +249,14 @@ pub fn fault_labels(rig: &RigTopology) -> Vec<FaultLabel> {
                 severity: f.severity,
             })
         })
+        .chain(rig.planetary.iter().flat_map(|s| {
+            s.faults.iter().map(|f| FaultLabel {
+                mesh: s.name.clone(),
+                gear: f.member.name(),
+                tooth: f.tooth,
+                kind: f.kind.name().into(),
+                severity: f.severity,
+            })
+        }))
         .collect()
 }

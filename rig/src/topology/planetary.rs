@@ -81,6 +81,30 @@ pub enum StageMember {
     Planet(usize),
 }
 
+impl StageMember {
+    /// Its name as rig files write it: `sun`, `ring`, `planet<k>` (k from 1).
+    pub fn name(self) -> String {
+        match self {
+            Self::Sun => "sun".into(),
+            Self::Ring => "ring".into(),
+            Self::Planet(k) => format!("planet{}", k + 1),
+        }
+    }
+
+    /// The gear named `name` of a stage of `planets` planets.
+    pub fn parse(name: &str, planets: usize) -> Option<Self> {
+        match name {
+            "sun" => Some(Self::Sun),
+            "ring" => Some(Self::Ring),
+            _ => name
+                .strip_prefix("planet")
+                .and_then(|k| k.parse::<usize>().ok())
+                .filter(|k| (1..=planets).contains(k))
+                .map(|k| Self::Planet(k - 1)),
+        }
+    }
+}
+
 /// A fault on one tooth of a stage's sun, ring or planet, acting in every mesh that
 /// tooth enters (a sun tooth meets each planet in turn, a planet tooth the sun and the
 /// ring, a ring tooth each planet).
