@@ -11,7 +11,7 @@
 //! `read_instrument.rs` (a filter's or meter's settings from its table); `preset_file.rs`
 //! presets from files and `preset_with_overrides` (every command's `--preset` and `--set`);
 //! `builtin_rigs.rs` presets that are rig files, built in; `read_rig_file.rs` a rig file
-//! to a checked `rig::RigTopology`, `rig_overrides.rs` its values set by path, `read_rig_mesh.rs` its meshes and their faults, `read_rig_planetary.rs` its planetary stages, bearings in the plane and shafts to the frame, `rig_fault_place.rs` where a check's fault lies in it; `run_plan.rs` the result; `build.rs` it all together; `coverage.rs` whether each
+//! to a checked `rig::RigTopology`, `rig_overrides.rs` its values set by path, `read_rig_mesh.rs` its meshes, `read_faults.rs` the faults of meshes, stages and sweeps, `read_rig_planetary.rs` its planetary stages, bearings in the plane and shafts to the frame, `rig_fault_place.rs` where a check's fault lies in it; `run_plan.rs` the result; `build.rs` it all together; `coverage.rs` whether each
 //! measurement fits the run
 
 pub(crate) mod build;
@@ -23,6 +23,7 @@ pub(crate) mod coverage;
 pub(crate) mod plan_rig;
 pub(crate) mod preset_file;
 pub(crate) mod preset_rig;
+pub(crate) mod read_faults;
 pub(crate) mod read_instrument;
 pub(crate) mod read_rig;
 pub(crate) mod read_rig_file;

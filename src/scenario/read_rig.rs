@@ -5,7 +5,7 @@ use toml::Spanned;
 
 use super::preset_file::preset_params;
 use super::preset_rig::preset_topology;
-use super::read_rig_mesh::seed_faults;
+use super::read_faults::seed_faults;
 use super::rig_overrides::{checked_at_path, rig_of_file_table, set_table_paths};
 use super::run_plan::{Measure, PlanRig};
 use super::scenario_toml::{ChangeFile, RigFile, ScenarioFile, ScheduleFile, SurveyFile};

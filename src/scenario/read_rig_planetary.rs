@@ -3,12 +3,13 @@
 //! every fault at its place with what is allowed.
 
 use rig::{
-    MAX_PLANETS, MeshPairs, PlanarBearing, PlanetaryStage, RingSensor, StageFault, StageMember,
-    StageMesh, StageRadii, StageTeeth,
+    MAX_PLANETS, MeshPairs, PlanarBearing, PlanetaryStage, RingSensor, StageFault, StageMesh,
+    StageRadii, StageTeeth,
 };
 use toml::Spanned;
 
-use super::read_rig_mesh::{fault_fields, or};
+use super::read_faults::checked_stage_fault;
+use super::read_rig_mesh::or;
 use super::rig_file_toml::{FaultToml, PlanetaryToml, StageMeshToml};
 use super::source::ScenarioSource;
 
@@ -123,34 +124,6 @@ fn stage_fault(
         (teeth, *p.planets.get_ref() as usize),
         "planetary.fault",
     )
-}
-
-/// A stage fault's gear (`sun`, `ring`, `planet<k>` of a stage of these teeth and
-/// planets), tooth, kind and severity, each refused at its place (`table` names it).
-pub(super) fn checked_stage_fault(
-    src: &ScenarioSource,
-    f: &FaultToml,
-    (teeth, planets): (StageTeeth, usize),
-    table: &str,
-) -> anyhow::Result<StageFault> {
-    let gear = |name: &str| {
-        StageMember::parse(name, planets).map(|member| {
-            let z = match member {
-                StageMember::Sun => teeth.sun,
-                StageMember::Ring => teeth.ring,
-                StageMember::Planet(_) => teeth.planet,
-            };
-            (member, z)
-        })
-    };
-    let gears = format!("`sun`, `ring` or `planet1` to `planet{planets}`");
-    let (member, tooth, kind, severity) = fault_fields(src, f, table, gear, &gears)?;
-    Ok(StageFault {
-        member,
-        tooth,
-        kind,
-        severity,
-    })
 }
 
 /// The planets' angles (rad): as given (one per planet), else equally spaced.

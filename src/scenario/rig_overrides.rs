@@ -8,8 +8,8 @@ use anyhow::Context;
 use rig::RigTopology;
 use toml::Spanned;
 
+use super::read_faults::seed_faults;
 use super::read_rig_file::{read_rig_file, rig_topology};
-use super::read_rig_mesh::seed_faults;
 use super::rig_fault_place::place_item;
 use super::scenario_toml::RigFile;
 use super::source::ScenarioSource;
