@@ -280,33 +280,10 @@ impl RigTopology {
         let m = &self.meshes[i];
         for (k, f) in m.faults.iter().enumerate() {
             let (gear, teeth) = match f.gear {
-                crate::tooth_fault::FaultedGear::Driver => ("driver", m.teeth[0]),
-                crate::tooth_fault::FaultedGear::Driven => ("driven", m.teeth[1]),
+                crate::tooth_fault::FaultedGear::Driver => ("driver gear", m.teeth[0]),
+                crate::tooth_fault::FaultedGear::Driven => ("driven gear", m.teeth[1]),
             };
-            if !(1..=teeth).contains(&f.tooth) {
-                return Err(fault(
-                    "mesh",
-                    i,
-                    "fault",
-                    format!(
-                        "fault {}: tooth {} of the {gear} gear, which has teeth 1 to {teeth}",
-                        k + 1,
-                        f.tooth
-                    ),
-                ));
-            }
-            if !(0.0..=1.0).contains(&f.severity) {
-                return Err(fault(
-                    "mesh",
-                    i,
-                    "fault",
-                    format!(
-                        "fault {}: severity {}: a share of the tooth, 0 to 1",
-                        k + 1,
-                        f.severity
-                    ),
-                ));
-            }
+            check_tooth_fault(("mesh", i, k), (gear, teeth), f.tooth, f.severity)?;
         }
         Ok(())
     }
@@ -443,4 +420,37 @@ impl RigTopology {
         }
         Ok(())
     }
+}
+
+/// Fault `k` of item `i` of `table`: on a tooth 1..=`teeth` of `gear`, its severity in
+/// [0, 1].
+pub(super) fn check_tooth_fault(
+    (table, i, k): (&'static str, usize, usize),
+    (gear, teeth): (&str, u32),
+    tooth: u32,
+    severity: f64,
+) -> Result<(), TopologyError> {
+    if !(1..=teeth).contains(&tooth) {
+        return Err(fault(
+            table,
+            i,
+            "fault",
+            format!(
+                "fault {}: tooth {tooth} of the {gear}, which has teeth 1 to {teeth}",
+                k + 1
+            ),
+        ));
+    }
+    if !(0.0..=1.0).contains(&severity) {
+        return Err(fault(
+            table,
+            i,
+            "fault",
+            format!(
+                "fault {}: severity {severity}: a share of the tooth, 0 to 1",
+                k + 1
+            ),
+        ));
+    }
+    Ok(())
 }

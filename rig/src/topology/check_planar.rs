@@ -4,7 +4,7 @@
 
 use std::f64::consts::PI;
 
-use super::check::{fault, finite, non_negative, positive};
+use super::check::{check_tooth_fault, fault, finite, non_negative, positive};
 use super::coordinates::RigCoordinates;
 use super::planetary::{MAX_PLANETS, PlanarBearing, PlanetaryStage, StageMember, StageMesh};
 use super::rig_topology::{MAX_PLANT_MESHES, RigTopology};
@@ -399,30 +399,7 @@ fn check_stage_faults(s: &PlanetaryStage, i: usize) -> Result<(), TopologyError>
                 ));
             }
         };
-        if !(1..=teeth).contains(&f.tooth) {
-            return Err(fault(
-                "planetary",
-                i,
-                "fault",
-                format!(
-                    "fault {}: tooth {} of the {gear}, which has teeth 1 to {teeth}",
-                    k + 1,
-                    f.tooth
-                ),
-            ));
-        }
-        if !(0.0..=1.0).contains(&f.severity) {
-            return Err(fault(
-                "planetary",
-                i,
-                "fault",
-                format!(
-                    "fault {}: severity {}: a share of the tooth, 0 to 1",
-                    k + 1,
-                    f.severity
-                ),
-            ));
-        }
+        check_tooth_fault(("planetary", i, k), (&gear, teeth), f.tooth, f.severity)?;
     }
     Ok(())
 }

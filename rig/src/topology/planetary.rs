@@ -338,42 +338,49 @@ impl PlanetaryStage {
     }
 }
 
+/// A stage of these teeth (sun, planet, ring) and equally spaced planets at 3 mm, 20°,
+/// single pairs of 5e8 N/m, 0.1 mm backlash: the unit tests' example.
+#[cfg(test)]
+pub(crate) fn example_stage(teeth: [u32; 3], planets: usize) -> PlanetaryStage {
+    let mesh = StageMesh {
+        stiffness_n_per_m: 5e8,
+        damping_ns_per_m: 0.0,
+        backlash_mm: 0.1,
+        pairs: MeshPairs::Single,
+        double_pair_ratio: 2.0,
+        stiffness_smoothing: 0.0,
+    };
+    PlanetaryStage {
+        name: "epi".into(),
+        sun: 0,
+        ring: 1,
+        carrier: 2,
+        planet_angles_rad: PlanetaryStage::equally_spaced_rad(planets),
+        planet_inertia_kgm2: 1e-3,
+        planet_pin_errors_um: Vec::new(),
+        planet_bearing: None,
+        teeth: StageTeeth {
+            sun: teeth[0],
+            planet: teeth[1],
+            ring: teeth[2],
+        },
+        module_m: 0.003,
+        pressure_angle_deg: 20.0,
+        base_radii_m: None,
+        carrier_radius_given_m: None,
+        sun_planet: mesh.clone(),
+        ring_planet: mesh,
+        faults: Vec::new(),
+        ring_sensor: None,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     fn stage(planets: usize) -> PlanetaryStage {
-        let mesh = StageMesh {
-            stiffness_n_per_m: 5e8,
-            damping_ns_per_m: 0.0,
-            backlash_mm: 0.1,
-            pairs: MeshPairs::Single,
-            double_pair_ratio: 2.0,
-            stiffness_smoothing: 0.0,
-        };
-        PlanetaryStage {
-            name: "epi".into(),
-            sun: 0,
-            ring: 1,
-            carrier: 2,
-            planet_angles_rad: PlanetaryStage::equally_spaced_rad(planets),
-            planet_inertia_kgm2: 1e-3,
-            planet_pin_errors_um: Vec::new(),
-            planet_bearing: None,
-            teeth: StageTeeth {
-                sun: 24,
-                planet: 36,
-                ring: 96,
-            },
-            module_m: 0.003,
-            pressure_angle_deg: 20.0,
-            base_radii_m: None,
-            carrier_radius_given_m: None,
-            sun_planet: mesh.clone(),
-            ring_planet: mesh,
-            faults: Vec::new(),
-            ring_sensor: None,
-        }
+        example_stage([24, 36, 96], planets)
     }
 
     /// Willis: the carrier turns at z_s/(z_s + z_r) of the sun with the ring held, the

@@ -131,40 +131,9 @@ impl PlanetaryStage {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::topology::{StageMesh, StageTeeth};
 
     fn stage(teeth: [u32; 3], planets: usize) -> PlanetaryStage {
-        let mesh = StageMesh {
-            stiffness_n_per_m: 5e8,
-            damping_ns_per_m: 0.0,
-            backlash_mm: 0.1,
-            pairs: crate::MeshPairs::Alternating,
-            double_pair_ratio: 2.0,
-            stiffness_smoothing: 0.0,
-        };
-        PlanetaryStage {
-            name: "epi".into(),
-            sun: 0,
-            ring: 1,
-            carrier: 2,
-            planet_angles_rad: PlanetaryStage::equally_spaced_rad(planets),
-            planet_inertia_kgm2: 1e-3,
-            planet_pin_errors_um: Vec::new(),
-            planet_bearing: None,
-            teeth: StageTeeth {
-                sun: teeth[0],
-                planet: teeth[1],
-                ring: teeth[2],
-            },
-            module_m: 0.003,
-            pressure_angle_deg: 20.0,
-            base_radii_m: None,
-            carrier_radius_given_m: None,
-            sun_planet: mesh.clone(),
-            ring_planet: mesh,
-            faults: Vec::new(),
-            ring_sensor: None,
-        }
+        crate::topology::planetary::example_stage(teeth, planets)
     }
 
     /// The contact ratios are the textbook's (√(ra₁² − rb₁²) ± √(ra₂² − rb₂²) ∓ a sin α)/p_b,
