@@ -71,6 +71,11 @@ fn slope_root(coeffs: &[f64], mut a: f64, mut b: f64) -> f64 {
     0.5 * (a + b)
 }
 
+/// A bracket [0, b] narrower than this, p(b) > 0 and p(0) ≥ 0: the crossing is at the
+/// step's start. No polynomial of a step's Taylor expansion dips below 0 within 1e-20 of a
+/// step (its coefficients would have to differ by 1e20 from one order to the next).
+const DUE_NOW: f64 = 1e-20;
+
 /// Narrows [a, b] with p(a) = `value_a` ≤ 0 < p(b) = `value_b` to within 64 ulps of the
 /// crossing (far below any time the model resolves): Newton steps from the secant point,
 /// kept inside the bracket. Returns its right end, where p > 0.
@@ -81,12 +86,20 @@ fn refine(coeffs: &[f64], (mut a, value_a): (f64, f64), (mut b, value_b): (f64, 
     } else {
         0.5 * (a + b)
     };
+    // Where p(0) ≥ 0 (an event due at the step's start: simultaneous with the one just
+    // taken, or held at 0 by rounding) and p stays above 0 as the bracket closes on 0, it
+    // does so all the way down: the bisection would run on to the least positive number
+    // (a thousand halvings), which is returned once the bracket is below [`DUE_NOW`].
+    let due_now = coeffs.first().is_some_and(|&c| c >= 0.0);
     for _ in 0..100 {
         let (value, slope) = poly_eval(coeffs, s);
         if value > 0.0 {
             b = s;
         } else {
             a = s;
+        }
+        if due_now && a == 0.0 && b < DUE_NOW {
+            return f64::from_bits(1);
         }
         let close = 16.0 * f64::EPSILON * b;
         if b - a <= 4.0 * close {
@@ -116,6 +129,9 @@ fn refine(coeffs: &[f64], (mut a, value_a): (f64, f64), (mut b, value_b): (f64, 
             b = mid;
         } else {
             a = mid;
+        }
+        if due_now && a == 0.0 && b < DUE_NOW {
+            return f64::from_bits(1);
         }
     }
     b
@@ -163,4 +179,26 @@ fn hermite_max(g0: f64, d0: f64, c2: f64, c3: f64) -> f64 {
             .unwrap_or(0.5)
     };
     poly_eval(&coeffs, s.clamp(0.0, 1.0)).0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A crossing due at the step's start (p(0) = 0, rising: a zone boundary another
+    /// planet's mesh crossed at the same instant) is found there, at the least positive
+    /// s; one inside the step where the secant and Newton say.
+    #[test]
+    fn crossings_at_the_start_and_inside() {
+        let due = [0.0, 8.1e-5, -5.1e-10, 4.0e-12];
+        assert_eq!(first_crossing(&due), Some(f64::from_bits(1)));
+        // p = s − 0.3: crosses at 0.3 (the bracket's right end, within 64 ulps).
+        let inside = first_crossing(&[-0.3, 1.0]).expect("a crossing");
+        assert!(
+            inside > 0.3 && inside - 0.3 < 64.0 * f64::EPSILON,
+            "{inside}"
+        );
+        // Falling from 0: no crossing.
+        assert_eq!(first_crossing(&[0.0, -1.0]), None);
+    }
 }
