@@ -144,13 +144,16 @@ pub fn regime_of(motion: Motion) -> Regime {
 
 /// The gear a point's condition indicators watch: the `[keyphasor]`'s gear, else the
 /// first tooth fault's gear, else the first mesh's driven gear, else the first planetary
-/// stage's carrier; (body, teeth). A carrier counts the ring's teeth: with the ring held,
-/// its turn holds z_r mesh periods (carrier-synchronous averaging).
+/// stage's carrier where its ring is held; (body, teeth). Such a carrier counts the
+/// ring's teeth: its turn holds z_r mesh periods (carrier-synchronous averaging). A stage
+/// whose ring turns (its carrier held, or a differential's) has no whole mesh periods a
+/// carrier turn, and is not watched so.
 pub fn watched_gear(rig: &RigTopology) -> Option<(usize, u32)> {
+    let speeds = rig.relative_speeds();
     let carrier = |body: usize| {
         rig.planetary
             .iter()
-            .find(|s| s.carrier == body)
+            .find(|s| s.carrier == body && speeds[s.ring] == Some(0.0))
             .map(|s| (body, s.teeth.ring))
     };
     let marked = rig.keyphasor.and_then(|body| {

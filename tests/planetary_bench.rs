@@ -257,8 +257,9 @@ fn the_condition_report_averages_the_ring_sensor_over_the_carrier_and_reads_the_
 
 /// The shipped data set (`scenarios/planetary-fault-dataset.toml`, 36 cases) labels every
 /// case of gear × severity × speed × load once, severity 0 as healthy, names the stage
-/// and the gear of each fault, records every case, and at every point the output
-/// torque's carrier-synchronous residual grows with each step of the sun's crack.
+/// and the gear of each fault, records every case, and at every point the ring sensor's
+/// carrier-synchronous residual (the truth columns average it) grows with each step of
+/// the sun's crack.
 #[test]
 fn the_planetary_fault_dataset_labels_every_case_and_the_sun_crack_lifts_the_residual() {
     let dir = folder("planetary-fault-dataset");
@@ -317,7 +318,7 @@ fn the_planetary_fault_dataset_labels_every_case_and_the_sun_crack_lifts_the_res
             })
             .collect();
         eprintln!(
-            "MEASURED planetary data set {rpm} rev/min {load} N m: residual RMS by sun crack 0, 0.25, 0.5: {residual:?} N m"
+            "MEASURED planetary data set {rpm} rev/min {load} N m: the ring sensor's residual RMS by sun crack 0, 0.25, 0.5: {residual:?} N"
         );
         assert!(
             residual[0] < residual[1] && residual[1] < residual[2],

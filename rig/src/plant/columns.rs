@@ -168,8 +168,12 @@ fn sensor_column(rig: &RigTopology, block: &NetworkBlock, stage: usize) -> Vec<f
     let Some(sensor) = &s.ring_sensor else {
         return Vec::new();
     };
-    // The carrier's angle as the coordinates count it (the block's is in its sense).
-    let sense = rig.relative_speeds()[s.carrier].map_or(1.0, |w| if w < 0.0 { -1.0 } else { 1.0 });
+    // The carrier's angle as the coordinates count it (the block's is in its sense: the
+    // sign of its speed per unit speed of the motor's body).
+    let speeds = rig.relative_speeds();
+    let base = speeds[rig.motor.unwrap_or(0)].unwrap_or(1.0);
+    let share = speeds[s.carrier].unwrap_or(0.0) / base;
+    let sense = if share < 0.0 { -1.0 } else { 1.0 };
     let carrier: Vec<f64> = block.angle_rad[s.carrier]
         .iter()
         .map(|a| sense * a)

@@ -62,7 +62,7 @@ fn two() -> f64 {
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct RingSensor {
     /// Its place on the ring (rad, from the first planet's place with the carrier at 0,
-    /// in the carrier's sense of rotation).
+    /// measured as the planets' angles are).
     pub angle_rad: f64,
     /// The window's full width (rad): a planet further than half of it from the sensor
     /// is not seen.
@@ -112,9 +112,10 @@ impl StageMember {
 pub struct StageFault {
     /// The gear whose tooth it is.
     pub member: StageMember,
-    /// The tooth, 1..=z of that gear: tooth 1 of the sun and the ring is the one in mesh
-    /// with the first planet at angle 0, tooth 1 of a planet the one in mesh with the
-    /// sun there; the others numbered in the order they come into mesh.
+    /// The tooth, 1..=z of that gear: tooth 1 of the sun and of each planet is in the pair
+    /// entering the first planet's sun mesh at the start, tooth 1 of the ring in the pair
+    /// entering its ring mesh in that mesh's first period (`StageMeshPhase`); the others
+    /// numbered in the order they come into mesh.
     pub tooth: u32,
     /// What it is.
     pub kind: FaultKind,

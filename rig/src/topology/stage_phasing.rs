@@ -9,12 +9,16 @@
 //! enters at the start of the line of action) where X − z_s ψ_k/2π is whole, ψ_k from the
 //! first planet: Parker & Lin's γ_sk. Its ring mesh follows the planet's teeth half a
 //! planet's turn on (z_p/2 teeth), from the sun mesh's pitch point (a_s periods after a
-//! pair enters there) to the ring's (a_r periods after one enters): its periods start
-//! where X − z_s ψ_k/2π − a_s − z_p/2 + a_r is whole, so that γ_rk ≡ −z_r ψ_k/2π (z_s +
-//! z_r)ψ_k/2π being whole) and the sun and ring meshes of one planet stand apart by the
-//! geometry of their lines of action. The sun's tooth in mesh with planet k in period p
-//! is p, the planet's p, the ring's p + (z_s + z_r)ψ_k/2π: each numbered from the pair in
-//! mesh with the first planet at X = 0, in the order they come into mesh.
+//! pair enters there) to the ring's (a_r periods after one enters), less a tooth's
+//! thickness at the pitch circle (half a pitch for standard teeth): the planet, an idler,
+//! takes the sun's push on one flank of a tooth and pushes the ring with the other, which
+//! leads it by that thickness. Its periods start where X − z_s ψ_k/2π − a_s − z_p/2 + ½ +
+//! a_r is whole, so that γ_rk ≡ −z_r ψ_k/2π ((z_s + z_r)ψ_k/2π being whole) and the sun
+//! and ring meshes of one planet stand apart by the geometry of their teeth and lines of
+//! action. The sun's tooth in mesh with planet k in period p is p, the planet's p, the
+//! ring's p + (z_s + z_r)ψ_k/2π: the sun's and the planets' numbered from the pair
+//! entering the first planet's sun mesh at X = 0, the ring's from the pair entering its
+//! ring mesh in that mesh's period 0, each in the order they come into mesh.
 //!
 //! The geometry is the teeth's: standard addenda m, pitch radii m z/2 (a stage given
 //! published base radii keeps its teeth's phasing).
@@ -24,6 +28,11 @@ use std::f64::consts::PI;
 use crate::tooth_fault::{FaultedGear, ToothFault};
 
 use super::planetary::{PlanetaryStage, StageMember};
+
+/// A planet tooth's thickness at its pitch circle over the circular pitch: ½ for standard
+/// teeth (no profile shift), the lead of the flank that pushes the ring over the one the
+/// sun pushes.
+const TOOTH_THICKNESS_PITCHES: f64 = 0.5;
 
 /// Where a stage mesh's tooth periods stand.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -66,7 +75,9 @@ impl PlanetaryStage {
         let ring_stretch = self.stretches(true);
         StageMeshPhase {
             contact_ratio: ring_stretch.approach + ring_stretch.recess,
-            start_periods: sun_start + sun.approach + zp / 2.0 - ring_stretch.approach,
+            start_periods: sun_start + sun.approach + zp / 2.0
+                - TOOTH_THICKNESS_PITCHES
+                - ring_stretch.approach,
             tooth_offsets: [0, ((zs + zr) * turns).round() as i64],
         }
     }
