@@ -215,6 +215,10 @@ fn sun_teeth(teeth: &str) -> f64 {
         .expect("a number")
 }
 
+/// A stage mesh as the RK4 reference writes it: its deflection's (coordinate,
+/// coefficient) terms, stiffness (N/m), damping (N s/m) and half free play (m).
+type ReferenceMesh = (Vec<(usize, f64)>, f64, f64, f64);
+
 /// The crossings of |δ| = b from inside (time, mesh) of an RK4 at `step_s` of the
 /// stage's equations written out from the topology alone (absolute angles; the planets
 /// on their pins: δ_sp = r_s θ_s + r_p θ_p − r_c cos α θ_c, δ_rp = r_r θ_r − r_p θ_p −
@@ -239,7 +243,7 @@ fn stage_rk4_impacts(
     let rc = m * f64::from(s.teeth.sun + s.teeth.planet) / 2.0 * cos;
     let planet = |k: usize| rig.bodies.len() + k;
     // Each mesh's (coordinate, coefficient), stiffness, damping and half free play.
-    let mut meshes: Vec<(Vec<(usize, f64)>, f64, f64, f64)> = Vec::new();
+    let mut meshes: Vec<ReferenceMesh> = Vec::new();
     for (ring, mesh) in [(false, &s.sun_planet), (true, &s.ring_planet)] {
         for k in 0..s.planets() {
             let terms = if ring {
