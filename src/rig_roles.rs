@@ -10,7 +10,8 @@ use instruments::ShaftStrain;
 use rig::{Gauge, NetworkBlock, RigTopology};
 
 use crate::chain::ChainStages;
-use crate::steady_point::{judged_shaft, watched_gear};
+use crate::chain::watched_gear;
+use crate::steady_point::judged_shaft;
 use crate::vocabulary::frame::Frame;
 
 /// The keyphasor's high level (V): [`crate::vocabulary::signal_names::KEYPHASOR_V`] is this over the first

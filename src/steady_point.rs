@@ -12,12 +12,12 @@ use std::time::Instant;
 
 use anyhow::Context;
 use rig::{
-    Approach, FaultedGear, JudgeInput, Judgement, Motion, NetworkBlock, NetworkImpact,
-    NetworkPlant, Regime, RigTopology, SteadySummary, impacts_per_tooth, judge,
+    Approach, JudgeInput, Judgement, Motion, NetworkBlock, NetworkImpact, NetworkPlant, Regime,
+    RigTopology, SteadySummary, impacts_per_tooth, judge,
 };
 use serde::Serialize;
 
-use crate::chain::{GearCondition, GearConditionReport, stage_lines};
+use crate::chain::{GearCondition, GearConditionReport, sensed_stage, stage_lines, watched_gear};
 use crate::vocabulary::{InputNames, check_times};
 use crate::vocabulary::{check_load_nm, check_load_within, check_speed_rpm};
 
@@ -140,53 +140,6 @@ pub fn regime_of(motion: Motion) -> Regime {
         Motion::NoVibration => Regime::Periodic(1),
         _ => Regime::Aperiodic,
     }
-}
-
-/// The gear a point's condition indicators watch: the `[keyphasor]`'s gear, else the
-/// first tooth fault's gear, else the first mesh's driven gear, else the first planetary
-/// stage's carrier where its ring is held; (body, teeth). Such a carrier counts the
-/// ring's teeth: its turn holds z_r mesh periods (carrier-synchronous averaging). A stage
-/// whose ring turns (its carrier held, or a differential's) has no whole mesh periods a
-/// carrier turn, and is not watched so.
-pub fn watched_gear(rig: &RigTopology) -> Option<(usize, u32)> {
-    let speeds = rig.relative_speeds();
-    let carrier = |body: usize| {
-        rig.planetary
-            .iter()
-            .find(|s| s.carrier == body && speeds[s.ring] == Some(0.0))
-            .map(|s| (body, s.teeth.ring))
-    };
-    let marked = rig.keyphasor.and_then(|body| {
-        rig.meshes
-            .iter()
-            .find_map(|m| {
-                (0..2)
-                    .find(|&side| m.gears[side] == body)
-                    .map(|side| (body, m.teeth[side]))
-            })
-            .or_else(|| carrier(body))
-    });
-    let faulted = || {
-        rig.meshes.iter().find_map(|m| {
-            m.faults.first().map(|f| match f.gear {
-                FaultedGear::Driver => (m.gears[0], m.teeth[0]),
-                FaultedGear::Driven => (m.gears[1], m.teeth[1]),
-            })
-        })
-    };
-    marked
-        .or_else(faulted)
-        .or_else(|| rig.meshes.first().map(|m| (m.gears[1], m.teeth[1])))
-        .or_else(|| rig.planetary.first().and_then(|s| carrier(s.carrier)))
-}
-
-/// The signal a watched carrier's average takes: its stage's ring sensor, if it has one
-/// (the stage's index).
-fn sensed_stage(rig: &RigTopology, watched: Option<(usize, u32)>) -> Option<usize> {
-    let (gear, _) = watched?;
-    rig.planetary
-        .iter()
-        .position(|s| s.carrier == gear && s.ring_sensor.is_some())
 }
 
 /// A point run: the plant as it ended, the window's impacts and summary, and the times.
@@ -341,6 +294,7 @@ pub struct RigWindow {
 impl RigWindow {
     /// An empty window on `rig`'s signals at `rate_hz`.
     pub fn new(rig: &RigTopology, rate_hz: f64) -> Self {
+        let watched = watched_gear(rig);
         Self {
             rate_hz,
             start_s: None,
@@ -351,9 +305,9 @@ impl RigWindow {
             motor_sum: 0.0,
             judged: judged_shaft(rig),
             judged_torque: Vec::new(),
-            watched: watched_gear(rig),
+            watched,
             condition: GearCondition::new(rate_hz),
-            sensor: sensed_stage(rig, watched_gear(rig)).and_then(|stage| {
+            sensor: sensed_stage(rig, watched).and_then(|stage| {
                 let name = format!("sensor_{}_n", rig.planetary[stage].name);
                 let column = rig::column_names(rig).iter().position(|c| *c == name)?;
                 Some((rig.clone(), column))

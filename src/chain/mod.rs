@@ -37,6 +37,7 @@ pub(crate) mod stage_commands;
 pub(crate) mod stage_plan;
 pub(crate) mod standard;
 pub(crate) mod voltmeters;
+mod watched_gear;
 
 pub use analysed::{analyse_analogue, anti_aliased};
 pub use analyser_setup::{AdcChoice, AnalyserSetting, AnalyserSetup, AnalyserWords};
@@ -53,3 +54,4 @@ pub use stage::Stage;
 pub use stage_plan::{NamedStage, StagePlan};
 pub use standard::{StandardChain, standard_stages};
 pub use voltmeters::{DvmSettings, MeterSettings};
+pub use watched_gear::{sensed_stage, watched_gear};

@@ -9,12 +9,13 @@ use serde::Serialize;
 
 use super::signal_writer::SignalWriter;
 use crate::cli::SimulateArgs;
+use testrig::chain::watched_gear;
 use testrig::plots::{AveragePlot, RasterImpact, write_impact_raster, write_synchronous_average};
 use testrig::recording::{ImpactLog, PartialFile};
 use testrig::runtime::write_command_manifest;
 use testrig::scenario::command_rig;
 use testrig::steady_point::{
-    RigPointRun, RigPointSpec, RigPointSummary, judged_shaft, run_rig_point, watched_gear,
+    RigPointRun, RigPointSpec, RigPointSummary, judged_shaft, run_rig_point,
 };
 use testrig::vocabulary::FLAG_NAMES;
 

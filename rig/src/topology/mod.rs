@@ -19,6 +19,7 @@ mod modes;
 mod planetary;
 mod rig_topology;
 mod speeds;
+mod stage_fields;
 mod stage_phasing;
 
 pub use coordinates::{Coordinate, CoordinateKind, Coupling, MeshForm, RigCoordinates};
