@@ -6,7 +6,7 @@
 
 mod common;
 
-use common::{folder, json, refused_rig, testrig};
+use common::{bench_in_the_plane, csv_rows, folder, json, number, refused_rig, testrig};
 
 fn lin_parker() -> String {
     let path = concat!(
@@ -131,6 +131,17 @@ fn bad_stages_are_refused_at_their_line_naming_the_field_and_what_is_allowed() {
                 "one of single, alternating",
             ],
         ),
+        (
+            "member-meshes-outside",
+            "[[shaft]]\n",
+            "[[body]]\nname = \"pinion\"\ninertia_kgm2 = 0.001\n\n[[mesh]]\nname = \"side\"\ndriver = \"pinion\"\ndriven = \"carrier\"\nteeth = [20, 60]\nmodule_m = 0.003\npressure_angle_deg = 20.0\nbacklash_mm = 0.1\nstiffness_n_per_m = 2.0e8\n\n[[shaft]]\n",
+            "mass_kg = 5.43",
+            vec![
+                "body `carrier`.mass_kg",
+                "moves in the plane in stage `epi` and meshes in mesh `side` too",
+                "mesh it in this stage only",
+            ],
+        ),
     ];
     for (name, from, to, line_start, says) in cases {
         assert!(good.contains(from), "{name}: {from:?} not in the file");
@@ -227,16 +238,17 @@ fn modes_json_names_the_planar_coordinates_and_the_kinds() {
         .map(|c| c.as_str().expect("name"))
         .collect();
     // Three central members and three planets, each θ, x, y: the bodies' rotations first,
-    // then their translations, then the planets'.
+    // then their translations, then the planets' rotations, then their translations.
     assert_eq!(coordinates.len(), 18);
     assert_eq!(
         &coordinates[..5],
         ["sun", "ring", "carrier", "sun.x", "sun.y"]
     );
     assert_eq!(
-        &coordinates[15..],
-        ["epi_planet3", "epi_planet3.x", "epi_planet3.y"]
+        &coordinates[9..13],
+        ["epi_planet1", "epi_planet2", "epi_planet3", "epi_planet1.x"]
     );
+    assert_eq!(&coordinates[16..], ["epi_planet3.x", "epi_planet3.y"]);
     let kinds = value["kinds"].as_array().expect("kinds");
     let count = |k: &str| kinds.iter().filter(|v| v.as_str() == Some(k)).count();
     assert_eq!((count("rotational"), count("translational")), (5, 12));
@@ -244,28 +256,61 @@ fn modes_json_names_the_planar_coordinates_and_the_kinds() {
 }
 
 #[test]
-fn the_plant_refuses_a_stage_that_moves_in_the_plane_naming_it() {
-    let text = lin_parker() + "\n[motor]\nbody = \"sun\"\n\n[brake]\nbody = \"carrier\"\n";
-    let dir = folder("planetary-run");
-    let path = dir.join("driven.toml");
-    std::fs::write(&path, text).expect("written");
-    let out = testrig(&[
+fn a_stage_in_the_plane_runs_by_willis_with_its_planets_translations_as_signals() {
+    // The bench, its sun and planets on bearings: Willis's speeds hold, each planet's two
+    // meshes carry one force F (its rotation steady), and its bearing carries their sum:
+    // the radial parts (sin α) cancel, the tangential ones add to 2 F cos α, which drive
+    // the carrier: N r_c of it is the output's torque.
+    let dir = folder("planetary-planar-run");
+    let path = dir.join("planar.toml");
+    std::fs::write(&path, bench_in_the_plane("1.0e8", "")).expect("written");
+    let out = dir.join("out");
+    let run = testrig(&[
         "simulate",
         "--rig",
         path.to_str().expect("utf-8"),
         "--rpm",
-        "1000",
+        "1500",
         "--load",
-        "1",
+        "50",
+        "--settle",
+        "2",
+        "--duration",
+        "0.1",
+        "--out",
+        out.to_str().expect("utf-8"),
     ]);
-    assert!(!out.status.success());
-    let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(
-        stderr.contains("planetary stage `epi` moves in the plane")
-            && stderr.contains("steps stages turning about fixed axes")
-            && stderr.matches("moves in the plane").count() == 1
-            && !stderr.contains("panicked"),
-        "{stderr}"
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    let rows = csv_rows(&out.join("signals.csv"));
+    let last = rows.last().expect("a sample");
+    assert!((number(last, "speed_carrier_rpm") - 300.0).abs() < 1e-6);
+    let cos = 20f64.to_radians().cos();
+    let mut carried_nm = 0.0;
+    for k in 1..=3 {
+        let sun = number(last, &format!("force_epi_sun_planet{k}_n"));
+        let ring = number(last, &format!("force_epi_ring_planet{k}_n"));
+        assert!(
+            (sun - ring).abs() < 1e-6 * sun,
+            "planet {k}: {sun} against {ring} N"
+        );
+        let x = number(last, &format!("x_epi_planet{k}_m"));
+        let y = number(last, &format!("y_epi_planet{k}_m"));
+        let bearing_n = 1.0e8 * x.hypot(y);
+        assert!(
+            (bearing_n - 2.0 * sun * cos).abs() < 1e-6 * bearing_n,
+            "planet {k}: bearing {bearing_n} N against 2 F cos α = {} N",
+            2.0 * sun * cos
+        );
+        carried_nm += 0.090 * bearing_n;
+    }
+    let output = number(last, "torque_output_nm");
+    assert!(
+        (carried_nm - output).abs() < 1e-6 * output,
+        "the pins carry {carried_nm} N m of {output}"
     );
 }
 

@@ -3,7 +3,7 @@
 //! plane, the motor's torque; and each impact.
 
 use super::mode::Contact;
-use crate::topology::RigTopology;
+use crate::topology::{RigCoordinates, RigTopology};
 
 /// True signals of a rig, one entry per output sample (SI). Angles, speeds and shaft
 /// torques are taken in each body's own sense of rotation: positive the way it turns
@@ -35,15 +35,14 @@ pub struct NetworkBlock {
 
 impl NetworkBlock {
     /// An empty block shaped for `rig`: a column per turning part (bodies, then planets),
-    /// shaft and mesh (external, then the stages'), and x and y per body that moves in
-    /// the plane.
+    /// shaft and mesh (external, then the stages'), and x and y per body and planet that
+    /// moves in the plane.
     pub fn new(rig: &RigTopology) -> Self {
-        let planar = rig.bodies.iter().filter(|b| b.planar.is_some()).count();
         Self::shaped(
             rig.turning_names().len(),
             rig.shafts.len() + rig.frame_shafts.len(),
             rig.mesh_names().len(),
-            2 * planar,
+            RigCoordinates::of(rig).translations(),
         )
     }
 

@@ -23,7 +23,7 @@ pub struct Column {
 
 /// The signals' columns, after the rig: `time_s`, `speed_<body>_rpm`, `angle_<body>_rad`,
 /// `torque_<shaft>_nm` (shafts, then shafts to the frame), `contact_<mesh>` (+1 drive flank, −1 back flank, 0 apart),
-/// `force_<mesh>_n`, `x_<body>_m` and `y_<body>_m` for each body that moves in the plane,
+/// `force_<mesh>_n`, `x_<body>_m` and `y_<body>_m` for each body and planet that moves in the plane,
 /// `sensor_<stage>_n` for each planetary stage with a ring sensor, `motor_torque_nm`, and `strain_<shaft>_ue` where the rig has gauges.
 pub fn column_specs(rig: &RigTopology) -> Vec<Column> {
     let column = |name: String, unit, meaning: String| Column {
@@ -64,10 +64,13 @@ pub fn column_specs(rig: &RigTopology) -> Vec<Column> {
         let meaning = format!("mesh {m}: force along the line of action");
         out.push(column(format!("force_{m}_n"), "N", meaning));
     }
-    for b in rig.bodies.iter().filter(|b| b.planar.is_some()) {
+    for (name, what) in translating(rig) {
         for axis in ["x", "y"] {
-            let meaning = format!("{axis} of body {}'s centre on its bearing", b.name);
-            out.push(column(format!("{axis}_{}_m", b.name), "m", meaning));
+            out.push(column(
+                format!("{axis}_{name}_m"),
+                "m",
+                format!("{axis} of {what}"),
+            ));
         }
     }
     for s in rig.planetary.iter().filter(|s| s.ring_sensor.is_some()) {
@@ -86,6 +89,43 @@ pub fn column_specs(rig: &RigTopology) -> Vec<Column> {
         let name = &rig.shafts[g.shaft].name;
         let meaning = format!("strain at +45 deg on shaft {name}, from its torque");
         out.push(column(format!("strain_{name}_ue"), "ue", meaning));
+    }
+    out
+}
+
+/// What moves in the plane, each with what its x and y measure: the bodies on bearings
+/// (a stage's sun, ring or carrier in the carrier's frame), then the planets on their
+/// pins' bearings (centre less pin, in the carrier's frame).
+fn translating(rig: &RigTopology) -> Vec<(String, String)> {
+    let member = |i: usize| {
+        rig.planetary
+            .iter()
+            .any(|s| [s.sun, s.ring, s.carrier].contains(&i))
+    };
+    let bodies = rig
+        .bodies
+        .iter()
+        .enumerate()
+        .filter(|(_, b)| b.planar.is_some());
+    let mut out: Vec<(String, String)> = bodies
+        .map(|(i, b)| {
+            let frame = if member(i) {
+                ", in the carrier's frame"
+            } else {
+                ""
+            };
+            (
+                b.name.clone(),
+                format!("body {}'s centre on its bearing{frame}", b.name),
+            )
+        })
+        .collect();
+    for s in rig.planetary.iter().filter(|s| s.planet_bearing.is_some()) {
+        for k in 0..s.planets() {
+            let name = s.planet_name(k);
+            let what = format!("{name}'s centre less its pin's, in the carrier's frame");
+            out.push((name, what));
+        }
     }
     out
 }
@@ -134,7 +174,7 @@ pub fn column(rig: &RigTopology, block: &NetworkBlock, k: usize) -> Option<Vec<f
         return Some(block.mesh_force_n[k].clone());
     }
     k -= meshes;
-    let translations = 2 * rig.bodies.iter().filter(|b| b.planar.is_some()).count();
+    let translations = 2 * translating(rig).len();
     if k < translations {
         return Some(block.translation_m[k].clone());
     }

@@ -1,8 +1,10 @@
 //! The state of a rig of n coordinates (`topology::RigCoordinates`: each body's rotation,
 //! body i's first as coordinate i, then the translations of bodies that move in the
-//! plane, then the planets' rotations): x_0..x_{n−1} each coordinate less its share s_i Φ of the set rotation Φ (rad
+//! plane, then the planets' rotations, then the translations of planets on bearings):
+//! x_0..x_{n−1} each coordinate less its share s_i Φ of the set rotation Φ (rad
 //! for a rotation, a twist bounded however long the rig runs; m for a translation, whose
-//! share is 0), their absolute rates v_0..v_{n−1} (rad/s, m/s), the speed loop's filtered
+//! share is 0 but for a planet's: its pin's r_c s_c e_t, as it rides on the carrier),
+//! their absolute rates v_0..v_{n−1} (rad/s, m/s), the speed loop's filtered
 //! speed and integral, then the
 //! forcing states: 1, the motor body's set speed Ω (rad/s) and its rate (rad/s²), the
 //! brake's load (N m) and its rate (N m/s), the oscillating load (A cos ψ, A sin ψ) (N m),
@@ -22,11 +24,14 @@ pub struct NetLayout {
     /// Number of bodies (their rotations are the first coordinates).
     pub bodies: usize,
     /// Number of coordinates n: the bodies' rotations, then their translations, then the
-    /// planets' rotations.
+    /// planets' rotations, then the planets' translations.
     pub coordinates: usize,
     /// The end of the bodies' translations (they start at `bodies`); the planets'
-    /// rotations run from here to `coordinates`.
+    /// rotations run from here to `planets_turning_end`.
     pub translations_end: usize,
+    /// The end of the planets' rotations; the planets' translations (x then y of each
+    /// planet on a bearing) run from here to `coordinates`.
+    pub planets_turning_end: usize,
     /// Per mesh: where cos θ of its driver's share of the set rotation sits (sin θ
     /// follows), if the mesh is excited.
     pub revolution: [Option<usize>; MAX_PLANT_MESHES],
@@ -54,6 +59,7 @@ impl NetLayout {
         let bodies = rig.bodies.len();
         let coordinates = all.len();
         let translations_end = all.body_translations().end;
+        let planets_turning_end = all.planet_rotations().end;
         let mut len = 2 * coordinates + 2 + 8;
         let mut revolution = [None; MAX_PLANT_MESHES];
         let mut tooth = [None; MAX_PLANT_MESHES];
@@ -90,6 +96,7 @@ impl NetLayout {
             bodies,
             coordinates,
             translations_end,
+            planets_turning_end,
             revolution,
             tooth,
             second,
@@ -178,7 +185,11 @@ impl NetLayout {
     }
     /// The turning parts' rotation coordinates: the bodies', then the planets'.
     pub fn turning(&self) -> impl Iterator<Item = usize> + '_ {
-        (0..self.bodies).chain(self.translations_end..self.coordinates)
+        (0..self.bodies).chain(self.translations_end..self.planets_turning_end)
+    }
+    /// How many translations (x and y each) the rig's bodies and planets have.
+    pub fn translations(&self) -> usize {
+        (self.translations_end - self.bodies) + (self.coordinates - self.planets_turning_end)
     }
     /// Length of the state.
     pub fn len(&self) -> usize {

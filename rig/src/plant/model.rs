@@ -9,7 +9,11 @@
 //! a spring-damper to the frame on each (`topology::RigCoordinates::supports`); a mesh
 //! between gears that move then deflects along its line of action with their
 //! translations too (`RigCoordinates::mesh_form`: the two flanks' lines mirror each
-//! other about the centre line), and its force acts on them. A shaft carries k(θa − θb) + c(ωa − ωb) + T0 from a to b (T0 the
+//! other about the centre line), and its force acts on them. A stage's planet on a bearing
+//! moves in x and y on its pin, its share r_c s_c e_t (the pin's as the carrier turns);
+//! the translations of a stage's members are kept in the carrier's frame, where every
+//! line of action and bearing stays put (the frame's gyroscopic and centripetal terms
+//! neglected: `docs/planetary.md`). A shaft carries k(θa − θb) + c(ωa − ωb) + T0 from a to b (T0 the
 //! torque locked into a loop's shaft, 0 elsewhere). A mesh's deflection along the line of
 //! action is δ = r_a θa + r_b θb (both radii negated where the driver turns against the
 //! motor, so that δ > 0 always presses its drive flank); on its drive flank (δ > b, b half the free play) it
@@ -104,7 +108,7 @@ pub struct NetworkModel {
     /// The shafts.
     pub shafts: Vec<ShaftModel>,
     /// What holds coordinates to the frame: shafts to the frame on rotations, bearings on
-    /// translations.
+    /// translations, then each stage's planets' bearings on their pins.
     pub supports: Vec<Coupling>,
     /// How many of `supports`, first, are the rig's shafts to the frame (in its order).
     pub frame_shafts: usize,
@@ -127,11 +131,19 @@ impl NetworkModel {
         // Translations turn with nothing: their share of the set rotation is 0.
         let mut speed_ratio: Vec<f64> = speeds.iter().map(|s| s.unwrap_or(0.0) / base).collect();
         speed_ratio.resize(coordinates.len(), 0.0);
-        // Each planet rolls on its sun (`PlanetaryStage::planet_speed`).
+        // Each planet rolls on its sun (`PlanetaryStage::planet_speed`); one on a bearing
+        // rides with its pin, r_c θ_c e_t (its translations kept in the carrier's frame).
         for (i, stage) in rig.planetary.iter().enumerate() {
-            let planet = stage.planet_speed(speed_ratio[stage.sun], speed_ratio[stage.carrier]);
+            let carrier = speed_ratio[stage.carrier];
+            let planet = stage.planet_speed(speed_ratio[stage.sun], carrier);
             for k in 0..stage.planets() {
                 speed_ratio[coordinates.planet_rotation(i, k)] = planet;
+                if let Some(x) = coordinates.planet_translation(i, k) {
+                    let (_, et) = stage.axes(k);
+                    let pin_m = stage.carrier_radius_m() * carrier;
+                    speed_ratio[x] = pin_m * et[0];
+                    speed_ratio[x + 1] = pin_m * et[1];
+                }
             }
         }
         let inertia = coordinates.masses();
@@ -184,13 +196,17 @@ impl NetworkModel {
             critical_rad_s: d.brake_critical_speed_rpm * std::f64::consts::PI / 30.0,
             speed_share: speed_ratio[body].abs(),
         });
+        let mut supports = coordinates.supports(rig);
+        for (i, stage) in rig.planetary.iter().enumerate() {
+            supports.extend(coordinates.planet_bearings(i, stage));
+        }
         Self {
             layout: NetLayout::new(rig, &coordinates),
             inertia,
             drag_nms_per_rad,
             speed_ratio,
             shafts,
-            supports: coordinates.supports(rig),
+            supports,
             frame_shafts: rig.frame_shafts.len(),
             meshes,
             motor,

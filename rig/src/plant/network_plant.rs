@@ -363,7 +363,7 @@ impl NetworkPlant {
             l.turning().count(),
             self.model.shafts.len() + self.model.frame_shafts,
             self.model.meshes.len(),
-            l.translations_end - l.bodies,
+            l.translations(),
         )
     }
 

@@ -29,7 +29,7 @@ pub struct OutputForms {
     pub contact: Vec<i8>,
     /// The motor's torque (N m): its loop's command, or the limit it is held at.
     pub motor_torque: Vec<(usize, f64)>,
-    /// x then y (m) of each body that moves in the plane.
+    /// x then y (m) of each body that moves in the plane, then of each planet on its pin.
     pub translation: Vec<Vec<(usize, f64)>>,
 }
 
@@ -82,9 +82,16 @@ impl OutputForms {
         let contact = (0..model.meshes.len())
             .map(|i| mode.meshes[i].contact.sign())
             .collect();
-        // The bodies' translations follow their rotations, x then y.
+        // The bodies' translations, x then y, then each planet's on its pin: its bearing's
+        // deflection (the supports after the shafts to the frame and the bodies' bearings).
+        let planet_bearings = model.frame_shafts + (l.translations_end - l.bodies);
         let translation = (l.bodies..l.translations_end)
             .map(|j| vec![(l.angle(j), 1.0)])
+            .chain(
+                model.supports[planet_bearings..]
+                    .iter()
+                    .map(|c| c.terms.iter().map(|&(j, g)| (l.angle(j), g)).collect()),
+            )
             .collect();
         Self {
             angle,

@@ -5,7 +5,6 @@
 use std::f64::consts::PI;
 
 use super::check::{check_tooth_fault, fault, finite, non_negative, positive};
-use super::coordinates::RigCoordinates;
 use super::planetary::{MAX_PLANETS, PlanarBearing, PlanetaryStage, StageMember, StageMesh};
 use super::rig_topology::{MAX_PLANT_MESHES, RigTopology};
 use crate::error::TopologyError;
@@ -39,6 +38,11 @@ impl RigTopology {
         for (i, stage) in self.planetary.iter().enumerate() {
             check_stage(stage, i)?;
             self.check_planet_names(stage, i)?;
+            for member in [stage.sun, stage.ring, stage.carrier] {
+                if self.bodies[member].planar.is_some() {
+                    self.check_member_frame(i, member)?;
+                }
+            }
         }
         self.check_mesh_count()
     }
@@ -80,23 +84,9 @@ impl RigTopology {
 }
 
 impl RigTopology {
-    /// Refuses what the time-domain plant does not step yet, a planetary stage that moves
-    /// in the plane (its members on bearings or its planets on their pins' bearings; its
-    /// modes are computed, `modes.rs`), and a motor whose body the frame holds still.
+    /// Refuses what the time-domain plant does not step: a motor whose body the frame
+    /// holds still.
     pub fn check_steppable(&self) -> Result<(), TopologyError> {
-        let coordinates = RigCoordinates::of(self);
-        if let Some(i) = (0..self.planetary.len()).find(|&i| coordinates.stage_translates(self, i))
-        {
-            return Err(fault(
-                "planetary",
-                i,
-                "name",
-                format!(
-                    "planetary stage `{}` moves in the plane (its sun, ring or carrier on bearings, or its planets on their pins' bearings): the time-domain plant steps stages turning about fixed axes so far (docs/planetary.md); `modes` gives this rig's planar natural frequencies",
-                    self.planetary[i].name
-                ),
-            ));
-        }
         if let Some(motor) = self.motor
             && self.relative_speeds()[motor] == Some(0.0)
         {
@@ -111,6 +101,35 @@ impl RigTopology {
             ));
         }
         Ok(())
+    }
+}
+
+impl RigTopology {
+    /// Body `member` of stage `i`, on a bearing, meshes in no other stage and no external
+    /// mesh: its translations are kept in the stage's carrier frame (`plant/model.rs`),
+    /// where another stage's or an external mesh's line of action would turn.
+    fn check_member_frame(&self, i: usize, member: usize) -> Result<(), TopologyError> {
+        let name = &self.bodies[member].name;
+        let other_stage = self
+            .planetary
+            .iter()
+            .enumerate()
+            .find(|(j, s)| *j != i && [s.sun, s.ring, s.carrier].contains(&member));
+        let external = self.meshes.iter().find(|m| m.gears.contains(&member));
+        let elsewhere = match (other_stage, external) {
+            (Some((_, s)), _) => format!("stage `{}`", s.name),
+            (None, Some(m)) => format!("mesh `{}`", m.name),
+            (None, None) => return Ok(()),
+        };
+        Err(fault(
+            "body",
+            member,
+            "mass_kg",
+            format!(
+                "body `{name}` moves in the plane in stage `{}` and meshes in {elsewhere} too: a stage member's translations are kept in its carrier's frame, where another line of action turns; give `{name}` no bearing (mass_kg), or mesh it in this stage only",
+                self.planetary[i].name
+            ),
+        ))
     }
 }
 

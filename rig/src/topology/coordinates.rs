@@ -16,8 +16,8 @@
 //!   u = r θ.
 //!
 //! The coordinates are every body's rotation, in the bodies' order (body i's is
-//! coordinate i), then the translations of the bodies that move in the plane, then each
-//! stage's planets': a torsional rig's are its bodies' rotations and its meshes'
+//! coordinate i), then the translations of the bodies that move in the plane, then every
+//! stage's planets' rotations, then their translations: a torsional rig's are its bodies' rotations and its meshes'
 //! deflections the torsional r_a θ_a + r_b θ_b.
 
 use super::planetary::{PlanarBearing, PlanetaryStage};
@@ -112,6 +112,8 @@ pub struct RigCoordinates {
     planets: Vec<Vec<Place>>,
     /// The first planet's first coordinate (the bodies' come before).
     first_planet: usize,
+    /// The end of the planets' rotations (their translations follow).
+    planets_turning_end: usize,
 }
 
 /// A centre's displacement: its x and its y as linear forms.
@@ -138,22 +140,40 @@ impl RigCoordinates {
             })
             .collect();
         let first_planet = c.len();
-        let planets = rig
+        // Every planet's rotation, then every planet's translation: the turning parts'
+        // rotations stay together, ahead of the translations that ride on the carrier.
+        let rotations: Vec<Vec<usize>> = rig
             .planetary
             .iter()
             .map(|s| {
                 (0..s.planets())
                     .map(|k| {
-                        let name = s.planet_name(k);
-                        Place {
-                            rotation: push(
-                                c,
-                                &name,
-                                CoordinateKind::Rotation,
-                                s.planet_inertia_kgm2,
-                            ),
-                            translation: push_translation(c, &name, s.planet_bearing.as_ref()),
-                        }
+                        push(
+                            c,
+                            &s.planet_name(k),
+                            CoordinateKind::Rotation,
+                            s.planet_inertia_kgm2,
+                        )
+                    })
+                    .collect()
+            })
+            .collect();
+        let planets_turning_end = c.len();
+        let planets = rig
+            .planetary
+            .iter()
+            .zip(rotations)
+            .map(|(s, rotations)| {
+                rotations
+                    .into_iter()
+                    .enumerate()
+                    .map(|(k, rotation)| Place {
+                        rotation,
+                        translation: push_translation(
+                            c,
+                            &s.planet_name(k),
+                            s.planet_bearing.as_ref(),
+                        ),
                     })
                     .collect()
             })
@@ -163,6 +183,7 @@ impl RigCoordinates {
             bodies,
             planets,
             first_planet,
+            planets_turning_end,
         }
     }
 
@@ -171,6 +192,14 @@ impl RigCoordinates {
         self.coordinates
             .iter()
             .any(|c| c.kind != CoordinateKind::Rotation)
+    }
+
+    /// How many coordinates are translations (x and y each, of bodies and planets).
+    pub fn translations(&self) -> usize {
+        self.coordinates
+            .iter()
+            .filter(|c| c.kind != CoordinateKind::Rotation)
+            .count()
     }
 
     /// Whether coordinate `j` is a planet's.
@@ -271,19 +300,8 @@ impl RigCoordinates {
     /// A stage's springs: per planet its bearing on the pin (where it moves in the
     /// plane), its sun–planet and its ring–planet mesh.
     fn stage_couplings(&self, i: usize, stage: &PlanetaryStage, out: &mut Vec<Coupling>) {
-        for (k, planet) in self.planets[i].iter().enumerate() {
-            let pin = self.pin_centre(stage, k);
-            if let (Some(bearing), Some(x)) = (&stage.planet_bearing, planet.translation) {
-                for (axis, pin_axis) in [(x, &pin[0]), (x + 1, &pin[1])] {
-                    let mut terms = vec![(axis, 1.0)];
-                    terms.extend(pin_axis.iter().map(|&(j, v)| (j, -v)));
-                    out.push(coupling(
-                        terms,
-                        bearing.stiffness_n_per_m,
-                        bearing.damping_ns_per_m,
-                    ));
-                }
-            }
+        out.extend(self.planet_bearings(i, stage));
+        for k in 0..self.planets[i].len() {
             for (ring, m) in [(false, &stage.sun_planet), (true, &stage.ring_planet)] {
                 out.push(coupling(
                     self.stage_mesh_form(i, stage, k, ring).drive(),
@@ -292,6 +310,28 @@ impl RigCoordinates {
                 ));
             }
         }
+    }
+
+    /// Stage `i`'s planets' bearings on their pins, x then y of each planet that moves in
+    /// the plane: its centre less its pin's, (x_c, y_c) + r_c θ_c e_t.
+    pub fn planet_bearings(&self, i: usize, stage: &PlanetaryStage) -> Vec<Coupling> {
+        let mut out = Vec::new();
+        for (k, planet) in self.planets[i].iter().enumerate() {
+            let (Some(bearing), Some(x)) = (&stage.planet_bearing, planet.translation) else {
+                continue;
+            };
+            let pin = self.pin_centre(stage, k);
+            for (axis, pin_axis) in [(x, &pin[0]), (x + 1, &pin[1])] {
+                let mut terms = vec![(axis, 1.0)];
+                terms.extend(pin_axis.iter().map(|&(j, v)| (j, -v)));
+                out.push(coupling(
+                    terms,
+                    bearing.stiffness_n_per_m,
+                    bearing.damping_ns_per_m,
+                ));
+            }
+        }
+        out
     }
 
     /// Stage `i`'s mesh of planet `k` with the sun (`ring` false) or the ring: δ_sp =
@@ -348,13 +388,15 @@ impl RigCoordinates {
         self.planets[i][k].rotation
     }
 
-    /// Whether stage `i`'s sun, ring or carrier, or a planet, moves in the plane.
-    pub fn stage_translates(&self, rig: &RigTopology, i: usize) -> bool {
-        let s = &rig.planetary[i];
-        [s.sun, s.ring, s.carrier]
-            .iter()
-            .any(|&b| self.bodies[b].translation.is_some())
-            || self.planets[i].iter().any(|p| p.translation.is_some())
+    /// Planet `k` of stage `i`'s x coordinate (y follows), if it moves in the plane.
+    pub fn planet_translation(&self, i: usize, k: usize) -> Option<usize> {
+        self.planets[i][k].translation
+    }
+
+    /// The coordinates past the bodies' translations that are the planets' rotations
+    /// (their translations follow).
+    pub fn planet_rotations(&self) -> std::ops::Range<usize> {
+        self.first_planet..self.planets_turning_end
     }
 
     /// The coordinates past the bodies' rotations that are translations of bodies (the
