@@ -4,7 +4,10 @@
 //! strain stage takes the gauge's diameter and shear modulus), the speed of the tacho's
 //! body (`[tacho]`, else the motor's) as `speed1_rad_s`, and the speed of the gauged
 //! shaft's first body as `speed3_rad_s` (the slip rings turn with it) — and the watched
-//! gear's (`[keyphasor]`) once-per-revolution pulse as `keyphasor_v`.
+//! gear's (`[keyphasor]`) once-per-revolution pulse as `keyphasor_v`. Beside them a run
+//! or a case hands on the rig's own columns its chain, analyser or recording reads (a
+//! planetary stage's ring sensor `sensor_<stage>_n`, a mesh force, a body's speed), by
+//! their names in `testrig simulate`'s signals.
 
 use instruments::ShaftStrain;
 use rig::{Gauge, NetworkBlock, RigTopology};
@@ -12,7 +15,7 @@ use rig::{Gauge, NetworkBlock, RigTopology};
 use crate::chain::ChainStages;
 use crate::chain::watched_gear;
 use crate::steady_point::judged_shaft;
-use crate::vocabulary::frame::Frame;
+use crate::vocabulary::frame::{Frame, SignalNames};
 
 /// The keyphasor's high level (V): [`crate::vocabulary::signal_names::KEYPHASOR_V`] is this over the first
 /// 1/[`KEYPHASOR_MARK_SHARE`] of each turn of the watched gear (a reflective mark under an
@@ -42,6 +45,44 @@ pub fn gauged_shaft_strain(rig: &RigTopology) -> anyhow::Result<ShaftStrain> {
 /// The chain's stages for `rig`: the strain stage on its gauged shaft.
 pub fn gauged_stages(stages: &ChainStages, rig: &RigTopology) -> anyhow::Result<ChainStages> {
     Ok(stages.with_gauged_shaft(gauged_shaft_strain(rig)?))
+}
+
+/// The rig's columns a run or a case may hand on beside the standard inputs: every
+/// column of `rig::column_names` but time and a name a standard input has already.
+pub fn rig_columns(rig: &RigTopology) -> Vec<usize> {
+    let standard = SignalNames::plant();
+    rig::column_names(rig)
+        .iter()
+        .enumerate()
+        .filter(|(_, name)| standard.index(name).is_none())
+        .map(|(k, _)| k)
+        .collect()
+}
+
+/// The standard inputs, then `rig`'s columns `columns` (of `rig::column_names`): the
+/// names of the channels of [`RoleColumns::frame`].
+pub fn signals_with(rig: &RigTopology, columns: &[usize]) -> SignalNames {
+    let mut names = SignalNames::plant();
+    let all = rig::column_names(rig);
+    for &k in columns {
+        names.push(&all[k]);
+    }
+    names
+}
+
+/// Every signal `rig`'s plant can hand a chain: the standard inputs, then all of
+/// [`rig_columns`].
+pub fn plant_signals(rig: &RigTopology) -> SignalNames {
+    signals_with(rig, &rig_columns(rig))
+}
+
+/// Of [`rig_columns`], those whose names `reads` says are read.
+pub fn rig_columns_read(rig: &RigTopology, reads: impl Fn(&str) -> bool) -> Vec<usize> {
+    let names = rig::column_names(rig);
+    rig_columns(rig)
+        .into_iter()
+        .filter(|&k| reads(&names[k]))
+        .collect()
 }
 
 /// Where the standard chain's inputs sit in a rig's block.
@@ -79,8 +120,15 @@ impl RoleColumns {
     }
 
     /// The frame of the plant's signals
-    /// ([`crate::vocabulary::signal_names::PLANT_SIGNALS`]) of `block`, starting at sample `start`.
-    pub fn frame(&self, block: &NetworkBlock, start: u64) -> Frame {
+    /// ([`crate::vocabulary::signal_names::PLANT_SIGNALS`]) of `block`, starting at sample
+    /// `start`, then `rig`'s columns `columns` ([`signals_with`] names them).
+    pub fn frame(
+        &self,
+        rig: &RigTopology,
+        block: &NetworkBlock,
+        start: u64,
+        columns: &[usize],
+    ) -> Frame {
         let mut frame = Frame::of_channels(vec![
             block.time_s.clone(),
             block.shaft_torque_nm[self.gauged_shaft].clone(),
@@ -91,6 +139,11 @@ impl RoleColumns {
                 .map(|&angle| keyphasor_v(angle))
                 .collect(),
         ]);
+        for &k in columns {
+            // The indices are the rig's own (`rig_columns`), each a column.
+            let column = rig::column(rig, block, k).expect("a column of the rig");
+            frame.channels.push(column.into());
+        }
         frame.start_sample = start;
         frame
     }

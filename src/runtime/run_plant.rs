@@ -118,12 +118,9 @@ impl RunPlant {
     /// The frame of `block` (sequence `seq`, from sample `start`); its impacts are moved
     /// into the frame.
     pub fn frame(&self, seq: u64, start: u64, block: &mut RunBlock) -> Frame {
-        let mut frame = self.roles.frame(&block.signals, start);
-        for &k in &self.rig_columns {
-            // The indices are the rig's own (`PlanRig::rig_columns`), each a column.
-            let column = rig::column(&self.rig, &block.signals, k).expect("a column of the rig");
-            frame.channels.push(column.into());
-        }
+        let mut frame = self
+            .roles
+            .frame(&self.rig, &block.signals, start, &self.rig_columns);
         frame.seq = seq;
         frame.impacts = std::mem::take(&mut block.impacts).into();
         frame

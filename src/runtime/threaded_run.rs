@@ -120,7 +120,7 @@ pub fn run_with_status(
     let rig = &plan.rig.topology;
     let (schedule, ceiling) = (plan.schedule.clone(), plan.live_ceiling);
     let columns = plan.rig_columns_read();
-    let names = plan.rig.signals_with(&columns);
+    let names = crate::rig_roles::signals_with(rig, &columns);
     let plant = RunPlant::new(rig, schedule, plan.rate_hz, ceiling, columns)
         .with_context(|| format!("rig `{}` and the scenario's schedule", rig.name))?;
     run.run(plant, names)

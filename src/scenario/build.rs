@@ -57,7 +57,7 @@ pub fn build(src: &ScenarioSource, command_line: CommandLine) -> anyhow::Result<
         None => None,
     };
     let band_hz = analyser.as_ref().map(|a| a.settings.fmax_hz);
-    let plant = rig.plant_signals();
+    let plant = crate::rig_roles::plant_signals(&rig.topology);
     let setting = ChainSetting {
         plant: &plant,
         rate_hz,

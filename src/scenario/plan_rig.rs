@@ -4,7 +4,6 @@
 use rig::{NetworkBlock, NetworkPlant, NetworkStart, RigError, RigTopology, Schedule};
 
 use crate::steady_point::judged_shaft;
-use crate::vocabulary::frame::SignalNames;
 use crate::vocabulary::limits::{LimitError, check_load_within, max_load_nm};
 
 /// The rig a scenario runs on the plant of any rig (`rig::NetworkPlant`), after
@@ -28,35 +27,6 @@ impl PlanRig {
     /// per unit motor speed (infinite where the rig gives no limit, 0 without a brake).
     pub fn max_load_nm(&self) -> f64 {
         max_load_nm(&self.topology)
-    }
-
-    /// The signals its plant hands a run: the standard chain's inputs
-    /// (`crate::rig_roles`), then the rig's own columns as `testrig simulate` writes them
-    /// ([`Self::rig_columns`]).
-    pub fn plant_signals(&self) -> SignalNames {
-        self.signals_with(&self.rig_columns())
-    }
-
-    /// The standard inputs, then the rig's columns `columns` (of `rig::column_names`).
-    pub fn signals_with(&self, columns: &[usize]) -> SignalNames {
-        let mut names = SignalNames::plant();
-        let all = rig::column_names(&self.topology);
-        for &k in columns {
-            names.push(&all[k]);
-        }
-        names
-    }
-
-    /// The rig's columns a run hands on beside the standard inputs: every column of
-    /// `rig::column_names` but time and a name a standard input has already.
-    pub fn rig_columns(&self) -> Vec<usize> {
-        let standard = SignalNames::plant();
-        rig::column_names(&self.topology)
-            .iter()
-            .enumerate()
-            .filter(|(_, name)| standard.index(name).is_none())
-            .map(|(k, _)| k)
-            .collect()
     }
 
     /// Whether the motor holds a brake load of `load_nm` (N m), as [`Self::max_load_nm`]

@@ -78,6 +78,13 @@ pub struct ChainPlan {
 }
 
 impl ChainPlan {
+    /// Whether a stage or the scope reads signal `name`.
+    pub fn reads(&self, name: &str) -> bool {
+        let stages = self.stages.stages();
+        stages.iter().any(|s| s.inputs.iter().any(|i| i == name))
+            || self.scope.as_ref().is_some_and(|s| s.input == name)
+    }
+
     /// This chain with its strain stage and static calibration on `shaft` (a rig file's
     /// gauged shaft): the amplifier's volts per N m scale with the strain per N m.
     pub fn on_gauged_shaft(&self, shaft: ShaftStrain) -> Self {
@@ -152,29 +159,26 @@ pub struct RecordPlan {
     pub from_start: bool,
 }
 
+impl RecordPlan {
+    /// Whether signal `name` is recorded.
+    pub fn records(&self, name: &str) -> bool {
+        self.signals.iter().any(|s| s == name)
+    }
+}
+
 impl Plan {
     /// Whether the run reads signal `name`: a stage's input, the analyser's or the
     /// scope's, or a recorded signal.
     pub fn reads(&self, name: &str) -> bool {
-        let stages = self.chain.stages.stages();
-        stages.iter().any(|s| s.inputs.iter().any(|i| i == name))
+        self.chain.reads(name)
             || self.analyser.as_ref().is_some_and(|a| a.input == name)
-            || self.chain.scope.as_ref().is_some_and(|s| s.input == name)
-            || self
-                .record
-                .as_ref()
-                .is_some_and(|r| r.signals.iter().any(|s| s == name))
+            || self.record.as_ref().is_some_and(|r| r.records(name))
     }
 
-    /// The rig's own columns the run reads (of [`PlanRig::rig_columns`]): the only ones
-    /// its frames carry, so that a run pays for no column it does not use.
+    /// The rig's own columns the run reads (of [`crate::rig_roles::rig_columns`]): the
+    /// only ones its frames carry, so that a run pays for no column it does not use.
     pub fn rig_columns_read(&self) -> Vec<usize> {
-        let names = rig::column_names(&self.rig.topology);
-        self.rig
-            .rig_columns()
-            .into_iter()
-            .filter(|&k| self.reads(&names[k]))
-            .collect()
+        crate::rig_roles::rig_columns_read(&self.rig.topology, |name| self.reads(name))
     }
 
     /// The measurements the analyser and the scope work to: the scenario's, or one at

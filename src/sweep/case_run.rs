@@ -16,11 +16,10 @@ use super::case_result::{
 };
 use super::grid::{Case, SweepPlan};
 use super::measured_condition::MeasuredCondition;
-use crate::rig_roles::{RoleColumns, gauge_of, gauged_stages};
+use crate::rig_roles::{RoleColumns, gauge_of, gauged_stages, rig_columns_read, signals_with};
 use crate::steady_point::{RigPointSpec, RigWindow, settled_rig_plant, skip_rig_samples};
 use crate::vocabulary::GearIndicators;
 use crate::vocabulary::InputNames;
-use crate::vocabulary::frame::SignalNames;
 
 /// Samples per block.
 const BLOCK: usize = 4096;
@@ -83,7 +82,8 @@ pub fn measure_case(
     sweep_dir: Option<&Path>,
 ) -> anyhow::Result<CaseResult> {
     let lead_s = chain_lead_s(plan);
-    let mut names = SignalNames::plant();
+    let columns = rig_columns_read(rig, |name| plan.reads(name));
+    let mut names = signals_with(rig, &columns);
     let stages = gauged_stages(&plan.chain.stages, rig)?;
     let CaseInstruments {
         mut chain,
@@ -102,7 +102,7 @@ pub fn measure_case(
         let n = BLOCK.min(if done < lead { lead } else { total } - done);
         block.clear();
         plant.run(n, &mut block)?;
-        let frame = chain.process(roles.frame(&block, done as u64));
+        let frame = chain.process(roles.frame(rig, &block, done as u64, &columns));
         if done >= lead {
             window.add(&block);
             if let Some(m) = &mut measured {

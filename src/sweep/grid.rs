@@ -17,6 +17,7 @@ use super::case_rig::CaseRig;
 use super::knock::knock_rad_s;
 use super::sequence::{Direction, Sequence};
 use super::sweep_toml::{CaseFile, GridFile, SweepFile};
+use crate::rig_roles::plant_signals;
 use crate::scenario::rig_chain::rig_chain;
 use crate::vocabulary::frame::SignalNames;
 use crate::vocabulary::limits::MAX_SWEEP_CASES;
@@ -58,6 +59,15 @@ pub struct SweepPlan {
     pub cases: Vec<Case>,
 }
 
+impl SweepPlan {
+    /// Whether a case reads signal `name`: a chain stage's input, the analyser's, or a
+    /// recorded signal.
+    pub fn reads(&self, name: &str) -> bool {
+        self.chain.reads(name)
+            || self.analyser.input == name
+            || self.record.as_ref().is_some_and(|r| r.records(name))
+    }
+}
 /// One case of the grid.
 #[derive(Clone, Debug)]
 pub struct Case {
@@ -106,7 +116,13 @@ pub fn build_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<Swe
     };
     let analyser = analyser_plan(src, &file.analyser, rate_hz, file.seed)?;
     let band_hz = Some(analyser.settings.fmax_hz);
-    let plant = SignalNames::plant();
+    // Checked here: the rig (a preset's as converted: a value its parameters take and no
+    // rig does is refused at its path), a motor and gauges; each case puts the strain
+    // stage on its gauge. Its chain, analyser and recording may read any of the rig's
+    // columns beside the standard inputs (`rig_roles`).
+    let topology = base.topology();
+    checked_at_path(&topology).map_err(|e| src.error(0..0, "rig", format!("{e:#}")))?;
+    let plant = plant_signals(&topology);
     let setting = ChainSetting {
         plant: &plant,
         rate_hz,
@@ -114,11 +130,6 @@ pub fn build_sweep(src: &ScenarioSource, file: &SweepFile) -> anyhow::Result<Swe
         band_hz,
     };
     let chain = chain_plan(src, &file.chain, setting)?;
-    // Checked here: the rig (a preset's as converted: a value its parameters take and no
-    // rig does is refused at its path), a motor and gauges; each case puts the strain
-    // stage on its gauge.
-    let topology = base.topology();
-    checked_at_path(&topology).map_err(|e| src.error(0..0, "rig", format!("{e:#}")))?;
     rig_chain(src, &topology, &chain)?;
     let names = chain.stages.signal_names_on(&plant);
     let input = file.analyser.input.as_ref();

@@ -46,7 +46,8 @@ pub const DVM_V: &str = "dvm_v";
 
 /// Unit of plant signal `name`; `None` if the plant has no such signal. A rig's own
 /// columns (`rig::column_names`) carry their unit in their name: `_rpm`, `_rad`, `_nm`,
-/// `_n`, `_ue`; `contact_<mesh>` is a state (+1, −1, 0).
+/// `_n`, `_ue`, `_m` (a centre's displacement in the plane); `contact_<mesh>` is a state
+/// (+1, −1, 0).
 pub fn plant_unit(name: &str) -> Option<&'static str> {
     match name {
         TIME_S => Some("s"),
@@ -60,6 +61,7 @@ pub fn plant_unit(name: &str) -> Option<&'static str> {
             ("_nm", "N m"),
             ("_n", "N"),
             ("_ue", MICROSTRAIN_UNIT),
+            ("_m", "m"),
         ]
         .into_iter()
         .find(|(suffix, _)| name.ends_with(suffix))
@@ -79,6 +81,8 @@ pub fn plant_full_scale(unit: &str) -> f64 {
         "N m" => 100.0,
         "s" => 1.0e5,
         "V" => 10.0,
+        // A bearing's deflection: micrometres, a millimetre at most.
+        "m" => 1.0e-3,
         _ => 100.0,
     }
 }

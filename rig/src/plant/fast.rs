@@ -118,16 +118,6 @@ impl NetworkPlant {
             edge_values(&system.events, &self.u, &mut self.edge);
         }
         self.prepare_run(system, run);
-        if std::env::var_os("TR_DEBUG").is_some() {
-            eprintln!(
-                "rows {} cols {} substeps {} events {} moving {}",
-                system.fused_rows,
-                run.columns.len(),
-                self.substeps,
-                system.events.len(),
-                run.moving.len()
-            );
-        }
         let stop = self.fast_stop(limit);
         // Strides (whole output periods: `stride.rs`) only where no sample is written
         // inside them.

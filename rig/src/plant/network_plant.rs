@@ -387,8 +387,9 @@ impl NetworkPlant {
         self.substeps
     }
 
-    /// Each coordinate's speed per unit speed of the motor's body (signed): each body's,
-    /// then 0 for each translation.
+    /// Each coordinate's speed per unit speed of the motor's body (signed, in
+    /// `topology::RigCoordinates`' order): each body's, 0 for a body's translation, each
+    /// planet's rotation, and a planet's translation its pin's r_c s_c e_t.
     pub fn speed_ratios(&self) -> &[f64] {
         &self.model.speed_ratio
     }
@@ -419,8 +420,8 @@ impl NetworkPlant {
     }
 
     /// Adds `delta_rad_s` to coordinate `coordinate`'s rate (a kick, as a hammer blow):
-    /// body i's speed for i below the bodies, else a translation's velocity (m/s;
-    /// `topology::RigCoordinates` orders them).
+    /// body i's speed for i below the bodies, past them a translation's velocity (m/s)
+    /// or a planet's speed (`topology::RigCoordinates` orders them).
     pub fn kick(&mut self, coordinate: usize, delta_rad_s: f64) {
         let l = &self.model.layout;
         self.u[l.speed(coordinate)] += delta_rad_s;

@@ -38,8 +38,10 @@ impl RigTopology {
         for (i, stage) in self.planetary.iter().enumerate() {
             check_stage(stage, i)?;
             self.check_planet_names(stage, i)?;
+            // A held carrier's frame is the housing's: nothing turns there.
+            let carrier_turns = self.relative_speeds()[stage.carrier] != Some(0.0);
             for member in [stage.sun, stage.ring, stage.carrier] {
-                if self.bodies[member].planar.is_some() {
+                if carrier_turns && self.bodies[member].planar.is_some() {
                     self.check_member_frame(i, member)?;
                 }
             }
@@ -106,8 +108,10 @@ impl RigTopology {
 
 impl RigTopology {
     /// Body `member` of stage `i`, on a bearing, meshes in no other stage and no external
-    /// mesh: its translations are kept in the stage's carrier frame (`plant/model.rs`),
-    /// where another stage's or an external mesh's line of action would turn.
+    /// mesh: its translations are kept in the stage's turning carrier's frame
+    /// (`plant/model.rs`), where another stage's or an external mesh's line of action
+    /// would turn. Refused for every door, `modes` too (whose zero speed would allow it),
+    /// so that the file is refused at its line.
     fn check_member_frame(&self, i: usize, member: usize) -> Result<(), TopologyError> {
         let name = &self.bodies[member].name;
         let other_stage = self
