@@ -7,7 +7,7 @@
 
 mod common;
 
-use common::{csv_rows, folder, json, testrig, testrig_ok};
+use common::{bench_in_the_plane, csv_rows, folder, json, single_pair_bench, testrig, testrig_ok};
 
 /// Runs `simulate --rig rig` at `rpm` and `load` N m, settled `settle` s, for `seconds`,
 /// its signals into `out`, with `more` arguments (fails with its stderr if refused).
@@ -40,18 +40,6 @@ fn simulate(
         "{}",
         String::from_utf8_lossy(&run.stderr)
     );
-}
-
-/// The shipped bench with one pair always in each mesh (its static solutions and its
-/// energy need a stiffness that does not change in contact).
-fn single_pair_bench() -> String {
-    let path = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/scenarios/rigs/planetary-bench.toml"
-    );
-    let text = std::fs::read_to_string(path).expect("shipped bench");
-    assert!(text.contains(", pairs = \"alternating\""));
-    text.replace(", pairs = \"alternating\"", "")
 }
 
 /// `text` written as `name`.toml in `dir`: its path.
@@ -159,7 +147,7 @@ fn a_planetary_stage_conserves_energy_through_impacts_without_damping() {
     // In the plane, the sun floating and the planets on their pins' bearings: the sun's
     // rotation and x (coordinate 5, after the bodies' rotations) and planet 1's x (10,
     // after the sun's y and the planets' rotations) knocked.
-    let planar = common::bench_in_the_plane("1.0e8", "");
+    let planar = bench_in_the_plane("1.0e8", "");
     let (worst, impacts) = free_energy_drift(&planar, &[(1, 3.0), (5, 0.05), (10, -0.05)]);
     eprintln!("MEASURED planar planetary energy drift {worst:e} over {impacts} impacts");
     assert!(impacts > 50, "only {impacts} impacts in the plane");
@@ -182,7 +170,7 @@ fn a_floating_sun_shares_the_load_equally_despite_a_pin_error() {
         let rig = written(
             &dir,
             &format!("float-{bearing}"),
-            &common::bench_in_the_plane(bearing, error),
+            &bench_in_the_plane(bearing, error),
         );
         simulate(&rig, ("1500", "50"), ("2", "0.1"), &out, &[]);
         let at = last_sample(&out);

@@ -19,6 +19,8 @@
 //!   carrier turn, N f_c. A healthy stage has none of them (its motion repeats at the mesh
 //!   period), and each grows with the crack.
 
+mod common;
+
 use std::f64::consts::PI;
 
 /// Sampling rate of the runs (Hz).
@@ -27,18 +29,9 @@ const RATE_HZ: f64 = 20_480.0;
 /// The shipped bench (one and two pairs alternating), its text changed by `edits`
 /// (from, to).
 fn bench(edits: &[(&str, &str)]) -> rig::RigTopology {
-    let path = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/scenarios/rigs/planetary-bench.toml"
-    );
-    let mut text = std::fs::read_to_string(path).expect("shipped bench");
-    for (from, to) in edits {
-        assert!(text.contains(from), "{from}");
-        text = text.replacen(from, to, 1);
-    }
     let source = testrig::scenario::ScenarioSource {
         path: std::path::PathBuf::from("bench.toml"),
-        text,
+        text: common::shipped_bench(edits),
     };
     testrig::scenario::rig_topology(&source).expect("the bench reads")
 }

@@ -247,32 +247,42 @@ pub fn refused_rig(dir: &Path, name: &str, text: &str) -> String {
     stderr
 }
 
-/// The shipped bench with one pair always, its sun floating on a soft bearing of
-/// `sun_bearing` N/m and its planets on their pins' bearings, with `more` after the
-/// planets' inertia (a pin error, say).
-pub fn bench_in_the_plane(sun_bearing: &str, more: &str) -> String {
+/// The shipped planetary bench's text (`scenarios/rigs/planetary-bench.toml`), each of
+/// `edits` (from, to) made once, every `from` asserted there.
+pub fn shipped_bench(edits: &[(&str, &str)]) -> String {
     let path = concat!(
         env!("CARGO_MANIFEST_DIR"),
         "/scenarios/rigs/planetary-bench.toml"
     );
     let text = std::fs::read_to_string(path).expect("shipped bench");
-    let edits = [
-        (", pairs = \"alternating\"", String::new()),
-        (
-            "name = \"sun\"\n",
-            format!(
-                "name = \"sun\"\nmass_kg = 0.4\nbearing_stiffness_n_per_m = {sun_bearing}\nbearing_damping_ns_per_m = 200.0\n"
-            ),
-        ),
-        (
-            "planet_inertia_kgm2 = 0.0015\n",
-            format!(
-                "planet_inertia_kgm2 = 0.0015\nplanet_mass_kg = 0.66\nplanet_bearing_stiffness_n_per_m = 1.0e8\nplanet_bearing_damping_ns_per_m = 500.0\n{more}"
-            ),
-        ),
-    ];
     edits.iter().fold(text, |t, (from, to)| {
         assert!(t.contains(from), "{from:?} in the bench");
-        t.replace(from, to)
+        t.replacen(from, to, 1)
     })
+}
+
+/// The shipped bench with one pair always (a stiffness that does not change in contact:
+/// static solutions, energy).
+pub fn single_pair_bench() -> String {
+    let pairs = ", pairs = \"alternating\"";
+    shipped_bench(&[(pairs, ""), (pairs, "")])
+}
+
+/// The shipped bench with one pair always, its sun floating on a soft bearing of
+/// `sun_bearing` N/m and its planets on their pins' bearings, with `more` after the
+/// planets' inertia (a pin error, say).
+pub fn bench_in_the_plane(sun_bearing: &str, more: &str) -> String {
+    let sun = format!(
+        "name = \"sun\"\nmass_kg = 0.4\nbearing_stiffness_n_per_m = {sun_bearing}\nbearing_damping_ns_per_m = 200.0\n"
+    );
+    let planets = format!(
+        "planet_inertia_kgm2 = 0.0015\nplanet_mass_kg = 0.66\nplanet_bearing_stiffness_n_per_m = 1.0e8\nplanet_bearing_damping_ns_per_m = 500.0\n{more}"
+    );
+    let pairs = ", pairs = \"alternating\"";
+    shipped_bench(&[
+        (pairs, ""),
+        (pairs, ""),
+        ("name = \"sun\"\n", &sun),
+        ("planet_inertia_kgm2 = 0.0015\n", &planets),
+    ])
 }
