@@ -377,3 +377,71 @@ fn a_pair_on_bearings_runs_through_simulate_with_its_translations_as_signals() {
     );
     assert!(head.contains(&"y_pinion1_m"));
 }
+
+#[test]
+fn two_stages_and_a_pair_in_seventeen_meshes_turn_by_willis_and_share_their_loads() {
+    // The shipped two-stage planetary gearbox (4 + 4 planets, a spur pair): 50:1. At
+    // 1500 rev/min and 100 N m on the brake every speed follows Willis stage by stage,
+    // the motor carries 100/50 N m, and each stage's four planets share its sun's torque
+    // equally, T_s/(4 r_s): the first stage's the input shaft's, the second's the middle
+    // shaft's, five times as much.
+    let dir = folder("planetary-two-stage");
+    let out = dir.join("out");
+    let rig = common::rig_file("planetary-two-stage");
+    let run = testrig(&[
+        "simulate",
+        "--rig",
+        &rig,
+        "--rpm",
+        "1500",
+        "--load",
+        "100",
+        "--settle",
+        "2",
+        "--duration",
+        "0.1",
+        "--out",
+        out.to_str().expect("utf-8"),
+    ]);
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    let rows = csv_rows(&out.join("signals.csv"));
+    let last = rows.last().expect("a sample");
+    let forces = last.keys().filter(|k| k.starts_with("force_")).count();
+    assert_eq!(forces, 17, "4 + 4 planets' two meshes each and the pair");
+    for (body, rpm) in [
+        ("carrier1", 300.0),
+        ("sun2", 300.0),
+        ("carrier2", 60.0),
+        ("brake", 30.0),
+    ] {
+        let speed = number(last, &format!("speed_{body}_rpm"));
+        assert!(
+            (speed - rpm).abs() < 1e-6,
+            "{body} at {speed} rev/min, not {rpm}"
+        );
+    }
+    let motor = number(last, "motor_torque_nm");
+    assert!((motor - 2.0).abs() < 1e-6, "the motor carries {motor} N m");
+    let rs = 0.003 * 24.0 * 20f64.to_radians().cos() / 2.0;
+    for (stage, shaft, sun_nm) in [("first", "input", 2.0), ("second", "middle", 10.0)] {
+        let torque = number(last, &format!("torque_{shaft}_nm"));
+        assert!(
+            (torque - sun_nm).abs() < 1e-6,
+            "{shaft} carries {torque} N m"
+        );
+        for kind in ["sun", "ring"] {
+            for k in 1..=4 {
+                let force = number(last, &format!("force_{stage}_{kind}_planet{k}_n"));
+                let share = sun_nm / (4.0 * rs);
+                assert!(
+                    (force - share).abs() < 1e-6 * share,
+                    "{stage} {kind} mesh of planet {k}: {force} N against {share} N"
+                );
+            }
+        }
+    }
+}

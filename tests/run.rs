@@ -16,7 +16,7 @@ const ONE_SUBHARMONIC_POINT: [&str; 4] = [
 ];
 
 /// Shortened runs of each shipped scenario: (file stem, `--set` items, other arguments).
-const SHORTENED: [(&str, &[&str], &[&str]); 8] = [
+const SHORTENED: [(&str, &[&str], &[&str]); 9] = [
     (
         "aliasing-windowing",
         &["analyser.averages=1"],
@@ -38,6 +38,7 @@ const SHORTENED: [(&str, &[&str], &[&str]); 8] = [
         &["analyser.averages=2", "record.from_start=true"],
         &["--duration", "6"],
     ),
+    ("planetary-run", &[], &[]),
     (
         "rms-survey",
         &[
