@@ -1,6 +1,7 @@
 //! Simulated seconds per wall second of rig files' plants, one thread (issue 33's target:
 //! a two-stage rig, 8 bodies and two meshes, at 51.2 kHz output at least 200× real time,
-//! i.e. at most 5 ms per simulated second).
+//! i.e. at most 5 ms per simulated second; issue 47's: a one-stage planetary bench at
+//! least 100× real time).
 //!
 //! Each iteration advances one simulated second at 51.2 kHz output in blocks of 2048
 //! samples into one reused block, after 2 s of settling: the median time per iteration
@@ -60,4 +61,22 @@ fn two_stage_rattling_one_second(bencher: Bencher) {
 #[divan::bench(sample_count = 20)]
 fn basmaji_1983_file_one_second(bencher: Bencher) {
     one_second(bencher, "basmaji-1983", Schedule::constant(1300.0, 2.712));
+}
+
+/// The shipped planetary bench (three planets, six meshes, one and two pairs alternating)
+/// at 1500 rev/min under 50 N m: issue 47's target, 100× real time (10 ms per simulated
+/// second).
+#[divan::bench(sample_count = 20)]
+fn planetary_bench_one_second(bencher: Bencher) {
+    one_second(bencher, "planetary-bench", Schedule::constant(1500.0, 50.0));
+}
+
+/// The two-stage planetary gearbox (17 meshes) at 1500 rev/min under 100 N m.
+#[divan::bench(sample_count = 20)]
+fn planetary_two_stage_one_second(bencher: Bencher) {
+    one_second(
+        bencher,
+        "planetary-two-stage",
+        Schedule::constant(1500.0, 100.0),
+    );
 }

@@ -8,6 +8,7 @@
 use instruments::{ConditionIndicators, condition_indicators, gear_signals, synchronous_average};
 use serde_json::{Value, json};
 
+use super::phasor::Phasor;
 use crate::vocabulary::GearIndicators;
 
 /// Points per averaged revolution: 1 024 resolve the mesh harmonics of up to 512 orders.
@@ -79,7 +80,8 @@ impl GearCondition {
     }
 
     /// The amplitude of the kept signal's line at `hz` (Hann-windowed, the window's gain
-    /// taken out; 0 without samples).
+    /// taken out; 0 without samples), the window's and the line's phases by rotation
+    /// ([`Phasor`]).
     pub fn line_amplitude(&self, hz: f64) -> f64 {
         let x = &self.torque_nm;
         let n = x.len() as f64;
@@ -87,12 +89,14 @@ impl GearCondition {
             return 0.0;
         }
         let mean = x.iter().sum::<f64>() / n;
+        let mut window = Phasor::new(std::f64::consts::TAU / n);
+        let mut line = Phasor::new(std::f64::consts::TAU * hz / self.rate_hz);
         let (mut re, mut im, mut gain) = (0.0, 0.0, 0.0);
-        for (i, v) in x.iter().enumerate() {
-            let w = 0.5 - 0.5 * (std::f64::consts::TAU * i as f64 / n).cos();
-            let phase = std::f64::consts::TAU * hz * i as f64 / self.rate_hz;
-            re += w * (v - mean) * phase.cos();
-            im -= w * (v - mean) * phase.sin();
+        for v in x {
+            let w = 0.5 - 0.5 * window.next_value().0;
+            let (cos, sin) = line.next_value();
+            re += w * (v - mean) * cos;
+            im -= w * (v - mean) * sin;
             gain += w;
         }
         2.0 * re.hypot(im) / gain

@@ -19,7 +19,8 @@
 //! with its alias truth (`Measurement`, the one driver of ADC → analyser);
 //! `analyser_setup.rs` also holds `AnalyserWords`, the analyser in a user's words checked
 //! in one place; `low_pass_words.rs` the anti-alias filter in a user's words
-//! (`LowPassWords`: the cut-off follows the band where left out, checked against Nyquist).
+//! (`LowPassWords`: the cut-off follows the band where left out, checked against Nyquist);
+//! `phasor.rs` a rotating phasor for single-frequency DFTs.
 
 pub(crate) mod analysed;
 pub(crate) mod analyser_setup;
@@ -30,6 +31,7 @@ pub(crate) mod instrument;
 pub(crate) mod low_pass_words;
 pub(crate) mod measurement;
 pub(crate) mod microstrain;
+mod phasor;
 mod planetary_lines;
 pub(crate) mod spectrum_metadata;
 pub(crate) mod stage;

@@ -13,10 +13,11 @@ use std::f64::consts::PI;
 
 use crate::topology::{PlanetaryStage, RingSensor};
 
-/// The window's weight at angular distance `distance_rad` (wrapped to (−π, π]) for a
-/// full width `width_rad`.
+/// The window's weight at angular distance `distance_rad` (wrapped to [−π, π], by the
+/// nearest whole turn: a rounding, cheaper than a remainder) for a full width
+/// `width_rad`.
 pub fn passage_window(distance_rad: f64, width_rad: f64) -> f64 {
-    let d = (distance_rad + PI).rem_euclid(2.0 * PI) - PI;
+    let d = distance_rad - 2.0 * PI * (distance_rad / (2.0 * PI)).round();
     if d.abs() >= width_rad / 2.0 {
         0.0
     } else {
