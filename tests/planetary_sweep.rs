@@ -115,9 +115,9 @@ fn spectrum_rows(path: &std::path::Path) -> Vec<(f64, f64)> {
 #[test]
 fn the_shipped_planetary_run_analyses_the_ring_sensor() {
     // 1500 rev/min: the carrier at 5 Hz, three planets pass the sensor at 15 Hz, the
-    // meshes at 96 × 5 = 480 Hz, a line 24 times the median about it; 1000 rev/min:
-    // 10 Hz (its mesh line at 320 Hz stands only 6 times above the planet-pass sidebands
-    // about it: not held).
+    // meshes at 96 × 5 = 480 Hz, a line some 300 times the median about it; 1000 rev/min:
+    // 10 Hz (its mesh line at 320 Hz, in a quasi-periodic motion, stands only 6 times above
+    // the floor about it: not held).
     let (out, _) = run_ok("planetary-run", &scenario("planetary-run"), &[]);
     for (k, pass_hz, mesh_hz) in [(1, 15.0, Some(480.0)), (2, 10.0, None)] {
         let lines = spectrum_rows(&out.path().join(format!("spectrum-0{k}.csv")));

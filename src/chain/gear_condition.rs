@@ -169,3 +169,30 @@ impl GearConditionReport {
         })
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::GearCondition;
+
+    /// A line's amplitude read back: 2.5 N m at 13.333 Hz (not a whole number of cycles
+    /// in the 10 s kept) beside 0.4 N m at 60 Hz and an offset, sampled at 51.2 kHz.
+    #[test]
+    fn a_lines_amplitude_is_read_back_beside_another_line() {
+        let rate_hz = 51_200.0;
+        let mut condition = GearCondition::new(rate_hz);
+        let time_s: Vec<f64> = (0..512_000).map(|k| k as f64 / rate_hz).collect();
+        let angle_rad: Vec<f64> = time_s.iter().map(|t| std::f64::consts::TAU * t).collect();
+        let torque_nm: Vec<f64> = time_s
+            .iter()
+            .map(|t| {
+                let phase = |hz: f64| std::f64::consts::TAU * hz * t;
+                7.0 + 2.5 * (phase(13.333) + 0.3).cos() + 0.4 * phase(60.0).sin()
+            })
+            .collect();
+        condition.add_samples(&time_s, &angle_rad, &torque_nm);
+        let read = [13.333, 60.0, 31.0].map(|hz| condition.line_amplitude(hz));
+        assert!((read[0] - 2.5).abs() < 1e-6, "{read:?}");
+        assert!((read[1] - 0.4).abs() < 1e-6, "{read:?}");
+        assert!(read[2] < 1e-6, "no line at 31 Hz: {read:?}");
+    }
+}

@@ -27,7 +27,7 @@ pub const DEFAULT_CARRIER_HZ: f64 = 10_000.0;
 /// band: what a chain is planned on.
 #[derive(Clone, Copy, Debug)]
 pub struct ChainSetting<'a> {
-    /// The plant's signals (`PlanRig::plant_signals`).
+    /// The plant's signals (`crate::rig_roles::plant_signals`).
     pub plant: &'a SignalNames,
     /// The stream's rate (Hz).
     pub rate_hz: f64,

@@ -177,18 +177,18 @@ def two_stage_rig(page, shots):
 def planetary_rig(page, shots):
     """`scenarios/planetary-run.toml`: the analyser reads the ring sensor (`ring_n`, the
     AC-coupled, low-passed `sensor_epi_n`); once the schedule has brought the motor to
-    1000 rev/min (from 6 s), three planets pass it at 3 × 200/60 = 10 Hz, its strongest
+    1000 rev/min (from 8 s), three planets pass it at 3 × 200/60 = 10 Hz, its strongest
     line."""
     wait_until("the scenario's name", lambda: page.inner_text("#scenario") == "planetary-run")
-    wait_until("7 s simulated", lambda: page.evaluate("() => state.simulated_s") > 7)
+    wait_until("9 s simulated", lambda: page.evaluate("() => state.simulated_s") > 9)
     wait_until("the tacho DVM at 1000 rev/min", lambda: abs(dvm_rpm(page) - 1000) <= 10)
-    # Eight averages of 1024-point blocks at 2.56 kHz take 3.2 s simulated: complete and
-    # 4 s on from the click, the average is the one the click started (at pace 10 it
-    # may run its course between two looks).
+    # Eight averages of 1024-point blocks at 2 kHz (2 × Fmax) take 4.1 s simulated:
+    # complete and 4.3 s on from the click, the average is the one the click started (at
+    # pace 10 it may run its course between two looks).
     clicked_s = page.evaluate("() => state.simulated_s")
     page.click("#start-average")
     done = "() => state.spectrum && state.spectrum.complete && state.spectrum.averages === 8" \
-           f" && state.simulated_s > {clicked_s + 4.0}"
+           f" && state.simulated_s > {clicked_s + 4.3}"
     wait_until("an average of 8 after the click", lambda: page.evaluate(done))
     spectrum = page.evaluate("() => state.spectrum")
     if spectrum["signal"] != "ring_n":
