@@ -29,15 +29,16 @@ fn campaign(name: &str, out: &Path, items: &[&str]) {
 #[test]
 fn the_lab_run_steps_up_and_back_down_on_one_rig_and_finds_coexisting_motions() {
     let dir = folder("lab-run");
-    // Settled 30 s and measured 10 s: at the campaign's 60 s and 30 s the run down lands
-    // on the small motion again (which of the two it keeps after the chaotic 700 and 800
-    // rev/min is decided at rounding; `docs/physics.md`).
+    // The campaign's own 60 s settled and 30 s measured. Which of the two motions the run
+    // down keeps after the chaotic 700 and 800 rev/min is decided at rounding
+    // (`docs/physics.md`): with single steps in recorded windows it kept the small one
+    // here and this test settled 30 s and measured 10 s; with a recorded period taken
+    // in one product (`rig/src/stride.rs`) it keeps the large one at the campaign's own
+    // times, and at 30 s and 15 s, 40 s and 10 s, 20 s and 10 s (not at 30 s and 10 s).
     let common = [
         "grid.rpm=[600, 700, 800]",
         "grid.load_nm=[2.712]",
         "rig.preset=\"basmaji-1983\"",
-        "case.settle_s=30",
-        "case.measure_s=10",
     ];
     let lab = dir.join("lab");
     let mut items = common.to_vec();

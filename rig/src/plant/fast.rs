@@ -6,8 +6,9 @@
 //! paths part at rounding; which path takes a step depends on the motion alone, never
 //! on the blocks a run is asked for in, so a run gives the same bytes whatever they are. A run
 //! that writes no samples (settling) takes strides of several steps in one product where
-//! the mode allows (`system.rs`), checked for switches over the whole stride; where one
-//! may fall, that stretch is taken in single steps.
+//! the mode allows (`system.rs`), checked for switches over the whole stride; one that
+//! writes samples takes an output period of several steps in one product where the mode
+//! allows; where a switch may fall, that stretch is taken in single steps.
 
 use crate::error::RigError;
 use crate::roots::may_cross;
@@ -119,14 +120,22 @@ impl NetworkPlant {
         }
         self.prepare_run(system, run);
         let stop = self.fast_stop(limit);
-        // Strides (whole output periods: `stride.rs`) only where no sample is written
-        // inside them.
+        // Spans of several steps (`stride.rs`): where no sample is written, strides of
+        // whole output periods; where samples are, one output period (a sample at its end).
         let substeps = self.substeps;
-        let stride = system
-            .stride
-            .as_ref()
-            .zip(run.stride.as_ref())
-            .filter(|_| !RECORD);
+        let span = if RECORD {
+            system
+                .period
+                .as_ref()
+                .zip(run.period.as_ref())
+                .map(|(_, matrix)| (substeps, matrix))
+        } else {
+            system
+                .stride
+                .as_ref()
+                .zip(run.stride.as_ref())
+                .map(|(stride, matrix)| (stride.steps, matrix))
+        };
         // After a stride that may switch, single steps up to this sample.
         let mut singles_until = 0;
         while self.sample < stop {
@@ -136,11 +145,11 @@ impl NetworkPlant {
                 }
                 self.chunk.store(self.sample, &self.mode, &self.u);
             }
-            if let Some((stride, matrix)) = stride {
-                let samples = u64::from(stride.steps / substeps);
+            if let Some((steps, matrix)) = span {
+                let samples = u64::from(steps / substeps);
                 if self.sample >= singles_until && self.sample + samples <= stop {
                     self.run_end(system, run, matrix);
-                    if !self.may_switch(system, f64::from(stride.steps) * self.step_s) {
+                    if !self.may_switch(system, f64::from(steps) * self.step_s) {
                         self.take_span_end();
                         self.sample += samples;
                         continue;

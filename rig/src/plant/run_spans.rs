@@ -36,6 +36,8 @@ pub struct RunSpans {
     pub step: SpanMatrix,
     /// The stride of the mode, alike, if it has one.
     pub stride: Option<SpanMatrix>,
+    /// The mode's output period as one span, alike, if it has one.
+    pub period: Option<SpanMatrix>,
     /// The forcing states that hold (still or zero), each with the bits of its value.
     held: Vec<(usize, u64)>,
 }
@@ -73,7 +75,9 @@ impl RunSpans {
                     system
                         .stride
                         .iter()
-                        .flat_map(|s| s.matrix.fused[column..column + system.fused_rows].iter()),
+                        .map(|s| &s.matrix)
+                        .chain(&system.period)
+                        .flat_map(|m| m.fused[column..column + system.fused_rows].iter()),
                 )
                 .any(|&x| x != 0.0)
         };
@@ -92,6 +96,7 @@ impl RunSpans {
         Self {
             step: fold(&system.step),
             stride: system.stride.as_ref().map(|s| fold(&s.matrix)),
+            period: system.period.as_ref().map(fold),
             moving_rows: shape.moving_rows,
             columns,
             moving,

@@ -4,7 +4,7 @@
 use nalgebra::DMatrix;
 
 use crate::matrix_exp::{exp_powers_balanced, forcing_scales, spectral_radius};
-use crate::stride::stride_steps;
+use crate::stride::{stride_steps, takes_whole_periods};
 
 use super::events::{EventForm, event_forms};
 use super::mode::NetMode;
@@ -49,6 +49,10 @@ pub struct ModeSystem {
     pub step: SpanMatrix,
     /// The stride of this mode, if its fastest motion is slow enough for one.
     pub stride: Option<Stride>,
+    /// e^{A T} over one output period of several steps, if the mode's fastest motion is
+    /// slow enough for the period to be checked as one span: a run that writes samples
+    /// takes a period in one product where no switch may fall in it.
+    pub period: Option<SpanMatrix>,
     /// Rows of each column of a span's `fused` (a multiple of 4).
     pub fused_rows: usize,
     /// Per switching function, its slot among the row events (its value at row
@@ -81,7 +85,8 @@ impl ModeSystem {
         let padded = model.layout.padded();
         let rho_rad_s = spectral_radius(&a);
         let steps = stride_steps(rho_rad_s, step_s, substeps);
-        let spans = exp_spans(model, &a, step_s, rho, steps);
+        let period = takes_whole_periods(rho_rad_s, step_s, substeps).then_some(substeps);
+        let spans = exp_spans(model, &a, (step_s, rho), period, steps as u32);
         let events = event_forms(model, mode, &a, rates.harmonic_rad_s);
         let a_columns = padded_columns(&a, padded);
         let outputs = OutputForms::of(model, mode, rates.harmonic_rad_s);
@@ -91,11 +96,19 @@ impl ModeSystem {
 
 /// The system of a mode from its A (`a_columns`, spectral radius `rho_rad_s`), e^{A h} and, where it strides,
 /// e^{A m h} (`spans`), its switching functions and its signals.
+/// A mode's e^{A τ} over its spans: the step, and where the mode allows, an output period
+/// of several steps and a stride.
+struct ModeSpans {
+    step: DMatrix<f64>,
+    period: Option<DMatrix<f64>>,
+    stride: Option<(u32, DMatrix<f64>)>,
+}
+
 fn mode_system(
     model: &NetworkModel,
     a_columns: Vec<f64>,
     rho_rad_s: f64,
-    spans: &[(u32, DMatrix<f64>)],
+    spans: &ModeSpans,
     events: Vec<EventForm>,
     outputs: OutputForms,
 ) -> ModeSystem {
@@ -113,8 +126,8 @@ fn mode_system(
     let fused_rows = (l.mechanical() + 2 * row_events).div_ceil(4) * 4;
     let forcing_rows = (l.len() - l.mechanical()).div_ceil(4) * 4;
     let matrix = |span: &DMatrix<f64>| span_matrix(model, span, &forms, fused_rows, forcing_rows);
-    let step = matrix(&spans[0].1);
-    let stride = spans.get(1).map(|(steps, span)| Stride {
+    let step = matrix(&spans.step);
+    let stride = spans.stride.as_ref().map(|(steps, span)| Stride {
         steps: *steps,
         matrix: matrix(span),
     });
@@ -123,6 +136,7 @@ fn mode_system(
         rho_rad_s,
         step,
         stride,
+        period: spans.period.as_ref().map(matrix),
         fused_rows,
         row_slot,
         row_events,
@@ -180,16 +194,17 @@ fn padded_columns(m: &DMatrix<f64>, padded: usize) -> Vec<f64> {
     out
 }
 
-/// e^{A h} (1 step) and, where `steps` > 1, e^{A m h} (m = `steps`), balanced as the 1983
-/// plant's: angles and the integral at 1, speeds and the filtered speed at ρ, forcing
-/// states scaled to ρ, the two states of each harmonic pair alike.
+/// e^{A h} (1 step), e^{A T} over an output period of `period` steps where given, and,
+/// where `steps` > 1, e^{A m h} (m = `steps`), balanced as the 1983 plant's: angles and
+/// the integral at 1, speeds and the filtered speed at ρ, forcing states scaled to ρ, the
+/// two states of each harmonic pair alike.
 fn exp_spans(
     model: &NetworkModel,
     a: &DMatrix<f64>,
-    step_s: f64,
-    rho: f64,
-    steps: usize,
-) -> Vec<(u32, DMatrix<f64>)> {
+    (step_s, rho): (f64, f64),
+    period: Option<u32>,
+    steps: u32,
+) -> ModeSpans {
     let l = &model.layout;
     let rho = rho.max(1.0);
     let mechanical: Vec<f64> = (0..l.mechanical())
@@ -211,11 +226,14 @@ fn exp_spans(
         scale[pair] = shared;
         scale[pair + 1] = shared;
     }
-    let mut powers = exp_powers_balanced(a, step_s, &scale, steps);
-    let stride = (steps > 1).then(|| powers.pop()).flatten();
-    let mut spans = vec![(1, powers.swap_remove(0))];
-    spans.extend(stride.map(|span| (steps as u32, span)));
-    spans
+    let count = steps.max(period.unwrap_or(1)) as usize;
+    let powers = exp_powers_balanced(a, step_s, &scale, count);
+    let power = |k: u32| powers[k as usize - 1].clone();
+    ModeSpans {
+        step: power(1),
+        period: period.map(power),
+        stride: (steps > 1).then(|| (steps, power(steps))),
+    }
 }
 
 /// The fastest rate (rad/s) of `model`: A's spectral radius with every mesh on its drive
