@@ -1,7 +1,9 @@
-//! The one plant, of any rig a rig file describes ([`crate::RigTopology`]): bodies, shafts and
-//! up to four meshes with backlash, a speed-controlled motor, a brake, a locked-in loop
-//! torque; advanced exactly between the switches of every mesh and of the motor's limit,
-//! each switch found on the exact solution.
+//! The one plant, of any rig a rig file describes ([`crate::RigTopology`]): bodies (turning,
+//! or also moving in the plane on bearings), shafts, external meshes and planetary stages
+//! with backlash (up to 20 meshes; a stage's translations kept in its carrier's frame,
+//! `model.rs`), a speed-controlled motor, a brake, a locked-in loop torque; advanced
+//! exactly between the switches of every mesh and of the motor's limit, each switch
+//! found on the exact solution. `ring_sensor.rs` a stage's ring transducer as a column.
 //!
 //! `layout.rs` the state: absolute angles and speeds, the speed loop, then forcing states
 //! (unit, set speed and its ramp rate, brake load and its rate, the oscillating load's

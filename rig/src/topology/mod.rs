@@ -7,7 +7,8 @@
 //! of the motor's speed;
 //! `coordinates.rs` the rig's coordinates in the plane and its stiffness on them;
 //! `modes.rs` its undamped natural modes, `mode_kind.rs` their kinds in a planetary stage; `mesh_hold.rs` those with its meshes in
-//! contact, rigid or apart.
+//! contact, rigid or apart; `stage_phasing.rs` a stage mesh's pair zones and phase by
+//! its planet's place (Parker & Lin 2004); `stage_fields.rs` a stage's paths.
 
 mod check;
 mod check_planar;
