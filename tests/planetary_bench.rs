@@ -7,40 +7,10 @@
 
 mod common;
 
-use common::{bench_in_the_plane, csv_rows, folder, json, single_pair_bench, testrig, testrig_ok};
-
-/// Runs `simulate --rig rig` at `rpm` and `load` N m, settled `settle` s, for `seconds`,
-/// its signals into `out`, with `more` arguments (fails with its stderr if refused).
-fn simulate(
-    rig: &str,
-    (rpm, load): (&str, &str),
-    (settle, seconds): (&str, &str),
-    out: &std::path::Path,
-    more: &[&str],
-) {
-    let mut args = vec![
-        "simulate",
-        "--rig",
-        rig,
-        "--rpm",
-        rpm,
-        "--load",
-        load,
-        "--settle",
-        settle,
-        "--duration",
-        seconds,
-        "--out",
-        out.to_str().expect("utf-8"),
-    ];
-    args.extend_from_slice(more);
-    let run = testrig(&args);
-    assert!(
-        run.status.success(),
-        "{}",
-        String::from_utf8_lossy(&run.stderr)
-    );
-}
+use common::{
+    bench_in_the_plane, csv_rows, folder, json, simulate_rig, single_pair_bench, testrig,
+    testrig_ok,
+};
 
 /// `text` written as `name`.toml in `dir`: its path.
 fn written(dir: &std::path::Path, name: &str, text: &str) -> String {
@@ -73,7 +43,7 @@ fn a_planetary_bench_turns_by_willis_balances_its_torques_and_shares_its_load_eq
     let dir = folder("planetary-bench");
     let out = dir.join("out");
     let rig = written(&dir, "bench", &single_pair_bench());
-    simulate(&rig, ("1500", "50"), ("2", "1"), &out, &[]);
+    simulate_rig(&rig, ("1500", "50"), ("2", "1"), &out, &[]);
     let at = last_sample(&out);
     // Willis with the ring held: the carrier at z_s/(z_s + z_r) = 1/5 of the sun, each
     // planet at r_s/(2 r_p) = 1/3 of it the other way (in its own sense, positive).
@@ -172,7 +142,7 @@ fn a_floating_sun_shares_the_load_equally_despite_a_pin_error() {
             &format!("float-{bearing}"),
             &bench_in_the_plane(bearing, error),
         );
-        simulate(&rig, ("1500", "50"), ("2", "0.1"), &out, &[]);
+        simulate_rig(&rig, ("1500", "50"), ("2", "0.1"), &out, &[]);
         let at = last_sample(&out);
         let f: Vec<f64> = (1..=3)
             .map(|k| at(&format!("force_epi_sun_planet{k}_n")))
@@ -215,7 +185,7 @@ fn a_pin_error_shares_the_load_unequally_as_the_static_solution_says() {
     );
     let dir = folder("planetary-pin-error");
     let out = dir.join("out");
-    simulate(
+    simulate_rig(
         &written(&dir, "pin", &text),
         ("1500", "50"),
         ("2", "0.5"),

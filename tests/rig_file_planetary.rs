@@ -6,7 +6,9 @@
 
 mod common;
 
-use common::{bench_in_the_plane, csv_rows, folder, json, number, refused_rig, testrig};
+use common::{
+    bench_in_the_plane, csv_rows, folder, json, number, refused_rig, simulate_rig, testrig,
+};
 
 fn lin_parker() -> String {
     let path = concat!(
@@ -265,25 +267,12 @@ fn a_stage_in_the_plane_runs_by_willis_with_its_planets_translations_as_signals(
     let path = dir.join("planar.toml");
     std::fs::write(&path, bench_in_the_plane("1.0e8", "")).expect("written");
     let out = dir.join("out");
-    let run = testrig(&[
-        "simulate",
-        "--rig",
+    simulate_rig(
         path.to_str().expect("utf-8"),
-        "--rpm",
-        "1500",
-        "--load",
-        "50",
-        "--settle",
-        "2",
-        "--duration",
-        "0.1",
-        "--out",
-        out.to_str().expect("utf-8"),
-    ]);
-    assert!(
-        run.status.success(),
-        "{}",
-        String::from_utf8_lossy(&run.stderr)
+        ("1500", "50"),
+        ("2", "0.1"),
+        &out,
+        &[],
     );
     let rows = csv_rows(&out.join("signals.csv"));
     let last = rows.last().expect("a sample");
@@ -388,26 +377,7 @@ fn two_stages_and_a_pair_in_seventeen_meshes_turn_by_willis_and_share_their_load
     let dir = folder("planetary-two-stage");
     let out = dir.join("out");
     let rig = common::rig_file("planetary-two-stage");
-    let run = testrig(&[
-        "simulate",
-        "--rig",
-        &rig,
-        "--rpm",
-        "1500",
-        "--load",
-        "100",
-        "--settle",
-        "2",
-        "--duration",
-        "0.1",
-        "--out",
-        out.to_str().expect("utf-8"),
-    ]);
-    assert!(
-        run.status.success(),
-        "{}",
-        String::from_utf8_lossy(&run.stderr)
-    );
+    simulate_rig(&rig, ("1500", "100"), ("2", "0.1"), &out, &[]);
     let rows = csv_rows(&out.join("signals.csv"));
     let last = rows.last().expect("a sample");
     let forces = last.keys().filter(|k| k.starts_with("force_")).count();

@@ -286,3 +286,36 @@ pub fn bench_in_the_plane(sun_bearing: &str, more: &str) -> String {
         ("planet_inertia_kgm2 = 0.0015\n", &planets),
     ])
 }
+
+/// Runs `simulate --rig rig` at `rpm` and `load` N m, settled `settle` s, for `seconds`,
+/// its signals into `out`, with `more` arguments (fails with its stderr if refused).
+pub fn simulate_rig(
+    rig: &str,
+    (rpm, load): (&str, &str),
+    (settle, seconds): (&str, &str),
+    out: &std::path::Path,
+    more: &[&str],
+) {
+    let mut args = vec![
+        "simulate",
+        "--rig",
+        rig,
+        "--rpm",
+        rpm,
+        "--load",
+        load,
+        "--settle",
+        settle,
+        "--duration",
+        seconds,
+        "--out",
+        out.to_str().expect("utf-8"),
+    ];
+    args.extend_from_slice(more);
+    let run = testrig(&args);
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+}
