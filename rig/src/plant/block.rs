@@ -42,7 +42,7 @@ impl NetworkBlock {
             rig.turning_names().len(),
             rig.shafts.len() + rig.frame_shafts.len(),
             rig.mesh_names().len(),
-            RigCoordinates::of(rig).translations(),
+            RigCoordinates::translation_count(rig),
         )
     }
 

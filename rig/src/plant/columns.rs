@@ -3,7 +3,7 @@
 
 use std::f64::consts::PI;
 
-use crate::topology::RigTopology;
+use crate::topology::{RigCoordinates, RigTopology};
 
 use super::block::NetworkBlock;
 use super::ring_sensor::ring_sensor_n;
@@ -130,19 +130,6 @@ fn translating(rig: &RigTopology) -> Vec<(String, String)> {
     out
 }
 
-/// How many translation columns [`translating`] gives (x and y each), without naming
-/// them: [`column`] asks for every column of every block.
-fn translation_count(rig: &RigTopology) -> usize {
-    let bodies = rig.bodies.iter().filter(|b| b.planar.is_some()).count();
-    let planets: usize = rig
-        .planetary
-        .iter()
-        .filter(|s| s.planet_bearing.is_some())
-        .map(|s| s.planets())
-        .sum();
-    2 * (bodies + planets)
-}
-
 /// The column names of [`column_specs`].
 pub fn column_names(rig: &RigTopology) -> Vec<String> {
     column_specs(rig).into_iter().map(|c| c.name).collect()
@@ -187,7 +174,7 @@ pub fn column(rig: &RigTopology, block: &NetworkBlock, k: usize) -> Option<Vec<f
         return Some(block.mesh_force_n[k].clone());
     }
     k -= meshes;
-    let translations = translation_count(rig);
+    let translations = RigCoordinates::translation_count(rig);
     if k < translations {
         return Some(block.translation_m[k].clone());
     }

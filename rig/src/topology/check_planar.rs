@@ -38,8 +38,12 @@ impl RigTopology {
         for (i, stage) in self.planetary.iter().enumerate() {
             check_stage(stage, i)?;
             self.check_planet_names(stage, i)?;
+        }
+        // The speeds once every stage is known sound.
+        let speeds = self.relative_speeds();
+        for (i, stage) in self.planetary.iter().enumerate() {
             // A held carrier's frame is the housing's: nothing turns there.
-            let carrier_turns = self.relative_speeds()[stage.carrier] != Some(0.0);
+            let carrier_turns = speeds[stage.carrier] != Some(0.0);
             for member in [stage.sun, stage.ring, stage.carrier] {
                 if carrier_turns && self.bodies[member].planar.is_some() {
                     self.check_member_frame(i, member)?;

@@ -194,12 +194,18 @@ impl RigCoordinates {
             .any(|c| c.kind != CoordinateKind::Rotation)
     }
 
-    /// How many coordinates are translations (x and y each, of bodies and planets).
-    pub fn translations(&self) -> usize {
-        self.coordinates
+    /// How many coordinates of `rig` are translations (x and y each, of the bodies and
+    /// planets on bearings), counted from the rig without building its coordinates: the
+    /// columns' lookup asks for it for every column of every block.
+    pub fn translation_count(rig: &RigTopology) -> usize {
+        let bodies = rig.bodies.iter().filter(|b| b.planar.is_some()).count();
+        let planets: usize = rig
+            .planetary
             .iter()
-            .filter(|c| c.kind != CoordinateKind::Rotation)
-            .count()
+            .filter(|s| s.planet_bearing.is_some())
+            .map(|s| s.planets())
+            .sum();
+        2 * (bodies + planets)
     }
 
     /// Whether coordinate `j` is a planet's.
