@@ -180,7 +180,9 @@ def planetary_rig(page, shots):
     1000 rev/min (from 8 s), three planets pass it at 3 × 200/60 = 10 Hz, its strongest
     line."""
     wait_until("the scenario's name", lambda: page.inner_text("#scenario") == "planetary-run")
-    wait_until("9 s simulated", lambda: page.evaluate("() => state.simulated_s") > 9)
+    # `state` is null until the panel's first message: the scenario's name may come first.
+    wait_until("9 s simulated",
+               lambda: page.evaluate("() => state !== null && state.simulated_s > 9"))
     wait_until("the tacho DVM at 1000 rev/min", lambda: abs(dvm_rpm(page) - 1000) <= 10)
     # Eight averages of 1024-point blocks at 2 kHz (2 × Fmax) take 4.1 s simulated:
     # complete and 4.3 s on from the click, the average is the one the click started (at
