@@ -32,6 +32,9 @@ pub fn gathered(m: &[f64], rows: usize, columns: &[usize], u: &[f64], out: &mut 
 /// registers (no column passed over: a fast run reads only states that feed its rows).
 #[inline(always)]
 fn gathered_of<const R: usize>(m: &[f64], columns: &[usize], u: &[f64], out: &mut [f64]) {
+    if R >= ONE_CHAIN_ROWS {
+        return gathered_one_chain::<R>(m, columns, u, out);
+    }
     let (mut even, mut odd) = ([0.0; R], [0.0; R]);
     let m = &m[..columns.len() * R];
     let mut pairs = m.chunks_exact(2 * R);
@@ -53,6 +56,25 @@ fn gathered_of<const R: usize>(m: &[f64], columns: &[usize], u: &[f64], out: &mu
     for ((o, e), d) in out[..R].iter_mut().zip(even).zip(odd) {
         *o = e + d;
     }
+}
+
+/// Rows from which one chain of sums keeps enough products in flight: R/4 vectors of
+/// four, each an independent multiply-add chain, six or more. Two chains of as many rows
+/// fill the sixteen vector registers, and their sums went to the stack and back at every
+/// column (seen in the planetary bench's 32 fused rows).
+const ONE_CHAIN_ROWS: usize = 24;
+
+/// [`gathered_of`] in one chain of sums, for `R` ≥ [`ONE_CHAIN_ROWS`].
+#[inline(always)]
+fn gathered_one_chain<const R: usize>(m: &[f64], columns: &[usize], u: &[f64], out: &mut [f64]) {
+    let mut sum = [0.0; R];
+    for (column, &i) in m[..columns.len() * R].chunks_exact(R).zip(columns) {
+        let x = u[i];
+        for (s, &a) in sum.iter_mut().zip(column) {
+            *s = a.mul_add(x, *s);
+        }
+    }
+    out[..R].copy_from_slice(&sum);
 }
 
 /// out[..rows] = M u for M of `rows` rows (a multiple of 4) stored by columns, one column
@@ -97,6 +119,16 @@ fn rows_any(m: &[f64], rows: usize, u: impl Iterator<Item = f64>, out: &mut [f64
 /// shape the compiler unrolls), in two chains taken alternately.
 #[inline(always)]
 fn rows_of<const R: usize>(m: &[f64], u: impl Iterator<Item = f64>, out: &mut [f64]) {
+    if R >= ONE_CHAIN_ROWS {
+        let mut sum = [0.0; R];
+        for (column, x) in m.chunks_exact(R).zip(u).filter(|&(_, x)| x != 0.0) {
+            for (s, &a) in sum.iter_mut().zip(column) {
+                *s = a.mul_add(x, *s);
+            }
+        }
+        out[..R].copy_from_slice(&sum);
+        return;
+    }
     let (mut even, mut odd) = ([0.0; R], [0.0; R]);
     let mut columns = m.chunks_exact(R).zip(u).filter(|&(_, x)| x != 0.0);
     while let Some((c0, x0)) = columns.next() {
