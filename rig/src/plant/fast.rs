@@ -11,7 +11,7 @@
 //! allows; where a switch may fall, that stretch is taken in single steps.
 
 use crate::error::RigError;
-use crate::roots::may_cross;
+use crate::roots::{may_cross, may_cross_span};
 
 use super::block::NetworkBlock;
 use super::events::edge_values;
@@ -234,9 +234,11 @@ impl NetworkPlant {
 
     /// Whether any function may cross over the span of `span_s` from `self.u` to
     /// `self.next` (values and rates at its ends in `self.edge` and `self.next_edge`), as
-    /// the exact path's check decides it.
+    /// the exact path's check decides it over a step, and over a span of several steps as
+    /// [`may_cross_span`] does (any interior maximum).
     #[inline(always)]
     fn may_switch(&self, system: &ModeSystem, span_s: f64) -> bool {
+        let several_steps = span_s > self.step_s;
         // A plain loop: written with `any`, the check was a call out of the loop.
         let events = system.events.len();
         for ((&target, &(value_0, rate_0)), &end) in self.targets[..events]
@@ -246,7 +248,13 @@ impl NetworkPlant {
         {
             let g0 = (value_0 - target).min(0.0);
             let g1 = end.0 - target;
-            if may_cross(g0, rate_0 * span_s, g1, end.1 * span_s) {
+            let (d0, d1) = (rate_0 * span_s, end.1 * span_s);
+            let cross = if several_steps {
+                may_cross_span(g0, d0, g1, d1)
+            } else {
+                may_cross(g0, d0, g1, d1)
+            };
+            if cross {
                 return true;
             }
         }
