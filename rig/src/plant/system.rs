@@ -27,7 +27,7 @@ pub struct SpanMatrix {
 }
 
 /// A stride: several internal steps taken as one where the mode's fastest motion is slow
-/// against the step (ρ·m·h ≤ 1: mostly with every mesh apart, but a soft mesh in contact
+/// against the step (ρ·m·h ≤ [`crate::stride::MAX_RHO_STRIDE`]: mostly with every mesh apart, but a soft mesh in contact
 /// may qualify), by a settling run that writes no samples.
 #[derive(Clone, Debug)]
 pub struct Stride {
