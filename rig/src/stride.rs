@@ -16,7 +16,7 @@ pub const MAX_STRIDE: usize = 8;
 /// Largest ρ·m·h (rad of the fastest motion) a stride spans. The check fits a cubic
 /// through each function's values and slopes at the stride's ends and asks whether any
 /// interior maximum comes within a quarter of those values and slopes of the target
-/// ([`crate::roots::may_cross`]); over 1.75 rad it missed none of the sampled functions
+/// ([`crate::roots::may_cross_span`]); over 1.75 rad it missed none of the sampled functions
 /// of up to three motions that peaked above the target (its test), over 2 rad one in
 /// three thousand. 1.75 rad lets the planetary bench's stiffest modes (ρT ≈ 1.59 at
 /// 51.2 kHz) take each output period in one product. Measured against single steps:
