@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::{csv_rows, folder, json_of, number, rig_file, testrig};
+use common::{csv_rows, folder, json_of, number, rig_file, testrig, testrig_ok};
 
 fn point(approach: &str) -> serde_json::Value {
     json_of(&[
@@ -78,12 +78,7 @@ fn from_rest_the_1983_preset_and_its_rig_file_start_and_run_up_alike() {
             out.to_str().expect("path"),
         ];
         args.extend(extra);
-        let done = testrig(&args);
-        assert!(
-            done.status.success(),
-            "{}",
-            String::from_utf8_lossy(&done.stderr)
-        );
+        testrig_ok(&args);
         out.join("signals.csv")
     };
     let preset = run(["--preset", "basmaji-1983"], "preset");
