@@ -33,7 +33,8 @@ pub fn gathered(m: &[f64], rows: usize, columns: &[usize], u: &[f64], out: &mut 
 #[inline(always)]
 fn gathered_of<const R: usize>(m: &[f64], columns: &[usize], u: &[f64], out: &mut [f64]) {
     if R >= ONE_CHAIN_ROWS {
-        return gathered_one_chain::<R>(m, columns, u, out);
+        let picked = m[..columns.len() * R].chunks_exact(R).zip(columns);
+        return one_chain::<R>(picked.map(|(column, &i)| (column, u[i])), out);
     }
     let (mut even, mut odd) = ([0.0; R], [0.0; R]);
     let m = &m[..columns.len() * R];
@@ -64,12 +65,12 @@ fn gathered_of<const R: usize>(m: &[f64], columns: &[usize], u: &[f64], out: &mu
 /// column (seen in the planetary bench's 32 fused rows).
 const ONE_CHAIN_ROWS: usize = 24;
 
-/// [`gathered_of`] in one chain of sums, for `R` ≥ [`ONE_CHAIN_ROWS`].
+/// out[..R] = Σ column · x over `columns` (each of `R` rows, with the state it weighs) in
+/// one chain of sums, for `R` ≥ [`ONE_CHAIN_ROWS`]: [`gathered_of`]'s and [`rows_of`]'s.
 #[inline(always)]
-fn gathered_one_chain<const R: usize>(m: &[f64], columns: &[usize], u: &[f64], out: &mut [f64]) {
+fn one_chain<'a, const R: usize>(columns: impl Iterator<Item = (&'a [f64], f64)>, out: &mut [f64]) {
     let mut sum = [0.0; R];
-    for (column, &i) in m[..columns.len() * R].chunks_exact(R).zip(columns) {
-        let x = u[i];
+    for (column, x) in columns {
         for (s, &a) in sum.iter_mut().zip(column) {
             *s = a.mul_add(x, *s);
         }
@@ -120,14 +121,7 @@ fn rows_any(m: &[f64], rows: usize, u: impl Iterator<Item = f64>, out: &mut [f64
 #[inline(always)]
 fn rows_of<const R: usize>(m: &[f64], u: impl Iterator<Item = f64>, out: &mut [f64]) {
     if R >= ONE_CHAIN_ROWS {
-        let mut sum = [0.0; R];
-        for (column, x) in m.chunks_exact(R).zip(u).filter(|&(_, x)| x != 0.0) {
-            for (s, &a) in sum.iter_mut().zip(column) {
-                *s = a.mul_add(x, *s);
-            }
-        }
-        out[..R].copy_from_slice(&sum);
-        return;
+        return one_chain::<R>(m.chunks_exact(R).zip(u).filter(|&(_, x)| x != 0.0), out);
     }
     let (mut even, mut odd) = ([0.0; R], [0.0; R]);
     let mut columns = m.chunks_exact(R).zip(u).filter(|&(_, x)| x != 0.0);

@@ -27,8 +27,9 @@ pub struct SpanMatrix {
 }
 
 /// A stride: several internal steps taken as one where the mode's fastest motion is slow
-/// against the step (ρ·m·h ≤ [`crate::stride::MAX_RHO_STRIDE`]: mostly with every mesh apart, but a soft mesh in contact
-/// may qualify), by a settling run that writes no samples.
+/// against the step (ρ·m·h ≤ [`crate::stride::MAX_RHO_STRIDE`]: mostly with every mesh
+/// apart, but a soft mesh in contact may qualify), by a settling run that writes no
+/// samples.
 #[derive(Clone, Debug)]
 pub struct Stride {
     /// Internal steps it takes (whole output periods, a power of two of them; at least 2).
@@ -94,8 +95,6 @@ impl ModeSystem {
     }
 }
 
-/// The system of a mode from its A (`a_columns`, spectral radius `rho_rad_s`), e^{A h} and, where it strides,
-/// e^{A m h} (`spans`), its switching functions and its signals.
 /// A mode's e^{A τ} over its spans: the step, and where the mode allows, an output period
 /// of several steps and a stride.
 struct ModeSpans {
@@ -104,6 +103,8 @@ struct ModeSpans {
     stride: Option<(u32, DMatrix<f64>)>,
 }
 
+/// The system of a mode from its A (`a_columns`, spectral radius `rho_rad_s`), its e^{A τ}
+/// over its spans (`spans`), its switching functions and its signals.
 fn mode_system(
     model: &NetworkModel,
     a_columns: Vec<f64>,
