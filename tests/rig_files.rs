@@ -280,6 +280,16 @@ fn bad_rig_files_are_refused_at_their_line_naming_the_field_and_what_is_allowed(
             vec!["brake.drag_nm", "must be 0 or a number"],
         ),
         (
+            "ungauged-shaft-with-the-chains-name",
+            "name = \"intermediate\"",
+            "name = \"intermediate_shaft\"",
+            vec![
+                "shaft.name",
+                "the measuring chain's name for the gauged shaft",
+                "torque_intermediate_shaft_nm",
+            ],
+        ),
+        (
             "unknown-key",
             "module_m = 0.003",
             "modul_m = 0.003",
@@ -336,13 +346,16 @@ fn bad_rig_files_are_refused_at_their_line_naming_the_field_and_what_is_allowed(
         "{stderr}"
     );
     let mut meshes = good.clone();
-    for i in 0..3 {
+    for i in 0..19 {
         meshes.push_str(&format!(
             "[[mesh]]\nname = \"extra{i}\"\ndriver = \"pinion1\"\ndriven = \"wheel1\"\nteeth = [20, 60]\nmodule_m = 0.003\nbacklash_mm = 0.2\nstiffness_n_per_m = 2.8e8\n"
         ));
     }
     let stderr = refused_rig(&dir, "too-many-meshes", &meshes);
-    assert!(stderr.contains("5 meshes: a rig has at most 4"), "{stderr}");
+    assert!(
+        stderr.contains("21 meshes: a rig has at most 20"),
+        "{stderr}"
+    );
 }
 
 #[test]

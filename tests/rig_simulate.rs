@@ -256,3 +256,81 @@ fn a_preset_runs_as_its_rig_file_and_takes_the_thesis_names_as_rig_paths() {
         torque(&preset)
     );
 }
+
+/// A gear train of six external stages (more than the four a rig file once held; the
+/// limit is twenty meshes in all): each stage turns its wheel at 2/3 of its pinion's
+/// speed, so the brake turns at (2/3)⁶ of the motor's, and in steady motion the motor
+/// gives the brake's load times that ratio (no drag, every mesh loaded on its drive flank).
+#[test]
+fn a_six_stage_gear_train_turns_at_the_product_of_its_ratios_and_balances_its_torque() {
+    let stages = 6;
+    let mut text = String::from(
+        "name = \"six-stage\"\n[[body]]\nname = \"motor\"\ninertia_kgm2 = 0.01\n\
+         [[body]]\nname = \"brake\"\ninertia_kgm2 = 0.05\n",
+    );
+    for k in 0..stages {
+        text.push_str(&format!(
+            "[[body]]\nname = \"pinion{k}\"\ninertia_kgm2 = 0.001\n\
+             [[body]]\nname = \"wheel{k}\"\ninertia_kgm2 = 0.002\n\
+             [[mesh]]\nname = \"stage{k}\"\ndriver = \"pinion{k}\"\ndriven = \"wheel{k}\"\n\
+             teeth = [20, 30]\nmodule_m = 0.003\nbacklash_mm = 0.1\n\
+             stiffness_n_per_m = 3.0e8\ndamping_ns_per_m = 1500.0\n"
+        ));
+        let from = if k == 0 {
+            "motor".to_string()
+        } else {
+            format!("wheel{}", k - 1)
+        };
+        text.push_str(&format!(
+            "[[shaft]]\nname = \"shaft{k}\"\nbetween = [\"{from}\", \"pinion{k}\"]\n\
+             stiffness_nm_per_rad = 20000.0\ndamping_nms_per_rad = 0.5\n"
+        ));
+    }
+    text.push_str(&format!(
+        "[[shaft]]\nname = \"output\"\nbetween = [\"wheel{}\", \"brake\"]\n\
+         stiffness_nm_per_rad = 20000.0\ndamping_nms_per_rad = 0.5\n\
+         [motor]\nbody = \"motor\"\n[brake]\nbody = \"brake\"\n",
+        stages - 1
+    ));
+    let dir = folder("six-stage");
+    let path = dir.path().join("six-stage.toml");
+    std::fs::write(&path, text).expect("rig file");
+    let report = json_of(&[
+        "simulate",
+        "--rig",
+        path.to_str().expect("utf-8"),
+        "--rpm",
+        "1500",
+        "--load",
+        "20",
+        "--settle",
+        "2",
+        "--duration",
+        "1",
+        "--json",
+    ]);
+    let ratio = (2.0_f64 / 3.0).powi(stages);
+    let speed = |name: &str| -> f64 {
+        report["bodies"]
+            .as_array()
+            .expect("bodies")
+            .iter()
+            .find(|b| b["name"] == name)
+            .unwrap_or_else(|| panic!("no body {name}"))["speed_mean_rpm"]
+            .as_f64()
+            .expect("number")
+    };
+    let brake_rpm = speed("brake");
+    assert!(
+        (brake_rpm / 1500.0 - ratio).abs() < 1e-6 * ratio,
+        "brake {brake_rpm} rev/min against {}",
+        1500.0 * ratio
+    );
+    let motor_nm = report["motor_torque_mean_nm"].as_f64().expect("number");
+    assert!(
+        (motor_nm - 20.0 * ratio).abs() < 1e-6,
+        "motor {motor_nm} N m against {}",
+        20.0 * ratio
+    );
+    assert_eq!(report["impacts"], 0, "{report}");
+}

@@ -124,7 +124,7 @@ pub use steady::SteadySummary;
 pub use tooth_fault::{FaultKind, FaultedGear, ToothFault};
 pub use topology::TopologyField;
 pub use topology::{
-    Body, DriveRatings, DriveSettings, FrameShaft, Gauge, LockedTorque, MAX_BODIES, MAX_MESHES,
+    Body, DriveRatings, DriveSettings, FrameShaft, Gauge, LockedTorque, MAX_BODIES,
     MAX_PLANT_MESHES, Mesh, RigTopology, Shaft,
 };
 pub use topology::{Coordinate, CoordinateKind, Coupling, MeshForm, RigCoordinates};

@@ -10,6 +10,8 @@ use rig::{
 };
 use toml::Spanned;
 
+use crate::vocabulary::signal_names::SHAFT_TORQUE_NM;
+
 use super::read_rig_mesh::{mesh, or};
 use super::read_rig_planetary::{FRAME, planar_bearing, planetary_stage};
 use super::rig_fault_place::{field_name, span_of};
@@ -107,6 +109,7 @@ fn build(src: &ScenarioSource, file: &RigFileToml) -> anyhow::Result<RigTopology
             shear_modulus_pa: or(&g.shear_modulus_pa, STEEL_SHEAR_MODULUS_PA),
         }),
     };
+    refuse_shadowed_torque(src, file, &shafts, gauge.as_ref())?;
     let locked_torque = match &file.locked_torque {
         None => None,
         Some(l) => {
@@ -177,6 +180,43 @@ fn build(src: &ScenarioSource, file: &RigFileToml) -> anyhow::Result<RigTopology
             .transpose()?,
         keyphasor,
     })
+}
+
+/// The shaft name whose torque column, `torque_<name>_nm`, is the measuring chain's
+/// input for the gauged shaft's torque ([`SHAFT_TORQUE_NM`]).
+const CHAIN_SHAFT_NAME: &str = "intermediate_shaft";
+
+/// Refuses a shaft named [`CHAIN_SHAFT_NAME`] that is not the gauged shaft: its torque
+/// column would carry the chain's name for the gauged shaft's torque, and a chain,
+/// analyser or recording reading it by name would get the gauged shaft's instead.
+fn refuse_shadowed_torque(
+    src: &ScenarioSource,
+    file: &RigFileToml,
+    shafts: &[Shaft],
+    gauge: Option<&Gauge>,
+) -> anyhow::Result<()> {
+    let Some(named) = shafts.iter().position(|s| s.name == CHAIN_SHAFT_NAME) else {
+        return Ok(());
+    };
+    if gauge.is_some_and(|g| g.shaft == named) {
+        return Ok(());
+    }
+    let Some(toml) = file
+        .shafts
+        .iter()
+        .find(|s| s.name.get_ref() == CHAIN_SHAFT_NAME)
+    else {
+        return Ok(());
+    };
+    Err(src.error(
+        toml.name.span(),
+        "shaft.name",
+        format!(
+            "`{CHAIN_SHAFT_NAME}` is the measuring chain's name for the gauged shaft \
+             (`{SHAFT_TORQUE_NM}` is the strain stage's input), and this shaft is not \
+             under the [gauge]; name it otherwise, or gauge it"
+        ),
+    ))
 }
 
 /// The keyphasor's gear, body `gear`: refused unless it is some mesh's gear (the

@@ -3,7 +3,7 @@
 //! close, and the limits on size. Each fault names the item and field, and what is
 //! allowed.
 
-use super::rig_topology::{MAX_BODIES, MAX_MESHES, RigTopology};
+use super::rig_topology::{MAX_BODIES, MAX_PLANT_MESHES, RigTopology};
 use crate::error::{TopologyError, TopologyPlace};
 
 pub(super) fn fault(
@@ -109,13 +109,13 @@ impl RigTopology {
                 ),
             ));
         }
-        if self.meshes.len() > MAX_MESHES {
+        if self.meshes.len() > MAX_PLANT_MESHES {
             return Err(fault(
                 "mesh",
-                MAX_MESHES,
+                MAX_PLANT_MESHES,
                 "name",
                 format!(
-                    "{} meshes: a rig has at most {MAX_MESHES}",
+                    "{} meshes: a rig has at most {MAX_PLANT_MESHES} (the external ones and two per planet)",
                     self.meshes.len()
                 ),
             ));

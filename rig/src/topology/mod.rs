@@ -33,7 +33,7 @@ pub use planetary::{
     StageMesh, StageRadii, StageTeeth,
 };
 pub use rig_topology::{
-    Body, DriveRatings, DriveSettings, FrameShaft, Gauge, LockedTorque, MAX_BODIES, MAX_MESHES,
+    Body, DriveRatings, DriveSettings, FrameShaft, Gauge, LockedTorque, MAX_BODIES,
     MAX_PLANT_MESHES, Mesh, RigTopology, Shaft,
 };
 pub use stage_phasing::StageMeshPhase;

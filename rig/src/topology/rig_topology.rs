@@ -16,8 +16,6 @@ use super::planetary::{PlanarBearing, PlanetaryStage};
 
 /// Most bodies a rig may have.
 pub const MAX_BODIES: usize = 32;
-/// Most external meshes a rig may have.
-pub const MAX_MESHES: usize = 4;
 /// Most meshes of every kind a rig may have: external meshes and each planetary stage's
 /// sun–planet and ring–planet meshes.
 pub const MAX_PLANT_MESHES: usize = 20;
