@@ -101,17 +101,21 @@ impl ChainStages {
         self.0.iter().find(|s| s.output == name)
     }
 
-    /// Unit of signal `name`, a plant signal or a stage's output.
+    /// Unit of signal `name`, a plant signal or a stage's output (a filter's, its
+    /// input's).
     pub fn unit_of(&self, name: &str) -> Option<&'static str> {
         match self.producing(name) {
+            Some(s) if s.instrument.keeps_unit() => self.unit_of(&s.inputs[0]),
             Some(s) => Some(s.instrument.unit()),
             None => plant_unit(name),
         }
     }
 
-    /// Full scale of signal `name` for integer recordings (in its unit).
+    /// Full scale of signal `name` for integer recordings (in its unit; a filter's, its
+    /// input's).
     pub fn full_scale_of(&self, name: &str) -> Option<f64> {
         match self.producing(name) {
+            Some(s) if s.instrument.keeps_unit() => self.full_scale_of(&s.inputs[0]),
             Some(s) => Some(s.instrument.full_scale()),
             None => plant_unit(name).map(plant_full_scale),
         }
@@ -194,5 +198,35 @@ fn unresolved(pending: &[StagePlan], available: &SignalNames) -> WiringError {
         output: s.output.clone(),
         input,
         known: available.names().join(", "),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::chain::Instrument;
+
+    /// A force sensor's signal through an AC coupling and a low-pass stays in newtons, at
+    /// the plant's full scale for forces; an instrument of its own unit writes volts.
+    #[test]
+    fn filters_keep_their_inputs_unit_and_full_scale() {
+        let stage = |output: &str, input: &str, instrument| StagePlan {
+            output: output.into(),
+            inputs: vec![input.into()],
+            instrument,
+        };
+        let sources = SignalNames::of(&["time_s", "sensor_epi_n"]);
+        let chain = ChainStages::ordered_on(
+            vec![
+                stage("ring_ac_n", "sensor_epi_n", Instrument::AcCoupling(1.0)),
+                stage("ring_n", "ring_ac_n", Instrument::LowPass(None)),
+                stage("ring_tacho_v", "ring_n", Instrument::Tacho),
+            ],
+            &sources,
+        )
+        .expect("wired");
+        assert_eq!(chain.unit_of("ring_n"), Some("N"));
+        assert_eq!(chain.full_scale_of("ring_n"), Some(plant_full_scale("N")));
+        assert_eq!(chain.unit_of("ring_tacho_v"), Some("V"));
     }
 }

@@ -45,7 +45,14 @@ impl Instrument {
         }
     }
 
-    /// Unit of its output.
+    /// Whether its output is in its input's unit: a linear filter (a low-pass, an AC
+    /// coupling) passes a force in newtons as newtons. The others write their own
+    /// ([`Self::unit`]).
+    pub fn keeps_unit(&self) -> bool {
+        matches!(self, Self::LowPass(_) | Self::AcCoupling(_))
+    }
+
+    /// Unit of its output, unless it keeps its input's ([`Self::keeps_unit`]).
     pub fn unit(&self) -> &'static str {
         match self {
             Self::Strain(_) => MICROSTRAIN_UNIT,

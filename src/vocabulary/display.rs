@@ -25,6 +25,10 @@ pub struct LiveSpectrum {
     pub running_hz: f64,
     /// The analysed signal.
     pub signal: String,
+    /// The analysed signal's unit (`V` through the chain; `N` for a force sensor read
+    /// directly): `power_v2`, `floor_v2` and `adc_range_v` are in it (squared for the
+    /// powers), their names kept for the API's readers.
+    pub unit: String,
     /// Window name.
     pub window: String,
     /// Top of the band (Hz).
@@ -54,6 +58,8 @@ pub struct LiveTrace {
     pub mode: String,
     /// The signal shown.
     pub signal: String,
+    /// The shown signal's unit: `volts_per_div` and `trigger_v` are in it.
+    pub unit: String,
 }
 
 /// The chain's settings in effect, as the panel echoes them: what was applied, so that a

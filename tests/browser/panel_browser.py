@@ -107,6 +107,12 @@ def thesis_rig(browser, page, url, shots):
     wait_until("a first DVM reading", lambda: rpm() > 0)
     before = rpm()
     page.screenshot(path=str(shots / "1-opening.png"))
+    # The chain's signals are volts, and the analyser's and scope's scales say so.
+    wait_until("the scope's and analyser's scales",
+               lambda: page.evaluate("() => state.trace !== null && state.spectrum !== null"))
+    labels = [page.inner_text(f"#{k}-label") for k in ("range", "vdiv", "trigger")]
+    if labels != ["ADC ± V", "V/div", "trigger V"]:
+        sys.exit(f"FAILED: the chain's scales read {labels}, not volts")
     # An empty speed box refuses the command in the page; the rig keeps its speed.
     set_before = page.evaluate("() => state.speed_set_rpm")
     page.fill("#speed", "")
@@ -202,6 +208,12 @@ def planetary_rig(page, shots):
     print(f"planetary bench: the ring sensor's strongest line at {hz:.2f} Hz")
     if abs(hz - 10.0) > bin_hz:
         sys.exit(f"FAILED: the ring sensor's strongest line at {hz} Hz, not the planet pass")
+    # The sensor reads newtons, straight into the analyser and the scope: their scales
+    # say so, not volts.
+    wait_until("the scope's trace", lambda: page.evaluate("() => state.trace !== null"))
+    labels = [page.inner_text(f"#{k}-label") for k in ("range", "vdiv", "trigger")]
+    if spectrum["unit"] != "N" or labels != ["ADC ± N", "N/div", "trigger N"]:
+        sys.exit(f"FAILED: the ring sensor's scales in {spectrum['unit']!r}, {labels}, not N")
     page.screenshot(path=str(shots / "4-planetary.png"))
 
 

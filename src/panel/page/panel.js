@@ -90,8 +90,8 @@ function drawScope() {
   g.stroke();
   g.fillStyle = "rgba(13, 20, 16, 0.8)"; g.fillRect(4, 3, 430, 18);
   g.fillStyle = "#9fd9a8";
-  g.fillText(`${t.signal}  ${t.volts_per_div} V/div  ${(t.seconds_per_div * 1e3).toPrecision(3)} ms/div  ` +
-    `trig ${t.trigger_v} V  ${t.mode}`, 8, 16);
+  g.fillText(`${t.signal}  ${t.volts_per_div} ${t.unit}/div  ${(t.seconds_per_div * 1e3).toPrecision(3)} ms/div  ` +
+    `trig ${t.trigger_v} ${t.unit}  ${t.mode}`, 8, 16);
 }
 
 // ---- spectrum: dB against linear frequency, orders and aliases marked ----
@@ -116,7 +116,7 @@ function drawSpectrum() {
     g.beginPath(); g.moveTo(left, y(d)); g.lineTo(right, y(d)); g.stroke();
     g.fillText(`${d}`, 8, y(d) + 4);
   }
-  g.fillText("dB re 1 V²", 8, 14);
+  g.fillText(`dB re 1 ${s.unit}²`, 8, 14);
   g.fillText(`${s.signal}: ${s.averages}/${s.averages_set} averages, ${s.window}` +
     (s.complete ? " (held)" : ""), left + 80, 14);
   for (let k = 0; k <= 4; k++) g.fillText(`${(fmax * k / 4).toFixed(0)} Hz`, x(fmax * k / 4) - 14, h - 8);
@@ -220,6 +220,7 @@ function echoSettings() {
     echo("averages-set", sp.averages_set);
     echo("overlap", sp.overlap_pct);
     echo("range", sp.adc_range_v);
+    $("range-label").textContent = `ADC ± ${sp.unit}`;
   }
   const tr = state.trace;
   if (tr) {
@@ -227,6 +228,8 @@ function echoSettings() {
     echo("sdiv", tr.seconds_per_div * 1000);
     echo("trigger", tr.trigger_v);
     echo("scope-mode", tr.mode);
+    $("vdiv-label").textContent = `${tr.unit}/div`;
+    $("trigger-label").textContent = `trigger ${tr.unit}`;
   }
 }
 

@@ -26,6 +26,9 @@ pub struct AnalyserSink {
     pub(super) dir: PathBuf,
     scenario: String,
     filter: String,
+    /// The input's unit (`V` through the chain; a sensor's own read directly): the
+    /// spectra's powers are in it squared.
+    pub(super) unit: &'static str,
     uff: bool,
     pub(super) measures: Vec<Measure>,
     /// For each of `measures`, the scenario's measurement whose judged motion it takes (a
@@ -80,12 +83,14 @@ impl AnalyserSink {
             .stages
             .producing(&analyser.input)
             .map_or("none".into(), |s| s.instrument.describe());
+        let unit = plan.chain.stages.unit_of(&analyser.input).unwrap_or("V");
         Ok(Self {
             plan: analyser,
             input,
             dir: dir.to_path_buf(),
             scenario: plan.name.clone(),
             filter,
+            unit,
             uff: plan.record.as_ref().is_some_and(|r| r.uff58),
             clock: MeasureClock::new(measures.iter().map(|m| m.at_s), plan.rate_hz),
             points_of: (0..measures.len())
@@ -241,14 +246,15 @@ impl AnalyserSink {
         );
         let plot = SpectrumPlot {
             title: &title,
-            unit: "V",
+            unit: self.unit,
             lines,
             alias_of,
             running_hz: Some(measure.speed_rpm / 60.0),
         };
         self.files.extend(write_spectrum_plots(base, &plot)?);
         if self.uff {
-            self.files.push(write_spectrum_uff(base, &title, lines)?);
+            self.files
+                .push(write_spectrum_uff(base, (&title, self.unit), lines)?);
         }
         Ok(())
     }
@@ -279,7 +285,7 @@ impl AnalyserSink {
                     adc.range_v,
                     self.measurement.overloads()
                 ),
-                unit: "V",
+                unit: self.unit,
             },
         )
     }
@@ -303,21 +309,24 @@ fn motion_metadata(motion: &RowMotion) -> Metadata {
     ]
 }
 
+/// The spectrum `lines` (powers in `unit` squared) as a UFF58 file beside `base`.
 fn write_spectrum_uff(
     base: &Path,
-    title: &str,
+    (title, unit): (&str, &str),
     lines: &[instruments::Line],
 ) -> anyhow::Result<PathBuf> {
+    let ordinate_unit = format!("{unit}^2");
+    let source = format!("testrig analyser (power spectrum, {ordinate_unit} rms)");
     let values: Vec<f64> = lines.iter().map(|l| l.value).collect();
     let step_hz = lines.get(1).map_or(1.0, |l| l.frequency_hz);
     let record = Uff58Record {
         description: title,
-        source: "testrig analyser (power spectrum, V^2 rms)",
+        source: &source,
         function_type: 12,
         response_name: "amplifier",
         response_node: 1,
         ordinate_type: 0,
-        ordinate_unit: "V^2",
+        ordinate_unit: &ordinate_unit,
         abscissa: Uff58Abscissa::Frequency {
             start_hz: 0.0,
             step_hz,

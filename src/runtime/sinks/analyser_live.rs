@@ -157,6 +157,7 @@ impl AnalyserSink {
             complete: self.active.is_none(),
             running_hz,
             signal: self.plan.input.clone(),
+            unit: self.unit.to_string(),
             window: s.window.name().to_string(),
             fmax_hz: s.fmax_hz,
             block: s.block,

@@ -224,7 +224,7 @@ impl Sink for ScopeSink {
             None => Arc::clone(raw),
         };
         if let Some(live) = &mut self.live {
-            live.watch(&x, &self.signal);
+            live.watch(&x, (&self.signal, self.unit));
         }
         let mut offset = 0;
         while let Some((at, index)) = self.clock.next_within(frame.start_sample, x.len()) {

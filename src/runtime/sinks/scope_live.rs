@@ -53,8 +53,8 @@ impl LiveScope {
         })
     }
 
-    /// Feeds the samples `x` of `signal`; a new sweep goes on the panel.
-    pub fn watch(&mut self, x: &[f64], signal: &str) {
+    /// Feeds the samples `x` of `signal` (in `unit`); a new sweep goes on the panel.
+    pub fn watch(&mut self, x: &[f64], (signal, unit): (&str, &str)) {
         self.scratch.resize(x.len(), 0.0);
         self.scope.process(x, &mut self.scratch);
         if self.scope.sweeps() == self.seen {
@@ -62,7 +62,7 @@ impl LiveScope {
         }
         self.seen = self.scope.sweeps();
         self.last = self.scope.trace();
-        self.publish(signal);
+        self.publish(signal, unit);
     }
 
     /// Re-sets the scope to `settings` in `mode` (its present mode if `None`), on a
@@ -123,7 +123,7 @@ impl LiveScope {
         })
     }
 
-    fn publish(&self, signal: &str) {
+    fn publish(&self, signal: &str, unit: &str) {
         let Some(trace) = &self.last else {
             return;
         };
@@ -140,6 +140,7 @@ impl LiveScope {
                 ScopeMode::Single => "single".into(),
             },
             signal: signal.to_string(),
+            unit: unit.to_string(),
         };
         self.status.update(|st| st.trace = Some(Arc::new(shown)));
     }
@@ -181,10 +182,10 @@ mod tests {
                 .map(|k| (std::f64::consts::TAU * 100.0 * k as f64 / rate_hz).sin())
                 .collect()
         };
-        live.watch(&sine(0, 5_000), "amplifier_v");
+        live.watch(&sine(0, 5_000), ("amplifier_v", "V"));
         live.rearm();
         // A block too short for the re-armed sweep to complete.
-        live.watch(&sine(5_000, 100), "amplifier_v");
+        live.watch(&sine(5_000, 100), ("amplifier_v", "V"));
         let saved = live
             .next_saved()
             .expect("the earlier trace is still on screen");
