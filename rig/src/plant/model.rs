@@ -112,6 +112,9 @@ pub struct NetworkModel {
     pub supports: Vec<Coupling>,
     /// How many of `supports`, first, are the rig's shafts to the frame (in its order).
     pub frame_shafts: usize,
+    /// Where the planets' bearings on their pins begin in `supports` (stage by stage,
+    /// planet by planet, x then y).
+    pub planet_bearings: usize,
     /// The meshes.
     pub meshes: Vec<MeshModel>,
     /// The motor, if the rig has one.
@@ -197,6 +200,7 @@ impl NetworkModel {
             speed_share: speed_ratio[body].abs(),
         });
         let mut supports = coordinates.supports(rig);
+        let planet_bearings = supports.len();
         for (i, stage) in rig.planetary.iter().enumerate() {
             supports.extend(coordinates.planet_bearings(i, stage));
         }
@@ -208,6 +212,7 @@ impl NetworkModel {
             shafts,
             supports,
             frame_shafts: rig.frame_shafts.len(),
+            planet_bearings,
             meshes,
             motor,
             brake,

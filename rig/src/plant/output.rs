@@ -83,12 +83,11 @@ impl OutputForms {
             .map(|i| mode.meshes[i].contact.sign())
             .collect();
         // The bodies' translations, x then y, then each planet's on its pin: its bearing's
-        // deflection (the supports after the shafts to the frame and the bodies' bearings).
-        let planet_bearings = model.frame_shafts + (l.translations_end - l.bodies);
+        // deflection.
         let translation = (l.bodies..l.translations_end)
             .map(|j| vec![(l.angle(j), 1.0)])
             .chain(
-                model.supports[planet_bearings..]
+                model.supports[model.planet_bearings..]
                     .iter()
                     .map(|c| c.terms.iter().map(|&(j, g)| (l.angle(j), g)).collect()),
             )
