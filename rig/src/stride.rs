@@ -19,8 +19,8 @@ pub const MAX_STRIDE: usize = 8;
 /// ([`crate::roots::may_cross_span`]); over 1.75 rad it missed none of the sampled functions
 /// of up to three motions that peaked above the target (its test), over 2 rad one in
 /// three thousand. 1.75 rad lets the planetary bench's stiffest modes (ρT ≈ 1.59 at
-/// 51.2 kHz) take each output period in one product. Measured against single steps at
-/// the earlier 1.5 rad: docs/plant-numerics.md.
+/// 51.2 kHz) take each output period in one product. Measured against single steps
+/// (the 1983 rig gives the same impacts at 1.5 and 1.75 rad): docs/plant-numerics.md.
 pub const MAX_RHO_STRIDE: f64 = 1.75;
 
 /// Whether a run that writes samples may take an output period of `substeps` internal
