@@ -7,6 +7,10 @@ use crate::mode::PairZone;
 use super::mode::Contact;
 use super::network_plant::NetworkPlant;
 
+/// Most ulps [`NetworkPlant::touch_after_hand_back`] moves a gear by: the hand-back's
+/// rounding is an ulp or two of each angle.
+const MAX_NUDGES: usize = 8;
+
 impl NetworkPlant {
     /// Each alternating mesh's pair zone from its driver's angle, and its next tooth
     /// boundary.
@@ -75,7 +79,37 @@ impl NetworkPlant {
             self.mode.meshes[i].level = PairZone::ONE;
             self.mode.meshes[i].clipped = false;
         } else {
+            self.touch_after_hand_back(i, flank);
             self.reclip(i);
+        }
+    }
+
+    /// The flanks of mesh `i` (`flank` +1 drive, −1 back) kept touching after a hand-back:
+    /// it leaves the overlap at 0 to the rounding of the angles (an ulp of ~400 rad is
+    /// 6e-14 rad, a few 1e-15 m at the teeth), and a residual on the apart side with the
+    /// teeth at relative rest had them leave and strike again nanoseconds later, an
+    /// impact of rounding's (seen on the 1983 rig at 600 rev/min, docs/plant-numerics.md).
+    /// The driven gear's angle moves by single ulps until the overlap is ≥ 0 (a few at
+    /// most).
+    fn touch_after_hand_back(&mut self, i: usize, flank: f64) {
+        let m = &self.model.meshes[i];
+        let driven = m.gears[1];
+        let Some((_, c)) = m.terms(flank).find(|&(j, _)| j == driven) else {
+            return;
+        };
+        let angle = self.model.layout.angle(driven);
+        let speed = self.harmonic_speed_rad_s;
+        for _ in 0..MAX_NUDGES {
+            let (overlap, _) = self.model.overlap(i, flank, &self.u, speed);
+            if flank * overlap >= 0.0 {
+                return;
+            }
+            let theta = self.u[angle];
+            self.u[angle] = if flank * c > 0.0 {
+                theta.next_up()
+            } else {
+                theta.next_down()
+            };
         }
     }
 
@@ -120,5 +154,72 @@ impl NetworkPlant {
         let m = &self.model.meshes[i];
         let (start, end) = m.zones.bounds(zone);
         (start * m.pitch_rad, end * m.pitch_rad)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use rand::{RngExt, SeedableRng};
+
+    use super::super::mode::Contact;
+    use super::super::network_plant::{NetworkPlant, NetworkStart};
+    use crate::{Schedule, preset, preset_rig};
+
+    /// A tooth pass on the 1983 rig in steady motion, the teeth closing slowly
+    /// (3.5e-8 m/s, as seen at 600 rev/min): the hand-back leaves the flanks touching,
+    /// overlap ≥ 0, wherever rounding puts it. Each trial moves the gears by a few ulps
+    /// first, so that the hand-back's rounding falls on either side of zero (it did, half
+    /// the time, before the flanks were kept touching).
+    #[test]
+    fn a_hand_back_leaves_the_flanks_touching_whatever_the_rounding() {
+        let params = preset("basmaji-1983").expect("preset");
+        let rig = preset_rig("test", "the 1983 rig", &params);
+        let schedule = Schedule::constant(600.0, 2.712);
+        let mut steady =
+            NetworkPlant::new(&rig, schedule, 10_240.0, NetworkStart::Steady).expect("plant");
+        steady.skip(1).expect("runs");
+        // Sixty turns on, as at 6 s of a run from rest: an ulp of the angles is then a few
+        // 1e-15 m at the teeth (near 0 rad, the hand-back's rounding is far finer).
+        let turns = 60.0 * std::f64::consts::TAU;
+        for (j, ratio) in steady.model.speed_ratio.clone().into_iter().enumerate() {
+            let angle = steady.model.layout.angle(j);
+            steady.u[angle] += turns * ratio;
+        }
+        let mut rng = rand_pcg::Pcg64Mcg::seed_from_u64(47);
+        let mesh = 0;
+        let [driver, driven] = steady.model.meshes[mesh].gears;
+        let l = &steady.model.layout;
+        let (driver_angle, driven_speed) = (l.angle(driver), l.speed(driven));
+        // The overlap's rate per unit speed of the driven gear (m).
+        let lever_m = steady.model.meshes[mesh]
+            .terms(1.0)
+            .find(|&(j, _)| j == driven)
+            .map(|(_, c)| c)
+            .expect("the driven gear turns the overlap");
+        let speed = steady.harmonic_speed_rad_s;
+        let in_mesh = steady.model.overlap(mesh, 1.0, &steady.u, speed).0;
+        assert!(
+            in_mesh > 1e-8,
+            "turned on, the teeth carry the load: {in_mesh:e} m"
+        );
+        for _ in 0..200 {
+            let mut plant = steady.clone();
+            assert_eq!(plant.mode.meshes[mesh].contact, Contact::Drive);
+            for _ in 0..rng.random_range(0..8) {
+                plant.u[driver_angle] = plant.u[driver_angle].next_up();
+            }
+            // The driven gear's speed set so that the flanks close at 3.5e-8 m/s.
+            let (_, rate) = plant.model.overlap(mesh, 1.0, &plant.u, speed);
+            plant.u[driven_speed] += (3.5e-8 - rate) / lever_m;
+            let (_, rate) = plant.model.overlap(mesh, 1.0, &plant.u, speed);
+            assert!(rate > 0.0, "the flanks must close: rate {rate:e} m/s");
+            plant.shift_tooth(mesh, 0.0);
+            let (overlap, _) = plant.model.overlap(mesh, 1.0, &plant.u, speed);
+            assert_eq!(plant.mode.meshes[mesh].contact, Contact::Drive);
+            assert!(
+                (0.0..1e-13).contains(&overlap),
+                "after the hand-back: overlap {overlap:e} m"
+            );
+        }
     }
 }
