@@ -361,7 +361,7 @@ fn orders_beyond_the_band_are_recorded_as_missing_and_too_short_cases_are_refuse
 /// 51.2 kHz it outlasted the 70 s). (The campaign on the preset itself now runs the same
 /// rig on the same plant.)
 #[test]
-fn simulate_with_its_defaults_classifies_as_the_campaign_does() {
+fn simulate_with_its_default_durations_classifies_as_the_campaign_does() {
     let dir = folder("agree");
     let out = dir.join("out");
     let root = env!("CARGO_MANIFEST_DIR");

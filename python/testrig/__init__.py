@@ -123,7 +123,8 @@ def run(scenario, out=None, set=None, seed=None, duration_s=None, replace=False,
     CLI's flags. Returns a dict: ``out`` (the folder),
     ``manifest``, ``recording`` (``rate_hz``, ``channels`` name -> array, ``units``,
     ``sidecar``; None without a WAV), ``spectra`` (one dict a measurement:
-    ``frequency_hz``, ``power`` in V², ``alias_of_hz`` NaN where not an alias,
+    ``frequency_hz``, ``power`` in the signal's unit squared (V² through the chain,
+    N² for a force sensor), ``alias_of_hz`` NaN where not an alias,
     ``metadata``), ``readings`` (readings.csv by column; None without meters)."""
     holder = _Folder(out, "testrig-run-", keep)
     folder = holder.path

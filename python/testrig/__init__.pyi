@@ -112,7 +112,7 @@ class MeasuredSpectrum(TypedDict):
     metadata: dict[str, str]
     frequency_hz: npt.NDArray[np.float64]
     power: npt.NDArray[np.float64]
-    """V² (RMS) of the analysed signal."""
+    """The analysed signal's power (RMS), in its unit squared (V² through the chain)."""
     alias_of_hz: npt.NDArray[np.float64]
 
 class Run(TypedDict):

@@ -46,10 +46,13 @@ impl Instrument {
     }
 
     /// Whether its output is in its input's unit: a linear filter (a low-pass, an AC
-    /// coupling) passes a force in newtons as newtons. The others write their own
-    /// ([`Self::unit`]).
+    /// coupling) passes a force in newtons as newtons, and an RMS meter reads it in
+    /// newtons. The others write their own ([`Self::unit`]).
     pub fn keeps_unit(&self) -> bool {
-        matches!(self, Self::LowPass(_) | Self::AcCoupling(_))
+        matches!(
+            self,
+            Self::LowPass(_) | Self::AcCoupling(_) | Self::Meter(_)
+        )
     }
 
     /// Unit of its output, unless it keeps its input's ([`Self::keeps_unit`]).

@@ -186,19 +186,21 @@ fn build(src: &ScenarioSource, file: &RigFileToml) -> anyhow::Result<RigTopology
 /// input for the gauged shaft's torque ([`SHAFT_TORQUE_NM`]).
 const CHAIN_SHAFT_NAME: &str = "intermediate_shaft";
 
-/// Refuses a shaft named [`CHAIN_SHAFT_NAME`] that is not the gauged shaft: its torque
-/// column would carry the chain's name for the gauged shaft's torque, and a chain,
-/// analyser or recording reading it by name would get the gauged shaft's instead.
+/// Refuses, on a gauged rig, a shaft named [`CHAIN_SHAFT_NAME`] (between two bodies or
+/// to the frame) that is not the gauged shaft: its torque column would carry the chain's
+/// name for the gauged shaft's torque, and a chain, analyser or recording reading it by
+/// name would get the gauged shaft's instead. A rig without gauges hands no chain a
+/// torque, so nothing is shadowed.
 fn refuse_shadowed_torque(
     src: &ScenarioSource,
     file: &RigFileToml,
     shafts: &[Shaft],
     gauge: Option<&Gauge>,
 ) -> anyhow::Result<()> {
-    let Some(named) = shafts.iter().position(|s| s.name == CHAIN_SHAFT_NAME) else {
+    let Some(gauge) = gauge else {
         return Ok(());
     };
-    if gauge.is_some_and(|g| g.shaft == named) {
+    if shafts[gauge.shaft].name == CHAIN_SHAFT_NAME {
         return Ok(());
     }
     let Some(toml) = file

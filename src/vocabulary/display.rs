@@ -8,9 +8,9 @@ use serde::Serialize;
 pub struct LiveSpectrum {
     /// Frequency of each line (Hz).
     pub frequency_hz: Vec<f64>,
-    /// Power of each line (V² rms), at least the floor.
+    /// Power of each line (`unit`² rms: V² through the chain), at least the floor.
     pub power_v2: Vec<f64>,
-    /// The chain's noise floor per line (V² rms): the ADC's quantisation noise through
+    /// The chain's noise floor per line (`unit`² rms): the ADC's quantisation noise through
     /// the window; lines below it are shown at it.
     pub floor_v2: f64,
     /// For each line, the true frequency (Hz) of the component aliased onto it, if any.
@@ -37,7 +37,7 @@ pub struct LiveSpectrum {
     pub block: usize,
     /// Overlap of successive blocks in effect (%).
     pub overlap_pct: f64,
-    /// The ADC's ± range in effect (V).
+    /// The ADC's ± range in effect (in `unit`).
     pub adc_range_v: f64,
 }
 
@@ -48,11 +48,11 @@ pub struct LiveTrace {
     pub time_s: Vec<f64>,
     /// Vertical position of each point (divisions, ±4 on screen).
     pub divisions: Vec<f64>,
-    /// V per division.
+    /// `unit` per division.
     pub volts_per_div: f64,
     /// s per division.
     pub seconds_per_div: f64,
-    /// Trigger level (V).
+    /// Trigger level (in `unit`).
     pub trigger_v: f64,
     /// `auto` or `single`.
     pub mode: String,

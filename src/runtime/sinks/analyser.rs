@@ -280,9 +280,10 @@ impl AnalyserSink {
                 averages_done: count,
                 filter: self.filter.clone(),
                 adc: format!(
-                    "{} bits over +-{} V, {} overloads",
+                    "{} bits over +-{} {}, {} overloads",
                     adc.bits,
                     adc.range_v,
+                    self.unit,
                     self.measurement.overloads()
                 ),
                 unit: self.unit,
