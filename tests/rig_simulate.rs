@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::{folder, json_of, rig_file, testrig};
+use common::{folder, json_of, named_number, rig_file, testrig};
 
 #[test]
 fn simulate_runs_a_rig_file_naming_its_columns_after_the_rig_and_sets_fields_by_path() {
@@ -29,16 +29,7 @@ fn simulate_runs_a_rig_file_naming_its_columns_after_the_rig_and_sets_fields_by_
         "--json",
     ]);
     // The load goes through both stages: 45 N m at the output, 15 and 5 N m before.
-    let shaft = |name: &str| -> f64 {
-        report["shafts"]
-            .as_array()
-            .expect("shafts")
-            .iter()
-            .find(|s| s["name"] == name)
-            .unwrap_or_else(|| panic!("no shaft {name}"))["torque_mean_nm"]
-            .as_f64()
-            .expect("number")
-    };
+    let shaft = |name: &str| named_number(&report, "shafts", name, "torque_mean_nm");
     assert!((shaft("output") - 45.0).abs() < 1e-3, "{report}");
     assert!((shaft("intermediate") - 15.0).abs() < 1e-3, "{report}");
     assert!((shaft("input") - 5.0).abs() < 1e-3, "{report}");
@@ -310,17 +301,7 @@ fn a_six_stage_gear_train_turns_at_the_product_of_its_ratios_and_balances_its_to
         "--json",
     ]);
     let ratio = (2.0_f64 / 3.0).powi(stages);
-    let speed = |name: &str| -> f64 {
-        report["bodies"]
-            .as_array()
-            .expect("bodies")
-            .iter()
-            .find(|b| b["name"] == name)
-            .unwrap_or_else(|| panic!("no body {name}"))["speed_mean_rpm"]
-            .as_f64()
-            .expect("number")
-    };
-    let brake_rpm = speed("brake");
+    let brake_rpm = named_number(&report, "bodies", "brake", "speed_mean_rpm");
     assert!(
         (brake_rpm / 1500.0 - ratio).abs() < 1e-6 * ratio,
         "brake {brake_rpm} rev/min against {}",

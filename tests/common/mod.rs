@@ -314,3 +314,16 @@ pub fn simulate_rig(
     args.extend_from_slice(more);
     testrig_ok(&args);
 }
+
+/// The number `field` of the entry named `name` in the JSON array `report[list]` (a
+/// `simulate --json` summary's `bodies` or `shafts`).
+pub fn named_number(report: &serde_json::Value, list: &str, name: &str, field: &str) -> f64 {
+    report[list]
+        .as_array()
+        .unwrap_or_else(|| panic!("no {list} in {report}"))
+        .iter()
+        .find(|entry| entry["name"] == name)
+        .unwrap_or_else(|| panic!("no {name} in {list}"))[field]
+        .as_f64()
+        .unwrap_or_else(|| panic!("{list} {name}: {field} is no number"))
+}
