@@ -48,7 +48,9 @@ fn stages_run_after_the_stages_they_read_and_bad_wiring_is_named() {
     // The plant's five signals (time, gauged torque, tacho and slip-ring speeds, keyphasor)
     // come first, then each stage's output in running order.
     assert_eq!(names.index("b_v"), Some(5 + 1));
-    assert_eq!(stages.unit_of("b_v"), Some("V"));
+    // A wire (a low-pass without a filter) and a meter on the gauged torque read N m, not
+    // volts: filters and meters keep their input's unit.
+    assert_eq!(stages.unit_of("b_v"), Some("N m"));
     assert_eq!(stages.unit_of("speed1_rad_s"), Some("rad/s"));
     assert_eq!(stages.unit_of("nothing"), None);
 
