@@ -176,9 +176,23 @@ mod tests {
     /// the time, before the flanks were kept touching).
     #[test]
     fn a_hand_back_leaves_the_flanks_touching_whatever_the_rounding() {
+        hand_backs_keep_the_flanks_touching(2.712, Contact::Drive);
+    }
+
+    /// The same on the back flank: the brake driving the rig (a negative load), the
+    /// driven gear nudged the other way.
+    #[test]
+    fn a_hand_back_on_the_back_flank_leaves_the_flanks_touching() {
+        hand_backs_keep_the_flanks_touching(-2.712, Contact::Back);
+    }
+
+    /// 200 hand-backs at 600 rev/min under `load_nm`, the teeth on `flank`: each leaves
+    /// the flanks touching, and rounding had left them apart in some and not in others.
+    fn hand_backs_keep_the_flanks_touching(load_nm: f64, flank: Contact) {
+        let sign = f64::from(flank.sign());
         let params = preset("basmaji-1983").expect("preset");
         let rig = preset_rig("test", "the 1983 rig", &params);
-        let schedule = Schedule::constant(600.0, 2.712);
+        let schedule = Schedule::constant(600.0, load_nm);
         let mut steady =
             NetworkPlant::new(&rig, schedule, 10_240.0, NetworkStart::Steady).expect("plant");
         steady.skip(1).expect("runs");
@@ -198,12 +212,12 @@ mod tests {
         let radius_m = steady.model.meshes[mesh].radii_m[1];
         // The overlap's rate per unit speed of the driven gear (m).
         let lever_m = steady.model.meshes[mesh]
-            .terms(1.0)
+            .terms(sign)
             .find(|&(j, _)| j == driven)
             .map(|(_, c)| c)
             .expect("the driven gear turns the overlap");
         let speed = steady.harmonic_speed_rad_s;
-        let in_mesh = steady.model.overlap(mesh, 1.0, &steady.u, speed).0;
+        let in_mesh = sign * steady.model.overlap(mesh, sign, &steady.u, speed).0;
         assert!(
             in_mesh > 1e-8,
             "turned on, the teeth carry the load: {in_mesh:e} m"
@@ -211,25 +225,28 @@ mod tests {
         let mut nudged = 0;
         for _ in 0..200 {
             let mut plant = steady.clone();
-            assert_eq!(plant.mode.meshes[mesh].contact, Contact::Drive);
+            assert_eq!(plant.mode.meshes[mesh].contact, flank);
             for _ in 0..rng.random_range(0..8) {
                 plant.u[driver_angle] = plant.u[driver_angle].next_up();
             }
             // The driven gear's speed set so that the flanks close at 3.5e-8 m/s.
-            let (_, rate) = plant.model.overlap(mesh, 1.0, &plant.u, speed);
-            plant.u[driven_speed] += (3.5e-8 - rate) / lever_m;
-            let (_, rate) = plant.model.overlap(mesh, 1.0, &plant.u, speed);
-            assert!(rate > 0.0, "the flanks must close: rate {rate:e} m/s");
+            let (_, rate) = plant.model.overlap(mesh, sign, &plant.u, speed);
+            plant.u[driven_speed] += (sign * 3.5e-8 - rate) / lever_m;
+            let (_, rate) = plant.model.overlap(mesh, sign, &plant.u, speed);
+            assert!(
+                sign * rate > 0.0,
+                "the flanks must close: rate {rate:e} m/s"
+            );
             // Where the hand-back alone would leave the driven gear (as `shift_tooth`
             // computes it): moved from there, the flanks had been left apart.
-            let (before, _) = plant.model.overlap(mesh, 1.0, &plant.u, speed);
+            let (before, _) = plant.model.overlap(mesh, sign, &plant.u, speed);
             let handed_back = plant.u[driven_angle] - 0.5 * before / radius_m;
             plant.shift_tooth(mesh, 0.0);
             nudged += usize::from(plant.u[driven_angle] != handed_back);
-            let (overlap, _) = plant.model.overlap(mesh, 1.0, &plant.u, speed);
-            assert_eq!(plant.mode.meshes[mesh].contact, Contact::Drive);
+            let (overlap, _) = plant.model.overlap(mesh, sign, &plant.u, speed);
+            assert_eq!(plant.mode.meshes[mesh].contact, flank);
             assert!(
-                (0.0..1e-13).contains(&overlap),
+                (0.0..1e-13).contains(&(sign * overlap)),
                 "after the hand-back: overlap {overlap:e} m"
             );
         }
