@@ -114,7 +114,7 @@ pub use param_table::{
 pub use params::RigParams;
 pub use plant::{
     Column, Contact, NetworkBlock, NetworkImpact, NetworkPlant, NetworkStart, column, column_names,
-    column_specs, columns,
+    column_specs, columns, shaft_torque_column,
 };
 pub use preset_rig::preset_rig;
 pub use presets::{DEFAULT_PRESET, PRESET_NAMES, preset};

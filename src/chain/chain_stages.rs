@@ -104,20 +104,28 @@ impl ChainStages {
     /// Unit of signal `name`, a plant signal or a stage's output (a filter's, its
     /// input's).
     pub fn unit_of(&self, name: &str) -> Option<&'static str> {
-        match self.producing(name) {
-            Some(s) if s.instrument.keeps_unit() => self.unit_of(&s.inputs[0]),
-            Some(s) => Some(s.instrument.unit()),
-            None => plant_unit(name),
+        match self.unit_setter(name) {
+            (_, Some(s)) => Some(s.instrument.unit()),
+            (plant, None) => plant_unit(plant),
         }
     }
 
     /// Full scale of signal `name` for integer recordings (in its unit; a filter's, its
     /// input's).
     pub fn full_scale_of(&self, name: &str) -> Option<f64> {
+        match self.unit_setter(name) {
+            (_, Some(s)) => Some(s.instrument.full_scale()),
+            (plant, None) => plant_unit(plant).map(plant_full_scale),
+        }
+    }
+
+    /// What sets the unit of signal `name`: back through the stages that keep their
+    /// input's ([`Instrument::keeps_unit`]) to the first that writes its own (the signal
+    /// it writes and the stage), or to a plant signal (its name and `None`).
+    fn unit_setter<'a>(&'a self, name: &'a str) -> (&'a str, Option<&'a StagePlan>) {
         match self.producing(name) {
-            Some(s) if s.instrument.keeps_unit() => self.full_scale_of(&s.inputs[0]),
-            Some(s) => Some(s.instrument.full_scale()),
-            None => plant_unit(name).map(plant_full_scale),
+            Some(s) if s.instrument.keeps_unit() => self.unit_setter(&s.inputs[0]),
+            stage => (name, stage),
         }
     }
 

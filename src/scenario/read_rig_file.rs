@@ -182,15 +182,11 @@ fn build(src: &ScenarioSource, file: &RigFileToml) -> anyhow::Result<RigTopology
     })
 }
 
-/// The shaft name whose torque column, `torque_<name>_nm`, is the measuring chain's
-/// input for the gauged shaft's torque ([`SHAFT_TORQUE_NM`]).
-const CHAIN_SHAFT_NAME: &str = "intermediate_shaft";
-
-/// Refuses, on a gauged rig, a shaft named [`CHAIN_SHAFT_NAME`] (between two bodies or
-/// to the frame) that is not the gauged shaft: its torque column would carry the chain's
-/// name for the gauged shaft's torque, and a chain, analyser or recording reading it by
-/// name would get the gauged shaft's instead. A rig without gauges hands no chain a
-/// torque, so nothing is shadowed.
+/// Refuses, on a gauged rig, a shaft (between two bodies or to the frame) other than the
+/// gauged one whose torque column is named [`SHAFT_TORQUE_NM`], the measuring chain's
+/// input for the gauged shaft's torque: a chain, analyser or recording reading it by name
+/// would get the gauged shaft's instead. A rig without gauges hands no chain a torque, so
+/// nothing is shadowed.
 fn refuse_shadowed_torque(
     src: &ScenarioSource,
     file: &RigFileToml,
@@ -200,23 +196,21 @@ fn refuse_shadowed_torque(
     let Some(gauge) = gauge else {
         return Ok(());
     };
-    if shafts[gauge.shaft].name == CHAIN_SHAFT_NAME {
-        return Ok(());
-    }
-    let Some(toml) = file
-        .shafts
-        .iter()
-        .find(|s| s.name.get_ref() == CHAIN_SHAFT_NAME)
-    else {
+    let gauged = &shafts[gauge.shaft].name;
+    let shadowed = file.shafts.iter().find(|s| {
+        s.name.get_ref() != gauged && rig::shaft_torque_column(s.name.get_ref()) == SHAFT_TORQUE_NM
+    });
+    let Some(toml) = shadowed else {
         return Ok(());
     };
     Err(src.error(
         toml.name.span(),
         "shaft.name",
         format!(
-            "`{CHAIN_SHAFT_NAME}` is the measuring chain's name for the gauged shaft \
-             (`{SHAFT_TORQUE_NM}` is the strain stage's input), and this shaft is not \
-             under the [gauge]; name it otherwise, or gauge it"
+            "`{}` is the measuring chain's name for the gauged shaft (`{SHAFT_TORQUE_NM}` is \
+             the strain stage's input), and this shaft is not under the [gauge]; name it \
+             otherwise, or gauge it",
+            toml.name.get_ref()
         ),
     ))
 }

@@ -21,6 +21,12 @@ pub struct Column {
     pub discrete: bool,
 }
 
+/// The column of the torque in the shaft named `shaft` (N m), between two bodies or to
+/// the frame.
+pub fn shaft_torque_column(shaft: &str) -> String {
+    format!("torque_{shaft}_nm")
+}
+
 /// The signals' columns, after the rig: `time_s`, `speed_<body>_rpm`, `angle_<body>_rad`,
 /// `torque_<shaft>_nm` (shafts, then shafts to the frame), `contact_<mesh>` (+1 drive flank, −1 back flank, 0 apart),
 /// `force_<mesh>_n`, `x_<body>_m` and `y_<body>_m` for each body and planet that moves in the plane,
@@ -44,12 +50,12 @@ pub fn column_specs(rig: &RigTopology) -> Vec<Column> {
     }
     for s in &rig.shafts {
         let meaning = format!("torque in shaft {}", s.name);
-        out.push(column(format!("torque_{}_nm", s.name), "N m", meaning));
+        out.push(column(shaft_torque_column(&s.name), "N m", meaning));
     }
     for s in &rig.frame_shafts {
         let body = &rig.bodies[s.body].name;
         let meaning = format!("torque in shaft {} holding {body} to the frame", s.name);
-        out.push(column(format!("torque_{}_nm", s.name), "N m", meaning));
+        out.push(column(shaft_torque_column(&s.name), "N m", meaning));
     }
     let meshes = rig.mesh_names();
     for m in &meshes {

@@ -51,7 +51,7 @@ mod system_matrix;
 mod teeth;
 
 pub use block::{NetworkBlock, NetworkImpact};
-pub use columns::{Column, column, column_names, column_specs, columns};
+pub use columns::{Column, column, column_names, column_specs, columns, shaft_torque_column};
 pub use mode::Contact;
 pub use network_plant::{NetworkPlant, NetworkStart, SKIP_STRETCH};
 pub use ring_sensor::{passage_window, ring_sensor_n};
