@@ -6,7 +6,10 @@
 //! sample. Otherwise it samples between stream samples by windowed-sinc interpolation
 //! (16 lobes each side, Kaiser window β = 12, weights normalised to unit DC gain), exact to
 //! about 1e-6 of the amplitude for content below 0.4 of the stream's Nyquist frequency,
-//! with a latency of 16 stream samples.
+//! with a latency of 16 stream samples. Where the ratio is a fraction p/q with q ≤ 256
+//! (10 240 Hz over the thesis analyser's 400 Hz is 128/5), the ADC's instants fall on q
+//! phases between stream samples, counted in whole numbers: their weights are computed
+//! once, not at every sample.
 
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64Mcg;
@@ -15,6 +18,10 @@ use crate::error::InstrumentError;
 
 /// Lobes each side of the interpolation kernel.
 const LOBES: usize = 16;
+/// Taps of the interpolation kernel.
+const TAPS: usize = 2 * LOBES;
+/// Largest denominator q of a ratio p/q whose phases' weights are kept.
+const MAX_PHASES: u64 = 256;
 
 /// ADC settings.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -36,6 +43,8 @@ pub struct Adc {
     settings: AdcSettings,
     step_v: f64,
     whole: Option<u64>,
+    /// The ratio as p/q with each phase's weights, where q ≤ [`MAX_PHASES`].
+    phases: Option<Phases>,
     received: u64,
     next: u64,
     history: Vec<f64>,
@@ -74,11 +83,16 @@ impl Adc {
             ));
         }
         let rounded = settings.ratio.round();
+        let whole =
+            ((settings.ratio - rounded).abs() < 1e-12 * settings.ratio).then_some(rounded as u64);
         let mut adc = Self {
             settings,
             step_v: 2.0 * settings.range_v / f64::from(1u32 << settings.bits),
-            whole: ((settings.ratio - rounded).abs() < 1e-12 * settings.ratio)
-                .then_some(rounded as u64),
+            whole,
+            phases: whole
+                .is_none()
+                .then(|| Phases::of_ratio(settings.ratio))
+                .flatten(),
             received: 0,
             next: 0,
             history: Vec::new(),
@@ -144,16 +158,24 @@ impl Adc {
     }
 
     fn interpolate(&mut self, input: &[f64], output: &mut Vec<f64>) {
+        let mut weights = [0.0; TAPS];
         for &v in input {
             self.history.push(v);
             self.received += 1;
             loop {
-                let t = self.next as f64 * self.settings.ratio;
-                let centre = t.floor() as u64;
+                let centre = self.centre_of(self.next);
                 if centre + LOBES as u64 >= self.received {
                     break;
                 }
-                let value = self.lanczos(t, centre);
+                let taps = match &self.phases {
+                    Some(phases) => phases.weights(self.next),
+                    None => {
+                        let t = self.next as f64 * self.settings.ratio;
+                        kernel_weights(t - centre as f64, &mut weights);
+                        &weights
+                    }
+                };
+                let value = self.weighted_sum(centre, taps);
                 let code = self.quantise(value);
                 output.push(code);
                 self.next += 1;
@@ -162,32 +184,32 @@ impl Adc {
         }
     }
 
-    /// Σ x[i]·w(t − i) / Σ w(t − i) over the 2·LOBES samples around t (samples before
-    /// the stream are 0); normalising the weights makes the gain at DC exactly one.
-    /// sin π(t − i) is (−1)^(i − c)·sin π(t − c) for c = ⌊t⌋: one sine per sample.
-    fn lanczos(&self, t: f64, centre: u64) -> f64 {
-        let sin_offset = (std::f64::consts::PI * (t - centre as f64)).sin();
-        let (mut sum, mut weights) = (0.0, 0.0);
-        for i in centre as i64 + 1 - LOBES as i64..=centre as i64 + LOBES as i64 {
-            let sign = if (i - centre as i64) % 2 == 0 {
-                1.0
-            } else {
-                -1.0
-            };
-            let w = kernel(t - i as f64, sign * sin_offset);
-            weights += w;
+    /// The stream sample at or before ADC sample `k`'s instant k·ratio.
+    fn centre_of(&self, k: u64) -> u64 {
+        match &self.phases {
+            Some(phases) => phases.centre_of(k),
+            None => (k as f64 * self.settings.ratio).floor() as u64,
+        }
+    }
+
+    /// Σ x[i]·w[i] over the taps around `centre`, i from centre + 1 − LOBES (samples
+    /// before the stream are 0).
+    fn weighted_sum(&self, centre: u64, weights: &[f64; TAPS]) -> f64 {
+        let first = centre as i64 + 1 - LOBES as i64;
+        let mut sum = 0.0;
+        for (k, w) in weights.iter().enumerate() {
+            let i = first + k as i64;
             if i >= self.history_start as i64 {
                 sum += w * self.history[(i as u64 - self.history_start) as usize];
             }
         }
-        sum / weights
+        sum
     }
 
     /// Drops history no future sample needs, in chunks. The next sample may lie beyond
     /// the samples received (a ratio above the kernel's reach): never more than is held.
     fn trim(&mut self) {
-        let needed_from = ((self.next as f64 * self.settings.ratio).floor() as u64 + 1)
-            .saturating_sub(LOBES as u64);
+        let needed_from = (self.centre_of(self.next) + 1).saturating_sub(LOBES as u64);
         let drop =
             (needed_from.saturating_sub(self.history_start) as usize).min(self.history.len());
         if drop > 4096 {
@@ -218,6 +240,61 @@ const MAX_RANGE: f64 = 1e9;
 
 /// Kaiser window shape β.
 const KAISER_BETA: f64 = 12.0;
+
+/// The ratio p/q in lowest terms and the weights of each of its q phases.
+#[derive(Clone, Debug)]
+struct Phases {
+    p: u64,
+    q: u64,
+    weights: Vec<[f64; TAPS]>,
+}
+
+impl Phases {
+    /// `ratio` as p/q with the smallest q ≤ [`MAX_PHASES`] for which p is whole (to 1e-12
+    /// of the ratio), with each phase r/q's weights; `None` if there is none.
+    fn of_ratio(ratio: f64) -> Option<Self> {
+        let q = (1..=MAX_PHASES).find(|&q| {
+            let scaled = ratio * q as f64;
+            (scaled - scaled.round()).abs() < 1e-12 * scaled
+        })?;
+        let p = (ratio * q as f64).round() as u64;
+        let weights = (0..q)
+            .map(|r| {
+                let mut w = [0.0; TAPS];
+                kernel_weights(r as f64 / q as f64, &mut w);
+                w
+            })
+            .collect();
+        Some(Self { p, q, weights })
+    }
+
+    /// ⌊k·p/q⌋, in whole numbers.
+    fn centre_of(&self, k: u64) -> u64 {
+        (u128::from(k) * u128::from(self.p) / u128::from(self.q)) as u64
+    }
+
+    /// The weights of ADC sample `k`, whose instant lies (k·p mod q)/q past its centre.
+    fn weights(&self, k: u64) -> &[f64; TAPS] {
+        let r = u128::from(k) * u128::from(self.p) % u128::from(self.q);
+        &self.weights[r as usize]
+    }
+}
+
+/// The kernel's weights for an instant `offset` ∈ [0, 1) samples past the centre c, at
+/// the taps i = c + 1 − LOBES ..= c + LOBES, normalised to sum to one (unit gain at DC).
+/// sin π(offset + c − i) is (−1)^(c − i)·sin π·offset: one sine per instant.
+fn kernel_weights(offset: f64, weights: &mut [f64; TAPS]) {
+    let sin_offset = (std::f64::consts::PI * offset).sin();
+    for (k, w) in weights.iter_mut().enumerate() {
+        let lag = LOBES as i64 - 1 - k as i64;
+        let sign = if lag % 2 == 0 { 1.0 } else { -1.0 };
+        *w = kernel(offset + lag as f64, sign * sin_offset);
+    }
+    let total: f64 = weights.iter().sum();
+    for w in weights.iter_mut() {
+        *w /= total;
+    }
+}
 
 /// Windowed sinc: sinc(x)·I0(β√(1 − (x/a)²))/I0(β), a = 16 lobes, given sin πx.
 fn kernel(x: f64, sin_pi_x: f64) -> f64 {

@@ -49,6 +49,7 @@ mod error;
 mod keyboard_program;
 mod lowpass;
 mod noise;
+mod phase;
 mod scope;
 mod slip_ring;
 mod spectrum;

@@ -8,6 +8,7 @@
 use crate::block::Block;
 use crate::error::InstrumentError;
 use crate::noise::GaussianSource;
+use crate::phase::wrapped;
 
 /// Largest RMS contact noise accepted (V): far beyond any slip ring (microvolts), yet
 /// bounded so that every sample stays finite.
@@ -104,9 +105,10 @@ impl Block for SlipRing {
                 + s.broadband_rms * self.broadband.sample()
                 + s.per_rev_amplitude * self.phase_rad.sin();
             *y = v * gain + s.contact_noise_v_rms * self.contact.sample();
-            self.phase_rad = (self.phase_rad
-                + std::f64::consts::TAU * self.rotation_hz * self.step_s)
-                .rem_euclid(std::f64::consts::TAU);
+            self.phase_rad = wrapped(
+                self.phase_rad + std::f64::consts::TAU * self.rotation_hz * self.step_s,
+                std::f64::consts::TAU,
+            );
         }
     }
 }

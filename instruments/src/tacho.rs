@@ -3,6 +3,7 @@
 
 use crate::block::Block;
 use crate::error::{InstrumentError, require_positive};
+use crate::phase::wrapped;
 
 /// The rig's tacho: 40 V rms per 1000 rev/min (V rms per rev/min).
 pub const CROMPTON_PARKINSON_V_PER_RPM: f64 = 0.04;
@@ -53,8 +54,10 @@ impl Block for Tacho {
                 * rpm
                 * self.phase_rad.sin()
                 * (1.0 + self.ripple * shaft.sin());
-            self.phase_rad = (self.phase_rad + pairs * speed_rad_s * self.step_s)
-                .rem_euclid(std::f64::consts::TAU * pairs);
+            self.phase_rad = wrapped(
+                self.phase_rad + pairs * speed_rad_s * self.step_s,
+                std::f64::consts::TAU * pairs,
+            );
         }
     }
 }

@@ -120,6 +120,45 @@ fn a_ratio_beyond_the_kernel_reach_samples_a_long_stream() {
     assert!(worst < 1e-5, "interpolation error {worst}");
 }
 
+/// A ratio that is no fraction of a small denominator (4π stream samples per ADC sample)
+/// has its weights computed at every sample; one a hair from 64/5 (1e-10 off, beyond the
+/// 1e-12 at which it counts as 64/5) likewise. Both sample a tone as exactly as the
+/// weights kept for the 5 phases of 64/5, and the last agrees with them to the shift of
+/// its instants (at most 1e-10 · 12.8 · 4000 samples ≈ 5e-6 of a stream period late).
+#[test]
+fn ratios_with_and_without_kept_phases_sample_alike() {
+    let tone = |t: f64| (2.0 * PI * 310.0 * t).sin();
+    let input: Vec<f64> = (0..51_200).map(|k| tone(k as f64 / 51_200.0)).collect();
+    let sampled = |ratio: f64| {
+        let mut adc = interpolating_adc(ratio);
+        let output = converted_in_chunks_and_whole(&mut adc, &input, 777, ratio);
+        let adc_hz = 51_200.0 / ratio;
+        let worst = worst_error(&output, 8, |k| tone(k as f64 / adc_hz));
+        assert!(worst < 2e-6, "ratio {ratio}: interpolation error {worst}");
+        output
+    };
+    sampled(4.0 * PI);
+    let kept = sampled(12.8);
+    let computed = sampled(12.8 * (1.0 + 1e-10));
+    assert_eq!(kept.len(), computed.len());
+    let apart = kept
+        .iter()
+        .zip(&computed)
+        .skip(8)
+        .map(|(a, b)| (a - b).abs())
+        .fold(0.0, f64::max);
+    // The instants drift by up to 1e-10 · 4000 · 12.8 stream samples, 5.1e-6 samples of a
+    // tone of 310 Hz at 51.2 kHz: 2π · 310 / 51 200 · 5.1e-6 ≈ 2e-7 of its amplitude.
+    assert!(
+        apart < 3e-7,
+        "the kept and computed weights differ by {apart}"
+    );
+    assert!(
+        apart > 0.0,
+        "the hair's breadth must be taken as a different ratio"
+    );
+}
+
 /// `input` converted in chunks of `chunk` samples, checked to hold every sample whose
 /// kernel (16 samples each side) lies inside the stream at `ratio`, and to equal the
 /// samples of the whole stream converted at once after a reset.

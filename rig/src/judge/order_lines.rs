@@ -2,8 +2,11 @@
 //! power sits on the lines of period k (multiples of the running speed / k), and how far a
 //! subharmonic line stands over the broadband floor around it.
 
-use rustfft::FftPlanner;
+use std::cell::RefCell;
+use std::sync::Arc;
+
 use rustfft::num_complex::Complex;
+use rustfft::{Fft, FftPlanner};
 
 /// Bins each side of a line counted as the line: the Hann window's main lobe (±2 bins).
 const LINE_HALF_WIDTH: usize = 2;
@@ -31,16 +34,16 @@ impl OrderSpectrum {
     pub fn new(signal: &[f64], rate_hz: f64, running_hz: f64, band_orders: f64) -> Self {
         let n = signal.len();
         let mean = signal.iter().sum::<f64>() / n.max(1) as f64;
-        let mut data: Vec<Complex<f64>> = signal
-            .iter()
-            .enumerate()
-            .map(|(i, v)| {
-                let w = 0.5 - 0.5 * (2.0 * std::f64::consts::PI * i as f64 / n as f64).cos();
-                Complex::new((v - mean) * w, 0.0)
-            })
-            .collect();
+        let mut data: Vec<Complex<f64>> = Vec::with_capacity(n);
         if n > 0 {
-            FftPlanner::new().plan_fft_forward(n).process(&mut data);
+            let (fft, hann) = plan_of(n);
+            data.extend(
+                signal
+                    .iter()
+                    .zip(hann.iter())
+                    .map(|(v, w)| Complex::new((v - mean) * w, 0.0)),
+            );
+            fft.process(&mut data);
         }
         let bin_hz = rate_hz / n.max(1) as f64;
         let top_hz = (band_orders * running_hz).min(0.45 * rate_hz);
@@ -137,6 +140,28 @@ impl OrderSpectrum {
         }
         Some(mask)
     }
+}
+
+thread_local! {
+    /// The transforms planned on this thread (by length) and the last length's Hann
+    /// window: a campaign judges many windows of one length, and planning one (its
+    /// twiddles' sines and cosines) and the window's cosines cost more than the transform.
+    static PLANS: RefCell<(FftPlanner<f64>, Arc<[f64]>)> =
+        RefCell::new((FftPlanner::new(), Arc::from(Vec::new())));
+}
+
+/// The forward transform of length `n` and the periodic Hann window
+/// w_i = ½ − ½ cos(2πi/n), kept for the thread.
+fn plan_of(n: usize) -> (Arc<dyn Fft<f64>>, Arc<[f64]>) {
+    PLANS.with(|plans| {
+        let (planner, hann) = &mut *plans.borrow_mut();
+        if hann.len() != n {
+            *hann = (0..n)
+                .map(|i| 0.5 - 0.5 * (2.0 * std::f64::consts::PI * i as f64 / n as f64).cos())
+                .collect();
+        }
+        (planner.plan_fft_forward(n), Arc::clone(hann))
+    })
 }
 
 /// Height (dB) of the 1/k-order line of `spectrum` over its floor, the floor taken
