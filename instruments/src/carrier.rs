@@ -67,10 +67,59 @@ fn check(settings: &CarrierSettings, rate_hz: f64) -> Result<(), InstrumentError
     Ok(())
 }
 
+/// Most carrier periods a stream's carrier is tabulated over.
+const MAX_TABULATED_SAMPLES: u64 = 1024;
+
+/// The carrier cos ω_c t at the stream's samples k. Where f_c/f_s is p/q in lowest terms
+/// with q ≤ 1024 (2 kHz on 10.24 kHz is 25/128), the q values cos 2π·r/q are tabulated
+/// and read at r = k·p mod q: one phase error of rounding for any k, where cos(ω·k) loses
+/// the phase's low bits as k grows (1e-10 rad after 10⁶ samples). Otherwise cos(ω·k).
+#[derive(Clone, Debug, PartialEq)]
+struct CarrierWave {
+    omega_per_sample: f64,
+    /// p, and cos 2π·r/q for r in 0..q; empty if f_c/f_s has no small denominator.
+    p: u64,
+    table: Vec<f64>,
+}
+
+impl CarrierWave {
+    fn new(carrier_hz: f64, rate_hz: f64) -> Self {
+        let cycles_per_sample = carrier_hz / rate_hz;
+        let q = (1..=MAX_TABULATED_SAMPLES).find(|&q| {
+            let scaled = cycles_per_sample * q as f64;
+            (scaled - scaled.round()).abs() < 1e-12 * scaled.max(1.0)
+        });
+        let (p, table) = match q {
+            Some(q) => (
+                (cycles_per_sample * q as f64).round() as u64,
+                (0..q)
+                    .map(|r| (std::f64::consts::TAU * r as f64 / q as f64).cos())
+                    .collect(),
+            ),
+            None => (0, Vec::new()),
+        };
+        Self {
+            omega_per_sample: std::f64::consts::TAU * cycles_per_sample,
+            p,
+            table,
+        }
+    }
+
+    /// cos ω_c t at sample `k`.
+    fn at(&self, k: u64) -> f64 {
+        if self.table.is_empty() {
+            (self.omega_per_sample * k as f64).cos()
+        } else {
+            let q = self.table.len() as u128;
+            self.table[(u128::from(k) * u128::from(self.p) % q) as usize]
+        }
+    }
+}
+
 /// The AC-excited bridge: multiplies the (DC-equivalent) bridge output by the carrier.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CarrierModulator {
-    omega_per_sample: f64,
+    carrier: CarrierWave,
     sample: u64,
 }
 
@@ -79,7 +128,7 @@ impl CarrierModulator {
     pub fn new(settings: CarrierSettings, rate_hz: f64) -> Result<Self, InstrumentError> {
         check(&settings, rate_hz)?;
         Ok(Self {
-            omega_per_sample: std::f64::consts::TAU * settings.carrier_hz / rate_hz,
+            carrier: CarrierWave::new(settings.carrier_hz, rate_hz),
             sample: 0,
         })
     }
@@ -92,7 +141,7 @@ impl Block for CarrierModulator {
 
     fn process(&mut self, input: &[f64], output: &mut [f64]) {
         for (y, &v) in output.iter_mut().zip(input) {
-            *y = v * (self.omega_per_sample * self.sample as f64).cos();
+            *y = v * self.carrier.at(self.sample);
             self.sample += 1;
         }
     }
@@ -101,7 +150,7 @@ impl Block for CarrierModulator {
 /// Synchronous demodulation, output low-pass and calibrated gain.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CarrierDemodulator {
-    omega_per_sample: f64,
+    carrier: CarrierWave,
     sample: u64,
     gain: f64,
     lowpass: AntiAliasFilter,
@@ -117,7 +166,7 @@ impl CarrierDemodulator {
             cutoff_hz: settings.output_lowpass_hz,
         };
         Ok(Self {
-            omega_per_sample: std::f64::consts::TAU * settings.carrier_hz / rate_hz,
+            carrier: CarrierWave::new(settings.carrier_hz, rate_hz),
             sample: 0,
             gain: settings.gain,
             lowpass: AntiAliasFilter::new(Some(spec), rate_hz)?,
@@ -138,7 +187,7 @@ impl Block for CarrierDemodulator {
 
     fn process(&mut self, input: &[f64], output: &mut [f64]) {
         for (y, &v) in output.iter_mut().zip(input) {
-            let mixed = 2.0 * v * (self.omega_per_sample * self.sample as f64).cos();
+            let mixed = 2.0 * v * self.carrier.at(self.sample);
             self.sample += 1;
             *y = self.gain * self.lowpass.tick(mixed);
         }

@@ -154,3 +154,43 @@ fn the_calibrated_gain_reads_200_microstrain_as_3_volts() {
     let mean = b[n / 2..].iter().sum::<f64>() / (n / 2) as f64;
     assert!((mean - 3.0).abs() < 1e-3, "{mean}");
 }
+
+/// The carrier the modulator multiplies by, over `n` samples from sample `from`.
+fn carrier_from(carrier_hz: f64, rate_hz: f64, from: usize, n: usize) -> Vec<f64> {
+    let settings = CarrierSettings {
+        carrier_hz,
+        output_lowpass_hz: carrier_hz / 10.0,
+        gain: 1.0,
+    };
+    let mut modulator = CarrierModulator::new(settings, rate_hz).expect("valid");
+    let mut skipped = vec![0.0; from];
+    modulator.process(&vec![1.0; from], &mut skipped);
+    let mut out = vec![0.0; n];
+    modulator.process(&vec![1.0; n], &mut out);
+    out
+}
+
+/// A 2 kHz carrier on 10.24 kHz repeats every 128 samples, exactly, however long the run:
+/// after 10⁷ samples (16 min) it is still cos 2π·2000·k/10240 to rounding, where
+/// cos(ω·k) would be 1e-9 off. A carrier with no short period (2 kHz on 10.24·π kHz) is
+/// cos ω·k.
+#[test]
+fn the_carrier_keeps_its_phase_over_long_runs() {
+    let late = carrier_from(2_000.0, 10_240.0, 10_000_003, 256);
+    for k in 0..128 {
+        assert_eq!(late[k].to_bits(), late[k + 128].to_bits(), "sample {k}");
+        // (10⁷ + 3)·25 mod 128 = 75: the phase of sample 10⁷ + 3 + k is 2π·(25k + 75)/128.
+        let exact = (2.0 * PI * ((k * 25 + 75) % 128) as f64 / 128.0).cos();
+        assert!(
+            (late[k] - exact).abs() < 1e-15,
+            "sample {k}: {} vs {exact}",
+            late[k]
+        );
+    }
+    let rate_hz = 10_240.0 * PI;
+    let early = carrier_from(2_000.0, rate_hz, 0, 64);
+    for (k, &c) in early.iter().enumerate() {
+        let exact = (2.0 * PI * 2_000.0 * k as f64 / rate_hz).cos();
+        assert!((c - exact).abs() < 1e-14, "sample {k}: {c} vs {exact}");
+    }
+}
