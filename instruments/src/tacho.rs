@@ -48,12 +48,17 @@ impl Block for Tacho {
         let pairs = f64::from(self.poles) / 2.0;
         for (y, &speed_rad_s) in output.iter_mut().zip(input) {
             let rpm = speed_rad_s * 30.0 / std::f64::consts::PI;
-            let shaft = self.phase_rad / pairs;
+            // Without ripple the factor is exactly 1: its sine is not taken.
+            let ripple = if self.ripple == 0.0 {
+                1.0
+            } else {
+                1.0 + self.ripple * (self.phase_rad / pairs).sin()
+            };
             *y = std::f64::consts::SQRT_2
                 * self.volts_rms_per_rpm
                 * rpm
                 * self.phase_rad.sin()
-                * (1.0 + self.ripple * shaft.sin());
+                * ripple;
             self.phase_rad = wrapped(
                 self.phase_rad + pairs * speed_rad_s * self.step_s,
                 std::f64::consts::TAU * pairs,
