@@ -8,8 +8,8 @@
 //! about 1e-6 of the amplitude for content below 0.4 of the stream's Nyquist frequency,
 //! with a latency of 16 stream samples. Where the ratio is a fraction p/q with q ≤ 256
 //! (10 240 Hz over the thesis analyser's 400 Hz is 128/5), the ADC's instants fall on q
-//! phases between stream samples, counted in whole numbers: their weights are computed
-//! once, not at every sample.
+//! phases between stream samples, counted on in whole numbers: their weights are
+//! computed once, not at every sample.
 
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64Mcg;
@@ -45,6 +45,9 @@ pub struct Adc {
     whole: Option<u64>,
     /// The ratio as p/q with each phase's weights, where q ≤ [`MAX_PHASES`].
     phases: Option<Phases>,
+    /// Where the phases are kept: sample `next`'s centre ⌊next·p/q⌋ and phase
+    /// next·p mod q, counted on as `next` moves.
+    position: (u64, usize),
     received: u64,
     next: u64,
     history: Vec<f64>,
@@ -93,6 +96,7 @@ impl Adc {
                 .is_none()
                 .then(|| Phases::of_ratio(settings.ratio))
                 .flatten(),
+            position: (0, 0),
             received: 0,
             next: 0,
             history: Vec::new(),
@@ -108,6 +112,7 @@ impl Adc {
     pub fn reset(&mut self) {
         self.received = 0;
         self.next = 0;
+        self.position = (0, 0);
         self.history.clear();
         self.history_start = 0;
         self.overloads = 0;
@@ -163,12 +168,12 @@ impl Adc {
             self.history.push(v);
             self.received += 1;
             loop {
-                let centre = self.centre_of(self.next);
+                let centre = self.next_centre();
                 if centre + LOBES as u64 >= self.received {
                     break;
                 }
                 let taps = match &self.phases {
-                    Some(phases) => phases.weights(self.next),
+                    Some(phases) => &phases.weights[self.position.1],
                     None => {
                         let t = self.next as f64 * self.settings.ratio;
                         kernel_weights(t - centre as f64, &mut weights);
@@ -178,17 +183,31 @@ impl Adc {
                 let value = self.weighted_sum(centre, taps);
                 let code = self.quantise(value);
                 output.push(code);
-                self.next += 1;
+                self.advance();
             }
             self.trim();
         }
     }
 
-    /// The stream sample at or before ADC sample `k`'s instant k·ratio.
-    fn centre_of(&self, k: u64) -> u64 {
+    /// The stream sample at or before the next ADC sample's instant next·ratio.
+    fn next_centre(&self) -> u64 {
         match &self.phases {
-            Some(phases) => phases.centre_of(k),
-            None => (k as f64 * self.settings.ratio).floor() as u64,
+            Some(_) => self.position.0,
+            None => (self.next as f64 * self.settings.ratio).floor() as u64,
+        }
+    }
+
+    /// On to the next ADC sample: its centre and phase moved on by p/q where kept.
+    fn advance(&mut self) {
+        self.next += 1;
+        if let Some(phases) = &self.phases {
+            let (centre, phase) = &mut self.position;
+            *centre += phases.whole_step;
+            *phase += phases.phase_step;
+            if *phase >= phases.weights.len() {
+                *phase -= phases.weights.len();
+                *centre += 1;
+            }
         }
     }
 
@@ -209,7 +228,7 @@ impl Adc {
     /// Drops history no future sample needs, in chunks. The next sample may lie beyond
     /// the samples received (a ratio above the kernel's reach): never more than is held.
     fn trim(&mut self) {
-        let needed_from = (self.centre_of(self.next) + 1).saturating_sub(LOBES as u64);
+        let needed_from = (self.next_centre() + 1).saturating_sub(LOBES as u64);
         let drop =
             (needed_from.saturating_sub(self.history_start) as usize).min(self.history.len());
         if drop > 4096 {
@@ -241,11 +260,12 @@ const MAX_RANGE: f64 = 1e9;
 /// Kaiser window shape β.
 const KAISER_BETA: f64 = 12.0;
 
-/// The ratio p/q in lowest terms and the weights of each of its q phases.
+/// The ratio p/q in lowest terms, as the whole samples ⌊p/q⌋ and phases p mod q an ADC
+/// sample moves on by, and the weights of each of its q phases r/q (r = 0..q).
 #[derive(Clone, Debug)]
 struct Phases {
-    p: u64,
-    q: u64,
+    whole_step: u64,
+    phase_step: usize,
     weights: Vec<[f64; TAPS]>,
 }
 
@@ -265,18 +285,11 @@ impl Phases {
                 w
             })
             .collect();
-        Some(Self { p, q, weights })
-    }
-
-    /// ⌊k·p/q⌋, in whole numbers.
-    fn centre_of(&self, k: u64) -> u64 {
-        (u128::from(k) * u128::from(self.p) / u128::from(self.q)) as u64
-    }
-
-    /// The weights of ADC sample `k`, whose instant lies (k·p mod q)/q past its centre.
-    fn weights(&self, k: u64) -> &[f64; TAPS] {
-        let r = u128::from(k) * u128::from(self.p) % u128::from(self.q);
-        &self.weights[r as usize]
+        Some(Self {
+            whole_step: p / q,
+            phase_step: (p % q) as usize,
+            weights,
+        })
     }
 }
 

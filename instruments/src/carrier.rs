@@ -67,19 +67,23 @@ fn check(settings: &CarrierSettings, rate_hz: f64) -> Result<(), InstrumentError
     Ok(())
 }
 
-/// Most carrier periods a stream's carrier is tabulated over.
+/// Largest number of samples q over which a tabulated carrier repeats.
 const MAX_TABULATED_SAMPLES: u64 = 1024;
 
-/// The carrier cos ω_c t at the stream's samples k. Where f_c/f_s is p/q in lowest terms
-/// with q ≤ 1024 (2 kHz on 10.24 kHz is 25/128), the q values cos 2π·r/q are tabulated
-/// and read at r = k·p mod q: one phase error of rounding for any k, where cos(ω·k) loses
-/// the phase's low bits as k grows (1e-10 rad after 10⁶ samples). Otherwise cos(ω·k).
+/// The carrier cos ω_c t at the stream's samples k = 0, 1, …, counted on one sample at a
+/// time. Where f_c/f_s is p/q in lowest terms with q ≤ 1024 (2 kHz on 10.24 kHz is
+/// 25/128), the q values cos 2π·r/q are tabulated and read at r = k·p mod q, kept by
+/// adding p: one phase error of rounding for any k, where cos(ω·k) loses the phase's low
+/// bits as k grows (1e-10 rad after 10⁶ samples). Otherwise cos(ω·k).
 #[derive(Clone, Debug, PartialEq)]
 struct CarrierWave {
     omega_per_sample: f64,
-    /// p, and cos 2π·r/q for r in 0..q; empty if f_c/f_s has no small denominator.
-    p: u64,
+    /// p mod q, and cos 2π·r/q for r in 0..q; empty if f_c/f_s has no small denominator.
+    phase_step: usize,
     table: Vec<f64>,
+    /// The next sample k, and k·p mod q where tabulated.
+    sample: u64,
+    phase: usize,
 }
 
 impl CarrierWave {
@@ -89,9 +93,9 @@ impl CarrierWave {
             let scaled = cycles_per_sample * q as f64;
             (scaled - scaled.round()).abs() < 1e-12 * scaled.max(1.0)
         });
-        let (p, table) = match q {
+        let (phase_step, table) = match q {
             Some(q) => (
-                (cycles_per_sample * q as f64).round() as u64,
+                ((cycles_per_sample * q as f64).round() as u64 % q) as usize,
                 (0..q)
                     .map(|r| (std::f64::consts::TAU * r as f64 / q as f64).cos())
                     .collect(),
@@ -100,19 +104,32 @@ impl CarrierWave {
         };
         Self {
             omega_per_sample: std::f64::consts::TAU * cycles_per_sample,
-            p,
+            phase_step,
             table,
+            sample: 0,
+            phase: 0,
         }
     }
 
-    /// cos ω_c t at sample `k`.
-    fn at(&self, k: u64) -> f64 {
-        if self.table.is_empty() {
-            (self.omega_per_sample * k as f64).cos()
+    /// Back to sample 0.
+    fn reset(&mut self) {
+        self.sample = 0;
+        self.phase = 0;
+    }
+
+    /// cos ω_c t at the next sample, then on by one sample.
+    fn next_value(&mut self) -> f64 {
+        let value = if self.table.is_empty() {
+            (self.omega_per_sample * self.sample as f64).cos()
         } else {
-            let q = self.table.len() as u128;
-            self.table[(u128::from(k) * u128::from(self.p) % q) as usize]
+            self.table[self.phase]
+        };
+        self.sample += 1;
+        self.phase += self.phase_step;
+        if self.phase >= self.table.len() {
+            self.phase -= self.table.len();
         }
+        value
     }
 }
 
@@ -120,7 +137,6 @@ impl CarrierWave {
 #[derive(Clone, Debug, PartialEq)]
 pub struct CarrierModulator {
     carrier: CarrierWave,
-    sample: u64,
 }
 
 impl CarrierModulator {
@@ -129,20 +145,18 @@ impl CarrierModulator {
         check(&settings, rate_hz)?;
         Ok(Self {
             carrier: CarrierWave::new(settings.carrier_hz, rate_hz),
-            sample: 0,
         })
     }
 }
 
 impl Block for CarrierModulator {
     fn reset(&mut self) {
-        self.sample = 0;
+        self.carrier.reset();
     }
 
     fn process(&mut self, input: &[f64], output: &mut [f64]) {
         for (y, &v) in output.iter_mut().zip(input) {
-            *y = v * self.carrier.at(self.sample);
-            self.sample += 1;
+            *y = v * self.carrier.next_value();
         }
     }
 }
@@ -151,7 +165,6 @@ impl Block for CarrierModulator {
 #[derive(Clone, Debug, PartialEq)]
 pub struct CarrierDemodulator {
     carrier: CarrierWave,
-    sample: u64,
     gain: f64,
     lowpass: AntiAliasFilter,
 }
@@ -167,7 +180,6 @@ impl CarrierDemodulator {
         };
         Ok(Self {
             carrier: CarrierWave::new(settings.carrier_hz, rate_hz),
-            sample: 0,
             gain: settings.gain,
             lowpass: AntiAliasFilter::new(Some(spec), rate_hz)?,
         })
@@ -181,14 +193,13 @@ impl CarrierDemodulator {
 
 impl Block for CarrierDemodulator {
     fn reset(&mut self) {
-        self.sample = 0;
+        self.carrier.reset();
         self.lowpass.reset();
     }
 
     fn process(&mut self, input: &[f64], output: &mut [f64]) {
         for (y, &v) in output.iter_mut().zip(input) {
-            let mixed = 2.0 * v * self.carrier.at(self.sample);
-            self.sample += 1;
+            let mixed = 2.0 * v * self.carrier.next_value();
             *y = self.gain * self.lowpass.tick(mixed);
         }
     }

@@ -163,8 +163,13 @@ fn carrier_from(carrier_hz: f64, rate_hz: f64, from: usize, n: usize) -> Vec<f64
         gain: 1.0,
     };
     let mut modulator = CarrierModulator::new(settings, rate_hz).expect("valid");
-    let mut skipped = vec![0.0; from];
-    modulator.process(&vec![1.0; from], &mut skipped);
+    let (ones, mut skipped) = (vec![1.0; 65_536], vec![0.0; 65_536]);
+    let mut left = from;
+    while left > 0 {
+        let chunk = left.min(ones.len());
+        modulator.process(&ones[..chunk], &mut skipped[..chunk]);
+        left -= chunk;
+    }
     let mut out = vec![0.0; n];
     modulator.process(&vec![1.0; n], &mut out);
     out

@@ -143,24 +143,30 @@ impl OrderSpectrum {
 }
 
 thread_local! {
-    /// The transforms planned on this thread (by length) and the last length's Hann
-    /// window: a campaign judges many windows of one length, and planning one (its
-    /// twiddles' sines and cosines) and the window's cosines cost more than the transform.
-    static PLANS: RefCell<(FftPlanner<f64>, Arc<[f64]>)> =
-        RefCell::new((FftPlanner::new(), Arc::from(Vec::new())));
+    /// The last length's forward transform and Hann window, kept for the thread: a
+    /// campaign judges many windows of one length, and planning one (its twiddles' sines
+    /// and cosines) and the window's cosines cost more than the transform. One length
+    /// only, so that a thread judging windows of many lengths holds one plan.
+    static LAST_PLAN: RefCell<Option<(Arc<dyn Fft<f64>>, Arc<[f64]>)>> =
+        const { RefCell::new(None) };
 }
 
 /// The forward transform of length `n` and the periodic Hann window
-/// w_i = ½ − ½ cos(2πi/n), kept for the thread.
+/// w_i = ½ − ½ cos(2πi/n).
 fn plan_of(n: usize) -> (Arc<dyn Fft<f64>>, Arc<[f64]>) {
-    PLANS.with(|plans| {
-        let (planner, hann) = &mut *plans.borrow_mut();
-        if hann.len() != n {
-            *hann = (0..n)
-                .map(|i| 0.5 - 0.5 * (2.0 * std::f64::consts::PI * i as f64 / n as f64).cos())
-                .collect();
+    LAST_PLAN.with(|last| {
+        let mut last = last.borrow_mut();
+        if let Some((fft, hann)) = last.as_ref()
+            && hann.len() == n
+        {
+            return (Arc::clone(fft), Arc::clone(hann));
         }
-        (planner.plan_fft_forward(n), Arc::clone(hann))
+        let fft = FftPlanner::new().plan_fft_forward(n);
+        let hann: Arc<[f64]> = (0..n)
+            .map(|i| 0.5 - 0.5 * (2.0 * std::f64::consts::PI * i as f64 / n as f64).cos())
+            .collect();
+        *last = Some((Arc::clone(&fft), Arc::clone(&hann)));
+        (fft, hann)
     })
 }
 
