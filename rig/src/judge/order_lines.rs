@@ -142,18 +142,20 @@ impl OrderSpectrum {
     }
 }
 
+/// A forward transform of some length and the Hann window of that length.
+type Plan = (Arc<dyn Fft<f64>>, Arc<[f64]>);
+
 thread_local! {
     /// The last length's forward transform and Hann window, kept for the thread: a
     /// campaign judges many windows of one length, and planning one (its twiddles' sines
     /// and cosines) and the window's cosines cost more than the transform. One length
     /// only, so that a thread judging windows of many lengths holds one plan.
-    static LAST_PLAN: RefCell<Option<(Arc<dyn Fft<f64>>, Arc<[f64]>)>> =
-        const { RefCell::new(None) };
+    static LAST_PLAN: RefCell<Option<Plan>> = const { RefCell::new(None) };
 }
 
 /// The forward transform of length `n` and the periodic Hann window
 /// w_i = ½ − ½ cos(2πi/n).
-fn plan_of(n: usize) -> (Arc<dyn Fft<f64>>, Arc<[f64]>) {
+fn plan_of(n: usize) -> Plan {
     LAST_PLAN.with(|last| {
         let mut last = last.borrow_mut();
         if let Some((fft, hann)) = last.as_ref()
