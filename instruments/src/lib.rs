@@ -19,8 +19,8 @@
 //! averaging, overlap), `truth.rs` (which displayed lines are aliases, from the analogue
 //! signal), `keyboard_program.rs` (the App. E program from text), `scope.rs`,
 //! `brake_drive.rs` (function generator, coil lag, brake torque), `noise.rs` (seeded
-//! Gaussian), `ac_coupling.rs` (the AC input of the 400E and the scope); `block.rs` the
-//! trait, `error.rs` the errors.
+//! Gaussian), `phase.rs` (a running phase kept within its period), `ac_coupling.rs` (the
+//! AC input of the 400E and the scope); `block.rs` the trait, `error.rs` the errors.
 //!
 //! ```
 //! use instruments::{AntiAliasFilter, Block, FilterKind, LowPassSpec};
