@@ -15,6 +15,7 @@ use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64Mcg;
 
 use crate::error::InstrumentError;
+use crate::phase::{FractionCounter, small_fraction};
 
 /// Lobes each side of the interpolation kernel.
 const LOBES: usize = 16;
@@ -43,11 +44,10 @@ pub struct Adc {
     settings: AdcSettings,
     step_v: f64,
     whole: Option<u64>,
-    /// The ratio as p/q with each phase's weights, where q ≤ [`MAX_PHASES`].
-    phases: Option<Phases>,
-    /// Where the phases are kept: sample `next`'s centre ⌊next·p/q⌋ and phase
-    /// next·p mod q, counted on as `next` moves.
-    position: (u64, usize),
+    /// Where the ratio is p/q with 1 < q ≤ [`MAX_PHASES`]: each phase's weights, and
+    /// sample `next`'s centre ⌊next·p/q⌋ and phase next·p mod q, counted on as `next`
+    /// moves.
+    phases: Option<(Vec<[f64; TAPS]>, FractionCounter)>,
     received: u64,
     next: u64,
     history: Vec<f64>,
@@ -85,18 +85,14 @@ impl Adc {
                 "the ± full scale must lie in [1e-9, 1e9] (in the signal's unit)",
             ));
         }
-        let rounded = settings.ratio.round();
-        let whole =
-            ((settings.ratio - rounded).abs() < 1e-12 * settings.ratio).then_some(rounded as u64);
+        let fraction = small_fraction(settings.ratio, MAX_PHASES);
         let mut adc = Self {
             settings,
             step_v: 2.0 * settings.range_v / f64::from(1u32 << settings.bits),
-            whole,
-            phases: whole
-                .is_none()
-                .then(|| Phases::of_ratio(settings.ratio))
-                .flatten(),
-            position: (0, 0),
+            whole: fraction.and_then(|(p, q)| (q == 1).then_some(p)),
+            phases: fraction
+                .filter(|&(_, q)| q > 1)
+                .map(|(p, q)| (phase_weights(q), FractionCounter::new(p, q))),
             received: 0,
             next: 0,
             history: Vec::new(),
@@ -112,7 +108,9 @@ impl Adc {
     pub fn reset(&mut self) {
         self.received = 0;
         self.next = 0;
-        self.position = (0, 0);
+        if let Some((_, counter)) = &mut self.phases {
+            counter.reset();
+        }
         self.history.clear();
         self.history_start = 0;
         self.overloads = 0;
@@ -173,7 +171,7 @@ impl Adc {
                     break;
                 }
                 let taps = match &self.phases {
-                    Some(phases) => &phases.weights[self.position.1],
+                    Some((weights, counter)) => &weights[counter.phase],
                     None => {
                         let t = self.next as f64 * self.settings.ratio;
                         kernel_weights(t - centre as f64, &mut weights);
@@ -192,7 +190,7 @@ impl Adc {
     /// The stream sample at or before the next ADC sample's instant next·ratio.
     fn next_centre(&self) -> u64 {
         match &self.phases {
-            Some(_) => self.position.0,
+            Some((_, counter)) => counter.whole,
             None => (self.next as f64 * self.settings.ratio).floor() as u64,
         }
     }
@@ -200,14 +198,8 @@ impl Adc {
     /// On to the next ADC sample: its centre and phase moved on by p/q where kept.
     fn advance(&mut self) {
         self.next += 1;
-        if let Some(phases) = &self.phases {
-            let (centre, phase) = &mut self.position;
-            *centre += phases.whole_step;
-            *phase += phases.phase_step;
-            if *phase >= phases.weights.len() {
-                *phase -= phases.weights.len();
-                *centre += 1;
-            }
+        if let Some((_, counter)) = &mut self.phases {
+            counter.advance();
         }
     }
 
@@ -260,37 +252,15 @@ const MAX_RANGE: f64 = 1e9;
 /// Kaiser window shape β.
 const KAISER_BETA: f64 = 12.0;
 
-/// The ratio p/q in lowest terms, as the whole samples ⌊p/q⌋ and phases p mod q an ADC
-/// sample moves on by, and the weights of each of its q phases r/q (r = 0..q).
-#[derive(Clone, Debug)]
-struct Phases {
-    whole_step: u64,
-    phase_step: usize,
-    weights: Vec<[f64; TAPS]>,
-}
-
-impl Phases {
-    /// `ratio` as p/q with the smallest q ≤ [`MAX_PHASES`] for which p is whole (to 1e-12
-    /// of the ratio), with each phase r/q's weights; `None` if there is none.
-    fn of_ratio(ratio: f64) -> Option<Self> {
-        let q = (1..=MAX_PHASES).find(|&q| {
-            let scaled = ratio * q as f64;
-            (scaled - scaled.round()).abs() < 1e-12 * scaled
-        })?;
-        let p = (ratio * q as f64).round() as u64;
-        let weights = (0..q)
-            .map(|r| {
-                let mut w = [0.0; TAPS];
-                kernel_weights(r as f64 / q as f64, &mut w);
-                w
-            })
-            .collect();
-        Some(Self {
-            whole_step: p / q,
-            phase_step: (p % q) as usize,
-            weights,
+/// The weights of each of the q phases r/q (r = 0..q) of a ratio p/q.
+fn phase_weights(q: u64) -> Vec<[f64; TAPS]> {
+    (0..q)
+        .map(|r| {
+            let mut w = [0.0; TAPS];
+            kernel_weights(r as f64 / q as f64, &mut w);
+            w
         })
-    }
+        .collect()
 }
 
 /// The kernel's weights for an instant `offset` ∈ [0, 1) samples past the centre c, at

@@ -9,6 +9,7 @@ use crate::biquad::Biquad;
 use crate::block::Block;
 use crate::error::InstrumentError;
 use crate::lowpass::{AntiAliasFilter, FilterKind, LowPassSpec};
+use crate::phase::{FractionCounter, small_fraction};
 
 /// Carrier settings shared by modulator and demodulator.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -72,64 +73,53 @@ const MAX_TABULATED_SAMPLES: u64 = 1024;
 
 /// The carrier cos ω_c t at the stream's samples k = 0, 1, …, counted on one sample at a
 /// time. Where f_c/f_s is p/q in lowest terms with q ≤ 1024 (2 kHz on 10.24 kHz is
-/// 25/128), the q values cos 2π·r/q are tabulated and read at r = k·p mod q, kept by
-/// adding p: one phase error of rounding for any k, where cos(ω·k) loses the phase's low
-/// bits as k grows (1e-10 rad after 10⁶ samples). Otherwise cos(ω·k).
+/// 25/128), the q values cos 2π·r/q are tabulated and read at r = k·p mod q, counted in
+/// whole numbers: one phase error of rounding for any k, where cos(ω·k) loses the
+/// phase's low bits as k grows (1e-10 rad after 10⁶ samples). Otherwise cos(ω·k).
 #[derive(Clone, Debug, PartialEq)]
-struct CarrierWave {
-    omega_per_sample: f64,
-    /// p mod q, and cos 2π·r/q for r in 0..q; empty if f_c/f_s has no small denominator.
-    phase_step: usize,
-    table: Vec<f64>,
-    /// The next sample k, and k·p mod q where tabulated.
-    sample: u64,
-    phase: usize,
+enum CarrierWave {
+    /// cos 2π·r/q for r in 0..q, and k·p mod q.
+    Tabulated(Vec<f64>, FractionCounter),
+    /// ω per sample and k.
+    Computed(f64, u64),
 }
 
 impl CarrierWave {
     fn new(carrier_hz: f64, rate_hz: f64) -> Self {
         let cycles_per_sample = carrier_hz / rate_hz;
-        let q = (1..=MAX_TABULATED_SAMPLES).find(|&q| {
-            let scaled = cycles_per_sample * q as f64;
-            (scaled - scaled.round()).abs() < 1e-12 * scaled.max(1.0)
-        });
-        let (phase_step, table) = match q {
-            Some(q) => (
-                ((cycles_per_sample * q as f64).round() as u64 % q) as usize,
+        match small_fraction(cycles_per_sample, MAX_TABULATED_SAMPLES) {
+            Some((p, q)) => Self::Tabulated(
                 (0..q)
                     .map(|r| (std::f64::consts::TAU * r as f64 / q as f64).cos())
                     .collect(),
+                FractionCounter::new(p, q),
             ),
-            None => (0, Vec::new()),
-        };
-        Self {
-            omega_per_sample: std::f64::consts::TAU * cycles_per_sample,
-            phase_step,
-            table,
-            sample: 0,
-            phase: 0,
+            None => Self::Computed(std::f64::consts::TAU * cycles_per_sample, 0),
         }
     }
 
     /// Back to sample 0.
     fn reset(&mut self) {
-        self.sample = 0;
-        self.phase = 0;
+        match self {
+            Self::Tabulated(_, counter) => counter.reset(),
+            Self::Computed(_, sample) => *sample = 0,
+        }
     }
 
     /// cos ω_c t at the next sample, then on by one sample.
     fn next_value(&mut self) -> f64 {
-        let value = if self.table.is_empty() {
-            (self.omega_per_sample * self.sample as f64).cos()
-        } else {
-            self.table[self.phase]
-        };
-        self.sample += 1;
-        self.phase += self.phase_step;
-        if self.phase >= self.table.len() {
-            self.phase -= self.table.len();
+        match self {
+            Self::Tabulated(table, counter) => {
+                let value = table[counter.phase];
+                counter.advance();
+                value
+            }
+            Self::Computed(omega_per_sample, sample) => {
+                let value = (*omega_per_sample * *sample as f64).cos();
+                *sample += 1;
+                value
+            }
         }
-        value
     }
 }
 
