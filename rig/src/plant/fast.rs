@@ -11,13 +11,13 @@
 //! allows; where a switch may fall, that stretch is taken in single steps.
 
 use crate::error::RigError;
-use crate::roots::{may_cross, may_cross_span};
 
 use super::block::NetworkBlock;
 use super::events::edge_values;
 use super::network_plant::NetworkPlant;
 use super::products;
 use super::run_spans::RunSpans;
+use super::stepping::{SpanEnd, may_reach};
 use super::system::{ModeSystem, SpanMatrix};
 use super::system_cache::SystemCache;
 
@@ -148,8 +148,7 @@ impl NetworkPlant {
             if let Some((steps, matrix)) = span {
                 let samples = u64::from(steps / substeps);
                 if self.sample >= singles_until && self.sample + samples <= stop {
-                    self.run_end(system, run, matrix);
-                    if !self.may_switch(system, f64::from(steps) * self.step_s) {
+                    if !self.span_may_switch(system, run, matrix, f64::from(steps) * self.step_s) {
                         self.take_span_end();
                         self.sample += samples;
                         continue;
@@ -158,8 +157,7 @@ impl NetworkPlant {
                 }
             }
             for substep in 0..substeps {
-                self.run_end(system, run, &run.step);
-                if self.may_switch(system, self.step_s) {
+                if self.span_may_switch(system, run, &run.step, self.step_s) {
                     return RunEnd::MaySwitch { substep };
                 }
                 self.take_span_end();
@@ -182,11 +180,47 @@ impl NetworkPlant {
         self.next[mechanical..].copy_from_slice(&self.u[mechanical..]);
     }
 
-    /// The end of the span of `matrix` (a step or a stride of `run`) from `self.u`:
-    /// `self.next` the state there, `self.next_edge` each switching function's value and
-    /// rate.
+    /// Takes the span of `matrix` (a step or a stride of `run`, `span_s` long) from
+    /// `self.u`: `self.next` the state at its end; and whether any switching function may
+    /// cross over it, as the exact path's check decides it over a step, and over a span
+    /// of several steps as `may_cross_span` does (any interior maximum). Where none may,
+    /// `self.next_edge` holds each function's value and rate at the end; where one may,
+    /// the functions after it are left unwritten (the exact path takes the span again).
+    /// One loop over the functions, their ends found and checked in it.
     #[inline(always)]
-    fn run_end(&mut self, system: &ModeSystem, run: &RunSpans, matrix: &SpanMatrix) {
+    fn span_may_switch(
+        &mut self,
+        system: &ModeSystem,
+        run: &RunSpans,
+        matrix: &SpanMatrix,
+        span_s: f64,
+    ) -> bool {
+        self.run_end_state(system, run, matrix);
+        let several_steps = span_s > self.step_s;
+        let events = system.events.len();
+        let mut next_edge = std::mem::take(&mut self.next_edge);
+        next_edge.resize(events, (0.0, 0.0));
+        let at_end = SpanEnd::of(self, system);
+        let starts = self.edge[..events].iter().zip(&self.targets[..events]);
+        let forms = system.events.iter().zip(&system.row_slot);
+        let mut cross = false;
+        for ((end, (&start, &target)), (form, &slot)) in next_edge.iter_mut().zip(starts).zip(forms)
+        {
+            *end = at_end.value_rate(form, slot);
+            if may_reach(start, *end, target, span_s, several_steps) {
+                cross = true;
+                break;
+            }
+        }
+        self.next_edge = next_edge;
+        cross
+    }
+
+    /// The state at the end of the span of `matrix` (a step or a stride of `run`) from
+    /// `self.u` into `self.next`, the row events' values and rates there in
+    /// `self.fused_out`.
+    #[inline(always)]
+    fn run_end_state(&mut self, system: &ModeSystem, run: &RunSpans, matrix: &SpanMatrix) {
         let mechanical = self.model.layout.mechanical();
         products::gathered(
             &matrix.fused,
@@ -195,7 +229,7 @@ impl NetworkPlant {
             &self.u,
             &mut self.fused_out,
         );
-        self.next[..mechanical].copy_from_slice(&self.fused_out[..mechanical]);
+        products::copy_short(&mut self.next[..mechanical], &self.fused_out[..mechanical]);
         // None move with the set speed at zero and nothing ramping.
         if !run.moving.is_empty() {
             products::gathered(
@@ -209,7 +243,6 @@ impl NetworkPlant {
                 self.next[i] = x;
             }
         }
-        self.fill_next_edge(system);
     }
 
     /// The first sample the fast run may not take: `limit` on, the next stretch of set
@@ -230,34 +263,5 @@ impl NetworkPlant {
         targets.clear();
         targets.extend(system.events.iter().map(|form| self.target(form)));
         self.targets = targets;
-    }
-
-    /// Whether any function may cross over the span of `span_s` from `self.u` to
-    /// `self.next` (values and rates at its ends in `self.edge` and `self.next_edge`), as
-    /// the exact path's check decides it over a step, and over a span of several steps as
-    /// [`may_cross_span`] does (any interior maximum).
-    #[inline(always)]
-    fn may_switch(&self, system: &ModeSystem, span_s: f64) -> bool {
-        let several_steps = span_s > self.step_s;
-        // A plain loop: written with `any`, the check was a call out of the loop.
-        let events = system.events.len();
-        for ((&target, &(value_0, rate_0)), &end) in self.targets[..events]
-            .iter()
-            .zip(&self.edge[..events])
-            .zip(&self.next_edge[..events])
-        {
-            let g0 = (value_0 - target).min(0.0);
-            let g1 = end.0 - target;
-            let (d0, d1) = (rate_0 * span_s, end.1 * span_s);
-            let cross = if several_steps {
-                may_cross_span(g0, d0, g1, d1)
-            } else {
-                may_cross(g0, d0, g1, d1)
-            };
-            if cross {
-                return true;
-            }
-        }
-        false
     }
 }

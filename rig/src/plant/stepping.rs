@@ -9,7 +9,7 @@ use std::f64::consts::PI;
 
 use crate::error::RigError;
 use crate::mode::{MotorMode, PairZone};
-use crate::roots::{DUE_NOW, first_crossing, may_cross};
+use crate::roots::{DUE_NOW, first_crossing, may_cross, may_cross_span};
 use crate::taylor::{TAYLOR_ORDER, taylor_order};
 
 use super::block::NetworkImpact;
@@ -100,20 +100,14 @@ impl NetworkPlant {
         self.fill_next_edge(system);
     }
 
-    /// Each switching function's value and rate at `self.next` into `self.next_edge`: a
-    /// row event's from the fused rows just taken into `self.fused_out`, the others from
-    /// the state.
-    #[inline(always)]
-    pub(super) fn fill_next_edge(&mut self, system: &ModeSystem) {
-        let mechanical = self.model.layout.mechanical();
-        self.next_edge.clear();
-        let (values, rates) = (mechanical, mechanical + system.row_events);
-        for (form, slot) in system.events.iter().zip(&system.row_slot) {
-            self.next_edge.push(match slot {
-                Some(j) => (self.fused_out[values + j], self.fused_out[rates + j]),
-                None => (form.value(&self.next), form.rate(&self.next)),
-            });
-        }
+    /// Each switching function's value and rate at `self.next` into `self.next_edge`.
+    fn fill_next_edge(&mut self, system: &ModeSystem) {
+        let mut next_edge = std::mem::take(&mut self.next_edge);
+        let end = SpanEnd::of(self, system);
+        next_edge.clear();
+        let forms = system.events.iter().zip(&system.row_slot);
+        next_edge.extend(forms.map(|(form, &slot)| end.value_rate(form, slot)));
+        self.next_edge = next_edge;
     }
 
     /// Moves to the end of the span just taken: `self.next` and `self.next_edge` become
@@ -145,10 +139,7 @@ impl NetworkPlant {
             } else {
                 (form.value(&self.u), form.rate(&self.u))
             };
-            let end = self.next_edge[k];
-            let g0 = (value_0 - target).min(0.0);
-            let g1 = end.0 - target;
-            if !may_cross(g0, rate_0 * span_s, g1, end.1 * span_s) {
+            if !may_reach((value_0, rate_0), self.next_edge[k], target, span_s, false) {
                 continue;
             }
             if !expanded {
@@ -350,6 +341,63 @@ impl NetworkPlant {
                 self.next_revolution_rad += 2.0 * PI;
             }
         }
+    }
+}
+
+/// Where a span's end is read: a row event's value and rate from the fused rows just
+/// taken (`fused_out`), another function's from the state there (`next`).
+pub(super) struct SpanEnd<'a> {
+    fused_out: &'a [f64],
+    next: &'a [f64],
+    values: usize,
+    rates: usize,
+}
+
+impl<'a> SpanEnd<'a> {
+    /// The end of the span `plant` has just taken in `system`'s mode.
+    #[inline(always)]
+    pub(super) fn of(plant: &'a NetworkPlant, system: &ModeSystem) -> Self {
+        let mechanical = plant.model.layout.mechanical();
+        Self {
+            fused_out: &plant.fused_out,
+            next: &plant.next,
+            values: mechanical,
+            rates: mechanical + system.row_events,
+        }
+    }
+
+    /// The value and rate of `form` (row event `slot`, if one) there.
+    #[inline(always)]
+    pub(super) fn value_rate(&self, form: &EventForm, slot: Option<usize>) -> (f64, f64) {
+        match slot {
+            Some(j) => (
+                self.fused_out[self.values + j],
+                self.fused_out[self.rates + j],
+            ),
+            None => (form.value(self.next), form.rate(self.next)),
+        }
+    }
+}
+
+/// Whether a function of value and rate `start` and `end` at the ends of a span of
+/// `span_s` may reach `target` within it: over one step as [`may_cross`] judges it, over
+/// several (`several_steps`) as [`may_cross_span`] does (any interior maximum). A start
+/// above the target counts as at it (a function just switched on stays until it falls).
+#[inline(always)]
+pub(super) fn may_reach(
+    (value_0, rate_0): (f64, f64),
+    (value_1, rate_1): (f64, f64),
+    target: f64,
+    span_s: f64,
+    several_steps: bool,
+) -> bool {
+    let g0 = (value_0 - target).min(0.0);
+    let g1 = value_1 - target;
+    let (d0, d1) = (rate_0 * span_s, rate_1 * span_s);
+    if several_steps {
+        may_cross_span(g0, d0, g1, d1)
+    } else {
+        may_cross(g0, d0, g1, d1)
     }
 }
 
