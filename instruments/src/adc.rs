@@ -43,17 +43,42 @@ pub struct AdcSettings {
 pub struct Adc {
     settings: AdcSettings,
     step_v: f64,
-    whole: Option<u64>,
-    /// Where the ratio is p/q with 1 < q ≤ [`MAX_PHASES`]: each phase's weights, and
-    /// sample `next`'s centre ⌊next·p/q⌋ and phase next·p mod q, counted on as `next`
-    /// moves.
-    phases: Option<(Vec<[f64; TAPS]>, FractionCounter)>,
+    sampling: Sampling,
     received: u64,
     next: u64,
     history: Vec<f64>,
     history_start: u64,
     overloads: u64,
     rng: Option<Pcg64Mcg>,
+}
+
+/// How the converter finds its samples in the stream, by its ratio.
+#[derive(Clone, Debug)]
+enum Sampling {
+    /// A whole ratio M: every M-th stream sample.
+    Pick(u64),
+    /// A ratio p/q with 1 < q ≤ [`MAX_PHASES`]: each phase's weights, and sample
+    /// `next`'s centre ⌊next·p/q⌋ and phase next·p mod q, counted on as `next` moves.
+    KeptPhases {
+        weights: Vec<[f64; TAPS]>,
+        counter: FractionCounter,
+    },
+    /// Any other ratio: each sample's weights computed at its instant.
+    Computed,
+}
+
+impl Sampling {
+    /// The way a ratio of `ratio` stream samples per ADC sample is sampled.
+    fn of(ratio: f64) -> Self {
+        match small_fraction(ratio, MAX_PHASES) {
+            Some((p, 1)) => Self::Pick(p),
+            Some((p, q)) => Self::KeptPhases {
+                weights: phase_weights(q),
+                counter: FractionCounter::new(p, q),
+            },
+            None => Self::Computed,
+        }
+    }
 }
 
 impl Adc {
@@ -85,14 +110,10 @@ impl Adc {
                 "the ± full scale must lie in [1e-9, 1e9] (in the signal's unit)",
             ));
         }
-        let fraction = small_fraction(settings.ratio, MAX_PHASES);
         let mut adc = Self {
             settings,
             step_v: 2.0 * settings.range_v / f64::from(1u32 << settings.bits),
-            whole: fraction.and_then(|(p, q)| (q == 1).then_some(p)),
-            phases: fraction
-                .filter(|&(_, q)| q > 1)
-                .map(|(p, q)| (phase_weights(q), FractionCounter::new(p, q))),
+            sampling: Sampling::of(settings.ratio),
             received: 0,
             next: 0,
             history: Vec::new(),
@@ -108,7 +129,7 @@ impl Adc {
     pub fn reset(&mut self) {
         self.received = 0;
         self.next = 0;
-        if let Some((_, counter)) = &mut self.phases {
+        if let Sampling::KeptPhases { counter, .. } = &mut self.sampling {
             counter.reset();
         }
         self.history.clear();
@@ -138,14 +159,18 @@ impl Adc {
 
     /// Stream samples the ADC holds back before it can sample (0 when it picks samples).
     pub fn latency(&self) -> usize {
-        if self.whole.is_some() { 0 } else { LOBES }
+        if matches!(self.sampling, Sampling::Pick(_)) {
+            0
+        } else {
+            LOBES
+        }
     }
 
     /// Converts the analogue `input`, appending the ADC samples (V) to `output`.
     pub fn convert(&mut self, input: &[f64], output: &mut Vec<f64>) {
-        match self.whole {
-            Some(m) => self.pick(m, input, output),
-            None => self.interpolate(input, output),
+        match self.sampling {
+            Sampling::Pick(m) => self.pick(m, input, output),
+            _ => self.interpolate(input, output),
         }
     }
 
@@ -170,9 +195,9 @@ impl Adc {
                 if centre + LOBES as u64 >= self.received {
                     break;
                 }
-                let taps = match &self.phases {
-                    Some((weights, counter)) => &weights[counter.phase],
-                    None => {
+                let taps = match &self.sampling {
+                    Sampling::KeptPhases { weights, counter } => &weights[counter.phase],
+                    _ => {
                         let t = self.next as f64 * self.settings.ratio;
                         kernel_weights(t - centre as f64, &mut weights);
                         &weights
@@ -189,16 +214,16 @@ impl Adc {
 
     /// The stream sample at or before the next ADC sample's instant next·ratio.
     fn next_centre(&self) -> u64 {
-        match &self.phases {
-            Some((_, counter)) => counter.whole,
-            None => (self.next as f64 * self.settings.ratio).floor() as u64,
+        match &self.sampling {
+            Sampling::KeptPhases { counter, .. } => counter.whole,
+            _ => (self.next as f64 * self.settings.ratio).floor() as u64,
         }
     }
 
     /// On to the next ADC sample: its centre and phase moved on by p/q where kept.
     fn advance(&mut self) {
         self.next += 1;
-        if let Some((_, counter)) = &mut self.phases {
+        if let Sampling::KeptPhases { counter, .. } = &mut self.sampling {
             counter.advance();
         }
     }
