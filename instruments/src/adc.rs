@@ -196,7 +196,10 @@ impl Adc {
                     break;
                 }
                 let taps = match &self.sampling {
-                    Sampling::KeptPhases { weights, counter } => &weights[counter.phase],
+                    Sampling::KeptPhases {
+                        weights: kept,
+                        counter,
+                    } => &kept[counter.phase],
                     _ => {
                         let t = self.next as f64 * self.settings.ratio;
                         kernel_weights(t - centre as f64, &mut weights);

@@ -63,7 +63,9 @@ const BAND_ROWS: usize = 32;
 /// 24 and a multiple of 4) and the weights `x`, in bands of up to
 /// [`BAND_ROWS`] rows, each summed in registers over every column in one chain: every
 /// row's sum in column order from zero, as one chain over all rows gives it, bit for bit,
-/// without sums that spill to memory (the planetary bench's 56 fused rows).
+/// without sums that spill to memory (the planetary bench's 56 fused rows). A column of
+/// zero weight adds ±0, which changes no sum but a zero one's sign, and that only where
+/// a product underflowed to −0.
 #[inline(always)]
 fn banded(m: &[f64], rows: usize, x: impl Iterator<Item = f64> + Clone, out: &mut [f64]) {
     let mut first = 0;
@@ -104,7 +106,7 @@ fn band<const B: usize>(
 }
 
 /// out[..rows] = M u for M of `rows` rows (a multiple of 4) stored by columns, one column
-/// per state of `u`, columns whose weight is 0 passed over.
+/// per state of `u`.
 pub fn rows(m: &[f64], rows: usize, u: &[f64], out: &mut [f64]) {
     #[cfg(target_arch = "x86_64")]
     if crate::fma::available() {
@@ -121,8 +123,9 @@ fn rows_v3(m: &[f64], rows: usize, u: &[f64], out: &mut [f64]) {
     rows_any(m, rows, u.iter().copied(), out);
 }
 
-/// out[..rows] = M x, M stored by columns, x the states each column stands for; a
-/// column whose weight is 0 adds nothing (its products are ±0) and is passed over.
+/// out[..rows] = M x, M stored by columns, x the states each column stands for. Below 24
+/// rows a column whose weight is 0 is passed over (it would shift the alternation of the
+/// two chains); from 24 rows it is summed, adding ±0, which leaves every sum as it was.
 #[inline(always)]
 fn rows_any(m: &[f64], rows: usize, u: impl Iterator<Item = f64> + Clone, out: &mut [f64]) {
     match rows {
@@ -162,6 +165,7 @@ fn rows_of<const R: usize>(m: &[f64], u: impl Iterator<Item = f64>, out: &mut [f
 /// dozen entries, for which a call to `memcpy` cost the fast run 5 % (measured).
 #[inline(always)]
 pub fn copy_short(dst: &mut [f64], src: &[f64]) {
+    debug_assert_eq!(dst.len(), src.len(), "a short copy between unequal slices");
     let mut to = dst.chunks_exact_mut(4);
     let mut from = src.chunks_exact(4);
     for (d, s) in (&mut to).zip(&mut from) {

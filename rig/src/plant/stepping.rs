@@ -85,7 +85,7 @@ impl NetworkPlant {
             &self.u,
             &mut self.fused_out,
         );
-        self.next[..mechanical].copy_from_slice(&self.fused_out[..mechanical]);
+        products::copy_short(&mut self.next[..mechanical], &self.fused_out[..mechanical]);
         if self.forcing_out.len() < system.forcing_rows {
             self.forcing_out.resize(system.forcing_rows, 0.0);
         }
