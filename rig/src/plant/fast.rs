@@ -167,8 +167,9 @@ impl NetworkPlant {
         RunEnd::Done
     }
 
-    /// Readies the scratch for a fast run's products: room for their rows, and the forcing
-    /// states the run holds copied into `self.next` (its products leave them be).
+    /// Readies the scratch for a fast run's products: room for their rows and for each
+    /// switching function's end, and the forcing states the run holds copied into
+    /// `self.next` (its products leave them be).
     fn prepare_run(&mut self, system: &ModeSystem, run: &RunSpans) {
         if self.fused_out.len() < system.fused_rows {
             self.fused_out.resize(system.fused_rows, 0.0);
@@ -178,6 +179,7 @@ impl NetworkPlant {
         }
         let mechanical = self.model.layout.mechanical();
         self.next[mechanical..].copy_from_slice(&self.u[mechanical..]);
+        self.next_edge.resize(system.events.len(), (0.0, 0.0));
     }
 
     /// Takes the span of `matrix` (a step or a stride of `run`, `span_s` long) from
@@ -198,22 +200,19 @@ impl NetworkPlant {
         self.run_end_state(system, run, matrix);
         let several_steps = span_s > self.step_s;
         let events = system.events.len();
-        let mut next_edge = std::mem::take(&mut self.next_edge);
-        next_edge.resize(events, (0.0, 0.0));
-        let at_end = SpanEnd::of(self, system);
+        let mechanical = self.model.layout.mechanical();
+        let at_end = SpanEnd::new(&self.fused_out, &self.next, mechanical, system);
         let starts = self.edge[..events].iter().zip(&self.targets[..events]);
         let forms = system.events.iter().zip(&system.row_slot);
-        let mut cross = false;
-        for ((end, (&start, &target)), (form, &slot)) in next_edge.iter_mut().zip(starts).zip(forms)
+        for ((end, (&start, &target)), (form, &slot)) in
+            self.next_edge[..events].iter_mut().zip(starts).zip(forms)
         {
             *end = at_end.value_rate(form, slot);
             if may_reach(start, *end, target, span_s, several_steps) {
-                cross = true;
-                break;
+                return true;
             }
         }
-        self.next_edge = next_edge;
-        cross
+        false
     }
 
     /// The state at the end of the span of `matrix` (a step or a stride of `run`) from

@@ -102,12 +102,12 @@ impl NetworkPlant {
 
     /// Each switching function's value and rate at `self.next` into `self.next_edge`.
     fn fill_next_edge(&mut self, system: &ModeSystem) {
-        let mut next_edge = std::mem::take(&mut self.next_edge);
-        let end = SpanEnd::of(self, system);
-        next_edge.clear();
+        let mechanical = self.model.layout.mechanical();
+        let end = SpanEnd::new(&self.fused_out, &self.next, mechanical, system);
+        self.next_edge.clear();
         let forms = system.events.iter().zip(&system.row_slot);
-        next_edge.extend(forms.map(|(form, &slot)| end.value_rate(form, slot)));
-        self.next_edge = next_edge;
+        self.next_edge
+            .extend(forms.map(|(form, &slot)| end.value_rate(form, slot)));
     }
 
     /// Moves to the end of the span just taken: `self.next` and `self.next_edge` become
@@ -354,13 +354,18 @@ pub(super) struct SpanEnd<'a> {
 }
 
 impl<'a> SpanEnd<'a> {
-    /// The end of the span `plant` has just taken in `system`'s mode.
+    /// The end of a span just taken in `system`'s mode, of `mechanical` mechanical
+    /// states: its fused rows `fused_out` and its state `next`.
     #[inline(always)]
-    pub(super) fn of(plant: &'a NetworkPlant, system: &ModeSystem) -> Self {
-        let mechanical = plant.model.layout.mechanical();
+    pub(super) fn new(
+        fused_out: &'a [f64],
+        next: &'a [f64],
+        mechanical: usize,
+        system: &ModeSystem,
+    ) -> Self {
         Self {
-            fused_out: &plant.fused_out,
-            next: &plant.next,
+            fused_out,
+            next,
             values: mechanical,
             rates: mechanical + system.row_events,
         }
