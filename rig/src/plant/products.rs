@@ -68,6 +68,13 @@ const BAND_ROWS: usize = 32;
 /// a product underflowed to −0.
 #[inline(always)]
 fn banded(m: &[f64], rows: usize, x: impl Iterator<Item = f64> + Clone, out: &mut [f64]) {
+    // One band: its shape fixed, the columns' stride known to the compiler.
+    match rows {
+        24 => return band::<24>(m, 24, 0, x, out),
+        28 => return band::<28>(m, 28, 0, x, out),
+        32 => return band::<32>(m, 32, 0, x, out),
+        _ => {}
+    }
     let mut first = 0;
     while rows - first >= BAND_ROWS {
         band::<BAND_ROWS>(m, rows, first, x.clone(), out);
