@@ -193,6 +193,7 @@ pub fn run_rig_point(
     let mut block = NetworkBlock::new(rig);
     let mut window = RigWindow::new(rig, spec.rate_hz);
     let mut left = (spec.duration_s * spec.rate_hz).round() as usize;
+    window.reserve(left);
     while left > 0 {
         let n = left.min(BLOCK);
         block.clear();
@@ -319,6 +320,15 @@ impl RigWindow {
     pub fn without_condition(mut self) -> Self {
         self.watched = None;
         self
+    }
+
+    /// Room for a window of `samples` samples, so that its torques are stored without
+    /// growing ([`GearCondition::reserve`]).
+    pub fn reserve(&mut self, samples: usize) {
+        self.judged_torque.reserve(samples);
+        if self.watched.is_some() {
+            self.condition.reserve(samples);
+        }
     }
 
     /// Adds a block of the window.

@@ -95,7 +95,12 @@ pub fn measure_case(
     let roles = RoleColumns::of(rig);
     let mut measured = MeasuredCondition::new(plan, gauge_of(rig)?.microstrain_per_nm());
     let lead = (lead_s * plan.rate_hz).round() as usize;
-    let total = lead + (plan.measure_s * plan.rate_hz).round() as usize;
+    let measured_samples = (plan.measure_s * plan.rate_hz).round() as usize;
+    let total = lead + measured_samples;
+    window.reserve(measured_samples);
+    if let Some(m) = &mut measured {
+        m.reserve(measured_samples);
+    }
     let mut block = plant.block();
     let mut done = 0;
     while done < total {

@@ -26,6 +26,11 @@ impl MeasuredCondition {
         })
     }
 
+    /// Room for a window of `samples` samples ([`GearCondition::reserve`]).
+    pub fn reserve(&mut self, samples: usize) {
+        self.condition.reserve(samples);
+    }
+
     /// Adds samples at `time_s` of the watched gear's absolute angle (rad) and of the
     /// analyser's input (its unit).
     pub fn add(&mut self, time_s: &[f64], gear_angle_rad: &[f64], signal: &[f64]) {
