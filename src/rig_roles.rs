@@ -151,7 +151,10 @@ impl RoleColumns {
 
 /// The keyphasor's output (V) with the watched gear at `angle_rad`.
 fn keyphasor_v(angle_rad: f64) -> f64 {
-    let turn = (angle_rad / std::f64::consts::TAU).rem_euclid(1.0);
+    // The turn's fraction as `rem_euclid(1.0)` gives it, bit for bit (both round the
+    // same exact t − ⌊t⌋ once), without its `fmod` (2 % of the campaign's time).
+    let turns = angle_rad / std::f64::consts::TAU;
+    let turn = turns - turns.floor();
     if turn < 1.0 / KEYPHASOR_MARK_SHARE {
         KEYPHASOR_HIGH_V
     } else {

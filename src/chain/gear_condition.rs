@@ -23,7 +23,25 @@ pub struct GearCondition {
     start_s: Option<f64>,
     torque_nm: Vec<f64>,
     pulses_s: Vec<f64>,
-    previous: Option<(f64, f64)>,
+    previous: Option<Previous>,
+}
+
+/// The last sample taken: its time (s), the gear's turns and their whole part.
+#[derive(Clone, Copy, Debug)]
+struct Previous {
+    time_s: f64,
+    turns: f64,
+    whole: f64,
+}
+
+impl Previous {
+    fn at(time_s: f64, turns: f64, whole: f64) -> Self {
+        Self {
+            time_s,
+            turns,
+            whole,
+        }
+    }
 }
 
 /// What a window's synchronous average shows.
@@ -65,15 +83,24 @@ impl GearCondition {
     pub fn add_samples(&mut self, time_s: &[f64], gear_angle_rad: &[f64], torque_nm: &[f64]) {
         for (&t, &angle) in time_s.iter().zip(gear_angle_rad) {
             let turns = angle / std::f64::consts::TAU;
-            if let Some((t0, turns0)) = self.previous
-                && turns.floor() > turns0.floor()
-            {
+            let Some(previous) = self.previous else {
+                self.previous = Some(Previous::at(t, turns, turns.floor()));
+                continue;
+            };
+            // ⌊turns⌋, taken only where it may differ from the last sample's (a whole turn
+            // crossed or gone back): a call per sample was 2 % of the campaign's time.
+            let whole = if turns >= previous.whole + 1.0 || turns < previous.whole {
+                turns.floor()
+            } else {
+                previous.whole
+            };
+            if whole > previous.whole {
                 // The crossing of the whole turn between the two samples, linearly.
-                let whole = turns.floor();
+                let (t0, turns0) = (previous.time_s, previous.turns);
                 self.pulses_s
                     .push(t0 + (t - t0) * (whole - turns0) / (turns - turns0));
             }
-            self.previous = Some((t, turns));
+            self.previous = Some(Previous::at(t, turns, whole));
         }
         self.start_s
             .get_or_insert(time_s.first().copied().unwrap_or(0.0));
