@@ -109,8 +109,15 @@ pub fn run_sweep(
         .build()
         .context("cannot start the worker threads")?;
     let started = Instant::now();
-    let failed: Vec<(usize, String)> = pool.install(|| {
-        todo.par_iter()
+    // The longest units (series of the most cases) first, each worker taking the next
+    // when it is free: a long series begun last had kept one worker busy seconds after
+    // the other had finished (the lab campaign's run-up and run-down series).
+    let mut longest_first: Vec<&Vec<&Case>> = todo.iter().collect();
+    longest_first.sort_by_key(|unit| std::cmp::Reverse(unit.len()));
+    let mut failed: Vec<(usize, String)> = pool.install(|| {
+        longest_first
+            .into_iter()
+            .par_bridge()
             .flat_map_iter(|unit| {
                 let stopped = options
                     .stop
@@ -134,6 +141,7 @@ pub fn run_sweep(
             })
             .collect()
     });
+    failed.sort_by_key(|&(index, _)| index);
     bar.finish_and_clear();
     if options
         .stop
