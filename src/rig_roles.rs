@@ -13,7 +13,7 @@ use instruments::ShaftStrain;
 use rig::{Gauge, NetworkBlock, RigTopology};
 
 use crate::chain::ChainStages;
-use crate::chain::watched_gear;
+use crate::chain::{watched_gear, whole_turns};
 use crate::steady_point::judged_shaft;
 use crate::vocabulary::frame::{Frame, SignalNames};
 
@@ -154,7 +154,7 @@ fn keyphasor_v(angle_rad: f64) -> f64 {
     // The turn's fraction as `rem_euclid(1.0)` gives it, bit for bit (both round the
     // same exact t − ⌊t⌋ once), without its `fmod` (2 % of the campaign's time).
     let turns = angle_rad / std::f64::consts::TAU;
-    let turn = turns - turns.floor();
+    let turn = turns - whole_turns(turns);
     if turn < 1.0 / KEYPHASOR_MARK_SHARE {
         KEYPHASOR_HIGH_V
     } else {

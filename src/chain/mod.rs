@@ -45,6 +45,7 @@ pub use analysed::{analyse_analogue, anti_aliased};
 pub use analyser_setup::{AdcChoice, AnalyserSetting, AnalyserSetup, AnalyserWords};
 pub use chain_stages::{ChainStages, WiringError};
 pub use gear_condition::{GearCondition, GearConditionReport};
+pub(crate) use gear_condition::whole_turns;
 pub use inline::InlineChain;
 pub use instrument::Instrument;
 pub use low_pass_words::{LowPassError, LowPassWords};
