@@ -25,14 +25,19 @@ pub fn synchronous_average(
     let last_s = signal.len().saturating_sub(1) as f64 / rate_hz;
     let mut sum = vec![0.0; points];
     let mut revolutions = 0usize;
+    let points_f64 = points as f64;
     for pair in pulses_s.windows(2) {
         let (start, end) = (pair[0], pair[1]);
         if !(start >= 0.0 && end > start && end <= last_s) {
             continue;
         }
-        for (j, total) in sum.iter_mut().enumerate() {
-            let t = start + (end - start) * j as f64 / points as f64;
+        // j counted as a float (whole numbers, exact): a conversion from usize is several
+        // instructions on x86-64.
+        let mut j = 0.0;
+        for total in &mut sum {
+            let t = start + (end - start) * j / points_f64;
             *total += interpolate(signal, t * rate_hz);
+            j += 1.0;
         }
         revolutions += 1;
     }
@@ -49,9 +54,12 @@ pub fn synchronous_average(
 
 /// `signal` at fractional sample position `x` ≥ 0 (linear between neighbours).
 fn interpolate(signal: &[f64], x: f64) -> f64 {
-    // x ≥ 0: truncation is the floor, without a call to `floor` on baseline x86-64.
-    let i = x as usize;
+    // x ≥ 0: truncation is the floor, without a call to `floor` on baseline x86-64; by
+    // i64, one instruction each way (by usize, several), the same values below 2^63
+    // (above, no sample is there either way).
+    let i = x as i64;
     let frac = x - i as f64;
+    let i = i as usize;
     match (signal.get(i), signal.get(i + 1)) {
         (Some(&a), Some(&b)) => a + (b - a) * frac,
         (Some(&a), None) => a,

@@ -224,9 +224,9 @@ mod tests {
 
     #[test]
     fn whole_turns_is_the_floor() {
-        let near_whole = [-3.0, -1.0, 0.0, 1.0, 2.0, 1e6].into_iter().flat_map(|w: f64| {
-            [w, w.next_down(), w.next_up(), w + 0.5, w - 0.5]
-        });
+        let near_whole = [-3.0, -1.0, 0.0, 1.0, 2.0, 1e6]
+            .into_iter()
+            .flat_map(|w: f64| [w, w.next_down(), w.next_up(), w + 0.5, w - 0.5]);
         let spread = (-2000..2000).map(|k| f64::from(k) * 0.013_7);
         for turns in near_whole.chain(spread) {
             assert_eq!(whole_turns(turns), turns.floor(), "{turns:e}");
