@@ -67,22 +67,6 @@ impl Frame {
     pub fn is_empty(&self) -> bool {
         self.len() == 0
     }
-
-    /// A copy of this frame with `channel` added at the end.
-    pub fn with(&self, channel: Vec<f64>) -> Self {
-        let mut channels = Vec::with_capacity(self.channels.len() + 1);
-        channels.extend(self.channels.iter().cloned());
-        channels.push(channel.into());
-        Self {
-            seq: self.seq,
-            start_sample: self.start_sample,
-            channels,
-            impacts: self.impacts.clone(),
-            commands: Arc::clone(&self.commands),
-            set_points: self.set_points,
-            points: Arc::clone(&self.points),
-        }
-    }
 }
 
 /// Names of a run's channels in frame order; every stage appends the one it produces.
