@@ -129,11 +129,12 @@ impl RoleColumns {
         start: u64,
         columns: &[usize],
     ) -> Frame {
+        // Each channel copied once, into the frame's own Arc.
         let mut frame = Frame::of_channels(vec![
-            block.time_s.clone(),
-            block.shaft_torque_nm[self.gauged_shaft].clone(),
-            block.speed_rad_s[self.tacho].clone(),
-            block.speed_rad_s[self.slip_ring_body].clone(),
+            block.time_s.as_slice().into(),
+            block.shaft_torque_nm[self.gauged_shaft].as_slice().into(),
+            block.speed_rad_s[self.tacho].as_slice().into(),
+            block.speed_rad_s[self.slip_ring_body].as_slice().into(),
             block.angle_rad[self.watched_gear]
                 .iter()
                 .map(|&angle| keyphasor_v(angle))

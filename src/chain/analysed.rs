@@ -33,7 +33,7 @@ pub fn anti_aliased(
     let stages = ChainStages::ordered_on(vec![stage], &names)?
         .build(rate_hz, &mut names)
         .context("the anti-alias filter")?;
-    let frame = InlineChain::new(stages).process(Frame::of_channels(vec![samples.to_vec()]));
+    let frame = InlineChain::new(stages).process(Frame::of_channels(vec![samples.into()]));
     Ok(frame.channels[1].to_vec())
 }
 

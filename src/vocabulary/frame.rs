@@ -33,11 +33,11 @@ pub struct Frame {
 impl Frame {
     /// A frame of the signals `channels` from the stream's start, without impacts,
     /// commands or set points (a recording's channels).
-    pub fn of_channels(channels: Vec<Vec<f64>>) -> Self {
+    pub fn of_channels(channels: Vec<Arc<[f64]>>) -> Self {
         Self {
             seq: 0,
             start_sample: 0,
-            channels: channels.into_iter().map(Arc::from).collect(),
+            channels,
             impacts: Arc::new([]),
             commands: Arc::new([]),
             set_points: None,
