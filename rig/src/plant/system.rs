@@ -107,7 +107,9 @@ struct ModeSpans {
 /// the forcing states': the forcing states read only one another, so A is block upper
 /// triangular and its eigenvalues are the blocks' together. Two small eigenproblems cost
 /// a fraction of the whole one (cubic in the size: a sixth on the 1983 rig). Should a
-/// forcing state read a mechanical one, the whole.
+/// forcing state read a mechanical one, the whole. The two may differ from the whole
+/// one's ρ in rounding; ρ only sets thresholds (the Taylor order, strides, whole periods),
+/// and the campaign's and the lab campaign's files came out byte-identical.
 fn block_spectral_radius(a: &DMatrix<f64>, mechanical: usize) -> f64 {
     let n = a.nrows();
     let lower_left = a.view((mechanical, 0), (n - mechanical, mechanical));
