@@ -17,7 +17,7 @@ use super::events::edge_values;
 use super::network_plant::NetworkPlant;
 use super::products;
 use super::run_spans::RunSpans;
-use super::stepping::{SpanEnd, may_reach};
+use super::stepping::{fill_angle_rows, may_reach};
 use super::system::{ModeSystem, SpanMatrix};
 use super::system_cache::SystemCache;
 
@@ -171,8 +171,8 @@ impl NetworkPlant {
     /// switching function's end, and the forcing states the run holds copied into
     /// `self.next` (its products leave them be).
     fn prepare_run(&mut self, system: &ModeSystem, run: &RunSpans) {
-        if self.fused_out.len() < system.fused_rows {
-            self.fused_out.resize(system.fused_rows, 0.0);
+        if self.fused_out.len() < system.end_rows() {
+            self.fused_out.resize(system.end_rows(), 0.0);
         }
         if self.forcing_out.len() < run.moving_rows {
             self.forcing_out.resize(run.moving_rows, 0.0);
@@ -200,16 +200,29 @@ impl NetworkPlant {
         self.run_end_state(system, run, matrix);
         let several_steps = span_s > self.step_s;
         let events = system.events.len();
-        let mechanical = self.model.layout.mechanical();
-        let at_end = SpanEnd::new(&self.fused_out, &self.next, mechanical, system);
+        fill_angle_rows(system, &self.next, &mut self.fused_out);
+        let unit = self.next[self.model.layout.unit()];
+        let rows = &self.fused_out[..system.end_rows()];
         let starts = self.edge[..events].iter().zip(&self.targets[..events]);
-        let forms = system.events.iter().zip(&system.row_slot);
-        for ((end, (&start, &target)), (form, &slot)) in
-            self.next_edge[..events].iter_mut().zip(starts).zip(forms)
-        {
-            *end = at_end.value_rate(form, slot);
-            if may_reach(start, *end, target, span_s, several_steps) {
-                return true;
+        let ends = self.next_edge[..events]
+            .iter_mut()
+            .zip(starts)
+            .zip(&system.ends);
+        // One loop for spans of one step and one for spans of several, each with its
+        // own check.
+        if several_steps {
+            for ((end, (&start, &target)), read) in ends {
+                *end = read.read(rows, unit);
+                if may_reach(start, *end, target, span_s, true) {
+                    return true;
+                }
+            }
+        } else {
+            for ((end, (&start, &target)), read) in ends {
+                *end = read.read(rows, unit);
+                if may_reach(start, *end, target, span_s, false) {
+                    return true;
+                }
             }
         }
         false

@@ -14,7 +14,8 @@
 //! `system_matrix.rs` A of u' = A u per mode, `drive_model.rs` the motor's and the brake's (drag, characteristic), `mesh_model.rs` a mesh's constants (its pair zones,
 //! its faulted teeth's factors). `events.rs` the switching functions of a mode.
 //! `system.rs` per mode the fused step (e^{A h}'s mechanical rows with the fixed-target
-//! functions' values and rates) and the events, `system_cache.rs` them built on first
+//! functions' values and rates) and the events, `span_ends.rs` where each function's end
+//! comes from (a row, or an angle the set rotation's functions share), `system_cache.rs` them built on first
 //! use and kept; `run_spans.rs` them folded for a fast run, the forcing states that hold
 //! still in one column.
 //! `equilibrium.rs` the steady state at a set speed and load (and at rest, a loop's
@@ -44,6 +45,7 @@ mod ring_sensor;
 mod run_spans;
 mod run_up;
 mod segment;
+mod span_ends;
 mod stepping;
 mod system;
 mod system_cache;

@@ -76,8 +76,8 @@ impl NetworkPlant {
     /// advanced apart), `self.next_edge` each switching function's value and rate there.
     pub(super) fn fused_step(&mut self, system: &ModeSystem) {
         let mechanical = self.model.layout.mechanical();
-        if self.fused_out.len() < system.fused_rows {
-            self.fused_out.resize(system.fused_rows, 0.0);
+        if self.fused_out.len() < system.end_rows() {
+            self.fused_out.resize(system.end_rows(), 0.0);
         }
         products::rows(
             &system.step.fused,
@@ -102,12 +102,15 @@ impl NetworkPlant {
 
     /// Each switching function's value and rate at `self.next` into `self.next_edge`.
     fn fill_next_edge(&mut self, system: &ModeSystem) {
-        let mechanical = self.model.layout.mechanical();
-        let end = SpanEnd::new(&self.fused_out, &self.next, mechanical, system);
+        fill_angle_rows(system, &self.next, &mut self.fused_out);
+        let unit = self.next[self.model.layout.unit()];
         self.next_edge.clear();
-        let forms = system.events.iter().zip(&system.row_slot);
-        self.next_edge
-            .extend(forms.map(|(form, &slot)| end.value_rate(form, slot)));
+        self.next_edge.extend(
+            system
+                .ends
+                .iter()
+                .map(|read| read.read(&self.fused_out, unit)),
+        );
     }
 
     /// Moves to the end of the span just taken: `self.next` and `self.next_edge` become
@@ -344,43 +347,14 @@ impl NetworkPlant {
     }
 }
 
-/// Where a span's end is read: a row event's value and rate from the fused rows just
-/// taken (`fused_out`), another function's from the state there (`next`).
-pub(super) struct SpanEnd<'a> {
-    fused_out: &'a [f64],
-    next: &'a [f64],
-    values: usize,
-    rates: usize,
-}
-
-impl<'a> SpanEnd<'a> {
-    /// The end of a span just taken in `system`'s mode, of `mechanical` mechanical
-    /// states: its fused rows `fused_out` and its state `next`.
-    #[inline(always)]
-    pub(super) fn new(
-        fused_out: &'a [f64],
-        next: &'a [f64],
-        mechanical: usize,
-        system: &ModeSystem,
-    ) -> Self {
-        Self {
-            fused_out,
-            next,
-            values: mechanical,
-            rates: mechanical + system.row_events,
-        }
-    }
-
-    /// The value and rate of `form` (row event `slot`, if one) there.
-    #[inline(always)]
-    pub(super) fn value_rate(&self, form: &EventForm, slot: Option<usize>) -> (f64, f64) {
-        match slot {
-            Some(j) => (
-                self.fused_out[self.values + j],
-                self.fused_out[self.rates + j],
-            ),
-            None => (form.value(self.next), form.rate(self.next)),
-        }
+/// Writes each distinct angle of `system`'s mode (`span_ends.rs`) at the state `next`
+/// into the end rows after the fused rows, `end_rows` (as long as
+/// [`ModeSystem::end_rows`]): every function's end is then read from them.
+#[inline(always)]
+pub(super) fn fill_angle_rows(system: &ModeSystem, next: &[f64], end_rows: &mut [f64]) {
+    let rows = end_rows[system.fused_rows..system.end_rows()].chunks_exact_mut(2);
+    for (row, angle) in rows.zip(&system.angles) {
+        (row[0], row[1]) = angle.value_rate(next);
     }
 }
 

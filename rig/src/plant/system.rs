@@ -10,13 +10,14 @@ use super::events::{EventForm, event_forms};
 use super::mode::NetMode;
 use super::model::{NetworkModel, SegmentRates};
 use super::output::OutputForms;
+use super::span_ends::{EndRead, SharedAngle, SpanEnds, span_ends};
 
 /// e^{A τ} of one mode over one span τ (a step, or a stride of steps), as its products
 /// take it.
 #[derive(Clone, Debug)]
 pub struct SpanMatrix {
     /// Column-major with `fused_rows` rows a column (see [`ModeSystem::fused_rows`]): the
-    /// mechanical rows of e^{A τ}, then the value and then the rate of each row event (a
+    /// mechanical rows of e^{A τ}, then the value and the rate of each row event side by side (a
     /// switching function of fixed target) at the span's end; one column per state, or,
     /// folded for a fast run, per state its `RunSpans` reads.
     pub fused: Vec<f64>,
@@ -56,12 +57,12 @@ pub struct ModeSystem {
     pub period: Option<SpanMatrix>,
     /// Rows of each column of a span's `fused` (a multiple of 4).
     pub fused_rows: usize,
-    /// Per switching function, its slot among the row events (its value at row
-    /// mechanical + slot of the fused step, its rate `row_events` rows further), or
-    /// `None` for a function of the set rotation (its target moves: evaluated apart).
-    pub row_slot: Vec<Option<usize>>,
-    /// Number of row events.
-    pub row_events: usize,
+    /// Per switching function, how its value and rate at a span's end are read from the
+    /// end rows: a row event's from the fused rows, a function of the set rotation's (its
+    /// target moves: evaluated apart) from one of `angles` (`span_ends.rs`).
+    pub ends: Vec<EndRead>,
+    /// The distinct angles the functions of the set rotation read.
+    pub angles: Vec<SharedAngle>,
     /// Rows of each column of a span's `forcing` (the forcing states, rounded up to a
     /// multiple of 4).
     pub forcing_rows: usize,
@@ -72,6 +73,11 @@ pub struct ModeSystem {
 }
 
 impl ModeSystem {
+    /// Rows of a span's end: the fused rows, then each distinct angle's value and rate.
+    pub fn end_rows(&self) -> usize {
+        self.fused_rows + 2 * self.angles.len()
+    }
+
     /// The system of `mode` of `model` for set points of `rates`, stepped by `step_s`
     /// (`substeps` steps an output period), its matrices balanced for ρ = `rho` (rad/s,
     /// the fastest rate of any mode).
@@ -132,17 +138,12 @@ fn mode_system(
     outputs: OutputForms,
 ) -> ModeSystem {
     let l = &model.layout;
-    let mut row_slot = Vec::with_capacity(events.len());
-    let mut forms: Vec<&EventForm> = Vec::new();
-    for form in &events {
-        let moving = form.terms.iter().any(|&(i, _)| i == l.phase());
-        row_slot.push((!moving).then_some(forms.len()));
-        if !moving {
-            forms.push(form);
-        }
-    }
-    let row_events = forms.len();
-    let fused_rows = (l.mechanical() + 2 * row_events).div_ceil(4) * 4;
+    let SpanEnds {
+        reads: ends,
+        rows: forms,
+        angles,
+        fused_rows,
+    } = span_ends(&events, l.mechanical(), l.phase(), l.unit());
     let forcing_rows = (l.len() - l.mechanical()).div_ceil(4) * 4;
     let matrix = |span: &DMatrix<f64>| span_matrix(model, span, &forms, fused_rows, forcing_rows);
     let step = matrix(&spans.step);
@@ -157,8 +158,8 @@ fn mode_system(
         stride,
         period: spans.period.as_ref().map(matrix),
         fused_rows,
-        row_slot,
-        row_events,
+        ends,
+        angles,
         forcing_rows,
         events,
         outputs,
@@ -166,7 +167,7 @@ fn mode_system(
 }
 
 /// The products' form of e^{A τ} = `span`: its fused rows (mechanical rows, then the row
-/// events' values and rates by `forms`) and its forcing block.
+/// events' value and rate side by side, by `forms`) and its forcing block.
 fn span_matrix(
     model: &NetworkModel,
     span: &DMatrix<f64>,
@@ -176,7 +177,6 @@ fn span_matrix(
 ) -> SpanMatrix {
     let l = &model.layout;
     let mechanical = l.mechanical();
-    let row_events = forms.len();
     let mut fused = vec![0.0; fused_rows * l.padded()];
     let times_span = |terms: &[(usize, f64)], col: usize| -> f64 {
         terms.iter().map(|&(i, c)| c * span[(i, col)]).sum()
@@ -187,8 +187,8 @@ fn span_matrix(
             *entry = span[(row, col)];
         }
         for (j, form) in forms.iter().enumerate() {
-            column[mechanical + j] = times_span(&form.terms, col);
-            column[mechanical + row_events + j] = times_span(&form.slope, col);
+            column[mechanical + 2 * j] = times_span(&form.terms, col);
+            column[mechanical + 2 * j + 1] = times_span(&form.slope, col);
         }
     }
     let forcing = span.nrows() - mechanical;
