@@ -97,12 +97,6 @@ impl EventForm {
     }
 }
 
-/// Each of `forms`' value and rate at the state `u`, into `out` (emptied first).
-pub fn edge_values(forms: &[EventForm], u: &[f64], out: &mut Vec<(f64, f64)>) {
-    out.clear();
-    out.extend(forms.iter().map(|form| (form.value(u), form.rate(u))));
-}
-
 /// The switching functions of `mode` with A = `a`, the meshes' harmonic pairs turning
 /// with the set speed `speed_rad_s`.
 pub fn event_forms(

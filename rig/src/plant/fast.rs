@@ -13,11 +13,10 @@
 use crate::error::RigError;
 
 use super::block::NetworkBlock;
-use super::events::edge_values;
 use super::network_plant::NetworkPlant;
 use super::products;
 use super::run_spans::RunSpans;
-use super::stepping::{fill_angle_rows, may_reach};
+use super::stepping::may_reach;
 use super::system::{ModeSystem, SpanMatrix};
 use super::system_cache::SystemCache;
 
@@ -116,7 +115,12 @@ impl NetworkPlant {
         let (system, run) = cache.get_run(&self.model, &self.mode, &self.u);
         self.fill_targets(system);
         if self.edge.len() != system.events.len() {
-            edge_values(&system.events, &self.u, &mut self.edge);
+            system.ends_at(
+                &self.u,
+                self.model.layout.unit(),
+                &mut self.fused_out,
+                &mut self.edge,
+            );
         }
         self.prepare_run(system, run);
         let stop = self.fast_stop(limit);
@@ -200,7 +204,7 @@ impl NetworkPlant {
         self.run_end_state(system, run, matrix);
         let several_steps = span_s > self.step_s;
         let events = system.events.len();
-        fill_angle_rows(system, &self.next, &mut self.fused_out);
+        system.write_angle_rows(&self.next, &mut self.fused_out);
         let unit = self.next[self.model.layout.unit()];
         let rows = &self.fused_out[..system.end_rows()];
         let starts = self.edge[..events].iter().zip(&self.targets[..events]);

@@ -21,7 +21,7 @@ pub fn gathered(m: &[f64], rows: usize, columns: &[usize], u: &[f64], out: &mut 
         12 => gathered_of::<12>(m, columns, u, out),
         16 => gathered_of::<16>(m, columns, u, out),
         20 => gathered_of::<20>(m, columns, u, out),
-        _ => banded(m, rows, columns.iter().map(|&i| u[i]), out),
+        _ => banded(m, rows, columns.iter().map(|&i| u[i]), 1.0, out),
     }
 }
 
@@ -59,7 +59,7 @@ fn gathered_of<const R: usize>(m: &[f64], columns: &[usize], u: &[f64], out: &mu
 /// as two FMA units of four cycles' latency take, and room left in the sixteen registers.
 const BAND_ROWS: usize = 32;
 
-/// out[..rows] = Σ column · x over M's columns (`rows` rows each, `rows` ≥
+/// out[..rows] = (Σ column · x) · `scale` over M's columns (`rows` rows each, `rows` ≥
 /// 24 and a multiple of 4) and the weights `x`, in bands of up to
 /// [`BAND_ROWS`] rows, each summed in registers over every column in one chain: every
 /// row's sum in column order from zero, as one chain over all rows gives it, bit for bit,
@@ -67,40 +67,47 @@ const BAND_ROWS: usize = 32;
 /// zero weight adds ±0, which changes no sum but a zero one's sign, and that only where
 /// a product underflowed to −0.
 #[inline(always)]
-fn banded(m: &[f64], rows: usize, x: impl Iterator<Item = f64> + Clone, out: &mut [f64]) {
+fn banded(
+    m: &[f64],
+    rows: usize,
+    x: impl Iterator<Item = f64> + Clone,
+    scale: f64,
+    out: &mut [f64],
+) {
     // One band: its shape fixed, the columns' stride known to the compiler.
     match rows {
-        24 => return band::<24>(m, 24, 0, x, out),
-        28 => return band::<28>(m, 28, 0, x, out),
-        32 => return band::<32>(m, 32, 0, x, out),
+        24 => return band::<24>(m, 24, 0, x, scale, out),
+        28 => return band::<28>(m, 28, 0, x, scale, out),
+        32 => return band::<32>(m, 32, 0, x, scale, out),
         _ => {}
     }
     let mut first = 0;
     while rows - first >= BAND_ROWS {
-        band::<BAND_ROWS>(m, rows, first, x.clone(), out);
+        band::<BAND_ROWS>(m, rows, first, x.clone(), scale, out);
         first += BAND_ROWS;
     }
     match rows - first {
         0 => {}
-        4 => band::<4>(m, rows, first, x, out),
-        8 => band::<8>(m, rows, first, x, out),
-        12 => band::<12>(m, rows, first, x, out),
-        16 => band::<16>(m, rows, first, x, out),
-        20 => band::<20>(m, rows, first, x, out),
-        24 => band::<24>(m, rows, first, x, out),
-        28 => band::<28>(m, rows, first, x, out),
+        4 => band::<4>(m, rows, first, x, scale, out),
+        8 => band::<8>(m, rows, first, x, scale, out),
+        12 => band::<12>(m, rows, first, x, scale, out),
+        16 => band::<16>(m, rows, first, x, scale, out),
+        20 => band::<20>(m, rows, first, x, scale, out),
+        24 => band::<24>(m, rows, first, x, scale, out),
+        28 => band::<28>(m, rows, first, x, scale, out),
         _ => unreachable!("a product's rows are a multiple of 4"),
     }
 }
 
 /// out[first..first + B] = the rows `first..first + B` of Σ column · x over M's columns
-/// (`rows` rows each), summed in one chain from zero in column order.
+/// (`rows` rows each), summed in one chain from zero in column order, times `scale`.
 #[inline(always)]
 fn band<const B: usize>(
     m: &[f64],
     rows: usize,
     first: usize,
     x: impl Iterator<Item = f64>,
+    scale: f64,
     out: &mut [f64],
 ) {
     let mut sum = [0.0; B];
@@ -109,39 +116,48 @@ fn band<const B: usize>(
             *s = a.mul_add(x, *s);
         }
     }
-    out[first..first + B].copy_from_slice(&sum);
+    for (o, s) in out[first..first + B].iter_mut().zip(sum) {
+        *o = s * scale;
+    }
 }
 
-/// out[..rows] = M u for M of `rows` rows (a multiple of 4) stored by columns, one column
-/// per state of `u`.
-pub fn rows(m: &[f64], rows: usize, u: &[f64], out: &mut [f64]) {
+/// out[..rows] = (M u) · `scale` for M of `rows` rows (a multiple of 4) stored by
+/// columns, one column per state of `u`: each row's sum, then times `scale` (1 leaves it
+/// as it is; a Taylor vector's τ/k, applied in registers).
+pub fn rows(m: &[f64], rows: usize, u: &[f64], scale: f64, out: &mut [f64]) {
     #[cfg(target_arch = "x86_64")]
     if crate::fma::available() {
         // SAFETY: the CPU has AVX2 and FMA, checked at run time.
-        return unsafe { rows_v3(m, rows, u, out) };
+        return unsafe { rows_v3(m, rows, u, scale, out) };
     }
-    rows_any(m, rows, u.iter().copied(), out);
+    rows_any(m, rows, u.iter().copied(), scale, out);
 }
 
 /// [`rows_any`] compiled for AVX2 and FMA.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
-fn rows_v3(m: &[f64], rows: usize, u: &[f64], out: &mut [f64]) {
-    rows_any(m, rows, u.iter().copied(), out);
+fn rows_v3(m: &[f64], rows: usize, u: &[f64], scale: f64, out: &mut [f64]) {
+    rows_any(m, rows, u.iter().copied(), scale, out);
 }
 
-/// out[..rows] = M x, M stored by columns, x the states each column stands for. Below 24
+/// out[..rows] = (M x) · `scale`, M stored by columns, x the states each column stands for. Below 24
 /// rows a column whose weight is 0 is passed over (it would shift the alternation of the
 /// two chains); from 24 rows it is summed, adding ±0, which leaves every sum as it was.
 #[inline(always)]
-fn rows_any(m: &[f64], rows: usize, u: impl Iterator<Item = f64> + Clone, out: &mut [f64]) {
+fn rows_any(
+    m: &[f64],
+    rows: usize,
+    u: impl Iterator<Item = f64> + Clone,
+    scale: f64,
+    out: &mut [f64],
+) {
     match rows {
-        4 => rows_of::<4>(m, u, out),
-        8 => rows_of::<8>(m, u, out),
-        12 => rows_of::<12>(m, u, out),
-        16 => rows_of::<16>(m, u, out),
-        20 => rows_of::<20>(m, u, out),
-        _ => banded(m, rows, u, out),
+        4 => rows_of::<4>(m, u, scale, out),
+        8 => rows_of::<8>(m, u, scale, out),
+        12 => rows_of::<12>(m, u, scale, out),
+        16 => rows_of::<16>(m, u, scale, out),
+        20 => rows_of::<20>(m, u, scale, out),
+        _ => banded(m, rows, u, scale, out),
     }
 }
 
@@ -149,7 +165,7 @@ fn rows_any(m: &[f64], rows: usize, u: impl Iterator<Item = f64> + Clone, out: &
 /// registers over the columns (a fixed shape the compiler unrolls), in two chains taken
 /// alternately over the columns of nonzero weight.
 #[inline(always)]
-fn rows_of<const R: usize>(m: &[f64], u: impl Iterator<Item = f64>, out: &mut [f64]) {
+fn rows_of<const R: usize>(m: &[f64], u: impl Iterator<Item = f64>, scale: f64, out: &mut [f64]) {
     let (mut even, mut odd) = ([0.0; R], [0.0; R]);
     let mut columns = m.chunks_exact(R).zip(u).filter(|&(_, x)| x != 0.0);
     while let Some((c0, x0)) = columns.next() {
@@ -164,7 +180,7 @@ fn rows_of<const R: usize>(m: &[f64], u: impl Iterator<Item = f64>, out: &mut [f
         }
     }
     for ((o, e), d) in out[..R].iter_mut().zip(even).zip(odd) {
-        *o = e + d;
+        *o = (e + d) * scale;
     }
 }
 
@@ -231,7 +247,7 @@ mod tests {
                 );
                 let x = entries(columns, 7 + columns as u64);
                 let mut out = vec![f64::NAN; rows_count];
-                rows(&m, rows_count, &x, &mut out);
+                rows(&m, rows_count, &x, 1.0, &mut out);
                 for (r, &o) in out.iter().enumerate() {
                     let want = reference(&m, rows_count, &x, r);
                     assert_eq!(o.to_bits(), want.to_bits(), "{rows_count} rows, row {r}");
@@ -253,7 +269,7 @@ mod tests {
             // alternation of chains, which the gathered one does not skip.
             assert!(x.iter().all(|&v| v != 0.0));
             let mut dense = vec![f64::NAN; rows_count];
-            rows(&m, rows_count, &x, &mut dense);
+            rows(&m, rows_count, &x, 1.0, &mut dense);
             for (r, (&g, &d)) in out.iter().zip(&dense).enumerate() {
                 assert_eq!(g.to_bits(), d.to_bits(), "{rows_count} rows, row {r}");
             }

@@ -13,7 +13,7 @@ use crate::roots::{DUE_NOW, first_crossing, may_cross, may_cross_span};
 use crate::taylor::{TAYLOR_ORDER, taylor_order};
 
 use super::block::NetworkImpact;
-use super::events::{EventForm, NetEvent, Target, edge_values};
+use super::events::{EventForm, NetEvent, Target};
 use super::mode::{Contact, MeshState};
 use super::network_plant::NetworkPlant;
 use super::products;
@@ -51,7 +51,12 @@ impl NetworkPlant {
             } else {
                 self.expand(system, span_s);
                 evaluate(&self.taylor[..=self.taylor_order], 1.0, &mut self.next);
-                edge_values(&system.events, &self.next, &mut self.next_edge);
+                system.ends_at(
+                    &self.next,
+                    self.model.layout.unit(),
+                    &mut self.fused_out,
+                    &mut self.next_edge,
+                );
             }
             let Some((s, event)) = self.first_switch(system, span_s, left == 1.0) else {
                 self.take_span_end();
@@ -83,6 +88,7 @@ impl NetworkPlant {
             &system.step.fused,
             system.fused_rows,
             &self.u,
+            1.0,
             &mut self.fused_out,
         );
         products::copy_short(&mut self.next[..mechanical], &self.fused_out[..mechanical]);
@@ -94,6 +100,7 @@ impl NetworkPlant {
             &system.step.forcing,
             system.forcing_rows,
             &self.u[mechanical..],
+            1.0,
             &mut self.forcing_out,
         );
         self.next[mechanical..mechanical + forcing].copy_from_slice(&self.forcing_out[..forcing]);
@@ -102,7 +109,7 @@ impl NetworkPlant {
 
     /// Each switching function's value and rate at `self.next` into `self.next_edge`.
     fn fill_next_edge(&mut self, system: &ModeSystem) {
-        fill_angle_rows(system, &self.next, &mut self.fused_out);
+        system.write_angle_rows(&self.next, &mut self.fused_out);
         let unit = self.next[self.model.layout.unit()];
         self.next_edge.clear();
         self.next_edge.extend(
@@ -289,11 +296,8 @@ impl NetworkPlant {
         for k in 1..=self.taylor_order {
             let (done, rest) = self.taylor.split_at_mut(k);
             let out = &mut rest[0];
-            products::rows(&system.a_columns, out.len(), &done[k - 1], out);
             let scale = span_s / k as f64;
-            for x in out.iter_mut() {
-                *x *= scale;
-            }
+            products::rows(&system.a_columns, out.len(), &done[k - 1], scale, out);
         }
     }
 
@@ -344,17 +348,6 @@ impl NetworkPlant {
                 self.next_revolution_rad += 2.0 * PI;
             }
         }
-    }
-}
-
-/// Writes each distinct angle of `system`'s mode (`span_ends.rs`) at the state `next`
-/// into the end rows after the fused rows, `end_rows` (as long as
-/// [`ModeSystem::end_rows`]): every function's end is then read from them.
-#[inline(always)]
-pub(super) fn fill_angle_rows(system: &ModeSystem, next: &[f64], end_rows: &mut [f64]) {
-    let rows = end_rows[system.fused_rows..system.end_rows()].chunks_exact_mut(2);
-    for (row, angle) in rows.zip(&system.angles) {
-        (row[0], row[1]) = angle.value_rate(next);
     }
 }
 

@@ -78,6 +78,44 @@ impl ModeSystem {
         self.fused_rows + 2 * self.angles.len()
     }
 
+    /// Writes each distinct angle (`span_ends.rs`) at the state `next` into the end rows
+    /// after the fused rows, `end_rows` (at least [`Self::end_rows`] long): every
+    /// function's end is then read from them.
+    #[inline(always)]
+    pub fn write_angle_rows(&self, next: &[f64], end_rows: &mut [f64]) {
+        let rows = end_rows[self.fused_rows..self.end_rows()].chunks_exact_mut(2);
+        for (row, angle) in rows.zip(&self.angles) {
+            (row[0], row[1]) = angle.value_rate(next);
+        }
+    }
+
+    /// Each switching function's value and rate at the state `u` (its unit state at index
+    /// `unit`) into `out`, read as at a span's end from `end_rows` (scratch, grown to [`Self::end_rows`]), filled here
+    /// with each row event's own sums and each distinct angle's: the values
+    /// [`EventForm::value`] and [`EventForm::rate`] give, each shared angle evaluated
+    /// once.
+    pub fn ends_at(
+        &self,
+        u: &[f64],
+        unit: usize,
+        end_rows: &mut Vec<f64>,
+        out: &mut Vec<(f64, f64)>,
+    ) {
+        if end_rows.len() < self.end_rows() {
+            end_rows.resize(self.end_rows(), 0.0);
+        }
+        for (form, read) in self.events.iter().zip(&self.ends) {
+            if read.row < self.fused_rows {
+                end_rows[read.row] = form.value(u);
+                end_rows[read.row + 1] = form.rate(u);
+            }
+        }
+        self.write_angle_rows(u, end_rows);
+        let unit = u[unit];
+        out.clear();
+        out.extend(self.ends.iter().map(|read| read.read(end_rows, unit)));
+    }
+
     /// The system of `mode` of `model` for set points of `rates`, stepped by `step_s`
     /// (`substeps` steps an output period), its matrices balanced for ρ = `rho` (rad/s,
     /// the fastest rate of any mode).
