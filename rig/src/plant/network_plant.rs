@@ -81,8 +81,9 @@ pub struct NetworkPlant {
     pub(super) edge: Vec<(f64, f64)>,
     /// The same at the step's end.
     pub(super) next_edge: Vec<(f64, f64)>,
-    /// Scratch: the step's end state, the fused step's rows, the forcing states' rows and
-    /// the Taylor vectors.
+    /// Scratch: the step's end state, the span's end rows (the fused step's rows, then
+    /// each shared angle's value and rate: at least `ModeSystem::end_rows` long where
+    /// read), the forcing states' rows and the Taylor vectors.
     pub(super) next: Vec<f64>,
     pub(super) fused_out: Vec<f64>,
     pub(super) forcing_out: Vec<f64>,

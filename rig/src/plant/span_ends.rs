@@ -3,17 +3,18 @@
 //! rotation (its target moves) from the few angles such functions read. A mesh's zone
 //! end and zone start read its driver's angle with opposite signs and its tooth pass the
 //! same angle; a planetary stage's sun meshes all read the sun's turn against the
-//! carrier, each with its own phase as a last term on the unit state. Each distinct angle
-//! is evaluated once a span: on the planetary bench 5 evaluations for its 13 such
-//! functions.
+//! carrier, each with its own offset (the planet's place, `zone_offset_rad`) as a last
+//! term on the unit state. Each distinct angle is evaluated once a span: on the planetary
+//! bench, every mesh in contact, 5 evaluations (the sun's turn, each planet's, the
+//! revolution) for its 13 such functions.
 //!
 //! Each function's end is read the same way, without a branch ([`EndRead`]): a signed
 //! row plus its last term. A function that reads angle a, negated or not, with or
 //! without a last term c·1, has the value ±(Σ terms of a) + c·1 and the rate
 //! ±(Σ slope of a): the sums its own sparse terms give, bit for bit (a negated product
-//! and a negated sum round alike), but for the sign of a value or rate that is exactly
-//! zero. Functions are grouped only where their terms and slopes are those of the angle
-//! to the bit.
+//! and a negated sum round alike; Rust's sum of f64 starts from −0), but for the sign of
+//! a value or rate that is exactly zero. Functions are grouped only where their terms and
+//! slopes are those of the angle to the bit.
 
 use super::events::EventForm;
 
@@ -21,7 +22,8 @@ use super::events::EventForm;
 /// end rows (the fused product's rows, then each distinct angle's value and rate, each
 /// value with its rate in the next row): value = `sign` · rows[`row`] + `last` · u_unit,
 /// rate = `sign` · rows[`row` + 1]. A row event reads its own rows with sign 1 and last
-/// −0 (which adds nothing to any value, −0 included): its fused rows exactly.
+/// −0: with the unit state positive and finite (it holds 1), −0 · u_unit = −0 adds
+/// nothing to any value, −0, +0 and NaN included, so it reads its fused rows exactly.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct EndRead {
     /// The row of its value (a row event's, or its angle's); its rate's is the next.
@@ -263,6 +265,32 @@ mod tests {
                 form.event
             );
             assert_eq!(rate.to_bits(), form.rate(&u).to_bits(), "{:?}", form.event);
+        }
+    }
+
+    #[test]
+    fn a_row_event_reads_its_rows_exactly_zeros_and_nan_included() {
+        let (mechanical, phase, unit) = (2, 10, 11);
+        let events = vec![form(NetEvent::Leave(0), vec![(1, 2.0)], vec![(5, 2.0)])];
+        let ends = span_ends(&events, mechanical, phase, unit);
+        let [read] = ends.reads[..] else {
+            panic!("one function, one read");
+        };
+        for value in [
+            0.0,
+            -0.0,
+            f64::NAN,
+            -f64::NAN,
+            f64::INFINITY,
+            -3.5e-310,
+            7.25,
+        ] {
+            let mut rows = vec![f64::NAN; ends.fused_rows];
+            rows[read.row] = value;
+            rows[read.row + 1] = -value;
+            let (v, r) = read.read(&rows, 1.0);
+            assert_eq!(v.to_bits(), value.to_bits(), "value {value:e}");
+            assert_eq!(r.to_bits(), (-value).to_bits(), "rate {:e}", -value);
         }
     }
 

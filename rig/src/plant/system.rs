@@ -59,7 +59,8 @@ pub struct ModeSystem {
     pub fused_rows: usize,
     /// Per switching function, how its value and rate at a span's end are read from the
     /// end rows: a row event's from the fused rows, a function of the set rotation's (its
-    /// target moves: evaluated apart) from one of `angles` (`span_ends.rs`).
+    /// target moves, so it is not a row) from the row of one of `angles`
+    /// (`span_ends.rs`).
     pub ends: Vec<EndRead>,
     /// The distinct angles the functions of the set rotation read.
     pub angles: Vec<SharedAngle>,
@@ -92,7 +93,8 @@ impl ModeSystem {
     /// Each switching function's value and rate at the state `u` (its unit state at index
     /// `unit`) into `out`, read as at a span's end from `end_rows` (scratch, grown to [`Self::end_rows`]), filled here
     /// with each row event's own sums and each distinct angle's: the values
-    /// [`EventForm::value`] and [`EventForm::rate`] give, each shared angle evaluated
+    /// [`EventForm::value`] and [`EventForm::rate`] give (but for the sign of an exact
+    /// zero of a function that reads its angle negated), each shared angle evaluated
     /// once.
     pub fn ends_at(
         &self,
