@@ -140,9 +140,10 @@ fn rows_v3(m: &[f64], rows: usize, u: &[f64], scale: f64, out: &mut [f64]) {
     rows_any(m, rows, u.iter().copied(), scale, out);
 }
 
-/// out[..rows] = (M x) · `scale`, M stored by columns, x the states each column stands for. Below 24
-/// rows a column whose weight is 0 is passed over (it would shift the alternation of the
-/// two chains); from 24 rows it is summed, adding ±0, which leaves every sum as it was.
+/// out[..rows] = (M x) · `scale`, M stored by columns, x the states each column stands
+/// for. Below 24 rows a column whose weight is 0 is passed over (it would shift the
+/// alternation of the two chains); from 24 rows it is summed, adding ±0, which leaves
+/// every sum as it was.
 #[inline(always)]
 fn rows_any(
     m: &[f64],
