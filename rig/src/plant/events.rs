@@ -87,14 +87,22 @@ impl EventForm {
     /// terms·u (the target not taken off).
     #[inline]
     pub fn value(&self, u: &[f64]) -> f64 {
-        self.terms.iter().map(|&(i, c)| c * u[i]).sum()
+        sparse_sum(&self.terms, u)
     }
 
     /// slope·u, the rate of the value.
     #[inline]
     pub fn rate(&self, u: &[f64]) -> f64 {
-        self.slope.iter().map(|&(i, c)| c * u[i]).sum()
+        sparse_sum(&self.slope, u)
     }
+}
+
+/// Σ c·u[i] over the sparse `terms` (index i, coefficient c), summed in their order: the
+/// one sum every switching function's value and rate, and every angle they share
+/// (`span_ends.rs`), are taken by, so that a shared angle gives a function's own sums.
+#[inline(always)]
+pub fn sparse_sum(terms: &[(usize, f64)], u: &[f64]) -> f64 {
+    terms.iter().map(|&(i, c)| c * u[i]).sum()
 }
 
 /// The switching functions of `mode` with A = `a`, the meshes' harmonic pairs turning

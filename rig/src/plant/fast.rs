@@ -16,6 +16,7 @@ use super::block::NetworkBlock;
 use super::network_plant::NetworkPlant;
 use super::products;
 use super::run_spans::RunSpans;
+use super::span_ends::EndRead;
 use super::stepping::may_reach;
 use super::system::{ModeSystem, SpanMatrix};
 use super::system_cache::SystemCache;
@@ -212,24 +213,13 @@ impl NetworkPlant {
             .iter_mut()
             .zip(starts)
             .zip(&system.ends);
-        // One loop for spans of one step and one for spans of several, each with its
-        // own check.
+        // The loop compiled apart for spans of one step and of several, each with its
+        // own check inside.
         if several_steps {
-            for ((end, (&start, &target)), read) in ends {
-                *end = read.read(rows, unit);
-                if may_reach(start, *end, target, span_s, true) {
-                    return true;
-                }
-            }
+            any_may_reach::<true>(ends, rows, unit, span_s)
         } else {
-            for ((end, (&start, &target)), read) in ends {
-                *end = read.read(rows, unit);
-                if may_reach(start, *end, target, span_s, false) {
-                    return true;
-                }
-            }
+            any_may_reach::<false>(ends, rows, unit, span_s)
         }
-        false
     }
 
     /// The state at the end of the span of `matrix` (a step or a stride of `run`) from
@@ -280,4 +270,24 @@ impl NetworkPlant {
         targets.extend(system.events.iter().map(|form| self.target(form)));
         self.targets = targets;
     }
+}
+
+/// Reads each switching function's end from the span's end rows `rows` (the unit state
+/// `unit`) into its slot of `ends`, checking it against its start and target over the
+/// span of `span_s` (of several steps if `SEVERAL`, [`may_reach`]); whether any may
+/// reach it (the functions after it left unwritten).
+#[inline(always)]
+fn any_may_reach<'a, const SEVERAL: bool>(
+    ends: impl Iterator<Item = ((&'a mut (f64, f64), (&'a (f64, f64), &'a f64)), &'a EndRead)>,
+    rows: &[f64],
+    unit: f64,
+    span_s: f64,
+) -> bool {
+    for ((end, (&start, &target)), read) in ends {
+        *end = read.read(rows, unit);
+        if may_reach(start, *end, target, span_s, SEVERAL) {
+            return true;
+        }
+    }
+    false
 }

@@ -15,8 +15,8 @@
 //! its faulted teeth's factors). `events.rs` the switching functions of a mode.
 //! `system.rs` per mode the fused step (e^{A h}'s mechanical rows with the fixed-target
 //! functions' values and rates) and the events, `span_ends.rs` where each function's end
-//! comes from (a row, or an angle the set rotation's functions share), `system_cache.rs` them built on first
-//! use and kept; `run_spans.rs` them folded for a fast run, the forcing states that hold
+//! comes from (a row, or an angle the set rotation's functions share), `system_cache.rs`
+//! them built on first use and kept; `run_spans.rs` them folded for a fast run, the forcing states that hold
 //! still in one column.
 //! `equilibrium.rs` the steady state at a set speed and load (and at rest, a loop's
 //! locked torque carried), and the model assembled with a loop's preload.

@@ -16,7 +16,7 @@
 //! a value or rate that is exactly zero. Functions are grouped only where their terms and
 //! slopes are those of the angle to the bit.
 
-use super::events::EventForm;
+use super::events::{EventForm, sparse_sum};
 
 /// How one switching function's value and rate at a span's end are read from the span's
 /// end rows (the fused product's rows, then each distinct angle's value and rate, each
@@ -68,14 +68,11 @@ pub struct SharedAngle {
 }
 
 impl SharedAngle {
-    /// Its value and rate at the state `u`, each summed in its terms' order as
-    /// [`EventForm::value`] and [`EventForm::rate`] sum them.
+    /// Its value and rate at the state `u`, each summed as [`EventForm::value`] and
+    /// [`EventForm::rate`] sum them ([`sparse_sum`]).
     #[inline(always)]
     pub fn value_rate(&self, u: &[f64]) -> (f64, f64) {
-        (
-            self.terms.iter().map(|&(i, c)| c * u[i]).sum(),
-            self.slope.iter().map(|&(i, c)| c * u[i]).sum(),
-        )
+        (sparse_sum(&self.terms, u), sparse_sum(&self.slope, u))
     }
 }
 

@@ -109,14 +109,11 @@ impl NetworkPlant {
 
     /// Each switching function's value and rate at `self.next` into `self.next_edge`.
     fn fill_next_edge(&mut self, system: &ModeSystem) {
-        system.write_angle_rows(&self.next, &mut self.fused_out);
-        let unit = self.next[self.model.layout.unit()];
-        self.next_edge.clear();
-        self.next_edge.extend(
-            system
-                .ends
-                .iter()
-                .map(|read| read.read(&self.fused_out, unit)),
+        system.read_ends(
+            &self.next,
+            self.model.layout.unit(),
+            &mut self.fused_out,
+            &mut self.next_edge,
         );
     }
 

@@ -17,9 +17,9 @@ use super::span_ends::{EndRead, SharedAngle, SpanEnds, span_ends};
 #[derive(Clone, Debug)]
 pub struct SpanMatrix {
     /// Column-major with `fused_rows` rows a column (see [`ModeSystem::fused_rows`]): the
-    /// mechanical rows of e^{A τ}, then the value and the rate of each row event side by side (a
-    /// switching function of fixed target) at the span's end; one column per state, or,
-    /// folded for a fast run, per state its `RunSpans` reads.
+    /// mechanical rows of e^{A τ}, then the value and the rate of each row event (a
+    /// switching function of fixed target) side by side at the span's end; one column per
+    /// state, or, folded for a fast run, per state its `RunSpans` reads.
     pub fused: Vec<f64>,
     /// The forcing block of e^{A τ} (rows and columns of the forcing states),
     /// column-major with `forcing_rows` rows a column. The forcing states evolve by
@@ -90,12 +90,29 @@ impl ModeSystem {
         }
     }
 
+    /// Each distinct angle at the state `u` (its unit state at index `unit`) written into
+    /// `end_rows` (whose fused rows hold the span's end), then every switching function's
+    /// value and rate read from them into `out`.
+    #[inline(always)]
+    pub fn read_ends(
+        &self,
+        u: &[f64],
+        unit: usize,
+        end_rows: &mut [f64],
+        out: &mut Vec<(f64, f64)>,
+    ) {
+        self.write_angle_rows(u, end_rows);
+        let unit = u[unit];
+        out.clear();
+        out.extend(self.ends.iter().map(|read| read.read(end_rows, unit)));
+    }
+
     /// Each switching function's value and rate at the state `u` (its unit state at index
-    /// `unit`) into `out`, read as at a span's end from `end_rows` (scratch, grown to [`Self::end_rows`]), filled here
-    /// with each row event's own sums and each distinct angle's: the values
-    /// [`EventForm::value`] and [`EventForm::rate`] give (but for the sign of an exact
-    /// zero of a function that reads its angle negated), each shared angle evaluated
-    /// once.
+    /// `unit`) into `out`, read as at a span's end ([`Self::read_ends`]) from `end_rows`
+    /// (scratch, grown to [`Self::end_rows`]), its fused rows filled here with each row
+    /// event's own sums: the values [`EventForm::value`] and [`EventForm::rate`] give
+    /// (but for the sign of an exact zero of a function that reads its angle negated),
+    /// each shared angle evaluated once.
     pub fn ends_at(
         &self,
         u: &[f64],
@@ -112,10 +129,7 @@ impl ModeSystem {
                 end_rows[read.row + 1] = form.rate(u);
             }
         }
-        self.write_angle_rows(u, end_rows);
-        let unit = u[unit];
-        out.clear();
-        out.extend(self.ends.iter().map(|read| read.read(end_rows, unit)));
+        self.read_ends(u, unit, end_rows, out);
     }
 
     /// The system of `mode` of `model` for set points of `rates`, stepped by `step_s`
