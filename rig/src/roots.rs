@@ -76,6 +76,28 @@ fn slope_root(coeffs: &[f64], mut a: f64, mut b: f64) -> f64 {
 /// step (its coefficients would have to differ by 1e20 from one order to the next).
 pub const DUE_NOW: f64 = 1e-20;
 
+/// The crossing [`first_crossing`] gives a function due at the step's start: the least
+/// positive number, so that it comes before any other crossing but one also due then.
+pub const AT_START: f64 = f64::from_bits(1);
+
+/// Whether a function whose polynomial over a step begins c0 + c1 s is due at the step's
+/// start, as [`first_crossing`] finds it ([`AT_START`]), judged from c0 and c1 alone
+/// (without the step's whole expansion): `Some(true)` at or past zero (c0 ≥ 0), rising
+/// (c1 > 0) and above zero at [`DUE_NOW`]; `Some(false)` short of zero (c0 < 0) or at
+/// zero falling (c0 = 0, c1 < 0); `None` where only the whole polynomial tells (past
+/// zero but level or falling, or at zero and level). The later terms weigh 10⁻²⁰ less
+/// each at [`DUE_NOW`], beneath c1's rounding unless one exceeds c1 by 10⁴, which in a
+/// step's Taylor expansion (ρh ≤ 0.5) happens only where c1 is zero to rounding.
+pub fn due_at_start(c0: f64, c1: f64) -> Option<bool> {
+    if c0 < 0.0 || (c0 == 0.0 && c1 < 0.0) {
+        Some(false)
+    } else if c0 >= 0.0 && c1 > 0.0 && poly_eval(&[c0, c1], DUE_NOW).0 > 0.0 {
+        Some(true)
+    } else {
+        None
+    }
+}
+
 /// Narrows [a, b] with p(a) = `value_a` ≤ 0 < p(b) = `value_b` to within 64 ulps of the
 /// crossing (far below any time the model resolves): Newton steps from the secant point,
 /// kept inside the bracket. Returns its right end, where p > 0.
@@ -97,7 +119,7 @@ fn refine(coeffs: &[f64], (mut a, value_a): (f64, f64), (mut b, value_b): (f64, 
     // but falling (a mesh's force just after its impact) crosses later, if at all.
     let rising = coeffs.get(1).is_some_and(|&c| c > 0.0);
     if due_now && rising && a == 0.0 && poly_eval(coeffs, DUE_NOW).0 > 0.0 {
-        return f64::from_bits(1);
+        return AT_START;
     }
     for _ in 0..100 {
         let (value, slope) = poly_eval(coeffs, s);
@@ -107,7 +129,7 @@ fn refine(coeffs: &[f64], (mut a, value_a): (f64, f64), (mut b, value_b): (f64, 
             a = s;
         }
         if due_now && a == 0.0 && b < DUE_NOW {
-            return f64::from_bits(1);
+            return AT_START;
         }
         let close = 16.0 * f64::EPSILON * b;
         if b - a <= 4.0 * close {
@@ -139,7 +161,7 @@ fn refine(coeffs: &[f64], (mut a, value_a): (f64, f64), (mut b, value_b): (f64, 
             a = mid;
         }
         if due_now && a == 0.0 && b < DUE_NOW {
-            return f64::from_bits(1);
+            return AT_START;
         }
     }
     b
@@ -240,6 +262,52 @@ mod tests {
         // quarter (p = 1e-18 − s + 8 s²): the crossing is there, not at the start.
         let later = first_crossing(&[1e-18, -1.0, 8.0]).expect("a crossing");
         assert!((later - 0.125).abs() < 1e-12, "{later}");
+    }
+
+    /// Where [`due_at_start`] decides from a polynomial's first two coefficients, it
+    /// decides as [`first_crossing`] does from the whole one (due: at [`AT_START`]).
+    /// Taylor-like polynomials of a step (c_k of the size of (ρh)^k/k!, ρh ≤ 0.5) that
+    /// start at, past or just short of zero, rising or falling, some with a vanishing
+    /// slope.
+    #[test]
+    fn due_at_start_decides_as_the_whole_polynomial() {
+        use rand::{RngExt, SeedableRng};
+        let mut rng = rand_pcg::Pcg64Mcg::seed_from_u64(47);
+        const CASES: usize = 20_000;
+        let (mut due, mut undecided) = (0, 0);
+        for _ in 0..CASES {
+            let rho_h: f64 = rng.random_range(0.01..0.5);
+            let mut scale = 1.0;
+            let mut c: Vec<f64> = (0..13)
+                .map(|k| {
+                    if k > 0 {
+                        scale *= rho_h / k as f64;
+                    }
+                    scale * rng.random_range(-1.0..1.0)
+                })
+                .collect();
+            c[0] = match rng.random_range(0..4) {
+                0 => 0.0,
+                1 => rng.random_range(0.0..1e-15),
+                2 => -rng.random_range(0.0..1e-15),
+                _ => c[0],
+            };
+            if rng.random_range(0..8) == 0 {
+                c[1] = 0.0;
+            }
+            let whole = first_crossing(&c) == Some(AT_START);
+            match due_at_start(c[0], c[1]) {
+                Some(first_two) => assert_eq!(first_two, whole, "{c:?}"),
+                None => undecided += 1,
+            }
+            due += usize::from(whole);
+        }
+        // Both answers are exercised, and most are decided from two coefficients.
+        assert!(due > 1000 && CASES - due > 1000, "{due} of {CASES}");
+        assert!(
+            undecided < CASES / 4,
+            "{undecided} of {CASES} left undecided"
+        );
     }
 
     /// Functions of a span of ρτ rad of the fastest motion: up to three damped motions

@@ -9,7 +9,7 @@ use std::f64::consts::PI;
 
 use crate::error::RigError;
 use crate::mode::{MotorMode, PairZone};
-use crate::roots::{DUE_NOW, first_crossing, may_cross, may_cross_span};
+use crate::roots::{AT_START, DUE_NOW, due_at_start, first_crossing, may_cross, may_cross_span};
 use crate::taylor::{TAYLOR_ORDER, taylor_order};
 
 use super::block::NetworkImpact;
@@ -46,19 +46,13 @@ impl NetworkPlant {
         for _ in 0..SWITCH_LIMIT {
             let system = cache.get(&self.model, &self.mode);
             let span_s = left * self.step_s;
-            if left == 1.0 {
+            let found = if left == 1.0 {
                 self.fused_step(system);
+                self.first_switch(system, span_s, true)
             } else {
-                self.expand(system, span_s);
-                evaluate(&self.taylor[..=self.taylor_order], 1.0, &mut self.next);
-                system.ends_at(
-                    &self.next,
-                    self.model.layout.unit(),
-                    &mut self.fused_out,
-                    &mut self.next_edge,
-                );
-            }
-            let Some((s, event)) = self.first_switch(system, span_s, left == 1.0) else {
+                self.rest_of_step(system, span_s)
+            };
+            let Some((s, event)) = found else {
                 self.take_span_end();
                 return Ok(());
             };
@@ -75,6 +69,50 @@ impl NetworkPlant {
             t_s: self.step_start_s,
             limit: SWITCH_LIMIT,
         })
+    }
+
+    /// The rest of a step after a switch, `span_s` long, in the new mode: a function due
+    /// at once (another switch at the same instant, as every planet's mesh of an in-phase
+    /// stage) is found from the expansion's first two vectors ([`due_at_start`]) and
+    /// taken without the rest of it; else the span is expanded, its end state and
+    /// functions' ends written, and its first crossing sought.
+    fn rest_of_step(&mut self, system: &ModeSystem, span_s: f64) -> Option<(f64, NetEvent)> {
+        self.expand_first(system, span_s);
+        if let Some(event) = self.due_at_once(system) {
+            return Some((AT_START, event));
+        }
+        self.expand_rest(system, span_s);
+        evaluate(&self.taylor[..=self.taylor_order], 1.0, &mut self.next);
+        system.ends_at(
+            &self.next,
+            self.model.layout.unit(),
+            &mut self.fused_out,
+            &mut self.next_edge,
+        );
+        self.first_switch(system, span_s, false)
+    }
+
+    /// The switching function [`Self::first_switch`] would take at the start of the span
+    /// expanded to its first order, where that is sure without the rest of the expansion:
+    /// the first (in the mode's order, as it takes ties) that [`due_at_start`] finds due,
+    /// if it finds every one before it not due. Where one is undecided, none: the whole
+    /// expansion decides.
+    fn due_at_once(&self, system: &ModeSystem) -> Option<NetEvent> {
+        for form in &system.events {
+            let start = form.value(&self.taylor[0]) - self.target(form);
+            // The second vector's sum only for a function at or past its target.
+            let rate = if start >= 0.0 {
+                form.value(&self.taylor[1])
+            } else {
+                0.0
+            };
+            match due_at_start(start, rate) {
+                Some(true) => return Some(form.event),
+                Some(false) => {}
+                None => return None,
+            }
+        }
+        None
     }
 
     /// A whole step in one product: `self.next` the state at its end (the forcing states
@@ -288,9 +326,27 @@ impl NetworkPlant {
     /// The Taylor vectors v_k = (A τ)^k u / k! of a span τ = `span_s`, up to the order
     /// the mode's fastest motion needs over the span (`taylor_order`).
     fn expand(&mut self, system: &ModeSystem, span_s: f64) {
+        self.expand_first(system, span_s);
+        self.expand_rest(system, span_s);
+    }
+
+    /// The order of [`Self::expand`] and its vectors v_0 and v_1.
+    fn expand_first(&mut self, system: &ModeSystem, span_s: f64) {
         self.taylor_order = taylor_order(system.rho_rad_s * span_s);
         self.taylor[0].copy_from_slice(&self.u);
-        for k in 1..=self.taylor_order {
+        let (done, rest) = self.taylor.split_at_mut(1);
+        products::rows(
+            &system.a_columns,
+            rest[0].len(),
+            &done[0],
+            span_s,
+            &mut rest[0],
+        );
+    }
+
+    /// [`Self::expand`]'s vectors after [`Self::expand_first`]'s, v_2 to its order.
+    fn expand_rest(&mut self, system: &ModeSystem, span_s: f64) {
+        for k in 2..=self.taylor_order {
             let (done, rest) = self.taylor.split_at_mut(k);
             let out = &mut rest[0];
             let scale = span_s / k as f64;
