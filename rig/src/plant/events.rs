@@ -37,6 +37,22 @@ pub enum NetEvent {
     ToothPass(usize),
 }
 
+impl NetEvent {
+    /// The mesh it belongs to, if any.
+    pub fn mesh(&self) -> Option<usize> {
+        match *self {
+            Self::Touch(i, _)
+            | Self::Leave(i)
+            | Self::Unload(i)
+            | Self::Reload(i)
+            | Self::ZoneEnd(i)
+            | Self::ZoneStart(i)
+            | Self::ToothPass(i) => Some(i),
+            Self::LimitHigh | Self::LimitLow | Self::LimitRelease | Self::Revolution => None,
+        }
+    }
+}
+
 /// A moving target the plant supplies.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Target {

@@ -263,8 +263,9 @@ impl NetworkPlant {
     }
 
     /// Each switching function's target now, into `self.targets` (they move only at
-    /// switches, so they hold for a fast run).
-    fn fill_targets(&mut self, system: &ModeSystem) {
+    /// switches, so they hold for a fast run, and on the exact path after it until the
+    /// next switch, `stepping.rs`).
+    pub(super) fn fill_targets(&mut self, system: &ModeSystem) {
         let mut targets = std::mem::take(&mut self.targets);
         targets.clear();
         targets.extend(system.events.iter().map(|form| self.target(form)));

@@ -126,6 +126,24 @@ pub fn span_ends(
     }
 }
 
+/// Whether functions of two or more meshes among `events` read one shared angle (their
+/// ends read by `reads`, the angles' rows from `fused_rows` on): the sun meshes of a
+/// stage, each with its planet's offset. A switch of one may then bring the others due
+/// at the same instant (every planet of an in-phase stage).
+pub fn meshes_share_an_angle(events: &[EventForm], reads: &[EndRead], fused_rows: usize) -> bool {
+    let of_angles: Vec<(usize, Option<usize>)> = reads
+        .iter()
+        .zip(events)
+        .filter(|(read, _)| read.row >= fused_rows)
+        .map(|(read, form)| (read.row, form.event.mesh()))
+        .collect();
+    of_angles.iter().enumerate().any(|(k, &(row, mesh))| {
+        of_angles[k + 1..]
+            .iter()
+            .any(|&(other_row, other)| other_row == row && other != mesh)
+    })
+}
+
 /// Whether `form` reads the set rotation (its target moves with it).
 fn reads_phase(form: &EventForm, phase: usize) -> bool {
     form.terms.iter().any(|&(i, _)| i == phase)
@@ -165,7 +183,7 @@ fn same_bits(a: &SharedAngle, b: &SharedAngle) -> bool {
 
 #[cfg(test)]
 mod tests {
-    use super::{SpanEnds, span_ends};
+    use super::{SpanEnds, meshes_share_an_angle, span_ends};
     use crate::plant::events::{EventForm, NetEvent, Target};
 
     fn form(event: NetEvent, terms: Vec<(usize, f64)>, slope: Vec<(usize, f64)>) -> EventForm {
@@ -251,6 +269,20 @@ mod tests {
             "6 mechanical rows and 2 × 2 padded to 12"
         );
         assert_eq!(ends.angles.len(), 2, "the mesh angle and the revolution");
+        assert!(
+            meshes_share_an_angle(&events, &ends.reads, ends.fused_rows),
+            "meshes 0 and 1 read one angle"
+        );
+        // Mesh 0's zone end, zone start and tooth pass read one angle, and the
+        // revolution its own: no two meshes share one.
+        let alone: Vec<EventForm> = [0, 1, 2, 4, 6].map(|k| events[k].clone()).to_vec();
+        let alone_ends = span_ends(&alone, mechanical, phase, unit);
+        assert_eq!(alone_ends.angles.len(), 2);
+        assert!(!meshes_share_an_angle(
+            &alone,
+            &alone_ends.reads,
+            alone_ends.fused_rows
+        ));
         let u = state(unit);
         let rows = end_rows(&ends, mechanical, &u);
         for (form, read) in events.iter().zip(&ends.reads) {

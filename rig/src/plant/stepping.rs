@@ -43,8 +43,8 @@ impl NetworkPlant {
     /// [`Self::step`] with the cache of modes held apart from the plant.
     fn step_with(&mut self, cache: &mut SystemCache) -> Result<(), RigError> {
         let mut left = 1.0;
+        let mut system = cache.get(&self.model, &self.mode);
         for _ in 0..SWITCH_LIMIT {
-            let system = cache.get(&self.model, &self.mode);
             let span_s = left * self.step_s;
             let found = if left == 1.0 {
                 self.fused_step(system);
@@ -60,6 +60,9 @@ impl NetworkPlant {
             self.edge.clear();
             let at_s = self.step_start_s + (1.0 - left + s * left) * self.step_s;
             self.switch(event, at_s);
+            // The mode switched into, and its targets (held until the next switch).
+            system = cache.get(&self.model, &self.mode);
+            self.fill_targets(system);
             left *= 1.0 - s;
             if left <= f64::EPSILON {
                 return Ok(());
@@ -71,14 +74,17 @@ impl NetworkPlant {
         })
     }
 
-    /// The rest of a step after a switch, `span_s` long, in the new mode: a function due
-    /// at once (another switch at the same instant, as every planet's mesh of an in-phase
-    /// stage) is found from the expansion's first two vectors ([`due_at_start`]) and
-    /// taken without the rest of it; else the span is expanded, its end state and
-    /// functions' ends written, and its first crossing sought.
+    /// The rest of a step after a switch, `span_s` long, in the new mode: where meshes
+    /// share an angle (`ModeSystem::meshes_share_an_angle`), a function due at once
+    /// (another switch at the same instant, as every planet's mesh of an in-phase stage)
+    /// is found from the expansion's first two vectors ([`due_at_start`]) and taken
+    /// without the rest of it; else the span is expanded, its end state and functions'
+    /// ends written, and its first crossing sought.
     fn rest_of_step(&mut self, system: &ModeSystem, span_s: f64) -> Option<(f64, NetEvent)> {
         self.expand_first(system, span_s);
-        if let Some(event) = self.due_at_once(system) {
+        if system.meshes_share_an_angle
+            && let Some(event) = self.due_at_once(system)
+        {
             return Some((AT_START, event));
         }
         self.expand_rest(system, span_s);
@@ -96,17 +102,17 @@ impl NetworkPlant {
     /// expanded to its first order, where that is sure without the rest of the expansion:
     /// the first (in the mode's order, as it takes ties) that [`due_at_start`] finds due,
     /// if it finds every one before it not due. Where one is undecided, none: the whole
-    /// expansion decides.
+    /// expansion decides. Reads the functions' targets from `self.targets`.
     fn due_at_once(&self, system: &ModeSystem) -> Option<NetEvent> {
-        for form in &system.events {
-            let start = form.value(&self.taylor[0]) - self.target(form);
+        for (form, target) in system.events.iter().zip(&self.targets) {
+            let start = form.value(&self.taylor[0]) - target;
             // The second vector's sum only for a function at or past its target.
-            let rate = if start >= 0.0 {
+            let first_order = if start >= 0.0 {
                 form.value(&self.taylor[1])
             } else {
                 0.0
             };
-            match due_at_start(start, rate) {
+            match due_at_start(start, first_order) {
                 Some(true) => return Some(form.event),
                 Some(false) => {}
                 None => return None,
@@ -174,11 +180,16 @@ impl NetworkPlant {
         span_s: f64,
         need_expansion: bool,
     ) -> Option<(f64, NetEvent)> {
+        debug_assert_eq!(
+            self.targets.len(),
+            system.events.len(),
+            "the mode's targets"
+        );
         let mut expanded = !need_expansion;
         let mut best: Option<(f64, NetEvent)> = None;
         let known = self.edge.len() == system.events.len();
         for (k, form) in system.events.iter().enumerate() {
-            let target = self.target(form);
+            let target = self.targets[k];
             let (value_0, rate_0) = if known {
                 self.edge[k]
             } else {

@@ -10,7 +10,7 @@ use super::events::{EventForm, event_forms};
 use super::mode::NetMode;
 use super::model::{NetworkModel, SegmentRates};
 use super::output::OutputForms;
-use super::span_ends::{EndRead, SharedAngle, SpanEnds, span_ends};
+use super::span_ends::{EndRead, SharedAngle, SpanEnds, meshes_share_an_angle, span_ends};
 
 /// e^{A τ} of one mode over one span τ (a step, or a stride of steps), as its products
 /// take it.
@@ -64,6 +64,10 @@ pub struct ModeSystem {
     pub ends: Vec<EndRead>,
     /// The distinct angles the functions of the set rotation read.
     pub angles: Vec<SharedAngle>,
+    /// Whether functions of two or more meshes read one of `angles`
+    /// ([`meshes_share_an_angle`]): after a switch, the exact path looks first for
+    /// another due at the same instant (`stepping.rs`).
+    pub meshes_share_an_angle: bool,
     /// Rows of each column of a span's `forcing` (the forcing states, rounded up to a
     /// multiple of 4).
     pub forcing_rows: usize,
@@ -212,6 +216,7 @@ fn mode_system(
         stride,
         period: spans.period.as_ref().map(matrix),
         fused_rows,
+        meshes_share_an_angle: meshes_share_an_angle(&events, &ends, fused_rows),
         ends,
         angles,
         forcing_rows,
