@@ -85,9 +85,11 @@ pub const AT_START: f64 = f64::from_bits(1);
 /// (without the step's whole expansion): `Some(true)` at or past zero (c0 ≥ 0), rising
 /// (c1 > 0) and above zero at [`DUE_NOW`]; `Some(false)` short of zero (c0 < 0) or at
 /// zero falling (c0 = 0, c1 < 0); `None` where only the whole polynomial tells (past
-/// zero but level or falling, or at zero and level). The later terms weigh 10⁻²⁰ less
-/// each at [`DUE_NOW`], beneath c1's rounding unless one exceeds c1 by 10⁴, which in a
-/// step's Taylor expansion (ρh ≤ 0.5) happens only where c1 is zero to rounding.
+/// zero but level or falling, or at zero and level). It decides as [`first_crossing`]
+/// does where c1 is not small against the later terms: they weigh 10⁻²⁰ less each at
+/// [`DUE_NOW`]. Where it is (a function grazing zero, its peak or dip within about
+/// 10⁻¹¹ of the step, below what [`first_crossing`] resolves), the whole polynomial may
+/// decide otherwise: callers use it only where c1 is a gear's turn over the step.
 pub fn due_at_start(c0: f64, c1: f64) -> Option<bool> {
     if c0 < 0.0 || (c0 == 0.0 && c1 < 0.0) {
         Some(false)

@@ -90,7 +90,8 @@ pub struct NetworkPlant {
     pub(super) taylor: Vec<Vec<f64>>,
     /// The order of the last expansion: the Taylor vectors up to it are valid.
     pub(super) taylor_order: usize,
-    /// Each switching function's target, taken at a fast run's start.
+    /// Each switching function's target, taken at a fast run's start and, on the exact
+    /// path, after each switch.
     pub(super) targets: Vec<f64>,
     /// The samples stored and not yet written to a block.
     pub(super) chunk: SampleChunk,

@@ -83,7 +83,7 @@ impl NetworkPlant {
     fn rest_of_step(&mut self, system: &ModeSystem, span_s: f64) -> Option<(f64, NetEvent)> {
         self.expand_first(system, span_s);
         if system.meshes_share_an_angle
-            && let Some(event) = self.due_at_once(system)
+            && let Some(event) = self.due_at_once(system, span_s)
         {
             return Some((AT_START, event));
         }
@@ -99,23 +99,30 @@ impl NetworkPlant {
     }
 
     /// The switching function [`Self::first_switch`] would take at the start of the span
-    /// expanded to its first order, where that is sure without the rest of the expansion:
-    /// the first (in the mode's order, as it takes ties) that [`due_at_start`] finds due,
-    /// if it finds every one before it not due. Where one is undecided, none: the whole
-    /// expansion decides. Reads the functions' targets from `self.targets`.
-    fn due_at_once(&self, system: &ModeSystem) -> Option<NetEvent> {
+    /// of `span_s` expanded to its first order, where that is sure without the rest of
+    /// the expansion: the first (in the mode's order, as it takes ties) at or past its
+    /// target that [`due_at_start`] finds due and whose rate at the start is rising (so
+    /// that the search's check, [`may_reach`], lets it through), if every function before
+    /// it is short of its target or found not due. Only functions of the set rotation
+    /// (zone ends and starts, tooth passes, revolutions) are decided so: their first
+    /// coefficient is a gear's turn over the span, far from zero while it turns. A contact
+    /// or limit function at or past its target (one grazing it: its peak within 10⁻¹¹ of
+    /// a step, which the search cannot resolve) and any function [`due_at_start`] leaves
+    /// undecided give none: the whole expansion decides. Reads the targets from
+    /// `self.targets`.
+    fn due_at_once(&self, system: &ModeSystem, span_s: f64) -> Option<NetEvent> {
         for (form, target) in system.events.iter().zip(&self.targets) {
             let start = form.value(&self.taylor[0]) - target;
-            // The second vector's sum only for a function at or past its target.
-            let first_order = if start >= 0.0 {
-                form.value(&self.taylor[1])
-            } else {
-                0.0
-            };
-            match due_at_start(start, first_order) {
-                Some(true) => return Some(form.event),
+            if start < 0.0 {
+                continue;
+            }
+            if form.target == Target::Fixed {
+                return None;
+            }
+            match due_at_start(start, form.value(&self.taylor[1])) {
+                Some(true) if form.rate(&self.u) * span_s > 0.0 => return Some(form.event),
                 Some(false) => {}
-                None => return None,
+                _ => return None,
             }
         }
         None
