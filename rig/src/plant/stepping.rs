@@ -352,19 +352,23 @@ impl NetworkPlant {
     fn expand_first(&mut self, system: &ModeSystem, span_s: f64) {
         self.taylor_order = taylor_order(system.rho_rad_s * span_s);
         self.taylor[0].copy_from_slice(&self.u);
-        let (done, rest) = self.taylor.split_at_mut(1);
-        products::rows(
-            &system.a_columns,
-            rest[0].len(),
-            &done[0],
-            span_s,
-            &mut rest[0],
-        );
+        self.expand_orders(system, span_s, 1..=1);
     }
 
     /// [`Self::expand`]'s vectors after [`Self::expand_first`]'s, v_2 to its order.
     fn expand_rest(&mut self, system: &ModeSystem, span_s: f64) {
-        for k in 2..=self.taylor_order {
+        self.expand_orders(system, span_s, 2..=self.taylor_order);
+    }
+
+    /// The Taylor vectors v_k = (A τ) v_{k−1} / k of the orders `orders`, each from the
+    /// one before it.
+    fn expand_orders(
+        &mut self,
+        system: &ModeSystem,
+        span_s: f64,
+        orders: std::ops::RangeInclusive<usize>,
+    ) {
+        for k in orders {
             let (done, rest) = self.taylor.split_at_mut(k);
             let out = &mut rest[0];
             let scale = span_s / k as f64;
