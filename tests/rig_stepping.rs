@@ -7,14 +7,19 @@ mod rig_support;
 use rig::{NetworkImpact, NetworkPlant, NetworkStart, Schedule};
 use rig_support::{plant, shipped};
 
-/// The two-stage rig rattling (20 N m with 40 N m oscillating at 30 Hz), run for 0.3 s in
-/// blocks of `block_samples`: its samples and impacts.
-fn rattling_in_blocks(block_samples: usize) -> (rig::NetworkBlock, Vec<NetworkImpact>) {
-    let rig = shipped("two-stage");
-    let schedule = Schedule {
-        oscillating_load_nm: rig::Track::hold(40.0),
-        oscillating_load_hz: rig::Track::hold(30.0),
-        ..Schedule::constant(1500.0, 20.0)
+/// A rattling rig run for 0.3 s in blocks of `block_samples`: its samples and impacts.
+/// The two-stage rig at 20 N m with 40 N m oscillating at 30 Hz; the 1983 rig at
+/// 1300 rev/min and 2.712 N m (its teeth part and strike every revolution).
+fn rattling_in_blocks(name: &str, block_samples: usize) -> (rig::NetworkBlock, Vec<NetworkImpact>) {
+    let rig = shipped(name);
+    let schedule = if name == "two-stage" {
+        Schedule {
+            oscillating_load_nm: rig::Track::hold(40.0),
+            oscillating_load_hz: rig::Track::hold(30.0),
+            ..Schedule::constant(1500.0, 20.0)
+        }
+    } else {
+        Schedule::constant(1300.0, 2.712)
     };
     let mut p = plant(&rig, schedule, NetworkStart::Steady);
     let mut block = p.block();
@@ -28,25 +33,36 @@ fn rattling_in_blocks(block_samples: usize) -> (rig::NetworkBlock, Vec<NetworkIm
     (block, p.take_impacts())
 }
 
+/// A recorded run's strides (`record_stride.rs`: 2 to 8 samples, begun at whole multiples
+/// of their length) are taken on where a block ends inside one, so that blocks of one
+/// sample, of 7 (ending at every place inside a stride) and of 10 000 give the same bytes.
 #[test]
 fn a_rattling_rig_runs_to_the_same_bytes_a_sample_at_a_time_as_in_long_blocks() {
-    let (one, one_impacts) = rattling_in_blocks(1);
-    let (long, long_impacts) = rattling_in_blocks(10_000);
-    assert!(
-        long_impacts.len() > 100,
-        "the rig rattles: {} impacts in 0.3 s",
-        long_impacts.len()
-    );
-    assert_eq!(
-        one_impacts, long_impacts,
-        "the same impacts at the same instants"
-    );
-    assert!(one == long, "the same samples, bit for bit");
+    for (name, least_impacts) in [("two-stage", 100), ("basmaji-1983", 50)] {
+        let (long, long_impacts) = rattling_in_blocks(name, 10_000);
+        assert!(
+            long_impacts.len() > least_impacts,
+            "{name} rattles: {} impacts in 0.3 s",
+            long_impacts.len()
+        );
+        for block_samples in [1, 7] {
+            let (short, short_impacts) = rattling_in_blocks(name, block_samples);
+            assert_eq!(
+                short_impacts, long_impacts,
+                "{name}, blocks of {block_samples}: the same impacts at the same instants"
+            );
+            assert!(
+                short == long,
+                "{name}, blocks of {block_samples}: the same samples, bit for bit"
+            );
+        }
+    }
 }
 
 /// The 1983 rig as a file at 1300 rev/min and 2.712 N m (its teeth part and strike every
 /// revolution, the half-order motion), settled 3 s by `skip` (no samples written: strides
-/// of steps where the teeth are apart) and by `run`, then recorded 0.5 s: the same
+/// of steps begun wherever the last ended) and by `run` (strides of whole samples begun at
+/// multiples of their length, `record_stride.rs`), then recorded 0.5 s: the same
 /// motion, the same impacts within 0.1 µs, the torques within 1e-4 N m (the intermediate
 /// shaft's AC is 7.6 N m RMS). The two round differently, and the motion amplifies
 /// rounding: a kick of 1e-13 rad/s at the start parts two recorded runs by 0.14 ns and

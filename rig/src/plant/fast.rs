@@ -124,7 +124,25 @@ impl NetworkPlant {
             );
         }
         self.prepare_run(system, run);
+        if RECORD {
+            self.stride.resume(self.sample, &self.mode, &self.u);
+        } else {
+            self.stride.drop_stride();
+        }
         let stop = self.fast_stop(limit);
+        // A recorded run's strides (`record_stride.rs`): k samples, begun where the sample
+        // is a multiple of k and the stride ends before the run must stop whatever its
+        // limit (so that a block's end never decides one).
+        let record_stride = if RECORD {
+            (system.stride.as_ref())
+                .zip(run.stride.as_ref())
+                .filter(|_| !run.inside.is_empty())
+                .map(|(stride, matrix)| (stride.steps, matrix, run.inside.len() as u64 + 1))
+        } else {
+            None
+        };
+        let bound = self.run_bound();
+        let mut no_stride_until = 0;
         // Spans of several steps (`stride.rs`): where no sample is written, strides of
         // whole output periods; where samples are, one output period (a sample at its end).
         let substeps = self.substeps;
@@ -149,6 +167,24 @@ impl NetworkPlant {
                     self.chunk.flush(&system.outputs, self.output_step_s, block);
                 }
                 self.chunk.store(self.sample, &self.mode, &self.u);
+                if self.stride.is_active() {
+                    self.take_stride_sample(system, run);
+                    continue;
+                }
+                if let Some((steps, matrix, k)) = record_stride
+                    && self.sample.is_multiple_of(k)
+                    && self.sample >= no_stride_until
+                    && self.sample + k <= bound
+                {
+                    if !self.span_may_switch(system, run, matrix, f64::from(steps) * self.step_s) {
+                        let what = (self.sample, k, self.mode);
+                        let ends = (&self.next[..], &self.next_edge[..]);
+                        self.stride.begin(what, run, &self.u, ends);
+                        self.take_stride_sample(system, run);
+                        continue;
+                    }
+                    no_stride_until = self.sample + k;
+                }
             }
             if let Some((steps, matrix)) = span {
                 let samples = u64::from(steps / substeps);
@@ -169,7 +205,27 @@ impl NetworkPlant {
             }
             self.sample += 1;
         }
+        if RECORD && self.stride.is_active() {
+            // The functions' values at the state left are not known: the next run that does
+            // not take the stride on computes them.
+            self.stride.leave(&self.u);
+            self.edge.clear();
+        }
         RunEnd::Done
+    }
+
+    /// Takes the current sample of the stride under way (`record_stride.rs`): the state
+    /// moved to the next sample.
+    #[inline(always)]
+    fn take_stride_sample(&mut self, system: &ModeSystem, run: &RunSpans) {
+        self.stride.take_sample(
+            self.sample + 1,
+            (system, run),
+            self.model.layout.mechanical(),
+            (&mut self.u, &mut self.edge),
+            (&mut self.fused_out, &mut self.forcing_out),
+        );
+        self.sample += 1;
     }
 
     /// Readies the scratch for a fast run's products: room for their rows and for each
@@ -254,12 +310,15 @@ impl NetworkPlant {
     /// The first sample the fast run may not take: `limit` on, the next stretch of set
     /// points or the next check of bounds, whichever comes first (past the current one).
     fn fast_stop(&self, limit: u64) -> u64 {
+        (self.sample + limit).min(self.run_bound())
+    }
+
+    /// The first sample no fast run may take, whatever its limit: the next stretch of set
+    /// points or the next check of bounds, whichever comes first (past the current one).
+    fn run_bound(&self) -> u64 {
         let check = super::network_plant::CHECK_EVERY;
-        let mut stop = (self.sample + limit).min((self.sample / check + 1) * check);
-        if let Some(end) = self.segment_end {
-            stop = stop.min(end);
-        }
-        stop
+        let bound = (self.sample / check + 1) * check;
+        self.segment_end.map_or(bound, |end| bound.min(end))
     }
 
     /// Each switching function's target now, into `self.targets` (they move only at

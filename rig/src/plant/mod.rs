@@ -41,6 +41,7 @@ mod model;
 mod network_plant;
 mod output;
 mod products;
+mod record_stride;
 mod ring_sensor;
 mod run_spans;
 mod run_up;

@@ -15,6 +15,7 @@ use super::equilibrium::{assembled, equilibrium};
 use super::mode::{Contact, MeshState, NetMode};
 use super::model::NetworkModel;
 use super::output::SampleChunk;
+use super::record_stride::RecordStride;
 use super::system::fastest_rate;
 use super::system_cache::SystemCache;
 
@@ -95,6 +96,8 @@ pub struct NetworkPlant {
     pub(super) targets: Vec<f64>,
     /// The samples stored and not yet written to a block.
     pub(super) chunk: SampleChunk,
+    /// The stride a run that writes samples has under way (`record_stride.rs`).
+    pub(super) stride: RecordStride,
 }
 
 impl NetworkPlant {
@@ -186,6 +189,7 @@ impl NetworkPlant {
             taylor_order: TAYLOR_ORDER,
             targets: Vec::new(),
             chunk: SampleChunk::new(len),
+            stride: RecordStride::default(),
         };
         plant.start(start)?;
         Ok(plant)
@@ -428,6 +432,7 @@ impl NetworkPlant {
         let l = &self.model.layout;
         self.u[l.speed(coordinate)] += delta_rad_s;
         self.edge.clear();
+        self.stride.drop_stride();
     }
 
     /// The mechanical energy (J): kinetic, shafts' k·twist²/2 + T0·twist, bearings'

@@ -38,6 +38,9 @@ pub struct RunSpans {
     pub stride: Option<SpanMatrix>,
     /// The mode's output period as one span, alike, if it has one.
     pub period: Option<SpanMatrix>,
+    /// The samples inside a recorded stride (`ModeSystem::inside`), alike: `fused` with
+    /// the mode's mechanical rows alone.
+    pub inside: Vec<SpanMatrix>,
     /// The forcing states that hold (still or zero), each with the bits of its value.
     held: Vec<(usize, u64)>,
 }
@@ -67,19 +70,15 @@ impl RunSpans {
             .filter(|&j| still[j - forcing.start] && !read.contains(&j))
             .collect();
         let unit = layout.unit();
-        let fed = |j: &usize| {
-            let column = j * system.fused_rows;
-            system.step.fused[column..column + system.fused_rows]
-                .iter()
-                .chain(
-                    system
-                        .stride
-                        .iter()
-                        .map(|s| &s.matrix)
-                        .chain(&system.period)
-                        .flat_map(|m| m.fused[column..column + system.fused_rows].iter()),
-                )
-                .any(|&x| x != 0.0)
+        let feeds = |m: &SpanMatrix, rows: usize, j: usize| {
+            m.fused[j * rows..(j + 1) * rows].iter().any(|&x| x != 0.0)
+        };
+        let fed = |&j: &usize| {
+            let spans = std::iter::once(&system.step)
+                .chain(system.stride.iter().map(|s| &s.matrix))
+                .chain(&system.period);
+            spans.into_iter().any(|m| feeds(m, system.fused_rows, j))
+                || (system.inside.iter()).any(|m| feeds(m, system.mechanical_rows, j))
         };
         let mut columns: Vec<usize> = (0..layout.mechanical()).collect();
         columns.extend(moving.iter().chain(&read).copied().filter(fed));
@@ -93,10 +92,17 @@ impl RunSpans {
             moving_rows: moving.len().div_ceil(4) * 4,
         };
         let fold = |span: &SpanMatrix| shape.fold(span, &columns, &moving, &still, u);
+        let inside_shape = Shape {
+            fused_rows: system.mechanical_rows,
+            ..shape
+        };
         Self {
             step: fold(&system.step),
             stride: system.stride.as_ref().map(|s| fold(&s.matrix)),
             period: system.period.as_ref().map(fold),
+            inside: (system.inside.iter())
+                .map(|span| inside_shape.fold(span, &columns, &moving, &still, u))
+                .collect(),
             moving_rows: shape.moving_rows,
             columns,
             moving,
@@ -143,6 +149,7 @@ fn holding_states(
 }
 
 /// The sizes a span's folded matrices take.
+#[derive(Clone, Copy)]
 struct Shape {
     fused_rows: usize,
     forcing_rows: usize,

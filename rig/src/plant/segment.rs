@@ -148,6 +148,7 @@ impl NetworkPlant {
         self.resync_harmonics();
         self.segment_end = end;
         self.edge.clear();
+        self.stride.drop_stride();
         self.clamp_motor();
     }
 

@@ -55,6 +55,14 @@ pub struct ModeSystem {
     /// slow enough for the period to be checked as one span: a run that writes samples
     /// takes a period in one product where no switch may fall in it.
     pub period: Option<SpanMatrix>,
+    /// Where the stride is k ≥ 2 whole output periods T: e^{A j T} for j = 1 … k − 1, the
+    /// samples inside a stride a run that writes samples takes (`record_stride.rs`), each
+    /// from the stride's first state. Their `fused` holds the mechanical rows alone
+    /// ([`Self::mechanical_rows`]): no switch is checked inside a stride.
+    pub inside: Vec<SpanMatrix>,
+    /// Rows of each column of an `inside` span's `fused`: the mechanical states, rounded
+    /// up to a multiple of 4.
+    pub mechanical_rows: usize,
     /// Rows of each column of a span's `fused` (a multiple of 4).
     pub fused_rows: usize,
     /// Per switching function, how its value and rate at a span's end are read from the
@@ -151,7 +159,7 @@ impl ModeSystem {
         let rho_rad_s = block_spectral_radius(&a, model.layout.mechanical());
         let steps = stride_steps(rho_rad_s, step_s, substeps);
         let period = takes_whole_periods(rho_rad_s, step_s, substeps).then_some(substeps);
-        let spans = exp_spans(model, &a, (step_s, rho), period, steps as u32);
+        let spans = exp_spans(model, &a, (step_s, rho), (period, substeps), steps as u32);
         let events = event_forms(model, mode, &a, rates.harmonic_rad_s);
         let a_columns = padded_columns(&a, padded);
         let outputs = OutputForms::of(model, mode, rates.harmonic_rad_s);
@@ -165,6 +173,7 @@ struct ModeSpans {
     step: DMatrix<f64>,
     period: Option<DMatrix<f64>>,
     stride: Option<(u32, DMatrix<f64>)>,
+    inside: Vec<DMatrix<f64>>,
 }
 
 /// A's spectral radius (rad/s) from its two diagonal blocks, the mechanical states' and
@@ -203,6 +212,7 @@ fn mode_system(
         fused_rows,
     } = span_ends(&events, l.mechanical(), l.phase(), l.unit());
     let forcing_rows = (l.len() - l.mechanical()).div_ceil(4) * 4;
+    let mechanical_rows = l.mechanical().div_ceil(4) * 4;
     let matrix = |span: &DMatrix<f64>| span_matrix(model, span, &forms, fused_rows, forcing_rows);
     let step = matrix(&spans.step);
     let stride = spans.stride.as_ref().map(|(steps, span)| Stride {
@@ -215,6 +225,10 @@ fn mode_system(
         step,
         stride,
         period: spans.period.as_ref().map(matrix),
+        inside: (spans.inside.iter())
+            .map(|span| span_matrix(model, span, &[], mechanical_rows, forcing_rows))
+            .collect(),
+        mechanical_rows,
         fused_rows,
         meshes_share_an_angle: meshes_share_an_angle(&events, &ends, fused_rows),
         ends,
@@ -273,14 +287,16 @@ fn padded_columns(m: &DMatrix<f64>, padded: usize) -> Vec<f64> {
 }
 
 /// e^{A h} (1 step), e^{A T} over an output period of `period` steps where given, and,
-/// where `steps` > 1, e^{A m h} (m = `steps`), balanced as the 1983 plant's: angles and
+/// where `steps` > 1, e^{A m h} (m = `steps`) and, where m is k ≥ 2 output periods of
+/// `substeps` steps, e^{A j T} for j = 1 … k − 1 (the samples inside it), balanced as the
+/// 1983 plant's: angles and
 /// the integral at 1, speeds and the filtered speed at ρ, forcing states scaled to ρ, the
 /// two states of each harmonic pair alike.
 fn exp_spans(
     model: &NetworkModel,
     a: &DMatrix<f64>,
     (step_s, rho): (f64, f64),
-    period: Option<u32>,
+    (period, substeps): (Option<u32>, u32),
     steps: u32,
 ) -> ModeSpans {
     let l = &model.layout;
@@ -307,10 +323,17 @@ fn exp_spans(
     let count = steps.max(period.unwrap_or(1)) as usize;
     let powers = exp_powers_balanced(a, step_s, &scale, count);
     let power = |k: u32| powers[k as usize - 1].clone();
+    let substeps = substeps.max(1);
+    let samples = if steps > 1 && steps.is_multiple_of(substeps) {
+        steps / substeps
+    } else {
+        1
+    };
     ModeSpans {
         step: power(1),
         period: period.map(power),
         stride: (steps > 1).then(|| (steps, power(steps))),
+        inside: (1..samples).map(|j| power(j * substeps)).collect(),
     }
 }
 
