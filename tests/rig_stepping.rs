@@ -33,7 +33,7 @@ fn rattling_in_blocks(name: &str, block_samples: usize) -> (rig::NetworkBlock, V
     (block, p.take_impacts())
 }
 
-/// A recorded run's strides (`record_stride.rs`: 2 to 8 samples, begun at whole multiples
+/// A recorded run's strides (`record_stride.rs`: 4 or 8 samples, begun at whole multiples
 /// of their length) are taken on where a block ends inside one, so that blocks of one
 /// sample, of 7 (ending at every place inside a stride) and of 10 000 give the same bytes.
 #[test]

@@ -1,4 +1,4 @@
-//! Strides in a run that writes samples: k ≥ 2 output periods checked for switches as one
+//! Strides in a run that writes samples: k ≥ 4 output periods checked for switches as one
 //! span (the mode's stride, `system.rs`; `stride.rs` bounds it), and the samples inside it
 //! each one product from the stride's first state u_a: e^{A j T} u_a, the mechanical rows
 //! and the forcing states that move (`ModeSystem::inside`), with no check of its own.
