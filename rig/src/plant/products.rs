@@ -15,17 +15,14 @@
 /// slower).
 #[inline(always)]
 pub fn gathered(m: &[f64], rows: usize, columns: &[usize], u: &[f64], out: &mut [f64]) {
-    let m = &m[..columns.len() * rows];
-    let pairs = columns.chunks_exact(2);
-    let last = pairs.remainder().first().map(|&i| u[i]);
-    let x = pairs.map(|pair| (u[pair[0]], u[pair[1]]));
+    let weight = |&i: &usize| u[i];
     match rows {
-        4 => pairs_of::<4>(m, x, last, out),
-        8 => pairs_of::<8>(m, x, last, out),
-        12 => pairs_of::<12>(m, x, last, out),
-        16 => pairs_of::<16>(m, x, last, out),
-        20 => pairs_of::<20>(m, x, last, out),
-        _ => banded(m, rows, columns.iter().map(|&i| u[i]), 1.0, out),
+        4 => weighted_of::<4, _>(m, columns, weight, out),
+        8 => weighted_of::<8, _>(m, columns, weight, out),
+        12 => weighted_of::<12, _>(m, columns, weight, out),
+        16 => weighted_of::<16, _>(m, columns, weight, out),
+        20 => weighted_of::<20, _>(m, columns, weight, out),
+        _ => banded(m, rows, columns.iter().map(weight), 1.0, out),
     }
 }
 
@@ -33,46 +30,46 @@ pub fn gathered(m: &[f64], rows: usize, columns: &[usize], u: &[f64], out: &mut 
 /// state of a recorded stride, `record_stride.rs`), the same sums in the same order.
 #[inline(always)]
 pub fn dense(m: &[f64], rows: usize, x: &[f64], out: &mut [f64]) {
-    let m = &m[..x.len() * rows];
-    let pairs = x.chunks_exact(2);
-    let last = pairs.remainder().first().copied();
-    let weights = pairs.map(|pair| (pair[0], pair[1]));
+    let weight = |&v: &f64| v;
     match rows {
-        4 => pairs_of::<4>(m, weights, last, out),
-        8 => pairs_of::<8>(m, weights, last, out),
-        12 => pairs_of::<12>(m, weights, last, out),
-        16 => pairs_of::<16>(m, weights, last, out),
-        20 => pairs_of::<20>(m, weights, last, out),
-        _ => banded(m, rows, x.iter().copied(), 1.0, out),
+        4 => weighted_of::<4, _>(m, x, weight, out),
+        8 => weighted_of::<8, _>(m, x, weight, out),
+        12 => weighted_of::<12, _>(m, x, weight, out),
+        16 => weighted_of::<16, _>(m, x, weight, out),
+        20 => weighted_of::<20, _>(m, x, weight, out),
+        _ => banded(m, rows, x.iter().map(weight), 1.0, out),
     }
 }
 
-/// The products of [`gathered`] and [`dense`] for `R` rows, fewer than 24: M's columns
-/// (as many as the weights) taken two at a time with their weights `x` (then the odd one's, `last`) into two
-/// chains summed in registers (no column passed over: a fast run reads only states that
-/// feed its rows). From 24 rows one chain keeps enough multiply-adds in flight (six or
-/// more vectors of sums), and two chains of as many rows spilled their sums to the stack
-/// at every column ([`banded`]).
+/// The products of [`gathered`] and [`dense`] for `R` rows, fewer than 24: M's columns,
+/// one per entry of `of` (its weight `weight` of the entry), taken two at a time into
+/// two chains summed in registers (no column passed over: a fast run reads only states
+/// that feed its rows). From 24 rows one chain keeps enough multiply-adds in flight (six
+/// or more vectors of sums), and two chains of as many rows spilled their sums to the
+/// stack at every column ([`banded`]).
 #[inline(always)]
-fn pairs_of<const R: usize>(
+fn weighted_of<const R: usize, T>(
     m: &[f64],
-    x: impl Iterator<Item = (f64, f64)>,
-    last: Option<f64>,
+    of: &[T],
+    weight: impl Fn(&T) -> f64,
     out: &mut [f64],
 ) {
     let (mut even, mut odd) = ([0.0; R], [0.0; R]);
+    let m = &m[..of.len() * R];
     let mut pairs = m.chunks_exact(2 * R);
-    for (block, (x0, x1)) in pairs.by_ref().zip(x) {
+    let mut entries = of.chunks_exact(2);
+    for (block, pair) in pairs.by_ref().zip(entries.by_ref()) {
+        let (x0, x1) = (weight(&pair[0]), weight(&pair[1]));
         let (c0, c1) = block.split_at(R);
         for r in 0..R {
             even[r] = c0[r].mul_add(x0, even[r]);
             odd[r] = c1[r].mul_add(x1, odd[r]);
         }
     }
-    if let Some(x) = last {
-        let column = &pairs.remainder()[..R];
+    if let ([entry], last) = (entries.remainder(), pairs.remainder()) {
+        let x = weight(entry);
         for r in 0..R {
-            even[r] = column[r].mul_add(x, even[r]);
+            even[r] = last[r].mul_add(x, even[r]);
         }
     }
     for ((o, e), d) in out[..R].iter_mut().zip(even).zip(odd) {
