@@ -15,29 +15,32 @@
 /// slower).
 #[inline(always)]
 pub fn gathered(m: &[f64], rows: usize, columns: &[usize], u: &[f64], out: &mut [f64]) {
-    let weight = |&i: &usize| u[i];
-    match rows {
-        4 => weighted_of::<4, _>(m, columns, weight, out),
-        8 => weighted_of::<8, _>(m, columns, weight, out),
-        12 => weighted_of::<12, _>(m, columns, weight, out),
-        16 => weighted_of::<16, _>(m, columns, weight, out),
-        20 => weighted_of::<20, _>(m, columns, weight, out),
-        _ => banded(m, rows, columns.iter().map(weight), 1.0, out),
-    }
+    weighted(m, rows, columns, |&i: &usize| u[i], out);
 }
 
 /// out[..rows] = Σ_k M[:, k] x[k]: [`gathered`] for weights already gathered (the first
 /// state of a recorded stride, `record_stride.rs`), the same sums in the same order.
 #[inline(always)]
 pub fn dense(m: &[f64], rows: usize, x: &[f64], out: &mut [f64]) {
-    let weight = |&v: &f64| v;
+    weighted(m, rows, x, |&v: &f64| v, out);
+}
+
+/// out[..rows] = Σ_k M[:, k] weight(of[k]), the row count's own loop.
+#[inline(always)]
+fn weighted<T>(
+    m: &[f64],
+    rows: usize,
+    of: &[T],
+    weight: impl Fn(&T) -> f64 + Copy,
+    out: &mut [f64],
+) {
     match rows {
-        4 => weighted_of::<4, _>(m, x, weight, out),
-        8 => weighted_of::<8, _>(m, x, weight, out),
-        12 => weighted_of::<12, _>(m, x, weight, out),
-        16 => weighted_of::<16, _>(m, x, weight, out),
-        20 => weighted_of::<20, _>(m, x, weight, out),
-        _ => banded(m, rows, x.iter().map(weight), 1.0, out),
+        4 => weighted_of::<4, _>(m, of, weight, out),
+        8 => weighted_of::<8, _>(m, of, weight, out),
+        12 => weighted_of::<12, _>(m, of, weight, out),
+        16 => weighted_of::<16, _>(m, of, weight, out),
+        20 => weighted_of::<20, _>(m, of, weight, out),
+        _ => banded(m, rows, of.iter().map(weight), 1.0, out),
     }
 }
 
