@@ -24,7 +24,8 @@
 //! state and turned into signals a chunk at a time, `columns.rs` them as named columns.
 //! `run_up.rs` how long the drive takes to run the rig up from rest.
 //! `network_plant.rs` the plant (`NetworkPlant`: the name it had beside the retired thesis plant), `teeth.rs` its pair zones and tooth passes, `segment.rs` its set
-//! points over time, `fast.rs` its runs of samples in one mode,
+//! points over time, `fast.rs` its runs of samples in one mode, `record_stride.rs` the
+//! strides of a run that writes samples,
 //! `stepping.rs` its exact steps and switches, `products.rs` the
 //! matrix–state products they take.
 
