@@ -1,7 +1,9 @@
 //! Strides: several internal steps taken as one by a settling run's fast path
 //! (`plant/fast.rs`), in modes whose fastest motion is slow against the step (teeth
-//! apart: the rig's own modes below 100 Hz); and, for a run that writes samples, an
-//! output period of several steps taken as one where the mode allows.
+//! apart: the rig's own modes below 100 Hz); for a run that writes samples, an output
+//! period of several steps taken as one where the mode allows, and a stride of at least
+//! [`MIN_RECORDED_STRIDE`] output periods with its inside samples each from its first
+//! state (`plant/record_stride.rs`).
 //!
 //! A stride of m steps is one fused product with e^{A m h} (state and row events at its
 //! end, for the switch checks over the whole stride). Where the check over a stride says a function may cross, the fast path takes that

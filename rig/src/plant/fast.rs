@@ -8,7 +8,9 @@
 //! that writes no samples (settling) takes strides of several steps in one product where
 //! the mode allows (`system.rs`), checked for switches over the whole stride; one that
 //! writes samples takes an output period of several steps in one product where the mode
-//! allows; where a switch may fall, that stretch is taken in single steps.
+//! allows, and where the mode's stride is four output periods or more, strides too, each
+//! begun at a multiple of its samples and its inside samples from its first state
+//! (`record_stride.rs`); where a switch may fall, that stretch is taken in single steps.
 
 use crate::error::RigError;
 
@@ -142,7 +144,6 @@ impl NetworkPlant {
             None
         };
         let bound = self.run_bound();
-        let mut no_stride_until = 0;
         // Spans of several steps (`stride.rs`): where no sample is written, strides of
         // whole output periods; where samples are, one output period (a sample at its end).
         let substeps = self.substeps;
@@ -173,7 +174,6 @@ impl NetworkPlant {
                 }
                 if let Some((steps, matrix, k)) = record_stride
                     && self.sample.is_multiple_of(k)
-                    && self.sample >= no_stride_until
                     && self.sample + k <= bound
                 {
                     if !self.span_may_switch(system, run, matrix, f64::from(steps) * self.step_s) {
@@ -183,7 +183,6 @@ impl NetworkPlant {
                         self.take_stride_sample(system, run);
                         continue;
                     }
-                    no_stride_until = self.sample + k;
                 }
             }
             if let Some((steps, matrix)) = span {
@@ -206,8 +205,8 @@ impl NetworkPlant {
             self.sample += 1;
         }
         if RECORD && self.stride.is_active() {
-            // The functions' values at the state left are not known: the next run that does
-            // not take the stride on computes them.
+            // The functions' values at the state left are not known: the next run computes
+            // them at its start (and, taking the stride on, has them from its end).
             self.stride.leave(&self.u);
             self.edge.clear();
         }

@@ -96,7 +96,7 @@ impl RecordStride {
     }
 
     /// Moves the state `u` to sample `next` of the stride under way (`mechanical`
-    /// mechanical states; `scratch` room for the rows of the inside products): inside it,
+    /// mechanical states; `rows` and `forcing` room for the inside products' rows): inside it,
     /// e^{A j T} times its first state (the mechanical states and the moving forcing
     /// states; those that hold keep their values); at its end, its end state, with the
     /// functions' values and rates there into `edge`, and the stride is done.

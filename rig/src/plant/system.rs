@@ -19,7 +19,9 @@ pub struct SpanMatrix {
     /// Column-major with `fused_rows` rows a column (see [`ModeSystem::fused_rows`]): the
     /// mechanical rows of e^{A τ}, then the value and the rate of each row event (a
     /// switching function of fixed target) side by side at the span's end; one column per
-    /// state, or, folded for a fast run, per state its `RunSpans` reads.
+    /// state, or, folded for a fast run, per state its `RunSpans` reads. An inside span of
+    /// a recorded stride ([`ModeSystem::inside`]) has the mechanical rows alone
+    /// ([`ModeSystem::mechanical_rows`]).
     pub fused: Vec<f64>,
     /// The forcing block of e^{A τ} (rows and columns of the forcing states),
     /// column-major with `forcing_rows` rows a column. The forcing states evolve by
@@ -30,7 +32,8 @@ pub struct SpanMatrix {
 /// A stride: several internal steps taken as one where the mode's fastest motion is slow
 /// against the step (ρ·m·h ≤ [`crate::stride::MAX_RHO_STRIDE`]: mostly with every mesh
 /// apart, but a soft mesh in contact may qualify), by a settling run that writes no
-/// samples.
+/// samples, and by one that does where it is [`crate::stride::MIN_RECORDED_STRIDE`]
+/// output periods or more (`record_stride.rs`).
 #[derive(Clone, Debug)]
 pub struct Stride {
     /// Internal steps it takes (whole output periods, a power of two of them; at least 2).
@@ -169,7 +172,7 @@ impl ModeSystem {
 }
 
 /// A mode's e^{A τ} over its spans: the step, and where the mode allows, an output period
-/// of several steps and a stride.
+/// of several steps, a stride and the samples inside a recorded stride.
 struct ModeSpans {
     step: DMatrix<f64>,
     period: Option<DMatrix<f64>>,
