@@ -175,14 +175,13 @@ impl NetworkPlant {
                 if let Some((steps, matrix, k)) = record_stride
                     && self.sample.is_multiple_of(k)
                     && self.sample + k <= bound
+                    && !self.span_may_switch(system, run, matrix, f64::from(steps) * self.step_s)
                 {
-                    if !self.span_may_switch(system, run, matrix, f64::from(steps) * self.step_s) {
-                        let what = (self.sample, k, self.mode);
-                        let ends = (&self.next[..], &self.next_edge[..]);
-                        self.stride.begin(what, run, &self.u, ends);
-                        self.take_stride_sample(system, run);
-                        continue;
-                    }
+                    let what = (self.sample, k, self.mode);
+                    let ends = (&self.next[..], &self.next_edge[..]);
+                    self.stride.begin(what, run, &self.u, ends);
+                    self.take_stride_sample(system, run);
+                    continue;
                 }
             }
             if let Some((steps, matrix)) = span {
