@@ -117,7 +117,13 @@ impl NetworkPlant {
     ) -> RunEnd {
         let (system, run) = cache.get_run(&self.model, &self.mode, &self.u);
         self.fill_targets(system);
-        if self.edge.len() != system.events.len() {
+        if RECORD {
+            self.stride.resume(self.sample, &self.mode, &self.u);
+        } else {
+            self.stride.drop_stride();
+        }
+        // A stride taken on has the functions' values at its end; none are read before.
+        if self.edge.len() != system.events.len() && !self.stride.is_active() {
             system.ends_at(
                 &self.u,
                 self.model.layout.unit(),
@@ -126,11 +132,6 @@ impl NetworkPlant {
             );
         }
         self.prepare_run(system, run);
-        if RECORD {
-            self.stride.resume(self.sample, &self.mode, &self.u);
-        } else {
-            self.stride.drop_stride();
-        }
         let stop = self.fast_stop(limit);
         // A recorded run's strides (`record_stride.rs`): k samples, begun where the sample
         // is a multiple of k and the stride ends before the run must stop whatever its
@@ -204,8 +205,8 @@ impl NetworkPlant {
             self.sample += 1;
         }
         if RECORD && self.stride.is_active() {
-            // The functions' values at the state left are not known: the next run computes
-            // them at its start (and, taking the stride on, has them from its end).
+            // The functions' values at the state left are not known: a next run that does
+            // not take the stride on computes them at its start.
             self.stride.leave(&self.u);
             self.edge.clear();
         }

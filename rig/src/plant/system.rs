@@ -59,9 +59,8 @@ pub struct ModeSystem {
     /// takes a period in one product where no switch may fall in it.
     pub period: Option<SpanMatrix>,
     /// Where the stride is k ≥ [`crate::stride::MIN_RECORDED_STRIDE`] whole output periods
-    /// T: e^{A j T} for j = 1 … k − 1, the
-    /// samples inside a stride a run that writes samples takes (`record_stride.rs`), each
-    /// from the stride's first state. Their `fused` holds the mechanical rows alone
+    /// T: e^{A j T} for j = 1 … k − 1, the samples inside a stride a run that writes
+    /// samples takes (`record_stride.rs`), each from the stride's first state. Their `fused` holds the mechanical rows alone
     /// ([`Self::mechanical_rows`]): no switch is checked inside a stride.
     pub inside: Vec<SpanMatrix>,
     /// Rows of each column of an `inside` span's `fused`: the mechanical states, rounded
@@ -291,11 +290,9 @@ fn padded_columns(m: &DMatrix<f64>, padded: usize) -> Vec<f64> {
 }
 
 /// e^{A h} (1 step), e^{A T} over an output period of `period` steps where given, and,
-/// where `steps` > 1, e^{A m h} (m = `steps`) and, where m is k ≥
-/// [`MIN_RECORDED_STRIDE`] output periods of `substeps` steps, e^{A j T} for
-/// j = 1 … k − 1 (the samples inside it), balanced as the
-/// 1983 plant's: angles and
-/// the integral at 1, speeds and the filtered speed at ρ, forcing states scaled to ρ, the
+/// where `steps` > 1, e^{A m h} (m = `steps`) and, where m is k ≥ [`MIN_RECORDED_STRIDE`]
+/// output periods of `substeps` steps, e^{A j T} for j = 1 … k − 1 (the samples inside
+/// it), balanced as the 1983 plant's: angles and the integral at 1, speeds and the filtered speed at ρ, forcing states scaled to ρ, the
 /// two states of each harmonic pair alike.
 fn exp_spans(
     model: &NetworkModel,
@@ -329,16 +326,8 @@ fn exp_spans(
     let powers = exp_powers_balanced(a, step_s, &scale, count);
     let power = |k: u32| powers[k as usize - 1].clone();
     let substeps = substeps.max(1);
-    let samples = if steps.is_multiple_of(substeps) {
-        steps / substeps
-    } else {
-        1
-    };
-    let samples = if samples >= MIN_RECORDED_STRIDE {
-        samples
-    } else {
-        1
-    };
+    let whole_periods = steps.is_multiple_of(substeps) && steps / substeps >= MIN_RECORDED_STRIDE;
+    let samples = if whole_periods { steps / substeps } else { 1 };
     ModeSpans {
         step: power(1),
         period: period.map(power),
