@@ -197,19 +197,38 @@ pub fn may_cross_span(g0: f64, d0: f64, g1: f64, d1: f64) -> bool {
     g1 > 0.0 || cubic_peaks_near_zero(g0, d0, g1, d1, false)
 }
 
+/// Whether a cheap bound settles that the function cannot cross: [`may_cross`]
+/// (`several_steps` false) or [`may_cross_span`] (true) is then false. Branch-free, so
+/// that a loop over many functions computes it for several at once; where it is false,
+/// the full rule decides.
+#[inline(always)]
+pub fn surely_short(g0: f64, d0: f64, g1: f64, d1: f64, several_steps: bool) -> bool {
+    let no_step_peak = !several_steps & !((d0 > 0.0) & (d1 < 0.0));
+    (g1 <= 0.0) & (no_step_peak | chord_bound_short(g0, d0, g1, d1))
+}
+
+/// Whether the cubic Hermite interpolant through (0, g0, d0) and (1, g1, d1) stays
+/// below minus the margin of [`cubic_peaks_near_zero`] by a cheap bound: the cubic
+/// departs from the chord by s(1−s)[(1−s)(d0 − Δ) − s(d1 − Δ)], Δ = g1 − g0, at most
+/// (|d0 − Δ| + |d1 − Δ|)/4, which settles most cases.
+#[inline(always)]
+fn chord_bound_short(g0: f64, d0: f64, g1: f64, d1: f64) -> bool {
+    let margin = 0.25 * (g0.abs() + g1.abs() + d0.abs() + d1.abs());
+    let delta = g1 - g0;
+    g0.max(g1) + 0.25 * ((d0 - delta).abs() + (d1 - delta).abs()) <= -margin
+}
+
 /// Whether the cubic Hermite interpolant through (0, g0, d0) and (1, g1, d1) has an
 /// interior maximum within a margin of zero: a quarter of the ends' values and slopes.
 /// `peak_sure`: the slopes turn from + to −, so a maximum lies in [0, 1] even where
 /// rounding puts it at an end (then the higher end stands for it).
 #[inline(always)]
 fn cubic_peaks_near_zero(g0: f64, d0: f64, g1: f64, d1: f64, peak_sure: bool) -> bool {
-    let margin = 0.25 * (g0.abs() + g1.abs() + d0.abs() + d1.abs());
-    // The cubic departs from the chord by s(1−s)[(1−s)(d0 − Δ) − s(d1 − Δ)], Δ = g1 − g0,
-    // at most (|d0 − Δ| + |d1 − Δ|)/4: a cheap bound that settles most cases.
-    let delta = g1 - g0;
-    if g0.max(g1) + 0.25 * ((d0 - delta).abs() + (d1 - delta).abs()) <= -margin {
+    if chord_bound_short(g0, d0, g1, d1) {
         return false;
     }
+    let margin = 0.25 * (g0.abs() + g1.abs() + d0.abs() + d1.abs());
+    let delta = g1 - g0;
     // Hermite cubic p(s) = g0 + d0 s + c2 s² + c3 s³.
     let c2 = 3.0 * delta - 2.0 * d0 - d1;
     let c3 = -2.0 * delta + d0 + d1;

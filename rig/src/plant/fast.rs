@@ -18,8 +18,7 @@ use super::block::NetworkBlock;
 use super::network_plant::NetworkPlant;
 use super::products;
 use super::run_spans::RunSpans;
-use super::span_ends::EndRead;
-use super::stepping::may_reach;
+use super::stepping::{may_reach, surely_short_of};
 use super::system::{ModeSystem, SpanMatrix};
 use super::system_cache::SystemCache;
 
@@ -44,11 +43,14 @@ impl NetworkPlant {
     ) -> Result<u64, RigError> {
         let first = self.sample;
         let segment_begins = self.segment_end.is_some_and(|end| self.sample >= end);
-        // Samples held that this one cannot join (of another mode, or of the stretch of set
-        // points before it) are written out here, so that the fast path takes it as it
-        // does at a block's start: the same bytes whatever the blocks.
-        if RECORD && (segment_begins || !self.chunk.takes(self.sample, &self.mode)) {
+        // Samples held that this one cannot join (of the stretch of set points before it,
+        // or a full chunk) are written out here, and those of another mode their mode's
+        // signals, so that the fast path takes it as it does at a block's start: the same
+        // bytes whatever the blocks.
+        if RECORD && segment_begins {
             self.flush_samples(block);
+        } else if RECORD {
+            self.make_room(block);
         }
         if segment_begins {
             self.begin_segment();
@@ -245,10 +247,9 @@ impl NetworkPlant {
     /// Takes the span of `matrix` (a step or a stride of `run`, `span_s` long) from
     /// `self.u`: `self.next` the state at its end; and whether any switching function may
     /// cross over it, as the exact path's check decides it over a step, and over a span
-    /// of several steps as `may_cross_span` does (any interior maximum). Where none may,
-    /// `self.next_edge` holds each function's value and rate at the end; where one may,
-    /// the functions after it are left unwritten (the exact path takes the span again).
-    /// One loop over the functions, their ends found and checked in it.
+    /// of several steps as `may_cross_span` does (any interior maximum). `self.next_edge`
+    /// holds each function's value and rate at the end (where one may cross, the exact
+    /// path takes the span again).
     #[inline(always)]
     fn span_may_switch(
         &mut self,
@@ -263,17 +264,17 @@ impl NetworkPlant {
         system.write_angle_rows(&self.next, &mut self.fused_out);
         let unit = self.next[self.model.layout.unit()];
         let rows = &self.fused_out[..system.end_rows()];
-        let starts = self.edge[..events].iter().zip(&self.targets[..events]);
-        let ends = self.next_edge[..events]
-            .iter_mut()
-            .zip(starts)
-            .zip(&system.ends);
+        let ends = &mut self.next_edge[..events];
+        for (end, read) in ends.iter_mut().zip(&system.ends) {
+            *end = read.read(rows, unit);
+        }
+        let (starts, targets) = (&self.edge[..events], &self.targets[..events]);
         // The loop compiled apart for spans of one step and of several, each with its
         // own check inside.
         if several_steps {
-            any_may_reach::<true>(ends, rows, unit, span_s)
+            any_may_reach::<true>(starts, ends, targets, span_s)
         } else {
-            any_may_reach::<false>(ends, rows, unit, span_s)
+            any_may_reach::<false>(starts, ends, targets, span_s)
         }
     }
 
@@ -331,22 +332,23 @@ impl NetworkPlant {
     }
 }
 
-/// Reads each switching function's end from the span's end rows `rows` (the unit state
-/// `unit`) into its slot of `ends`, checking it against its start and target over the
-/// span of `span_s` (of several steps if `SEVERAL`, [`may_reach`]); whether any may
-/// reach it (the functions after it left unwritten).
+/// Whether any switching function of values and rates `starts` and `ends` at a span's
+/// ends may reach its target (`targets`) over the span of `span_s` (of several steps if
+/// `SEVERAL`, [`may_reach`]). The cheap bound ([`surely_short_of`]) is taken for every
+/// function first, without a branch, so that it runs on several at once; only where it
+/// leaves one undecided does the full rule run, function by function.
 #[inline(always)]
-fn any_may_reach<'a, const SEVERAL: bool>(
-    ends: impl Iterator<Item = ((&'a mut (f64, f64), (&'a (f64, f64), &'a f64)), &'a EndRead)>,
-    rows: &[f64],
-    unit: f64,
+fn any_may_reach<const SEVERAL: bool>(
+    starts: &[(f64, f64)],
+    ends: &[(f64, f64)],
+    targets: &[f64],
     span_s: f64,
 ) -> bool {
-    for ((end, (&start, &target)), read) in ends {
-        *end = read.read(rows, unit);
-        if may_reach(start, *end, target, span_s, SEVERAL) {
-            return true;
-        }
-    }
-    false
+    let functions = || starts.iter().zip(ends).zip(targets);
+    let undecided = functions().fold(false, |any, ((&start, &end), &target)| {
+        any | !surely_short_of(start, end, target, span_s, SEVERAL)
+    });
+    undecided
+        && functions()
+            .any(|((&start, &end), &target)| may_reach(start, end, target, span_s, SEVERAL))
 }

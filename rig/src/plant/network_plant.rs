@@ -328,10 +328,21 @@ impl NetworkPlant {
             self.flush_samples(block);
             self.begin_segment();
         }
-        if !self.chunk.takes(self.sample, &self.mode) {
-            self.flush_samples(block);
-        }
+        self.make_room(block);
         self.chunk.store(self.sample, &self.mode, &self.u);
+    }
+
+    /// Readies the chunk for the current sample: the samples held written out where it
+    /// cannot join them, their mode-dependent signals where it is in another mode.
+    pub(super) fn make_room(&mut self, block: &mut NetworkBlock) {
+        if !self.chunk.takes(self.sample) {
+            self.flush_samples(block);
+        } else if !self.chunk.takes_mode(&self.mode)
+            && let Some(cache) = self.cache.as_mut()
+        {
+            let system = cache.get(&self.model, self.chunk.mode());
+            self.chunk.flush_mode(&system.outputs, block);
+        }
     }
 
     /// Appends the samples held to `block`.

@@ -1,9 +1,10 @@
 //! The samples a run writes: each sample's state stored column by column in a chunk, and
 //! the block's signals computed from a whole chunk at once. In one mode (and one stretch
 //! of set points) every signal is a linear form of the state: a body's angle and speed, a
-//! shaft's torque, a mesh's force, the motor's torque. So a chunk holds the samples of one
-//! mode, and each signal is a few sums over it in whole vectors (written one sample at a
-//! time, the signals cost the plant as much as its steps).
+//! shaft's torque, a mesh's force, the motor's torque. So each signal is a few sums over
+//! the chunk in whole vectors (written one sample at a time, the signals cost the plant
+//! as much as its steps): those of the mode over each mode's samples, the rest over the
+//! whole chunk.
 
 use super::block::NetworkBlock;
 use super::mode::NetMode;
@@ -104,7 +105,12 @@ impl OutputForms {
     }
 }
 
-/// The states of up to [`CHUNK`] consecutive samples in one mode, one array per state.
+/// The states of up to [`CHUNK`] consecutive samples, one array per state, the last of
+/// them in one mode. The signals that do not depend on the mode (time, angles, speeds,
+/// shaft torques, translations) are computed for the whole chunk at once; those that do
+/// (mesh forces and contacts, the motor's torque) for each mode's samples as the mode
+/// changes: where modes change every few samples (an in-phase planetary stage's pair
+/// zones), a chunk per mode made the whole of each flush's cost a column's overhead.
 #[derive(Clone, Debug)]
 pub struct SampleChunk {
     /// State i of sample k at `i * CHUNK + k`.
@@ -113,6 +119,9 @@ pub struct SampleChunk {
     len: usize,
     count: usize,
     first_sample: u64,
+    /// The first sample (in the chunk) whose mode-dependent signals are not yet written:
+    /// from it on, every sample is in `mode`.
+    mode_start: usize,
     mode: NetMode,
 }
 
@@ -124,17 +133,23 @@ impl SampleChunk {
             len,
             count: 0,
             first_sample: 0,
+            mode_start: 0,
             mode: NetMode::apart(0),
         }
     }
 
-    /// Whether the next sample, `sample` in `mode`, can join the chunk.
+    /// Whether the next sample, `sample`, can join the chunk (in whatever mode: see
+    /// [`Self::takes_mode`]).
     #[inline]
-    pub fn takes(&self, sample: u64, mode: &NetMode) -> bool {
-        self.count == 0
-            || (self.count < CHUNK
-                && self.mode == *mode
-                && self.first_sample + self.count as u64 == sample)
+    pub fn takes(&self, sample: u64) -> bool {
+        self.count == 0 || (self.count < CHUNK && self.first_sample + self.count as u64 == sample)
+    }
+
+    /// Whether a sample in `mode` can join the chunk's samples whose mode-dependent
+    /// signals are unwritten (none held, or all in `mode`).
+    #[inline]
+    pub fn takes_mode(&self, mode: &NetMode) -> bool {
+        self.count == self.mode_start || self.mode == *mode
     }
 
     /// Whether it holds [`CHUNK`] samples, as many as it can.
@@ -147,16 +162,19 @@ impl SampleChunk {
         self.count == 0
     }
 
-    /// The mode its samples were taken in.
+    /// The mode of its samples whose mode-dependent signals are unwritten.
     pub fn mode(&self) -> &NetMode {
         &self.mode
     }
 
-    /// Adds sample `sample`, the state `u` in `mode` (the chunk must take it).
+    /// Adds sample `sample`, the state `u` in `mode` (the chunk must take it, and its
+    /// mode: [`Self::takes`], [`Self::takes_mode`]).
     #[inline]
     pub fn store(&mut self, sample: u64, mode: &NetMode, u: &[f64]) {
         if self.count == 0 {
             self.first_sample = sample;
+        }
+        if self.count == self.mode_start {
             self.mode = *mode;
         }
         let k = self.count;
@@ -167,9 +185,70 @@ impl SampleChunk {
         self.count += 1;
     }
 
-    /// Appends the chunk's samples to `block` (their signals by `forms`, the forms of the
-    /// chunk's mode; sample n at n · `output_step_s`), and empties it.
+    /// Appends the mode-dependent signals of the samples in [`Self::mode`] to `block` (by
+    /// `forms`, the forms of that mode): the chunk then takes samples of another mode.
+    pub fn flush_mode(&mut self, forms: &OutputForms, block: &mut NetworkBlock) {
+        self.write(forms, None, block);
+    }
+
+    /// Appends the chunk's samples to `block` (their signals by `forms`, the forms of
+    /// [`Self::mode`], whose signals that do not depend on the mode are every mode's;
+    /// sample n at n · `output_step_s`), and empties it.
     pub fn flush(&mut self, forms: &OutputForms, output_step_s: f64, block: &mut NetworkBlock) {
+        self.write(forms, Some(output_step_s), block);
+    }
+
+    /// [`Self::flush_mode`], then with `whole` (the output step, s) [`Self::flush`]'s
+    /// other signals: compiled for AVX2 where the CPU has it, its sums four samples a
+    /// vector (each product and sum rounded alone, as in baseline x86-64: the same bytes).
+    fn write(&mut self, forms: &OutputForms, whole: Option<f64>, block: &mut NetworkBlock) {
+        #[cfg(target_arch = "x86_64")]
+        if crate::fma::available() {
+            // SAFETY: the CPU has AVX2 and FMA, checked at run time.
+            return unsafe { self.write_v3(forms, whole, block) };
+        }
+        self.write_any(forms, whole, block);
+    }
+
+    /// [`Self::write_any`] compiled for AVX2 and FMA.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,fma")]
+    fn write_v3(&mut self, forms: &OutputForms, whole: Option<f64>, block: &mut NetworkBlock) {
+        self.write_any(forms, whole, block);
+    }
+
+    /// The sums of [`Self::write`].
+    #[inline(always)]
+    fn write_any(&mut self, forms: &OutputForms, whole: Option<f64>, block: &mut NetworkBlock) {
+        self.write_mode(forms, block);
+        if let Some(output_step_s) = whole {
+            self.write_whole(forms, output_step_s, block);
+        }
+    }
+
+    /// The mode-dependent signals of the samples in [`Self::mode`].
+    #[inline(always)]
+    fn write_mode(&mut self, forms: &OutputForms, block: &mut NetworkBlock) {
+        let (from, to) = (self.mode_start, self.count);
+        if from == to {
+            return;
+        }
+        let append = |terms: &[(usize, f64)], column: &mut Vec<f64>| {
+            self.sum(terms, from..to, column);
+        };
+        for (terms, column) in forms.mesh_force.iter().zip(&mut block.mesh_force_n) {
+            append(terms, column);
+        }
+        append(&forms.motor_torque, &mut block.motor_torque_nm);
+        for (&sign, column) in forms.contact.iter().zip(&mut block.contact) {
+            column.extend(std::iter::repeat_n(sign, to - from));
+        }
+        self.mode_start = to;
+    }
+
+    /// The signals of every mode of the chunk's samples, and the chunk emptied.
+    #[inline(always)]
+    fn write_whole(&mut self, forms: &OutputForms, output_step_s: f64, block: &mut NetworkBlock) {
         let n = self.count;
         if n == 0 {
             return;
@@ -178,7 +257,7 @@ impl SampleChunk {
         block
             .time_s
             .extend((0..n as u64).map(|k| (first + k) as f64 * output_step_s));
-        let append = |terms: &[(usize, f64)], column: &mut Vec<f64>| self.sum(terms, n, column);
+        let append = |terms: &[(usize, f64)], column: &mut Vec<f64>| self.sum(terms, 0..n, column);
         for (terms, column) in forms.angle.iter().zip(&mut block.angle_rad) {
             append(terms, column);
         }
@@ -188,28 +267,22 @@ impl SampleChunk {
         for (terms, column) in forms.shaft_torque.iter().zip(&mut block.shaft_torque_nm) {
             append(terms, column);
         }
-        for (terms, column) in forms.mesh_force.iter().zip(&mut block.mesh_force_n) {
-            append(terms, column);
-        }
         for (terms, column) in forms.translation.iter().zip(&mut block.translation_m) {
             append(terms, column);
         }
-        append(&forms.motor_torque, &mut block.motor_torque_nm);
-        for (&sign, column) in forms.contact.iter().zip(&mut block.contact) {
-            column.extend(std::iter::repeat_n(sign, n));
-        }
         self.count = 0;
+        self.mode_start = 0;
     }
 
-    /// Appends to `column`, for each of the first `n` samples k, Σ c · state i of sample
-    /// k over the terms (i, c): the first term's products appended, the others added in
-    /// place.
-    #[inline]
-    fn sum(&self, terms: &[(usize, f64)], n: usize, column: &mut Vec<f64>) {
-        let state = |i: usize| &self.states[i * CHUNK..i * CHUNK + n];
+    /// Appends to `column`, for each sample k of `samples` (in the chunk), Σ c · state i
+    /// of sample k over the terms (i, c): the first term's products appended, the others
+    /// added in place.
+    #[inline(always)]
+    fn sum(&self, terms: &[(usize, f64)], samples: std::ops::Range<usize>, column: &mut Vec<f64>) {
+        let state = |i: usize| &self.states[i * CHUNK + samples.start..i * CHUNK + samples.end];
         let start = column.len();
         let Some((&(i, c), rest)) = terms.split_first() else {
-            column.resize(start + n, 0.0);
+            column.resize(start + samples.len(), 0.0);
             return;
         };
         // + 0.0: a zero signal is +0, as a sum from zero gives it.

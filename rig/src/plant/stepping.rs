@@ -9,7 +9,9 @@ use std::f64::consts::PI;
 
 use crate::error::RigError;
 use crate::mode::{MotorMode, PairZone};
-use crate::roots::{AT_START, DUE_NOW, due_at_start, first_crossing, may_cross, may_cross_span};
+use crate::roots::{
+    AT_START, DUE_NOW, due_at_start, first_crossing, may_cross, may_cross_span, surely_short,
+};
 use crate::taylor::{TAYLOR_ORDER, taylor_order};
 
 use super::block::NetworkImpact;
@@ -432,20 +434,47 @@ impl NetworkPlant {
 /// above the target counts as at it (a function just switched on stays until it falls).
 #[inline(always)]
 pub(super) fn may_reach(
-    (value_0, rate_0): (f64, f64),
-    (value_1, rate_1): (f64, f64),
+    start: (f64, f64),
+    end: (f64, f64),
     target: f64,
     span_s: f64,
     several_steps: bool,
 ) -> bool {
-    let g0 = (value_0 - target).min(0.0);
-    let g1 = value_1 - target;
-    let (d0, d1) = (rate_0 * span_s, rate_1 * span_s);
+    let (g0, d0, g1, d1) = gaps(start, end, target, span_s);
     if several_steps {
         may_cross_span(g0, d0, g1, d1)
     } else {
         may_cross(g0, d0, g1, d1)
     }
+}
+
+/// Whether [`may_reach`] is surely false by a cheap, branch-free bound
+/// ([`surely_short`]): a loop over a mode's functions checks them all so, several at
+/// once, and leaves the rest to [`may_reach`].
+#[inline(always)]
+pub(super) fn surely_short_of(
+    start: (f64, f64),
+    end: (f64, f64),
+    target: f64,
+    span_s: f64,
+    several_steps: bool,
+) -> bool {
+    let (g0, d0, g1, d1) = gaps(start, end, target, span_s);
+    surely_short(g0, d0, g1, d1, several_steps)
+}
+
+/// A function's distances g0, g1 below `target` at a span's ends (the start's taken as
+/// at most 0) and its changes d0, d1 over the span at its ends' rates.
+#[inline(always)]
+fn gaps(
+    (value_0, rate_0): (f64, f64),
+    (value_1, rate_1): (f64, f64),
+    target: f64,
+    span_s: f64,
+) -> (f64, f64, f64, f64) {
+    let g0 = (value_0 - target).min(0.0);
+    let g1 = value_1 - target;
+    (g0, rate_0 * span_s, g1, rate_1 * span_s)
 }
 
 /// u(s τ) from the Taylor vectors `taylor` (v_0 to the expansion's order), written into
