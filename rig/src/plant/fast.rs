@@ -18,7 +18,7 @@ use super::block::NetworkBlock;
 use super::network_plant::NetworkPlant;
 use super::products;
 use super::run_spans::RunSpans;
-use super::stepping::{may_reach, surely_short_of};
+use super::stepping::SpanGaps;
 use super::system::{ModeSystem, SpanMatrix};
 use super::system_cache::SystemCache;
 
@@ -334,9 +334,9 @@ impl NetworkPlant {
 
 /// Whether any switching function of values and rates `starts` and `ends` at a span's
 /// ends may reach its target (`targets`) over the span of `span_s` (of several steps if
-/// `SEVERAL`, [`may_reach`]). The cheap bound ([`surely_short_of`]) is taken for every
-/// function first, without a branch, so that it runs on several at once; only where it
-/// leaves one undecided does the full rule run, function by function.
+/// `SEVERAL`, [`SpanGaps::may_reach`]). The cheap bound ([`SpanGaps::surely_short`]) is
+/// taken for every function first, without a branch, so that it runs on several at once;
+/// only where it leaves one undecided does the full rule run, function by function.
 #[inline(always)]
 fn any_may_reach<const SEVERAL: bool>(
     starts: &[(f64, f64)],
@@ -344,11 +344,10 @@ fn any_may_reach<const SEVERAL: bool>(
     targets: &[f64],
     span_s: f64,
 ) -> bool {
-    let functions = || starts.iter().zip(ends).zip(targets);
-    let undecided = functions().fold(false, |any, ((&start, &end), &target)| {
-        any | !surely_short_of(start, end, target, span_s, SEVERAL)
-    });
-    undecided
-        && functions()
-            .any(|((&start, &end), &target)| may_reach(start, end, target, span_s, SEVERAL))
+    let gaps = || {
+        (starts.iter().zip(ends).zip(targets))
+            .map(|((&start, &end), &target)| SpanGaps::of(start, end, target, span_s))
+    };
+    let undecided = gaps().fold(false, |any, gaps| any | !gaps.surely_short(SEVERAL));
+    undecided && gaps().any(|gaps| gaps.may_reach(SEVERAL))
 }

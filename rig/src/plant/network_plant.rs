@@ -335,6 +335,7 @@ impl NetworkPlant {
     /// Readies the chunk for the current sample: the samples held written out where it
     /// cannot join them, their mode-dependent signals where it is in another mode.
     pub(super) fn make_room(&mut self, block: &mut NetworkBlock) {
+        debug_assert!(self.cache.is_some(), "samples stored inside a step");
         if !self.chunk.takes(self.sample) {
             self.flush_samples(block);
         } else if !self.chunk.takes_mode(&self.mode)

@@ -105,8 +105,8 @@ impl OutputForms {
     }
 }
 
-/// The states of up to [`CHUNK`] consecutive samples, one array per state, the last of
-/// them in one mode. The signals that do not depend on the mode (time, angles, speeds,
+/// The states of up to [`CHUNK`] consecutive samples, one array per state; those whose
+/// mode-dependent signals are not yet written all in one mode. The signals that do not depend on the mode (time, angles, speeds,
 /// shaft torques, translations) are computed for the whole chunk at once; those that do
 /// (mesh forces and contacts, the motor's torque) for each mode's samples as the mode
 /// changes: where modes change every few samples (an in-phase planetary stage's pair

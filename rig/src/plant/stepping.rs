@@ -104,7 +104,7 @@ impl NetworkPlant {
     /// of `span_s` expanded to its first order, where that is sure without the rest of
     /// the expansion: the first (in the mode's order, as it takes ties) at or past its
     /// target that [`due_at_start`] finds due and whose rate at the start is rising (so
-    /// that the search's check, [`may_reach`], lets it through), if every function before
+    /// that the search's check, [`SpanGaps::may_reach`], lets it through), if every function before
     /// it is short of its target or found not due. Only functions of the set rotation
     /// (zone ends and starts, tooth passes, revolutions) are decided so: their first
     /// coefficient is a gear's turn over the span, far from zero while it turns. A contact
@@ -204,7 +204,8 @@ impl NetworkPlant {
             } else {
                 (form.value(&self.u), form.rate(&self.u))
             };
-            if !may_reach((value_0, rate_0), self.next_edge[k], target, span_s, false) {
+            let gaps = SpanGaps::of((value_0, rate_0), self.next_edge[k], target, span_s);
+            if !gaps.may_reach(false) {
                 continue;
             }
             if !expanded {
@@ -428,53 +429,56 @@ impl NetworkPlant {
     }
 }
 
-/// Whether a function of value and rate `start` and `end` at the ends of a span of
-/// `span_s` may reach `target` within it: over one step as [`may_cross`] judges it, over
-/// several (`several_steps`) as [`may_cross_span`] does (any interior maximum). A start
-/// above the target counts as at it (a function just switched on stays until it falls).
-#[inline(always)]
-pub(super) fn may_reach(
-    start: (f64, f64),
-    end: (f64, f64),
-    target: f64,
-    span_s: f64,
-    several_steps: bool,
-) -> bool {
-    let (g0, d0, g1, d1) = gaps(start, end, target, span_s);
-    if several_steps {
-        may_cross_span(g0, d0, g1, d1)
-    } else {
-        may_cross(g0, d0, g1, d1)
+/// A switching function over a span, as the checks see it: its value less its target,
+/// g0 and g1, at the span's ends (negative short of the target; the start's taken as at
+/// most 0: a function just switched on stays until it falls) and its changes d0, d1 over
+/// the span at its ends' rates.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct SpanGaps {
+    g0: f64,
+    d0: f64,
+    g1: f64,
+    d1: f64,
+}
+
+impl SpanGaps {
+    /// The gaps of a function of value and rate `start` and `end` at the ends of a span
+    /// of `span_s` (s) to `target`.
+    #[inline(always)]
+    pub(super) fn of(
+        (value_0, rate_0): (f64, f64),
+        (value_1, rate_1): (f64, f64),
+        target: f64,
+        span_s: f64,
+    ) -> Self {
+        Self {
+            g0: (value_0 - target).min(0.0),
+            d0: rate_0 * span_s,
+            g1: value_1 - target,
+            d1: rate_1 * span_s,
+        }
     }
-}
 
-/// Whether [`may_reach`] is surely false by a cheap, branch-free bound
-/// ([`surely_short`]): a loop over a mode's functions checks them all so, several at
-/// once, and leaves the rest to [`may_reach`].
-#[inline(always)]
-pub(super) fn surely_short_of(
-    start: (f64, f64),
-    end: (f64, f64),
-    target: f64,
-    span_s: f64,
-    several_steps: bool,
-) -> bool {
-    let (g0, d0, g1, d1) = gaps(start, end, target, span_s);
-    surely_short(g0, d0, g1, d1, several_steps)
-}
+    /// Whether the function may reach its target within the span: over one step as
+    /// [`may_cross`] judges it, over several (`several_steps`) as [`may_cross_span`]
+    /// does (any interior maximum).
+    #[inline(always)]
+    pub(super) fn may_reach(self, several_steps: bool) -> bool {
+        let Self { g0, d0, g1, d1 } = self;
+        if several_steps {
+            may_cross_span(g0, d0, g1, d1)
+        } else {
+            may_cross(g0, d0, g1, d1)
+        }
+    }
 
-/// A function's distances g0, g1 below `target` at a span's ends (the start's taken as
-/// at most 0) and its changes d0, d1 over the span at its ends' rates.
-#[inline(always)]
-fn gaps(
-    (value_0, rate_0): (f64, f64),
-    (value_1, rate_1): (f64, f64),
-    target: f64,
-    span_s: f64,
-) -> (f64, f64, f64, f64) {
-    let g0 = (value_0 - target).min(0.0);
-    let g1 = value_1 - target;
-    (g0, rate_0 * span_s, g1, rate_1 * span_s)
+    /// Whether [`Self::may_reach`] is surely false by a cheap, branch-free bound
+    /// ([`surely_short`]): a loop over a mode's functions checks them all so, several at
+    /// once, and leaves the rest to [`Self::may_reach`].
+    #[inline(always)]
+    pub(super) fn surely_short(self, several_steps: bool) -> bool {
+        surely_short(self.g0, self.d0, self.g1, self.d1, several_steps)
+    }
 }
 
 /// u(s τ) from the Taylor vectors `taylor` (v_0 to the expansion's order), written into
