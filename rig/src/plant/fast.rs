@@ -18,7 +18,7 @@ use super::block::NetworkBlock;
 use super::network_plant::NetworkPlant;
 use super::products;
 use super::run_spans::RunSpans;
-use super::stepping::SpanGaps;
+use super::span_gaps::SpanGaps;
 use super::system::{ModeSystem, SpanMatrix};
 use super::system_cache::SystemCache;
 

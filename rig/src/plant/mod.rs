@@ -26,7 +26,8 @@
 //! `network_plant.rs` the plant (`NetworkPlant`: the name it had beside the retired thesis plant), `teeth.rs` its pair zones and tooth passes, `segment.rs` its set
 //! points over time, `fast.rs` its runs of samples in one mode, `record_stride.rs` the
 //! strides of a run that writes samples,
-//! `stepping.rs` its exact steps and switches, `products.rs` the
+//! `stepping.rs` its exact steps and switches, `span_gaps.rs` a function's gaps to its
+//! target over a span as the checks judge them, `products.rs` the
 //! matrix–state products they take.
 
 mod block;
@@ -48,6 +49,7 @@ mod run_spans;
 mod run_up;
 mod segment;
 mod span_ends;
+mod span_gaps;
 mod stepping;
 mod system;
 mod system_cache;
