@@ -42,19 +42,9 @@ impl NetworkPlant {
         block: &mut NetworkBlock,
     ) -> Result<u64, RigError> {
         let first = self.sample;
-        let segment_begins = self.segment_end.is_some_and(|end| self.sample >= end);
-        // Samples held that this one cannot join (of the stretch of set points before it,
-        // or a full chunk) are written out here, and those of another mode their mode's
-        // signals, so that the fast path takes it as it does at a block's start: the same
+        // As at a block's start, so that the fast path takes the sample alike: the same
         // bytes whatever the blocks.
-        if RECORD && segment_begins {
-            self.flush_samples(block);
-        } else if RECORD {
-            self.make_room(block);
-        }
-        if segment_begins {
-            self.begin_segment();
-        }
+        self.ready_sample::<RECORD>(block);
         let Some(mut cache) = self.cache.take() else {
             return Err(RigError::Schedule(
                 "a run began inside a step (the plant's cache was out)".into(),
@@ -301,9 +291,7 @@ impl NetworkPlant {
                 &self.u,
                 &mut self.forcing_out,
             );
-            for (&i, &x) in run.moving.iter().zip(&self.forcing_out) {
-                self.next[i] = x;
-            }
+            run.set_moving(&self.forcing_out, &mut self.next);
         }
     }
 

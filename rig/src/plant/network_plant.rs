@@ -324,30 +324,37 @@ impl NetworkPlant {
     /// Holds the current sample (its set points taken up if they change now), writing
     /// out the samples held before it where it cannot join them.
     pub(super) fn store_sample(&mut self, block: &mut NetworkBlock) {
-        if self.segment_end.is_some_and(|end| self.sample >= end) {
-            self.flush_samples(block);
-            self.begin_segment();
-        }
-        self.make_room(block);
+        self.ready_sample::<true>(block);
         self.chunk.store(self.sample, &self.mode, &self.u);
     }
 
-    /// Readies the chunk for the current sample: the samples held written out where it
-    /// cannot join them, their mode-dependent signals where it is in another mode.
-    pub(super) fn make_room(&mut self, block: &mut NetworkBlock) {
-        debug_assert!(self.cache.is_some(), "samples stored inside a step");
-        if !self.chunk.takes(self.sample) {
+    /// Readies the plant for the current sample: where a stretch of set points begins
+    /// now, it is taken up (the samples held written out first, if `RECORD`); else, if
+    /// `RECORD`, the samples held are written out where the sample cannot join them, and
+    /// their mode-dependent signals where it is in another mode.
+    pub(super) fn ready_sample<const RECORD: bool>(&mut self, block: &mut NetworkBlock) {
+        if self.segment_end.is_some_and(|end| self.sample >= end) {
+            if RECORD {
+                self.flush_samples(block);
+            }
+            self.begin_segment();
+        } else if RECORD && !self.chunk.takes(self.sample) {
             self.flush_samples(block);
-        } else if !self.chunk.takes_mode(&self.mode)
-            && let Some(cache) = self.cache.as_mut()
-        {
-            let system = cache.get(&self.model, self.chunk.mode());
-            self.chunk.flush_mode(&system.outputs, block);
+        } else if RECORD && !self.chunk.takes_mode(&self.mode) {
+            self.write_held(None, block);
         }
     }
 
     /// Appends the samples held to `block`.
     pub(super) fn flush_samples(&mut self, block: &mut NetworkBlock) {
+        self.write_held(Some(self.output_step_s), block);
+    }
+
+    /// Writes the signals of the samples held to `block` by the forms of their mode: with
+    /// `whole` (the output step, s) all of them, the chunk emptied; without, only their
+    /// mode-dependent signals.
+    fn write_held(&mut self, whole: Option<f64>, block: &mut NetworkBlock) {
+        debug_assert!(self.cache.is_some(), "samples written inside a step");
         if self.chunk.is_empty() {
             return;
         }
@@ -355,7 +362,10 @@ impl NetworkPlant {
             return;
         };
         let system = cache.get(&self.model, self.chunk.mode());
-        self.chunk.flush(&system.outputs, self.output_step_s, block);
+        match whole {
+            Some(output_step_s) => self.chunk.flush(&system.outputs, output_step_s, block),
+            None => self.chunk.flush_mode(&system.outputs, block),
+        }
     }
 
     /// Refuses a state that is not finite or turns impossibly fast.

@@ -21,13 +21,11 @@ use super::system::ModeSystem;
 /// A stride under way in a run that writes samples.
 #[derive(Clone, Debug, Default)]
 pub struct RecordStride {
-    /// Whether a stride is under way.
-    active: bool,
     /// Its first sample.
     first: u64,
     /// Its samples, k.
     samples: u64,
-    /// The mode it is taken in.
+    /// The mode it is taken in, while one is under way.
     mode: Option<NetMode>,
     /// The states of its first sample the inside products read, gathered as they read
     /// them (`RunSpans::columns`, `RunSpans::forcing_columns`).
@@ -46,20 +44,19 @@ impl RecordStride {
     /// Whether a stride is under way.
     #[inline(always)]
     pub fn is_active(&self) -> bool {
-        self.active
+        self.mode.is_some()
     }
 
     /// Gives up the stride under way, if any.
     pub fn drop_stride(&mut self) {
-        self.active = false;
+        self.mode = None;
     }
 
     /// At a recorded run's start, at `sample` in `mode` from the state `u`: keeps the
     /// stride a run left unfinished only where this run takes it on as it was left (a
     /// sample inside it, its mode, and the state it was left at, to the bit).
     pub fn resume(&mut self, sample: u64, mode: &NetMode, u: &[f64]) {
-        let keeps = self.active
-            && sample > self.first
+        let keeps = sample > self.first
             && sample < self.first + self.samples
             && self.mode.as_ref() == Some(mode)
             && self.left_at.len() == u.len()
@@ -80,7 +77,6 @@ impl RecordStride {
         u: &[f64],
         (end, end_edge): (&[f64], &[(f64, f64)]),
     ) {
-        self.active = true;
         self.first = first;
         self.samples = samples;
         self.mode = Some(mode);
@@ -113,7 +109,7 @@ impl RecordStride {
         if j as u64 >= self.samples {
             std::mem::swap(u, &mut self.end);
             std::mem::swap(edge, &mut self.end_edge);
-            self.active = false;
+            self.drop_stride();
             return;
         }
         let span = &run.inside[j - 1];
@@ -126,9 +122,7 @@ impl RecordStride {
         products::copy_short(&mut u[..mechanical], &rows[..mechanical]);
         if !run.moving.is_empty() {
             products::dense(&span.forcing, run.moving_rows, &self.start_forcing, forcing);
-            for (&i, &x) in run.moving.iter().zip(forcing.iter()) {
-                u[i] = x;
-            }
+            run.set_moving(forcing, u);
         }
     }
 

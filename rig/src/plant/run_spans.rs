@@ -111,6 +111,15 @@ impl RunSpans {
         }
     }
 
+    /// Writes the moving forcing states' values `forcing` (in the order of `moving`, as
+    /// a span's forcing product gives them) into the state `u`.
+    #[inline(always)]
+    pub fn set_moving(&self, forcing: &[f64], u: &mut [f64]) {
+        for (&i, &x) in self.moving.iter().zip(forcing) {
+            u[i] = x;
+        }
+    }
+
     /// Whether the forcing states it holds still have, in `u`, the values it was built
     /// for.
     pub fn holds(&self, u: &[f64]) -> bool {
