@@ -7,20 +7,15 @@ mod rig_support;
 use rig::{NetworkImpact, NetworkPlant, NetworkStart, Schedule};
 use rig_support::{plant, shipped};
 
-/// A rattling rig run for 0.3 s in blocks of `block_samples`: its samples and impacts.
-/// The two-stage rig at 20 N m with 40 N m oscillating at 30 Hz; the 1983 rig at
-/// 1300 rev/min and 2.712 N m (its teeth part and strike every revolution).
-fn rattling_in_blocks(name: &str, block_samples: usize) -> (rig::NetworkBlock, Vec<NetworkImpact>) {
+/// The shipped rig `name` run for 0.3 s under `schedule` in blocks of `block_samples`:
+/// its samples and impacts.
+fn run_in_blocks(
+    name: &str,
+    schedule: &Schedule,
+    block_samples: usize,
+) -> (rig::NetworkBlock, Vec<NetworkImpact>) {
     let rig = shipped(name);
-    let schedule = if name == "two-stage" {
-        Schedule {
-            oscillating_load_nm: rig::Track::hold(40.0),
-            oscillating_load_hz: rig::Track::hold(30.0),
-            ..Schedule::constant(1500.0, 20.0)
-        }
-    } else {
-        Schedule::constant(1300.0, 2.712)
-    };
+    let schedule = schedule.clone();
     let mut p = plant(&rig, schedule, NetworkStart::Steady);
     let mut block = p.block();
     let total = (0.3 * rig_support::RATE_HZ) as usize;
@@ -38,15 +33,27 @@ fn rattling_in_blocks(name: &str, block_samples: usize) -> (rig::NetworkBlock, V
 /// sample, of 7 (ending at every place inside a stride) and of 10 000 give the same bytes.
 #[test]
 fn a_rattling_rig_runs_to_the_same_bytes_a_sample_at_a_time_as_in_long_blocks() {
-    for (name, least_impacts) in [("two-stage", 100), ("basmaji-1983", 50)] {
-        let (long, long_impacts) = rattling_in_blocks(name, 10_000);
+    // The two-stage rig at 20 N m with 40 N m oscillating at 30 Hz; the 1983 rig at
+    // 1300 rev/min and 2.712 N m (its teeth part and strike every revolution).
+    let two_stage = Schedule {
+        oscillating_load_nm: rig::Track::hold(40.0),
+        oscillating_load_hz: rig::Track::hold(30.0),
+        ..Schedule::constant(1500.0, 20.0)
+    };
+    let rattling = [
+        ("two-stage", two_stage, 100),
+        ("basmaji-1983", Schedule::constant(1300.0, 2.712), 50),
+    ];
+    for (name, schedule, least_impacts) in &rattling {
+        let (name, least_impacts) = (*name, *least_impacts);
+        let (long, long_impacts) = run_in_blocks(name, schedule, 10_000);
         assert!(
             long_impacts.len() > least_impacts,
             "{name} rattles: {} impacts in 0.3 s",
             long_impacts.len()
         );
         for block_samples in [1, 7] {
-            let (short, short_impacts) = rattling_in_blocks(name, block_samples);
+            let (short, short_impacts) = run_in_blocks(name, schedule, block_samples);
             assert_eq!(
                 short_impacts, long_impacts,
                 "{name}, blocks of {block_samples}: the same impacts at the same instants"
