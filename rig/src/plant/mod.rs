@@ -50,6 +50,7 @@ mod run_up;
 mod segment;
 mod span_ends;
 mod span_gaps;
+mod sparse_rows;
 mod stepping;
 mod system;
 mod system_cache;

@@ -48,9 +48,8 @@ pub struct RunSpans {
 impl RunSpans {
     /// The products of `system` for runs from the state `u`.
     pub fn new(system: &ModeSystem, layout: &NetLayout, u: &[f64]) -> Self {
-        let padded = layout.padded();
         let forcing = layout.mechanical()..layout.len();
-        let a = |row: usize, col: usize| system.a_columns[col * padded + row];
+        let a = |row: usize, col: usize| system.a.get(row, col);
         let (zero, still) = holding_states(&a, forcing.clone(), u);
         // Spacing errors hold still within a run but change at every tooth zone: read as
         // columns of their own, not folded, so that a fold outlives them.

@@ -11,6 +11,7 @@ use super::mode::NetMode;
 use super::model::{NetworkModel, SegmentRates};
 use super::output::OutputForms;
 use super::span_ends::{EndRead, SharedAngle, SpanEnds, meshes_share_an_angle, span_ends};
+use super::sparse_rows::SparseRows;
 
 /// e^{A τ} of one mode over one span τ (a step, or a stride of steps), as its products
 /// take it.
@@ -45,8 +46,9 @@ pub struct Stride {
 /// One mode's linear system.
 #[derive(Clone, Debug)]
 pub struct ModeSystem {
-    /// A of u' = A u, column-major, each column padded to the layout's padded length.
-    pub a_columns: Vec<f64>,
+    /// A of u' = A u by rows, its nonzero entries alone, a row for each of the layout's
+    /// padded length (`sparse_rows.rs`).
+    pub a: SparseRows,
     /// A's spectral radius (rad/s): the fastest motion of the mode, which sets the order of
     /// its Taylor expansions.
     pub rho_rad_s: f64,
@@ -164,9 +166,9 @@ impl ModeSystem {
         let period = takes_whole_periods(rho_rad_s, step_s, substeps).then_some(substeps);
         let spans = exp_spans(model, &a, (step_s, rho), (period, substeps), steps as u32);
         let events = event_forms(model, mode, &a, rates.harmonic_rad_s);
-        let a_columns = padded_columns(&a, padded);
+        let a_rows = SparseRows::of_columns(&padded_columns(&a, padded), padded);
         let outputs = OutputForms::of(model, mode, rates.harmonic_rad_s);
-        mode_system(model, a_columns, rho_rad_s, &spans, events, outputs)
+        mode_system(model, a_rows, rho_rad_s, &spans, events, outputs)
     }
 }
 
@@ -197,11 +199,11 @@ fn block_spectral_radius(a: &DMatrix<f64>, mechanical: usize) -> f64 {
     spectral_radius(&mechanical_block).max(spectral_radius(&block(mechanical).clone_owned()))
 }
 
-/// The system of a mode from its A (`a_columns`, spectral radius `rho_rad_s`), its e^{A τ}
+/// The system of a mode from its A (`a`, spectral radius `rho_rad_s`), its e^{A τ}
 /// over its spans (`spans`), its switching functions and its signals.
 fn mode_system(
     model: &NetworkModel,
-    a_columns: Vec<f64>,
+    a: SparseRows,
     rho_rad_s: f64,
     spans: &ModeSpans,
     events: Vec<EventForm>,
@@ -223,7 +225,7 @@ fn mode_system(
         matrix: matrix(span),
     });
     ModeSystem {
-        a_columns,
+        a,
         rho_rad_s,
         step,
         stride,
