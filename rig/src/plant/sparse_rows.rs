@@ -2,10 +2,12 @@
 //! A of a rig is mostly zeros (an angle's rate reads one or two speeds, a forcing state
 //! one other; on the planetary bench 90 of its 28 × 26 entries are not).
 //!
-//! Each row's sum is the dense product's (`products::rows`, 24 rows or more) to the bit:
-//! both sum the row's products in column order from +0 with one rounding each
-//! (`crate::fma`), and an entry of 0 adds nothing there (0·x + s is s for s ≠ 0, and +0
-//! for s = +0, as a sum that starts at +0 never becomes −0), for any finite state.
+//! Each row's sum is the dense product's (`products::rows`) to the bit where that takes
+//! 24 rows or more (every shipped rig): both sum the row's products in column order from
+//! +0 with one rounding each (`crate::fma`), and an entry of 0 adds nothing there
+//! (0·x + s is s for s ≠ 0, and +0 for s = +0, as a sum that starts at +0 never becomes
+//! −0), for any finite state. Below 24 rows the dense product sums in two chains, so a
+//! smaller rig's expansion moved at rounding (1e-11 of a one-mesh rig's forces).
 
 /// Rows a block of [`SparseRows`] takes together: one vector of four sums (AVX2).
 const BLOCK: usize = 4;
