@@ -1,7 +1,7 @@
 //! The matrix–state product of the plant of any rig: a matrix stored by columns, each
-//! padded to a multiple of 4 rows, times the state (a mode's A for the Taylor expansion,
-//! square; the fused step's rows: the mechanical rows of e^{A h} and the switching
-//! functions' values and rates after it). Fused multiply-adds (one rounding each, the
+//! padded to a multiple of 4 rows, times the state (the fused step's rows: the
+//! mechanical rows of e^{A h} and the switching functions' values and rates after it;
+//! the Taylor expansion's products with A are `sparse_rows.rs`'s). Fused multiply-adds (one rounding each, the
 //! same bytes on every CPU, `crate::fma`): compiled for AVX2 and FMA where the CPU has
 //! them, else for baseline x86-64. Two ways in: [`rows`] asks the CPU each call, out of
 //! line; [`gathered`] is inlined into the fast run's loop (`fast.rs`), compiled for the

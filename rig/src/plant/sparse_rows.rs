@@ -3,11 +3,11 @@
 //! one other; on the planetary bench 90 of its 28 × 26 entries are not).
 //!
 //! Each row's sum is the dense product's (`products::rows`) to the bit where that takes
-//! 24 rows or more (every shipped rig): both sum the row's products in column order from
-//! +0 with one rounding each (`crate::fma`), and an entry of 0 adds nothing there
-//! (0·x + s is s for s ≠ 0, and +0 for s = +0, as a sum that starts at +0 never becomes
-//! −0), for any finite state. Below 24 rows the dense product sums in two chains, so a
-//! smaller rig's expansion moved at rounding (1e-11 of a one-mesh rig's forces).
+//! 24 rows or more (every shipped rig), for any finite state: both sum the row's products
+//! in column order from +0 with one rounding each (`crate::fma`), and an entry of 0 adds
+//! ±0 there, which changes no sum but a zero one's sign, and that only where a product
+//! underflowed to −0. Below 24 rows the dense product sums in two chains, so a smaller
+//! rig's expansion moved at rounding (1e-11 of a one-mesh rig's forces).
 
 /// Rows a block of [`SparseRows`] takes together: one vector of four sums (AVX2).
 const BLOCK: usize = 4;
@@ -56,9 +56,10 @@ impl SparseRows {
             .map_or(0.0, |(_, entries)| entries[row % BLOCK])
     }
 
-    /// out[r] = (Σ_c M[r, c] x[c]) · `scale` for every row r (`out` as long as the rows):
-    /// a Taylor vector from the one before it, `scale` its τ/k. Compiled for AVX2 and FMA
-    /// where the CPU has them, else for baseline x86-64.
+    /// out[r] = (Σ_c M[r, c] x[c]) · `scale` for every row r, `out` exactly as long as
+    /// the rows (the layout's padded length): a Taylor vector from the one before it,
+    /// M = A (1/s) and `scale` the span over the order, τ/k (s). Compiled for AVX2 and
+    /// FMA where the CPU has them, else for baseline x86-64.
     pub fn product(&self, x: &[f64], scale: f64, out: &mut [f64]) {
         #[cfg(target_arch = "x86_64")]
         if crate::fma::available() {
@@ -104,7 +105,7 @@ mod tests {
     use super::SparseRows;
     use crate::plant::products;
 
-    /// A 28 × 26 matrix by columns of a rig's shape: most entries 0, the rest of every
+    /// A `rows` × `width` matrix by columns of a rig's shape: most entries 0, the rest of every
     /// size and sign, some rows empty (the padding).
     fn rig_like(rows: usize, width: usize) -> Vec<f64> {
         (0..rows * width)
@@ -119,10 +120,18 @@ mod tests {
             .collect()
     }
 
+    /// The dense product's shapes from 24 rows: one band (24, 28 rows) and bands of 32
+    /// and a rest (36 rows); an entry of −0 among the columns.
     #[test]
     fn the_sparse_product_is_the_dense_one_to_the_bit() {
-        let (rows, width) = (28, 26);
-        let columns = rig_like(rows, width);
+        for (rows, width) in [(24, 22), (28, 26), (36, 34)] {
+            same_as_dense(rows, width);
+        }
+    }
+
+    fn same_as_dense(rows: usize, width: usize) {
+        let mut columns = rig_like(rows, width);
+        columns[2 * rows + 1] = -0.0;
         let sparse = SparseRows::of_columns(&columns, rows);
         let mut x: Vec<f64> = (0..rows)
             .map(|k| (k as f64 * 1.37 - 17.1) * 10f64.powi(k as i32 % 7 - 3))
@@ -137,8 +146,8 @@ mod tests {
                 assert_eq!(d.to_bits(), s.to_bits(), "row {r}: {d:e} and {s:e}");
             }
         }
-        assert_eq!(sparse.get(0, 0), columns[0]);
-        assert_eq!(sparse.get(1, 0), 0.0);
-        assert_eq!(sparse.get(5, 20), columns[20 * rows + 5]);
+        for (row, column) in [(0, 0), (1, 0), (1, 2), (5, 20), (rows - 1, width - 1)] {
+            assert_eq!(sparse.get(row, column), columns[column * rows + row]);
+        }
     }
 }

@@ -46,8 +46,8 @@ pub struct Stride {
 /// One mode's linear system.
 #[derive(Clone, Debug)]
 pub struct ModeSystem {
-    /// A of u' = A u by rows, its nonzero entries alone, a row for each of the layout's
-    /// padded length (`sparse_rows.rs`).
+    /// A of u' = A u (1/s), in blocks of four rows over the columns where a block has an
+    /// entry, as many rows as the layout's padded length (`sparse_rows.rs`).
     pub a: SparseRows,
     /// A's spectral radius (rad/s): the fastest motion of the mode, which sets the order of
     /// its Taylor expansions.
