@@ -1,12 +1,13 @@
 //! The matrix–state product of the plant of any rig: a matrix stored by columns, each
 //! padded to a multiple of 4 rows, times the state (the fused step's rows: the
 //! mechanical rows of e^{A h} and the switching functions' values and rates after it;
-//! the Taylor expansion's products with A are `sparse_rows.rs`'s). Fused multiply-adds (one rounding each, the
-//! same bytes on every CPU, `crate::fma`): compiled for AVX2 and FMA where the CPU has
-//! them, else for baseline x86-64. Two ways in: [`rows`] asks the CPU each call, out of
-//! line; [`gathered`] is inlined into the fast run's loop (`fast.rs`), compiled for the
-//! CPU, with which the products, copies and checks of a step are one loop (12 % faster
-//! on the 1983 rig, measured, than products called out of line).
+//! the Taylor expansion's products with A are `sparse_rows.rs`'s). Fused multiply-adds
+//! (one rounding each, the same bytes on every CPU, `crate::fma`): compiled for AVX2 and
+//! FMA where the CPU has them, else for baseline x86-64. Two ways in: [`rows`] asks the
+//! CPU each call, out of line; [`gathered`] is inlined into the fast run's loop
+//! (`fast.rs`), compiled for the CPU, with which the products, copies and checks of a
+//! step are one loop (12 % faster on the 1983 rig, measured, than products called out
+//! of line).
 
 /// out[..rows] = Σ_k M[:, k] u[columns[k]]: M's columns stand for the states `columns`
 /// picks (a fast run's folded spans, `run_spans.rs`). Inlined, compiled with its
