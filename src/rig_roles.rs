@@ -120,7 +120,7 @@ impl RoleColumns {
     }
 
     /// The frame of the plant's signals
-    /// ([`crate::vocabulary::signal_names::PLANT_SIGNALS`]) of `block`, starting at sample
+    /// (`crate::vocabulary::signal_names::PLANT_SIGNALS`) of `block`, starting at sample
     /// `start`, then `rig`'s columns `columns` ([`signals_with`] names them).
     pub fn frame(
         &self,

@@ -129,7 +129,7 @@ pub unsafe fn slice<'a, T>(ptr: *const T, n: usize) -> Result<&'a [T], FmuError>
     Ok(unsafe { std::slice::from_raw_parts(ptr, n) })
 }
 
-/// The `n` places at `ptr`, as [`slice`].
+/// The `n` places at `ptr`, as [`slice()`] gives values: a mutable slice.
 ///
 /// # Safety
 /// For `n` > 0, `ptr` is null or points to `n` writable values.

@@ -67,7 +67,7 @@ pub struct GearConditionReport {
     /// RMS of the residual signal (the average less its shaft orders and mesh
     /// harmonics; N m).
     pub residual_rms_nm: f64,
-    /// The averaged revolution (N m), [`POINTS_PER_REVOLUTION`] points from the pulse.
+    /// The averaged revolution (N m), `POINTS_PER_REVOLUTION` points from the pulse.
     pub average_nm: Vec<f64>,
 }
 
@@ -129,7 +129,7 @@ impl GearCondition {
 
     /// The amplitude of the kept signal's line at `hz` (Hann-windowed, the window's gain
     /// taken out; 0 without samples), the window's and the line's phases by rotation
-    /// ([`Phasor`]).
+    /// (`Phasor`).
     pub fn line_amplitude(&self, hz: f64) -> f64 {
         let x = &self.torque_nm;
         let n = x.len() as f64;

@@ -51,10 +51,10 @@ pub enum RequestError {
     /// The client closed the connection before sending anything.
     #[error("the connection closed before a request")]
     Closed,
-    /// The request was not complete within [`REQUEST_DEADLINE`].
+    /// The request was not complete within `REQUEST_DEADLINE`.
     #[error("no complete request within {} s", REQUEST_DEADLINE.as_secs())]
     TimedOut,
-    /// The head is longer than [`MAX_HEAD_BYTES`] or has more than [`MAX_HEADERS`] lines.
+    /// The head is longer than [`MAX_HEAD_BYTES`] or has more than `MAX_HEADERS` lines.
     #[error("the request head is over {MAX_HEAD_BYTES} bytes or {MAX_HEADERS} lines")]
     HeadTooLarge,
     /// The body is longer than [`MAX_BODY_BYTES`].

@@ -53,7 +53,7 @@ impl PartialFile {
     }
 
     /// Gives the finished file its final name, and notes it in its folder's journal of
-    /// finished files where a run keeps one ([`super::journal`]).
+    /// finished files where a run keeps one (`super::journal`).
     pub fn commit(&self) -> anyhow::Result<PathBuf> {
         std::fs::rename(&self.partial, &self.path)
             .with_context(|| format!("cannot name {}", self.path.display()))?;

@@ -59,7 +59,7 @@ pub fn preset_params(name: &str, dir: &Path) -> anyhow::Result<RigParams> {
     Ok(params)
 }
 
-/// The parameters of preset `name` (as [`preset_params`], relative to the working folder)
+/// The parameters of preset `name` (as `preset_params`, relative to the working folder)
 /// with every `NAME=VALUE` override applied in order, as `--set` gives them. The names
 /// are those of `testrig params` (stored or derived, such as `backlash_mm`), also in the
 /// scenario forms `rig.set.NAME` and `rig.NAME`.

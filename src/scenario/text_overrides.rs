@@ -10,7 +10,7 @@ pub const SET_MARK: &str = "# --set ";
 /// `rig.set.teeth`, or a bare rig parameter name as `simulate` takes it: `teeth`,
 /// `backlash_mm`, `preset`) to `text`. VALUE is taken as TOML (a number, `true`, `"text"`),
 /// or as a string when it is not valid TOML. The key's value must sit on one line of the
-/// file. The written line ends with [`SET_MARK`] and the item.
+/// file. The written line ends with `SET_MARK` and the item.
 pub fn apply_override(text: &str, item: &str) -> anyhow::Result<String> {
     let (key, value) = item.split_once('=').with_context(|| {
         format!("--set {item}: expected KEY=VALUE, e.g. schedule.speed_rpm=1500")

@@ -80,7 +80,7 @@ impl SignalNames {
     }
 
     /// The signals the plant hands the chain
-    /// ([`crate::vocabulary::signal_names::PLANT_SIGNALS`]).
+    /// (`crate::vocabulary::signal_names::PLANT_SIGNALS`).
     pub fn plant() -> Self {
         Self::of(&super::signal_names::PLANT_SIGNALS)
     }

@@ -39,7 +39,7 @@ pub(super) const OSCILLATING_HOLD_S: f64 = 0.01;
 pub(super) const CHECK_EVERY: u64 = 64;
 
 /// Samples between the questions of [`NetworkPlant::skip_while`]: a multiple of
-/// [`CHECK_EVERY`], 1.3 s at 51.2 kHz.
+/// `CHECK_EVERY`, 1.3 s at 51.2 kHz.
 pub const SKIP_STRETCH: u64 = CHECK_EVERY * 1024;
 
 /// Most internal steps per output sample.

@@ -38,7 +38,7 @@ impl NetworkModel {
 }
 
 impl NetworkPlant {
-    /// [`NetworkModel::run_up_from_rest_s`] of this plant's rig.
+    /// `NetworkModel::run_up_from_rest_s` of this plant's rig.
     pub fn run_up_from_rest_s(&self, rpm: f64, load_nm: f64) -> Option<f64> {
         self.model.run_up_from_rest_s(rpm, load_nm)
     }

@@ -277,7 +277,7 @@ impl PlanetaryStage {
     }
 
     /// The third of sun, ring and carrier speeds from two (rad/s), by rolling
-    /// (Willis's equation, [`Self::rolling_m`]); `None` where fewer than two are known.
+    /// (Willis's equation, `Self::rolling_m`); `None` where fewer than two are known.
     pub fn willis(
         &self,
         sun: Option<f64>,
