@@ -17,21 +17,40 @@ pub fn poly_eval(coeffs: &[f64], s: f64) -> (f64, f64) {
 /// of the fastest motion, so each quarter holds at most one extremum.
 const SCAN: usize = 4;
 
-/// First s in (0, 1] where the polynomial crosses from ≤ 0 to > 0, taking p(0) as ≤ 0.
+/// First s in (0, `before`) where the polynomial crosses from ≤ 0 to > 0, taking p(0)
+/// as ≤ 0 (`before` = ∞ for the first crossing on (0, 1]).
 ///
 /// Scans [0, 1] in 4 parts; in each, a sign change or an interior maximum above zero
 /// (found where p' changes sign) brackets the crossing, which is then refined to full
-/// precision. Returns the right end of the final bracket, where p > 0.
-pub fn first_crossing(coeffs: &[f64]) -> Option<f64> {
+/// precision. Returns the right end of the final bracket, where p > 0. A crossing at or
+/// after `before` counts for nothing, so the scan stops at the part that starts there,
+/// and a bracket across `before` is not refined where p is short of zero at `before`
+/// and at 0: the part holds one extremum at most, so p crosses once in the bracket, after
+/// `before` (as refining it would find). Where it returns a crossing, it is the one a
+/// scan without `before` gives, to the bit: the search for a step's first switch
+/// (`plant/stepping.rs`) asks each function after the first that crosses only for a
+/// crossing before the best so far (every planet's mesh of an in-phase stage crosses
+/// within rounding of the others).
+pub fn first_crossing(coeffs: &[f64], before: f64) -> Option<f64> {
     let (value_0, mut slope_a) = poly_eval(coeffs, 0.0);
     let mut value_a = value_0.min(0.0);
     let mut s_a = 0.0;
     let width = 1.0 / SCAN as f64;
+    // Short of zero at 0 and at `before`, with one crossing in the bracket [s_a, end]:
+    // it is after `before`.
+    let after_before =
+        |end: f64| value_0 < 0.0 && before < end && poly_eval(coeffs, before).0 <= 0.0;
     for j in 1..=SCAN {
+        if s_a >= before {
+            return None;
+        }
         let s_b = j as f64 * width;
         let (value_b, slope_b) = poly_eval(coeffs, s_b);
         if value_b > 0.0 {
-            return Some(refine(coeffs, (s_a, value_a), (s_b, value_b)));
+            if after_before(s_b) {
+                return None;
+            }
+            return Some(refine(coeffs, (s_a, value_a), (s_b, value_b))).filter(|&s| s < before);
         }
         // An interior maximum above zero needs p' to turn from + to −, and (the quarter
         // being near-cubic) a Hermite cubic through the ends that comes near zero.
@@ -42,7 +61,11 @@ pub fn first_crossing(coeffs: &[f64]) -> Option<f64> {
             let s_max = slope_root(coeffs, s_a, s_b);
             let value_max = poly_eval(coeffs, s_max).0;
             if value_max > 0.0 {
-                return Some(refine(coeffs, (s_a, value_a), (s_max, value_max)));
+                if after_before(s_max) {
+                    return None;
+                }
+                return Some(refine(coeffs, (s_a, value_a), (s_max, value_max)))
+                    .filter(|&s| s < before);
             }
         }
         s_a = s_b;
@@ -270,19 +293,64 @@ mod tests {
     #[test]
     fn crossings_at_the_start_and_inside() {
         let due = [0.0, 8.1e-5, -5.1e-10, 4.0e-12];
-        assert_eq!(first_crossing(&due), Some(f64::from_bits(1)));
+        assert_eq!(first_crossing(&due, f64::INFINITY), Some(f64::from_bits(1)));
         // p = s − 0.3: crosses at 0.3 (the bracket's right end, within 64 ulps).
-        let inside = first_crossing(&[-0.3, 1.0]).expect("a crossing");
+        let inside = first_crossing(&[-0.3, 1.0], f64::INFINITY).expect("a crossing");
         assert!(
             inside > 0.3 && inside - 0.3 < 64.0 * f64::EPSILON,
             "{inside}"
         );
         // Falling from 0: no crossing.
-        assert_eq!(first_crossing(&[0.0, -1.0]), None);
+        assert_eq!(first_crossing(&[0.0, -1.0], f64::INFINITY), None);
         // At 0 to rounding but falling, then rising through 0 at s = 1/8 within the first
         // quarter (p = 1e-18 − s + 8 s²): the crossing is there, not at the start.
-        let later = first_crossing(&[1e-18, -1.0, 8.0]).expect("a crossing");
+        let later = first_crossing(&[1e-18, -1.0, 8.0], f64::INFINITY).expect("a crossing");
         assert!((later - 0.125).abs() < 1e-12, "{later}");
+    }
+
+    /// A crossing sought only before a bound is the whole scan's where the scan's is
+    /// before it, to the bit, and none otherwise: Taylor polynomials of steps (up to three
+    /// motions of up to ρh = 0.5 rad, a ramp, an offset below zero), bounds anywhere in
+    /// the step and within a few ulps of the crossing (another planet's mesh of an
+    /// in-phase stage, crossing within rounding of the first).
+    #[test]
+    fn a_crossing_before_a_bound_is_the_whole_scans() {
+        use rand::{RngExt, SeedableRng};
+        let mut rng = rand_pcg::Pcg64Mcg::seed_from_u64(2024);
+        let (mut crossings, mut skipped) = (0, 0);
+        for _ in 0..20_000 {
+            let mut c = vec![0.0; 15];
+            for _ in 0..rng.random_range(1..=3) {
+                let (size, rho_h): (f64, f64) = (rng.random(), rng.random_range(0.01..0.5));
+                let phase = rng.random_range(0.0..std::f64::consts::TAU);
+                let mut scale = size;
+                for (k, ck) in c.iter_mut().enumerate() {
+                    let turn = phase + k as f64 * std::f64::consts::FRAC_PI_2;
+                    *ck += scale * turn.sin();
+                    scale *= rho_h / (k + 1) as f64;
+                }
+            }
+            c[1] += rng.random_range(-0.5..1.0);
+            c[0] = -rng.random_range(0.0..0.5);
+            let whole = first_crossing(&c, f64::INFINITY);
+            let near = whole.map_or(0.5, |s| s);
+            let ulps = rng.random_range(-4_i64..=4);
+            for before in [
+                rng.random_range(0.0..1.0),
+                f64::from_bits((near.to_bits() as i64 + ulps) as u64),
+            ] {
+                let bounded = first_crossing(&c, before);
+                assert_eq!(
+                    bounded,
+                    whole.filter(|&s| s < before),
+                    "{c:?} before {before}"
+                );
+                crossings += usize::from(bounded.is_some());
+                skipped += usize::from(whole.is_some() && bounded.is_none());
+            }
+        }
+        // Both outcomes are exercised.
+        assert!(crossings > 2000 && skipped > 2000, "{crossings} {skipped}");
     }
 
     /// Where [`due_at_start`] decides from a polynomial's first two coefficients, it
@@ -316,7 +384,7 @@ mod tests {
             if rng.random_range(0..8) == 0 {
                 c[1] = 0.0;
             }
-            let whole = first_crossing(&c) == Some(AT_START);
+            let whole = first_crossing(&c, f64::INFINITY) == Some(AT_START);
             match due_at_start(c[0], c[1]) {
                 Some(first_two) => assert_eq!(first_two, whole, "{c:?}"),
                 None => undecided += 1,

@@ -215,9 +215,8 @@ impl NetworkPlant {
             // gives +0 and changes no bit, only costs time (a fifth of the search's on
             // the planetary bench).
             let coefficients = self.coefficients(form, target);
-            if let Some(s) = first_crossing(&coefficients[..=self.taylor_order])
-                && best.is_none_or(|(b, _)| s < b)
-            {
+            let before = best.map_or(f64::INFINITY, |(b, _)| b);
+            if let Some(s) = first_crossing(&coefficients[..=self.taylor_order], before) {
                 best = Some((s, form.event));
             }
         }
