@@ -36,10 +36,15 @@ pub fn first_crossing(coeffs: &[f64], before: f64) -> Option<f64> {
     let mut value_a = value_0.min(0.0);
     let mut s_a = 0.0;
     let width = 1.0 / SCAN as f64;
-    // Short of zero at 0 and at `before`, with one crossing in the bracket [s_a, end]:
-    // it is after `before`.
-    let after_before =
-        |end: f64| value_0 < 0.0 && before < end && poly_eval(coeffs, before).0 <= 0.0;
+    // The crossing in the bracket [a, b], if before `before`: where p is short of zero
+    // at 0 and at `before` inside the bracket, its one crossing there is after `before`
+    // and is not refined.
+    let settle = |(a, value_a): (f64, f64), (b, value_b): (f64, f64)| {
+        let after_before = value_0 < 0.0 && before < b && poly_eval(coeffs, before).0 <= 0.0;
+        (!after_before)
+            .then(|| refine(coeffs, (a, value_a), (b, value_b)))
+            .filter(|&s| s < before)
+    };
     for j in 1..=SCAN {
         if s_a >= before {
             return None;
@@ -47,10 +52,7 @@ pub fn first_crossing(coeffs: &[f64], before: f64) -> Option<f64> {
         let s_b = j as f64 * width;
         let (value_b, slope_b) = poly_eval(coeffs, s_b);
         if value_b > 0.0 {
-            if after_before(s_b) {
-                return None;
-            }
-            return Some(refine(coeffs, (s_a, value_a), (s_b, value_b))).filter(|&s| s < before);
+            return settle((s_a, value_a), (s_b, value_b));
         }
         // An interior maximum above zero needs p' to turn from + to −, and (the quarter
         // being near-cubic) a Hermite cubic through the ends that comes near zero.
@@ -61,11 +63,7 @@ pub fn first_crossing(coeffs: &[f64], before: f64) -> Option<f64> {
             let s_max = slope_root(coeffs, s_a, s_b);
             let value_max = poly_eval(coeffs, s_max).0;
             if value_max > 0.0 {
-                if after_before(s_max) {
-                    return None;
-                }
-                return Some(refine(coeffs, (s_a, value_a), (s_max, value_max)))
-                    .filter(|&s| s < before);
+                return settle((s_a, value_a), (s_max, value_max));
             }
         }
         s_a = s_b;

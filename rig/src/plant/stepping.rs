@@ -104,12 +104,12 @@ impl NetworkPlant {
     /// the expansion: the first (in the mode's order, as it takes ties) at or past its
     /// target that [`due_at_start`] finds due and whose rate at the start is rising (so
     /// that the search's check, [`SpanGaps::may_reach`], lets it through), if every
-    /// function before it is short of its target or found not due. Only functions of the set rotation
-    /// (zone ends and starts, tooth passes, revolutions) are decided so: their first
-    /// coefficient is a gear's turn over the span, far from zero while it turns. A contact
-    /// or limit function at or past its target (one grazing it: its peak within 10⁻¹¹ of
-    /// a step, which the search cannot resolve) and any function [`due_at_start`] leaves
-    /// undecided give none: the whole expansion decides. Reads the targets from
+    /// function before it is short of its target or found not due. Only functions of the
+    /// set rotation (zone ends and starts, tooth passes, revolutions) are decided so: their
+    /// first coefficient is a gear's turn over the span, far from zero while it turns. A
+    /// contact or limit function at or past its target (one grazing it: its peak within
+    /// 10⁻¹¹ of a step, which the search cannot resolve) and any function [`due_at_start`]
+    /// leaves undecided give none: the whole expansion decides. Reads the targets from
     /// `self.targets`.
     fn due_at_once(&self, system: &ModeSystem, span_s: f64) -> Option<NetEvent> {
         for (form, target) in system.events.iter().zip(&self.targets) {
